@@ -1,0 +1,103 @@
+//! The floating-point paths that tribez certifies: the same generic algorithms run in `f64` and
+//! `f32`, plus `glam` kernels for points in `ℝ³` (the layout a GPU shader uses).
+//!
+//! Rounding the exact control points to floats is correctly rounded (never through f64 for f32).
+//! The glam kernels perform exactly the operations of the generic de Casteljau, in the same
+//! order (`((λ_0 x_0 + λ_1 x_1) + λ_2 x_2)` per coordinate, no FMA), so they give bit-identical
+//! results; a test checks it.
+
+use glam::{DVec3, Vec3};
+use num_rational::BigRational;
+
+use crate::number::{round_f32, round_f64};
+use crate::patch::ControlNet;
+
+/// Floating-point precision of a path or of a claimed value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Precision {
+    /// IEEE binary64.
+    F64,
+    /// IEEE binary32 (what a shader computes).
+    F32,
+}
+
+impl Precision {
+    /// `"f64"` or `"f32"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Precision::F64 => "f64",
+            Precision::F32 => "f32",
+        }
+    }
+
+    /// Unit roundoff `ε`: `2^-53` or `2^-24`, as the exponent.
+    pub fn unit_roundoff_log2(self) -> i32 {
+        match self {
+            Precision::F64 => -53,
+            Precision::F32 => -24,
+        }
+    }
+}
+
+impl std::str::FromStr for Precision {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "f64" => Ok(Precision::F64),
+            "f32" => Ok(Precision::F32),
+            _ => Err(format!("unknown precision `{s}` (expected f64 or f32)")),
+        }
+    }
+}
+
+/// The control net rounded to the nearest f64, coordinate by coordinate.
+pub fn net_f64(net: &ControlNet<BigRational>) -> ControlNet<f64> {
+    net.map(round_f64)
+}
+
+/// The control net rounded directly to the nearest f32.
+pub fn net_f32(net: &ControlNet<BigRational>) -> ControlNet<f32> {
+    net.map(round_f32)
+}
+
+macro_rules! glam_casteljau {
+    ($name:ident, $vec:ty, $s:ty) => {
+        /// de Casteljau on a triangle with points in `ℝ³`, same operation order as the generic
+        /// code. `points` in canonical order (`(n+1)(n+2)/2` of them).
+        pub fn $name(points: &[$vec], n: usize, u: [$s; 3]) -> $vec {
+            debug_assert_eq!(points.len(), (n + 1) * (n + 2) / 2);
+            let mut level: Vec<$vec> = points.to_vec();
+            for q in (1..=n).rev() {
+                // level has degree q; child ranks of β = (i, j, k) at degree q - 1 are
+                // rank_q(i+1, j, k) = base + j, rank_q(i, j+1, k) = base + j + 1 and
+                // rank_q(i, j, k+1) = base_next + j, with base = rank_q(q-k, 0, k).
+                let mut out_pos = 0;
+                for k in 0..q {
+                    let base = k * (2 * q + 3 - k) / 2;
+                    let base_next = (k + 1) * (2 * q + 2 - k) / 2;
+                    for j in 0..q - k {
+                        let a = level[base + j];
+                        let b = level[base + j + 1];
+                        let c = level[base_next + j];
+                        level[out_pos] = a * u[0] + b * u[1] + c * u[2];
+                        out_pos += 1;
+                    }
+                }
+            }
+            level[0]
+        }
+    };
+}
+
+glam_casteljau!(casteljau_dvec3, DVec3, f64);
+glam_casteljau!(casteljau_vec3, Vec3, f32);
+
+/// Points of a `d = 3` net as glam `DVec3`.
+pub fn dvec3_points(net: &ControlNet<f64>) -> Vec<DVec3> {
+    net.points().map(|p| DVec3::new(p[0], p[1], p[2])).collect()
+}
+
+/// Points of a `d = 3` net as glam `Vec3`.
+pub fn vec3_points(net: &ControlNet<f32>) -> Vec<Vec3> {
+    net.points().map(|p| Vec3::new(p[0], p[1], p[2])).collect()
+}

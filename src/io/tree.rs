@@ -1,0 +1,451 @@
+//! A small document tree read from TOML or JSON, keeping for every value its line and, for
+//! numbers, their exact TEXT (so `0.1` means 1/10, never the f64 nearest it).
+//!
+//! JSON is read by a small parser of our own, because the usual readers turn numbers into
+//! f64 and silently keep the last of two duplicated keys; both would be wrong here. TOML is read
+//! with `toml_edit`, whose spans give the exact number text and the line.
+
+use std::path::Path;
+
+use num_rational::BigRational;
+
+use super::InputError;
+use crate::number::parse_rational;
+
+/// A value with the line it starts on.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Node {
+    /// The value.
+    pub value: Value,
+    /// 1-based line in the source.
+    pub line: usize,
+}
+
+/// The value kinds of TOML and JSON that tribez reads.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// JSON `null`.
+    Null,
+    /// A boolean.
+    Bool(bool),
+    /// A number, as its source text.
+    Number(String),
+    /// A string.
+    String(String),
+    /// An array.
+    Array(Vec<Node>),
+    /// A table / object, in source order (duplicates are rejected by the parsers).
+    Table(Vec<(String, Node)>),
+}
+
+impl Value {
+    /// A word for messages: "a string", "an array", …
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Value::Null => "null",
+            Value::Bool(_) => "a boolean",
+            Value::Number(_) => "a number",
+            Value::String(_) => "a string",
+            Value::Array(_) => "an array",
+            Value::Table(_) => "a table",
+        }
+    }
+}
+
+/// A parsed document and the file it came from, for error messages.
+#[derive(Clone, Debug)]
+pub struct Document {
+    /// The file name as given.
+    pub file: String,
+    /// The root table.
+    pub root: Node,
+}
+
+impl Document {
+    /// An error located at `node`, under `key`.
+    pub fn error(&self, node: &Node, key: &str, message: impl Into<String>) -> InputError {
+        InputError {
+            file: self.file.clone(),
+            line: Some(node.line),
+            column: None,
+            key: (!key.is_empty()).then(|| key.to_string()),
+            message: message.into(),
+        }
+    }
+
+    /// Read and parse a `.toml` or `.json` file (by extension).
+    pub fn read(path: &Path) -> Result<Self, InputError> {
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+        match ext.as_str() {
+            "toml" => Document::parse_toml(&file, &text),
+            "json" => Document::parse_json(&file, &text),
+            _ => Err(InputError::file(&file, "unknown file type (expected a .toml or .json extension)")),
+        }
+    }
+
+    /// Parse TOML text.
+    pub fn parse_toml(file: &str, text: &str) -> Result<Self, InputError> {
+        if text.trim().is_empty() {
+            return Err(InputError::file(file, "the file is empty"));
+        }
+        let doc = toml_edit::Document::parse(text).map_err(|e| {
+            let (line, column) = e.span().map(|s| line_col(text, s.start)).unzip();
+            let msg = e.message().trim().to_string();
+            InputError { file: file.into(), line, column, key: None, message: format!("invalid TOML: {msg}") }
+        })?;
+        let root = toml_table(text, doc.as_table(), 1);
+        Ok(Document { file: file.into(), root })
+    }
+
+    /// Parse JSON text.
+    pub fn parse_json(file: &str, text: &str) -> Result<Self, InputError> {
+        if text.trim().is_empty() {
+            return Err(InputError::file(file, "the file is empty"));
+        }
+        let mut p = JsonParser { text: text.as_bytes(), pos: 0, file };
+        p.skip_ws();
+        let root = p.value(0)?;
+        p.skip_ws();
+        if p.pos != p.text.len() {
+            return Err(p.err("unexpected text after the JSON value"));
+        }
+        Ok(Document { file: file.into(), root })
+    }
+}
+
+/// 1-based (line, column) of a byte offset.
+pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text.as_bytes()[..offset.min(text.len())];
+    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+    let col = before.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+    (line, col)
+}
+
+fn span_line(text: &str, span: Option<std::ops::Range<usize>>, fallback: usize) -> usize {
+    span.map_or(fallback, |s| line_col(text, s.start).0)
+}
+
+fn toml_table(text: &str, table: &toml_edit::Table, line: usize) -> Node {
+    let line = span_line(text, table.span(), line);
+    let entries = table
+        .iter()
+        .map(|(k, item)| {
+            let key_line = table.key(k).and_then(|key| key.span()).map_or(line, |s| line_col(text, s.start).0);
+            (k.to_string(), toml_item(text, item, key_line))
+        })
+        .collect();
+    Node { value: Value::Table(entries), line }
+}
+
+fn toml_item(text: &str, item: &toml_edit::Item, line: usize) -> Node {
+    match item {
+        toml_edit::Item::None => Node { value: Value::Null, line },
+        toml_edit::Item::Value(v) => toml_value(text, v, line),
+        toml_edit::Item::Table(t) => toml_table(text, t, line),
+        toml_edit::Item::ArrayOfTables(a) => {
+            let items = a.iter().map(|t| toml_table(text, t, line)).collect();
+            Node { value: Value::Array(items), line }
+        }
+    }
+}
+
+fn toml_value(text: &str, v: &toml_edit::Value, line: usize) -> Node {
+    use toml_edit::Value as V;
+    let line = span_line(text, v.span(), line);
+    let raw = || v.span().map(|s| text[s].trim().to_string()).unwrap_or_else(|| v.to_string().trim().to_string());
+    let value = match v {
+        V::String(s) => Value::String(s.value().clone()),
+        V::Integer(_) | V::Float(_) => Value::Number(raw().replace('_', "")),
+        V::Boolean(b) => Value::Bool(*b.value()),
+        V::Datetime(_) => Value::String(raw()),
+        V::Array(a) => Value::Array(a.iter().map(|x| toml_value(text, x, line)).collect()),
+        V::InlineTable(t) => Value::Table(
+            t.iter()
+                .map(|(k, x)| {
+                    let key_line = t.key(k).and_then(|key| key.span()).map_or(line, |s| line_col(text, s.start).0);
+                    (k.to_string(), toml_value(text, x, key_line))
+                })
+                .collect(),
+        ),
+    };
+    Node { value, line }
+}
+
+struct JsonParser<'a> {
+    text: &'a [u8],
+    pos: usize,
+    file: &'a str,
+}
+
+const MAX_DEPTH: usize = 128;
+
+impl JsonParser<'_> {
+    fn line(&self) -> usize {
+        self.text[..self.pos].iter().filter(|&&b| b == b'\n').count() + 1
+    }
+
+    fn err(&self, message: &str) -> InputError {
+        let (line, col) = line_col(std::str::from_utf8(self.text).unwrap_or(""), self.pos);
+        InputError { file: self.file.into(), line: Some(line), column: Some(col), key: None, message: format!("invalid JSON: {message}") }
+    }
+
+    fn skip_ws(&mut self) {
+        while self.pos < self.text.len() && matches!(self.text[self.pos], b' ' | b'\t' | b'\n' | b'\r') {
+            self.pos += 1;
+        }
+    }
+
+    fn eat(&mut self, b: u8) -> bool {
+        self.skip_ws();
+        if self.text.get(self.pos) == Some(&b) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    fn value(&mut self, depth: usize) -> Result<Node, InputError> {
+        if depth > MAX_DEPTH {
+            return Err(self.err("nested too deeply"));
+        }
+        self.skip_ws();
+        let line = self.line();
+        let value = match self.text.get(self.pos) {
+            None => return Err(self.err("unexpected end of file")),
+            Some(b'{') => {
+                self.pos += 1;
+                let mut entries: Vec<(String, Node)> = Vec::new();
+                if !self.eat(b'}') {
+                    loop {
+                        self.skip_ws();
+                        let key_pos = self.pos;
+                        let key = self.string()?;
+                        if entries.iter().any(|(k, _)| *k == key) {
+                            self.pos = key_pos;
+                            return Err(self.err(&format!("duplicate key \"{key}\"")));
+                        }
+                        if !self.eat(b':') {
+                            return Err(self.err("expected ':' after a key"));
+                        }
+                        let v = self.value(depth + 1)?;
+                        entries.push((key, v));
+                        if self.eat(b',') {
+                            continue;
+                        }
+                        if self.eat(b'}') {
+                            break;
+                        }
+                        return Err(self.err("expected ',' or '}'"));
+                    }
+                }
+                Value::Table(entries)
+            }
+            Some(b'[') => {
+                self.pos += 1;
+                let mut items = Vec::new();
+                if !self.eat(b']') {
+                    loop {
+                        items.push(self.value(depth + 1)?);
+                        if self.eat(b',') {
+                            continue;
+                        }
+                        if self.eat(b']') {
+                            break;
+                        }
+                        return Err(self.err("expected ',' or ']'"));
+                    }
+                }
+                Value::Array(items)
+            }
+            Some(b'"') => Value::String(self.string()?),
+            Some(b't') if self.text[self.pos..].starts_with(b"true") => {
+                self.pos += 4;
+                Value::Bool(true)
+            }
+            Some(b'f') if self.text[self.pos..].starts_with(b"false") => {
+                self.pos += 5;
+                Value::Bool(false)
+            }
+            Some(b'n') if self.text[self.pos..].starts_with(b"null") => {
+                self.pos += 4;
+                Value::Null
+            }
+            Some(b'-' | b'0'..=b'9') => {
+                let start = self.pos;
+                while self.pos < self.text.len() && matches!(self.text[self.pos], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9') {
+                    self.pos += 1;
+                }
+                let s = std::str::from_utf8(&self.text[start..self.pos]).unwrap_or("").to_string();
+                Value::Number(s)
+            }
+            Some(_) => return Err(self.err("expected a value")),
+        };
+        Ok(Node { value, line })
+    }
+
+    fn string(&mut self) -> Result<String, InputError> {
+        if self.text.get(self.pos) != Some(&b'"') {
+            return Err(self.err("expected a string"));
+        }
+        self.pos += 1;
+        let mut out = Vec::new();
+        loop {
+            match self.text.get(self.pos) {
+                None => return Err(self.err("unterminated string")),
+                Some(b'"') => {
+                    self.pos += 1;
+                    break;
+                }
+                Some(b'\\') => {
+                    let esc = self.text.get(self.pos + 1).copied();
+                    self.pos += 2;
+                    match esc {
+                        Some(b'"') => out.push(b'"'),
+                        Some(b'\\') => out.push(b'\\'),
+                        Some(b'/') => out.push(b'/'),
+                        Some(b'b') => out.push(8),
+                        Some(b'f') => out.push(12),
+                        Some(b'n') => out.push(b'\n'),
+                        Some(b'r') => out.push(b'\r'),
+                        Some(b't') => out.push(b'\t'),
+                        Some(b'u') => {
+                            let hex = self.text.get(self.pos..self.pos + 4).and_then(|h| std::str::from_utf8(h).ok());
+                            let code = hex.and_then(|h| u32::from_str_radix(h, 16).ok()).ok_or_else(|| self.err("bad \\u escape"))?;
+                            self.pos += 4;
+                            let c = char::from_u32(code).unwrap_or('\u{fffd}');
+                            let mut buf = [0u8; 4];
+                            out.extend_from_slice(c.encode_utf8(&mut buf).as_bytes());
+                        }
+                        _ => return Err(self.err("bad escape in string")),
+                    }
+                }
+                Some(&b) => {
+                    out.push(b);
+                    self.pos += 1;
+                }
+            }
+        }
+        String::from_utf8(out).map_err(|_| self.err("string is not UTF-8"))
+    }
+}
+
+/// Typed access to a document's nodes, with errors that name the file, line and key.
+impl Document {
+    /// The root as a table.
+    pub fn root_table(&self) -> Result<&[(String, Node)], InputError> {
+        self.table(&self.root, "")
+    }
+
+    /// `node` as a table.
+    pub fn table<'a>(&self, node: &'a Node, key: &str) -> Result<&'a [(String, Node)], InputError> {
+        match &node.value {
+            Value::Table(t) => Ok(t),
+            other => Err(self.error(node, key, format!("expected a table, found {}", other.kind()))),
+        }
+    }
+
+    /// `node` as an array.
+    pub fn array<'a>(&self, node: &'a Node, key: &str) -> Result<&'a [Node], InputError> {
+        match &node.value {
+            Value::Array(a) => Ok(a),
+            other => Err(self.error(node, key, format!("expected an array, found {}", other.kind()))),
+        }
+    }
+
+    /// `node` as a string.
+    pub fn string<'a>(&self, node: &'a Node, key: &str) -> Result<&'a str, InputError> {
+        match &node.value {
+            Value::String(s) => Ok(s),
+            other => Err(self.error(node, key, format!("expected a string, found {}", other.kind()))),
+        }
+    }
+
+    /// `node` as a non-negative integer.
+    pub fn usize(&self, node: &Node, key: &str) -> Result<usize, InputError> {
+        let text = match &node.value {
+            Value::Number(t) | Value::String(t) => t.trim(),
+            other => return Err(self.error(node, key, format!("expected a non-negative integer, found {}", other.kind()))),
+        };
+        text.parse::<usize>()
+            .map_err(|_| self.error(node, key, format!("`{text}` is not a non-negative integer")))
+    }
+
+    /// `node` as an exact rational: a number (its text) or a string in the number syntax.
+    pub fn rational(&self, node: &Node, key: &str) -> Result<BigRational, InputError> {
+        let text = match &node.value {
+            Value::Number(t) | Value::String(t) => t,
+            other => return Err(self.error(node, key, format!("expected a number, found {}", other.kind()))),
+        };
+        parse_rational(text).map_err(|e| self.error(node, key, e.to_string()))
+    }
+
+    /// `node` as an array of rationals.
+    pub fn rationals(&self, node: &Node, key: &str) -> Result<Vec<BigRational>, InputError> {
+        self.array(node, key)?
+            .iter()
+            .enumerate()
+            .map(|(i, x)| self.rational(x, &format!("{key}[{i}]")))
+            .collect()
+    }
+
+    /// Look up `name` in a table; the keys it does not know are reported by the caller.
+    pub fn get<'a>(table: &'a [(String, Node)], name: &str) -> Option<&'a Node> {
+        table.iter().find(|(k, _)| k == name).map(|(_, v)| v)
+    }
+
+    /// Reject keys outside `known` (a typo should not be silently ignored).
+    pub fn check_keys(&self, node: &Node, table: &[(String, Node)], known: &[&str], prefix: &str) -> Result<(), InputError> {
+        for (k, v) in table {
+            if !known.contains(&k.as_str()) {
+                let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+                let _ = node;
+                return Err(self.error(v, &key, format!("unknown key (expected one of: {})", known.join(", "))));
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn json_keeps_number_text_and_lines() {
+        let d = Document::parse_json("x.json", "{\n \"a\": 0.1,\n \"b\": [1e-3, \"4/9\"]\n}").unwrap();
+        let t = d.root_table().unwrap();
+        assert_eq!(t[0].1, Node { value: Value::Number("0.1".into()), line: 2 });
+        assert_eq!(d.rational(&t[0].1, "a").unwrap().to_string(), "1/10");
+        assert_eq!(t[1].1.line, 3);
+    }
+
+    #[test]
+    fn json_rejects_duplicate_keys_with_position() {
+        let e = Document::parse_json("x.json", "{\"a\": 1,\n \"a\": 2}").unwrap_err();
+        assert_eq!(e.line, Some(2));
+        assert!(e.message.contains("duplicate key \"a\""), "{e}");
+    }
+
+    #[test]
+    fn toml_keeps_number_text() {
+        let d = Document::parse_toml("x.toml", "a = 0.1\n\n[t]\nb = [1_000, -1.5e-3]\n").unwrap();
+        let t = d.root_table().unwrap();
+        assert_eq!(d.rational(&t[0].1, "a").unwrap().to_string(), "1/10");
+        let inner = d.table(&t[1].1, "t").unwrap();
+        assert_eq!(inner[0].1.line, 4);
+        let xs = d.rationals(&inner[0].1, "t.b").unwrap();
+        assert_eq!(xs[0].to_string(), "1000");
+        assert_eq!(xs[1].to_string(), "-3/2000");
+    }
+
+    #[test]
+    fn empty_and_garbage_are_errors() {
+        assert!(Document::parse_json("x.json", "  ").unwrap_err().message.contains("empty"));
+        assert_eq!(Document::parse_json("x.json", "{\"a\": }").unwrap_err().line, Some(1));
+        let e = Document::parse_toml("x.toml", "a = 1\nb = = 2\n").unwrap_err();
+        assert_eq!(e.line, Some(2));
+    }
+}
