@@ -101,3 +101,115 @@ pub fn dvec3_points(net: &ControlNet<f64>) -> Vec<DVec3> {
 pub fn vec3_points(net: &ControlNet<f32>) -> Vec<Vec3> {
     net.points().map(|p| Vec3::new(p[0], p[1], p[2])).collect()
 }
+
+/// A machine float that tribez can round to, convert exactly, and judge in ULPs.
+pub trait Float: crate::scalar::Scalar + Copy + PartialOrd + Send + Sync + 'static {
+    /// Its precision.
+    const PRECISION: Precision;
+    /// The float nearest `q` (ties to even), computed from `q` directly.
+    fn round(q: &BigRational) -> Self;
+    /// Its exact value (`None` for NaN and infinities).
+    fn exact(self) -> Option<BigRational>;
+    /// C99 hex-float text.
+    fn hex(self) -> String;
+    /// Shortest round-trip decimal text.
+    fn decimal(self) -> String;
+    /// `|x − q| / ulp(q)` exactly, for `x` the exact value of a float of this precision.
+    fn ulps(x: &BigRational, q: &BigRational) -> BigRational;
+    /// Is this finite?
+    fn finite(self) -> bool;
+    /// As f64 (exact widening).
+    fn widen(self) -> f64;
+}
+
+impl Float for f64 {
+    const PRECISION: Precision = Precision::F64;
+    fn round(q: &BigRational) -> Self {
+        round_f64(q)
+    }
+    fn exact(self) -> Option<BigRational> {
+        crate::number::exact_f64(self)
+    }
+    fn hex(self) -> String {
+        crate::number::hex_f64(self)
+    }
+    fn decimal(self) -> String {
+        crate::number::display_f64(self)
+    }
+    fn ulps(x: &BigRational, q: &BigRational) -> BigRational {
+        crate::number::ulps_error_f64(x, q)
+    }
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+    fn widen(self) -> f64 {
+        self
+    }
+}
+
+impl Float for f32 {
+    const PRECISION: Precision = Precision::F32;
+    fn round(q: &BigRational) -> Self {
+        round_f32(q)
+    }
+    fn exact(self) -> Option<BigRational> {
+        crate::number::exact_f32(self)
+    }
+    fn hex(self) -> String {
+        crate::number::hex_f32(self)
+    }
+    fn decimal(self) -> String {
+        crate::number::display_f32(self)
+    }
+    fn ulps(x: &BigRational, q: &BigRational) -> BigRational {
+        crate::number::ulps_error_f32(x, q)
+    }
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+    fn widen(self) -> f64 {
+        f64::from(self)
+    }
+}
+
+/// The control net rounded to the float type `F`.
+pub fn net_to<F: Float>(net: &ControlNet<BigRational>) -> ControlNet<F> {
+    net.map(F::round)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::casteljau;
+    use crate::number::parse_rational;
+    use crate::simplex::Simplex;
+
+    fn pseudo_random_net(n: usize, seed: u64) -> ControlNet<BigRational> {
+        let mut s = seed;
+        let mut next = || {
+            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (s >> 33) as i64 % 2001 - 1000
+        };
+        let simplex = Simplex::new(2, n);
+        let coords = (0..simplex.len() * 3).map(|_| BigRational::new(next().into(), (next().abs() + 1).into())).collect();
+        ControlNet::new(simplex, 3, coords)
+    }
+
+    #[test]
+    fn glam_kernels_are_bit_identical_to_the_generic_code() {
+        for n in [0, 1, 2, 3, 7, 12] {
+            let net = pseudo_random_net(n, n as u64 + 7);
+            let u = ["0.2", "0.7", "0.1"].map(|t| parse_rational(t).unwrap());
+            let n64 = net_f64(&net);
+            let u64_: Vec<f64> = u.iter().map(round_f64).collect();
+            let generic = casteljau::evaluate(&n64, &u64_);
+            let fast = casteljau_dvec3(&dvec3_points(&n64), n, [u64_[0], u64_[1], u64_[2]]);
+            assert_eq!(generic, vec![fast.x, fast.y, fast.z]);
+            let n32 = net_f32(&net);
+            let u32_: Vec<f32> = u.iter().map(round_f32).collect();
+            let generic = casteljau::evaluate(&n32, &u32_);
+            let fast = casteljau_vec3(&vec3_points(&n32), n, [u32_[0], u32_[1], u32_[2]]);
+            assert_eq!(generic, vec![fast.x, fast.y, fast.z]);
+        }
+    }
+}

@@ -24,6 +24,9 @@
 
 pub mod bernstein;
 pub mod casteljau;
+pub mod claims;
+pub mod cli;
+pub mod commands;
 pub mod domain;
 pub mod error;
 pub mod exact;
@@ -31,6 +34,7 @@ pub mod float;
 pub mod io;
 pub mod number;
 pub mod patch;
+pub mod report;
 pub mod scalar;
 pub mod simplex;
 pub mod symbolic;

@@ -3,6 +3,7 @@
 //! This layer depends on the core and never the reverse.
 
 pub mod patch_file;
+pub mod points;
 pub mod tree;
 
 use std::fmt;

@@ -1,0 +1,228 @@
+//! Claims: one format for the worked examples of the sources (`fixtures/`) and for the outputs of
+//! other code. A claim names an operation, its inputs, the claimed value and a tolerance;
+//! tribez computes the exact value and judges the claim.
+//!
+//! ```toml
+//! source = "seed 002: D. L. Finn, MA 323 course notes, Day 30"
+//! patch = "finn_day30.toml"            # a patch file beside this one, or an inline [patch] table
+//!
+//! [[claim]]
+//! id = "worked-example-a"
+//! op = "eval"
+//! at = ["1/2", "1/3", "1/6"]
+//! expect = ["4/9", "5/9", "29/36"]
+//! source = "§30.1, example (a)"
+//!
+//! [[claim]]
+//! id = "worked-example-b-x"
+//! op = "symbolic"
+//! expect = ["2uv + v^2 + vw", "2uw + 2vw + 2v^2 + 2w^2", "4uv + 2vw + w^2"]
+//! erratum = "the printed x-component is wrong: 2uv + 2vw (FORMULAS.md §15)"
+//! ```
+//!
+//! A claim marked `erratum` records a value that the source prints and that is known to be
+//! wrong: its disagreement is listed as an erratum and does not fail the run; if it ever
+//! agrees, the stale erratum fails the run.
+
+pub mod ops;
+pub mod value;
+
+use std::path::{Path, PathBuf};
+
+use crate::io::InputError;
+use crate::io::patch_file::patch_from_document;
+use crate::io::tree::{Document, Node, Value as NodeValue};
+use crate::patch::Patch;
+use value::{Mismatch, Value, compare_exact};
+
+/// Keys a claim file may have at its top level.
+pub const FILE_KEYS: &[&str] = &["source", "description", "patch", "patches", "claim"];
+/// Keys every claim may have, besides its operation's own inputs.
+pub const CLAIM_KEYS: &[&str] = &["id", "op", "source", "expect", "erratum", "tolerance", "note"];
+
+/// A parsed claim file.
+pub struct ClaimFile {
+    /// The file.
+    pub path: PathBuf,
+    /// Its document (claims are read lazily from it).
+    pub doc: Document,
+    /// Where the claims come from.
+    pub source: Option<String>,
+    /// Named patches: `""` for the file's `patch`, else the names under `[patches]`.
+    pub patches: Vec<(String, Patch)>,
+    /// The claims in file order.
+    pub claims: Vec<Claim>,
+}
+
+/// One claim.
+pub struct Claim {
+    /// Identifier (unique in its file).
+    pub id: String,
+    /// Operation name.
+    pub op: String,
+    /// The claim's table.
+    pub node: Node,
+    /// Where in the source the claimed value is printed.
+    pub source: Option<String>,
+    /// Set when the claimed value is a known misprint; the text says what is wrong.
+    pub erratum: Option<String>,
+}
+
+/// How a claim came out.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
+    /// The claimed value is right.
+    Holds,
+    /// The claimed value is wrong.
+    Fails(Vec<Mismatch>),
+    /// Wrong, and recorded as a known erratum of the source.
+    KnownErratum(Vec<Mismatch>),
+    /// Recorded as an erratum, yet it agrees with the exact value: the record is stale.
+    StaleErratum,
+}
+
+impl Verdict {
+    /// Does this verdict fail a run?
+    pub fn fails_run(&self) -> bool {
+        matches!(self, Verdict::Fails(_) | Verdict::StaleErratum)
+    }
+}
+
+/// A judged claim.
+pub struct Judged {
+    /// The claim file.
+    pub file: String,
+    /// The claim id.
+    pub id: String,
+    /// The operation.
+    pub op: String,
+    /// The source reference.
+    pub source: Option<String>,
+    /// The erratum note, if any.
+    pub erratum: Option<String>,
+    /// The exact value.
+    pub exact: Value,
+    /// The claimed value.
+    pub claimed: Value,
+    /// The verdict.
+    pub verdict: Verdict,
+}
+
+fn resolve_patch(doc: &Document, node: &Node, key: &str, dir: &Path) -> Result<Patch, InputError> {
+    match &node.value {
+        NodeValue::String(rel) => {
+            let path = dir.join(rel);
+            crate::io::patch_file::read_patch(&path).map_err(|mut e| {
+                if e.line.is_none() {
+                    e.message = format!("{} (patch named at {}:{}: {key})", e.message, doc.file, node.line);
+                }
+                e
+            })
+        }
+        NodeValue::Table(_) => patch_from_document(doc, node, key),
+        other => Err(doc.error(node, key, format!("expected a patch file name or an inline patch table, found {}", other.kind()))),
+    }
+}
+
+impl ClaimFile {
+    /// Read a claim file (TOML or JSON).
+    pub fn read(path: &Path) -> Result<Self, InputError> {
+        let doc = Document::read(path)?;
+        let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+        let root = doc.root_table()?;
+        doc.check_keys(&doc.root, root, FILE_KEYS, "")?;
+        let source = Document::get(root, "source").map(|n| doc.string(n, "source").map(str::to_string)).transpose()?;
+        let mut patches = Vec::new();
+        if let Some(p) = Document::get(root, "patch") {
+            patches.push((String::new(), resolve_patch(&doc, p, "patch", &dir)?));
+        }
+        if let Some(ps) = Document::get(root, "patches") {
+            for (name, p) in doc.table(ps, "patches")? {
+                patches.push((name.clone(), resolve_patch(&doc, p, &format!("patches.{name}"), &dir)?));
+            }
+        }
+        let mut claims = Vec::new();
+        let list = Document::get(root, "claim").ok_or_else(|| doc.error(&doc.root, "claim", "no claims (expected [[claim]] tables)"))?;
+        for (i, c) in doc.array(list, "claim")?.iter().enumerate() {
+            let key = format!("claim[{i}]");
+            let t = doc.table(c, &key)?;
+            let get_str = |name: &str| -> Result<Option<String>, InputError> {
+                Document::get(t, name).map(|n| doc.string(n, &format!("{key}.{name}")).map(str::to_string)).transpose()
+            };
+            let op = get_str("op")?.ok_or_else(|| doc.error(c, &key, "missing key `op`"))?;
+            let id = get_str("id")?.unwrap_or_else(|| format!("{op}-{}", i + 1));
+            if claims.iter().any(|x: &Claim| x.id == id) {
+                return Err(doc.error(c, &format!("{key}.id"), format!("duplicate claim id `{id}`")));
+            }
+            claims.push(Claim { id, op, node: c.clone(), source: get_str("source")?, erratum: get_str("erratum")? });
+        }
+        Ok(ClaimFile { path: path.to_path_buf(), doc, source, patches, claims })
+    }
+
+    /// The patch a claim refers to (`patch = "name"` in the claim, else the file's patch).
+    pub fn patch_for(&self, claim: &Claim) -> Result<&Patch, InputError> {
+        let t = self.doc.table(&claim.node, &claim.id)?;
+        let name = match Document::get(t, "patch") {
+            Some(n) => self.doc.string(n, &format!("{}.patch", claim.id))?.to_string(),
+            None => String::new(),
+        };
+        self.patches.iter().find(|(n, _)| *n == name).map(|(_, p)| p).ok_or_else(|| {
+            if name.is_empty() {
+                self.doc.error(&claim.node, &claim.id, "this claim needs a patch: give `patch` at the top of the file")
+            } else {
+                self.doc.error(&claim.node, &format!("{}.patch", claim.id), format!("no patch named `{name}` under [patches]"))
+            }
+        })
+    }
+
+    /// Judge every claim.
+    pub fn judge_all(&self) -> Result<Vec<Judged>, InputError> {
+        self.claims.iter().map(|c| self.judge(c)).collect()
+    }
+
+    /// Judge one claim.
+    pub fn judge(&self, claim: &Claim) -> Result<Judged, InputError> {
+        let exact = ops::exact_value(self, claim)?;
+        let t = self.doc.table(&claim.node, &claim.id)?;
+        let expect = Document::get(t, "expect").ok_or_else(|| self.doc.error(&claim.node, &claim.id, "missing key `expect` (the claimed value)"))?;
+        let claimed = ops::read_claimed(&self.doc, expect, &exact, &format!("{}.expect", claim.id))?;
+        let mut mismatches = Vec::new();
+        compare_exact(&claimed, &exact, "", &mut mismatches);
+        let verdict = match (mismatches.is_empty(), claim.erratum.is_some()) {
+            (true, false) => Verdict::Holds,
+            (true, true) => Verdict::StaleErratum,
+            (false, false) => Verdict::Fails(mismatches),
+            (false, true) => Verdict::KnownErratum(mismatches),
+        };
+        Ok(Judged {
+            file: self.path.display().to_string(),
+            id: claim.id.clone(),
+            op: claim.op.clone(),
+            source: claim.source.clone().or_else(|| self.source.clone()),
+            erratum: claim.erratum.clone(),
+            exact,
+            claimed,
+            verdict,
+        })
+    }
+}
+
+/// The claim files under `dir` (recursively): `*.claims.toml` and `*.claims.json`, sorted.
+pub fn find_claim_files(dir: &Path) -> Result<Vec<PathBuf>, InputError> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        let entries = std::fs::read_dir(&d).map_err(|e| InputError::file(d.display().to_string(), format!("cannot read directory: {e}")))?;
+        for entry in entries.flatten() {
+            let p = entry.path();
+            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
+            if p.is_dir() {
+                stack.push(p);
+            } else if name.ends_with(".claims.toml") || name.ends_with(".claims.json") {
+                out.push(p);
+            }
+        }
+    }
+    out.sort();
+    Ok(out)
+}

@@ -1,0 +1,40 @@
+//! Command-line arguments (clap derive). Each subcommand's arguments live beside its code in
+//! [`crate::commands`].
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand};
+
+use crate::commands;
+use crate::report::Format;
+
+/// Exact computations on Bézier triangles (and simplices), used to certify floating-point code.
+#[derive(Debug, Parser)]
+#[command(name = "tribez", version, about, long_about = None, propagate_version = true)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands; each maps to one function in `src/commands/<name>.rs`.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Check every claim of the built-in fixtures (or of DIR) and list errata separately.
+    Reproduce(commands::reproduce::Args),
+    /// Evaluate a patch exactly at barycentric (or Cartesian) points; optionally show f64/f32 results and their errors.
+    Eval(commands::eval::Args),
+    /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
+    Symbolic(commands::symbolic::Args),
+}
+
+/// Output options shared by every command.
+#[derive(Debug, Clone, clap::Args)]
+pub struct OutputArgs {
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Write the output to FILE (whole or not at all) instead of standard output.
+    #[arg(long, short = 'o', value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
