@@ -6,6 +6,13 @@
 //! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names` | one polynomial per coordinate |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
+//! | `implicit` | `equation` (a polynomial in the coordinates), optional `coordinates` (their names, default `x, y, z`), `names` | the residual `W^k F(X/W)` as a polynomial in the patch's variables (barycentric; `x, y` for an S-patch); `"0"` proves the whole patch lies on `F = 0` |
+//! | `wachspress` | `cartesian` (a point of an S-patch's polygon) | `{ A = [A_j], C = [C_i], lambda = [λ_i] }` (FORMULAS.md §12) |
+//! | `abscissae` | (a functional or Bézier patch) | the Bézier abscissae `ξ_α` keyed by multi-index |
+//! | `ordinates` | `domain`, `degree`, `function` (polynomial in `x, y`, or `names`) | the control ordinates `b_α` keyed by multi-index |
+//! | `graph` | (a functional patch) | the control points `(ξ_α, b_α)` of its graph, keyed by multi-index |
+//!
+//! `eval` also takes rational patches (`at` or `cartesian`) and S-patches (`cartesian` only).
 //!
 //! Each op lists the keys it reads; any other key in a claim is an error (a typo must not be
 //! silently ignored).
@@ -18,12 +25,13 @@ use crate::bernstein;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
 use crate::io::patch_file::index_key;
+use crate::patch::AnyPatch;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names};
 
 /// Every operation name, for messages.
-pub const OPS: &[&str] = &["eval", "symbolic", "basis", "basis_sum"];
+pub const OPS: &[&str] = &["eval", "symbolic", "basis", "basis_sum", "implicit", "wachspress", "abscissae", "ordinates", "graph"];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
 fn op_keys(op: &str) -> Option<&'static [&'static str]> {
@@ -31,6 +39,10 @@ fn op_keys(op: &str) -> Option<&'static [&'static str]> {
         "eval" => &["patch", "at", "cartesian"],
         "symbolic" => &["patch", "variables", "names"],
         "basis" | "basis_sum" => &["degree", "simplex", "names", "at", "variables"],
+        "implicit" => &["patch", "equation", "coordinates", "names"],
+        "wachspress" => &["patch", "cartesian"],
+        "abscissae" | "graph" => &["patch"],
+        "ordinates" => &["domain", "degree", "function", "names"],
         _ => return None,
     })
 }
@@ -127,6 +139,12 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
     file.doc.check_keys(&claim.node, table, &allowed, &claim.id)?;
     let inputs = Inputs { file, claim, table };
     match claim.op.as_str() {
+        "eval" if !matches!(file.any_patch_for(claim)?, AnyPatch::Bezier(_) | AnyPatch::Functional(_)) => beyond::eval(&inputs),
+        "implicit" => beyond::implicit(&inputs),
+        "wachspress" => beyond::wachspress(&inputs),
+        "abscissae" => beyond::abscissae(&inputs),
+        "ordinates" => beyond::ordinates(&inputs),
+        "graph" => beyond::graph(&inputs),
         "eval" => {
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
@@ -144,6 +162,122 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
         _ => unreachable!("op_keys covers every operation"),
+    }
+}
+
+/// The operations of issue 5 (rational patches, S-patches, functional patches).
+mod beyond {
+    use num_rational::BigRational;
+
+    use super::{Inputs, Value};
+    use crate::functional;
+    use crate::io::InputError;
+    use crate::io::patch_file::index_key;
+    use crate::patch::AnyPatch;
+    use crate::rational::homogenised_residual;
+    use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_names};
+
+    fn map(simplex: &crate::simplex::Simplex, values: impl Iterator<Item = Value>) -> Value {
+        Value::Map(simplex.iter().map(index_key).zip(values).collect())
+    }
+
+    /// `eval` on a rational patch or an S-patch.
+    pub fn eval(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        match inputs.file.any_patch_for(inputs.claim)? {
+            AnyPatch::Rational(r) => {
+                let at = inputs.point(&r.patch)?;
+                let key = if inputs.get("at").is_some() { "at" } else { "cartesian" };
+                r.evaluate(&at).map(|v| Value::numbers(&v)).map_err(|e| inputs.error(key, e.to_string()))
+            }
+            AnyPatch::SPatch(s) => {
+                if inputs.get("at").is_some() {
+                    return Err(inputs.error("at", "an S-patch takes Cartesian points: use `cartesian`"));
+                }
+                let x = inputs.rationals("cartesian")?;
+                s.evaluate(&x).map(|(_, v)| Value::numbers(&v)).map_err(|e| inputs.error("cartesian", e.to_string()))
+            }
+            AnyPatch::Bezier(_) | AnyPatch::Functional(_) => unreachable!("handled by the plain `eval`"),
+        }
+    }
+
+    /// The residual of an implicit equation on a patch of any kind.
+    pub fn implicit(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let any = inputs.file.any_patch_for(inputs.claim)?;
+        let (x, w, default_names) = match any {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+                let m = p.net.m();
+                (barycentric_form(&p.net), Polynomial::constant(m + 1, num_traits::One::one()), barycentric_names(m))
+            }
+            AnyPatch::Rational(r) => {
+                let mut h = r.homogeneous_form();
+                let w = h.pop().expect("weight component");
+                (h, w, barycentric_names(r.patch.net.m()))
+            }
+            AnyPatch::SPatch(s) => {
+                let (nums, den) = s.rational_form();
+                (nums, den, cartesian_names(2))
+            }
+        };
+        let d = x.len();
+        let coords: Vec<String> = match inputs.opt_strings("coordinates")? {
+            Some(c) if c.len() != d => return Err(inputs.error("coordinates", format!("{} names given, the points have {d} coordinates", c.len()))),
+            Some(c) => c,
+            None => cartesian_names(d),
+        };
+        let text = inputs.opt_string("equation")?.ok_or_else(|| inputs.error("equation", "missing input `equation`"))?;
+        let refs: Vec<&str> = coords.iter().map(String::as_str).collect();
+        let f = Polynomial::parse(&text, &refs).map_err(|e| inputs.error("equation", format!("`{text}`: {e}")))?;
+        let names = inputs.names(default_names)?;
+        Ok(Value::Poly(homogenised_residual(&f, &x, &w), names))
+    }
+
+    /// Wachspress data of an S-patch's polygon at a point.
+    pub fn wachspress(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let AnyPatch::SPatch(s) = inputs.file.any_patch_for(inputs.claim)? else {
+            return Err(inputs.error("patch", "`wachspress` needs an S-patch (a patch file with `polygon`)"));
+        };
+        let x = inputs.rationals("cartesian")?;
+        let lambda = s.polygon.wachspress(&x).map_err(|e| inputs.error("cartesian", e.to_string()))?;
+        let p = [x[0].clone(), x[1].clone()];
+        Ok(Value::Map(vec![
+            ("A".into(), Value::numbers(&s.polygon.areas(&p))),
+            ("C".into(), Value::numbers(&s.polygon.corner_areas())),
+            ("lambda".into(), Value::numbers(&lambda)),
+        ]))
+    }
+
+    /// The Bézier abscissae of a patch's domain and degree.
+    pub fn abscissae(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let p = inputs.patch()?;
+        let xi = functional::abscissae(&p.domain_or_reference(), p.net.degree());
+        Ok(map(p.net.simplex(), xi.iter().map(|x| Value::numbers(x))))
+    }
+
+    /// The graph of a functional patch.
+    pub fn graph(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let AnyPatch::Functional(p) = inputs.file.any_patch_for(inputs.claim)? else {
+            return Err(inputs.error("patch", "`graph` needs a functional patch (kind = \"functional\")"));
+        };
+        let g = functional::graph(p).map_err(|e| inputs.error("patch", e.to_string()))?;
+        Ok(map(g.net.simplex(), g.net.points().map(Value::numbers)))
+    }
+
+    /// Control ordinates of a polynomial over a domain.
+    pub fn ordinates(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let node = inputs.get("domain").ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
+        let doc = &inputs.file.doc;
+        let m = doc.array(node, "domain")?.len().saturating_sub(1);
+        let domain = crate::io::patch_file::domain(doc, node, m, &format!("{}.domain", inputs.claim.id))?;
+        let n = inputs.opt_usize("degree")?.ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+        if n > crate::io::patch_file::MAX_DEGREE {
+            return Err(inputs.error("degree", "degree out of range"));
+        }
+        let names = inputs.names(cartesian_names(m))?;
+        let text = inputs.opt_string("function")?.ok_or_else(|| inputs.error("function", "missing input `function`"))?;
+        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let f = Polynomial::parse(&text, &refs).map_err(|e| inputs.error("function", format!("`{text}`: {e}")))?;
+        let b: Vec<BigRational> = functional::ordinates(&domain, n, &f).map_err(|e| inputs.error("function", e.to_string()))?;
+        Ok(map(&crate::simplex::Simplex::new(m, n), b.into_iter().map(Value::Number)))
     }
 }
 

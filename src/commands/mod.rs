@@ -1,6 +1,8 @@
 //! One module per command; [`main`] dispatches and maps outcomes to exit statuses.
 
 pub mod eval;
+pub mod eval_beyond;
+pub mod graph;
 pub mod reproduce;
 pub mod symbolic;
 
@@ -65,6 +67,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Graph(a) => (graph::run(a), &a.out),
     };
     match result.and_then(|o| emit(&o, out).map(|()| o.success)) {
         Ok(true) => 0,

@@ -1,0 +1,53 @@
+//! `tribez graph`: the graph `(x, y, f(x, y))` of a functional patch as a parametric patch file
+//! (FORMULAS.md §13: control points `(ξ_α, b_α)` at the Bézier abscissae).
+
+use std::path::PathBuf;
+
+use serde_json::Value as Json;
+
+use super::{CliError, Outcome};
+use crate::cli::OutputArgs;
+use crate::functional::graph;
+use crate::io::patch_file::{patch_to_json, patch_to_toml, read_any_patch};
+use crate::patch::{AnyPatch, Patch};
+use crate::report::Render;
+
+/// Arguments of `tribez graph`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// A functional patch file (`kind = "functional"`).
+    pub patch: PathBuf,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// The graph patch; text output is the TOML patch file itself.
+pub struct GraphReport {
+    patch: Patch,
+}
+
+/// Run `tribez graph`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let file = args.patch.display().to_string();
+    let patch = match read_any_patch(&args.patch)? {
+        AnyPatch::Functional(p) => p,
+        other => {
+            return Err(CliError::Usage(format!(
+                "{file}: `tribez graph` takes a functional patch (kind = \"functional\"), this is a {} patch",
+                other.kind_name()
+            )));
+        }
+    };
+    let g = graph(&patch).map_err(|e| CliError::core(&file, e))?;
+    Outcome::rendered(&GraphReport { patch: g }, args.out.format, true)
+}
+
+impl Render for GraphReport {
+    fn text(&self) -> String {
+        patch_to_toml(&self.patch)
+    }
+
+    fn json(&self) -> Json {
+        patch_to_json(&self.patch)
+    }
+}
