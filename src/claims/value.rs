@@ -79,8 +79,10 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
                 compare_exact(x, y, &format!("{path}[{i}]"), out);
             }
         }
-        (Value::Map(a), Value::Map(b)) if a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.0 == y.0) => {
-            for ((k, x), (_, y)) in a.iter().zip(b) {
+        (Value::Map(a), Value::Map(b)) if a.len() == b.len() && b.iter().all(|(k, _)| a.iter().any(|(j, _)| j == k)) => {
+            // Keys are matched by name: a file may list them in any order.
+            for (k, y) in b {
+                let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
                 compare_exact(x, y, &format!("{path}.\"{k}\""), out);
             }
         }
