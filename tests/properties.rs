@@ -26,7 +26,8 @@ fn rational() -> impl Strategy<Value = BigRational> {
 fn net() -> impl Strategy<Value = ControlNet<BigRational>> {
     (1usize..=3, 0usize..=5, 1usize..=3).prop_flat_map(|(m, n, d)| {
         let len = Simplex::new(m, n).len() * d;
-        proptest::collection::vec(rational(), len).prop_map(move |c| ControlNet::new(Simplex::new(m, n), d, c))
+        proptest::collection::vec(rational(), len)
+            .prop_map(move |c| ControlNet::new(Simplex::new(m, n), d, c))
     })
 }
 
