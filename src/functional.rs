@@ -49,7 +49,11 @@ pub fn abscissae(domain: &Domain, n: usize) -> Vec<Vec<BigRational>> {
                         let s: BigRational = domain.vertices().iter().map(|v| v[c].clone()).sum();
                         return s / BigRational::from_integer((m + 1).into());
                     }
-                    let s: BigRational = alpha.iter().zip(domain.vertices()).map(|(&a, v)| BigRational::from_integer(a.into()) * &v[c]).sum();
+                    let s: BigRational = alpha
+                        .iter()
+                        .zip(domain.vertices())
+                        .map(|(&a, v)| BigRational::from_integer(a.into()) * &v[c])
+                        .sum();
                     s / &denom
                 })
                 .collect()
@@ -68,10 +72,14 @@ pub fn graph(patch: &Patch) -> Result<Patch, CoreError> {
     }
     let domain = patch.domain_or_reference();
     let xi = abscissae(&domain, patch.net.degree());
-    let points: Vec<Vec<BigRational>> = xi.into_iter().zip(patch.net.points()).map(|(mut x, b)| {
-        x.push(b[0].clone());
-        x
-    }).collect();
+    let points: Vec<Vec<BigRational>> = xi
+        .into_iter()
+        .zip(patch.net.points())
+        .map(|(mut x, b)| {
+            x.push(b[0].clone());
+            x
+        })
+        .collect();
     Ok(Patch {
         name: patch.name.as_ref().map(|n| format!("graph of {n}")),
         net: ControlNet::from_points(patch.net.m(), patch.net.degree(), &points),
@@ -84,20 +92,34 @@ pub fn graph(patch: &Patch) -> Result<Patch, CoreError> {
 pub fn ordinates(domain: &Domain, n: usize, f: &Polynomial) -> Result<Vec<BigRational>, CoreError> {
     let m = domain.m();
     if f.nvars() != m {
-        return Err(CoreError::WrongLength { what: "the function's variables".into(), expected: m, found: f.nvars() });
+        return Err(CoreError::WrongLength {
+            what: "the function's variables".into(),
+            expected: m,
+            found: f.nvars(),
+        });
     }
     let deg = f.degree().unwrap_or(0) as usize;
     if deg > n {
-        return Err(CoreError::Invalid(format!("the function has degree {deg}, above the patch degree {n}")));
+        return Err(CoreError::Invalid(format!(
+            "the function has degree {deg}, above the patch degree {n}"
+        )));
     }
     let nv = m + 1;
     // x_c = Σ_k λ_k a_k[c]
     let subs: Vec<Polynomial> = (0..m)
         .map(|c| {
-            domain.vertices().iter().enumerate().fold(Polynomial::zero(nv), |acc, (k, v)| acc.add(&Polynomial::variable(nv, k).scale(&v[c])))
+            domain
+                .vertices()
+                .iter()
+                .enumerate()
+                .fold(Polynomial::zero(nv), |acc, (k, v)| {
+                    acc.add(&Polynomial::variable(nv, k).scale(&v[c]))
+                })
         })
         .collect();
-    let sum = (0..nv).fold(Polynomial::zero(nv), |acc, k| acc.add(&Polynomial::variable(nv, k)));
+    let sum = (0..nv).fold(Polynomial::zero(nv), |acc, k| {
+        acc.add(&Polynomial::variable(nv, k))
+    });
     let mut hom = Polynomial::zero(nv);
     for (e, c) in f.terms() {
         let term = Polynomial::monomial(m, e.to_vec(), c.clone()).compose(&subs);
@@ -105,14 +127,20 @@ pub fn ordinates(domain: &Domain, n: usize, f: &Polynomial) -> Result<Vec<BigRat
         hom = hom.add(&term.mul(&sum.pow(n as u32 - total)));
     }
     let simplex = Simplex::new(m, n);
-    let coeffs: Vec<(Vec<u32>, BigRational)> = hom.terms().into_iter().map(|(e, c)| (e.to_vec(), c.clone())).collect();
+    let coeffs: Vec<(Vec<u32>, BigRational)> = hom
+        .terms()
+        .into_iter()
+        .map(|(e, c)| (e.to_vec(), c.clone()))
+        .collect();
     Ok(simplex
         .iter()
         .map(|alpha| {
             coeffs
                 .iter()
                 .find(|(e, _)| e.as_slice() == alpha)
-                .map_or_else(BigRational::zero, |(_, c)| c / BigRational::from_integer(multinomial(alpha).into()))
+                .map_or_else(BigRational::zero, |(_, c)| {
+                    c / BigRational::from_integer(multinomial(alpha).into())
+                })
         })
         .collect())
 }
@@ -147,20 +175,34 @@ mod tests {
         assert_eq!(cartesian_form(&p.net, &tri()), vec![l.clone()]);
         let g = graph(&p).unwrap();
         let forms = cartesian_form(&g.net, &tri());
-        assert_eq!(forms, vec![Polynomial::parse("x", &xy).unwrap(), Polynomial::parse("y", &xy).unwrap(), l]);
+        assert_eq!(
+            forms,
+            vec![
+                Polynomial::parse("x", &xy).unwrap(),
+                Polynomial::parse("y", &xy).unwrap(),
+                l
+            ]
+        );
     }
 
     #[test]
     fn xy_ordinates_from_the_polar_form() {
         // b200 = x1 y1 = 1, b110 = 7/2, b020 = 10, b101 = 4, b011 = 17, b002 = 12
         let f = Polynomial::parse("x*y", &["x", "y"]).unwrap();
-        assert_eq!(ordinates(&tri(), 2, &f).unwrap(), r(&["1", "7/2", "10", "4", "17", "12"]));
+        assert_eq!(
+            ordinates(&tri(), 2, &f).unwrap(),
+            r(&["1", "7/2", "10", "4", "17", "12"])
+        );
         assert!(ordinates(&tri(), 1, &f).is_err());
     }
 
     #[test]
     fn graph_needs_one_coordinate() {
-        let p = Patch::new(ControlNet::new(Simplex::new(2, 1), 2, r(&["1", "2", "3", "4", "5", "6"])));
+        let p = Patch::new(ControlNet::new(
+            Simplex::new(2, 1),
+            2,
+            r(&["1", "2", "3", "4", "5", "6"]),
+        ));
         assert!(graph(&p).unwrap_err().to_string().contains("2 coordinates"));
     }
 

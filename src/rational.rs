@@ -60,7 +60,11 @@ fn undefined(lambda: &[BigRational]) -> CoreError {
 impl RationalPatch {
     /// A rational patch; `weights` has one entry per control point.
     pub fn new(patch: Patch, weights: Vec<BigRational>) -> Self {
-        assert_eq!(weights.len(), patch.net.len(), "one weight per control point");
+        assert_eq!(
+            weights.len(),
+            patch.net.len(),
+            "one weight per control point"
+        );
         RationalPatch { patch, weights }
     }
 
@@ -70,15 +74,26 @@ impl RationalPatch {
         let coords = net
             .points()
             .zip(&self.weights)
-            .flat_map(|(p, w)| p.iter().map(|x| x * w).chain(std::iter::once(w.clone())).collect::<Vec<_>>())
+            .flat_map(|(p, w)| {
+                p.iter()
+                    .map(|x| x * w)
+                    .chain(std::iter::once(w.clone()))
+                    .collect::<Vec<_>>()
+            })
             .collect();
         ControlNet::new(net.simplex().clone(), net.dim() + 1, coords)
     }
 
     /// Back from a homogeneous net (weight last): `c_α = X_α / w_α`. An error if some weight is
     /// zero (that control point is at infinity).
-    pub fn from_homogeneous(net: &ControlNet<BigRational>, like: &Patch) -> Result<Self, CoreError> {
-        assert!(net.dim() >= 2, "a homogeneous net has at least 2 coordinates");
+    pub fn from_homogeneous(
+        net: &ControlNet<BigRational>,
+        like: &Patch,
+    ) -> Result<Self, CoreError> {
+        assert!(
+            net.dim() >= 2,
+            "a homogeneous net has at least 2 coordinates"
+        );
         let d = net.dim() - 1;
         let mut points = Vec::with_capacity(net.len());
         let mut weights = Vec::with_capacity(net.len());
@@ -87,7 +102,11 @@ impl RationalPatch {
             if w.is_zero() {
                 return Err(CoreError::Invalid(format!(
                     "control point {} has weight 0 (a point at infinity); tribez needs non-zero weights here",
-                    alpha.iter().map(ToString::to_string).collect::<Vec<_>>().join(",")
+                    alpha
+                        .iter()
+                        .map(ToString::to_string)
+                        .collect::<Vec<_>>()
+                        .join(",")
                 )));
             }
             points.push(p[..d].iter().map(|x| x / w).collect::<Vec<_>>());
@@ -101,7 +120,11 @@ impl RationalPatch {
     /// The numerator patch `Σ w_α c_α B_α` (points `w_α c_α`).
     pub fn numerator(&self) -> ControlNet<BigRational> {
         let net = &self.patch.net;
-        let coords = net.points().zip(&self.weights).flat_map(|(p, w)| p.iter().map(|x| x * w).collect::<Vec<_>>()).collect();
+        let coords = net
+            .points()
+            .zip(&self.weights)
+            .flat_map(|(p, w)| p.iter().map(|x| x * w).collect::<Vec<_>>())
+            .collect();
         ControlNet::new(net.simplex().clone(), net.dim(), coords)
     }
 
@@ -136,7 +159,11 @@ impl RationalPatch {
     /// (the blossom with one argument `d`),
     ///
     /// `D_d p = (D_d X · W − X · D_d W) / W²`.
-    pub fn derivative(&self, lambda: &[BigRational], direction: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
+    pub fn derivative(
+        &self,
+        lambda: &[BigRational],
+        direction: &[BigRational],
+    ) -> Result<Vec<BigRational>, CoreError> {
         let h = self.homogeneous();
         let n = h.degree();
         let value = casteljau::evaluate(&h, lambda);
@@ -150,10 +177,16 @@ impl RationalPatch {
         let mut args: Vec<&[BigRational]> = vec![direction];
         args.extend(std::iter::repeat_n(lambda, n - 1));
         let nn = BigRational::from_integer(n.into());
-        let dh: Vec<BigRational> = casteljau::blossom(&h, &args).into_iter().map(|c| c * &nn).collect();
+        let dh: Vec<BigRational> = casteljau::blossom(&h, &args)
+            .into_iter()
+            .map(|c| c * &nn)
+            .collect();
         let (dw, dx) = dh.split_last().expect("d + 1 coordinates");
         let w2 = w * w;
-        Ok(x.iter().zip(dx).map(|(xc, dxc)| (dxc * w - xc * dw) / &w2).collect())
+        Ok(x.iter()
+            .zip(dx)
+            .map(|(xc, dxc)| (dxc * w - xc * dw) / &w2)
+            .collect())
     }
 
     /// The float path: the homogeneous net rounded to `F`, de Casteljau in `F` at the rounded
@@ -184,7 +217,11 @@ impl RationalPatch {
 /// `W^k F(X/W)` for `F` of degree `k` in `X.len()` variables: each term `c X^e` becomes
 /// `c X^e W^{k − |e|}`.
 pub fn homogenised_residual(f: &Polynomial, x: &[Polynomial], w: &Polynomial) -> Polynomial {
-    assert_eq!(f.nvars(), x.len(), "the implicit equation has one variable per coordinate");
+    assert_eq!(
+        f.nvars(),
+        x.len(),
+        "the implicit equation has one variable per coordinate"
+    );
     let nv = w.nvars();
     let k = f.degree().unwrap_or(0);
     let mut out = Polynomial::zero(nv);
@@ -204,7 +241,10 @@ impl RationalPatch {
     /// All weights equal to one: the polynomial patch.
     pub fn polynomial(patch: Patch) -> Self {
         let n = patch.net.len();
-        RationalPatch { patch, weights: vec![BigRational::one(); n] }
+        RationalPatch {
+            patch,
+            weights: vec![BigRational::one(); n],
+        }
     }
 }
 
@@ -216,7 +256,9 @@ mod tests {
 
     /// FORMULAS.md §10: the quartic octant, weights ×6 and points in canonical order.
     pub(crate) fn octant() -> RationalPatch {
-        let w = ["12", "12", "16", "24", "48", "9", "8", "10", "18", "7", "6", "9", "6", "6", "6"];
+        let w = [
+            "12", "12", "16", "24", "48", "9", "8", "10", "18", "7", "6", "9", "6", "6", "6",
+        ];
         let c = [
             ["1", "0", "0"],
             ["1", "1/2", "0"],
@@ -234,8 +276,14 @@ mod tests {
             ["0", "1/2", "1"],
             ["0", "0", "1"],
         ];
-        let pts: Vec<Vec<BigRational>> = c.iter().map(|p| p.iter().map(|x| q(x).unwrap()).collect()).collect();
-        RationalPatch::new(Patch::new(ControlNet::from_points(2, 4, &pts)), w.iter().map(|x| q(x).unwrap()).collect())
+        let pts: Vec<Vec<BigRational>> = c
+            .iter()
+            .map(|p| p.iter().map(|x| q(x).unwrap()).collect())
+            .collect();
+        RationalPatch::new(
+            Patch::new(ControlNet::from_points(2, 4, &pts)),
+            w.iter().map(|x| q(x).unwrap()).collect(),
+        )
     }
 
     fn r(xs: &[&str]) -> Vec<BigRational> {
@@ -258,8 +306,14 @@ mod tests {
         assert_eq!(octant().evaluate(&at).unwrap(), want);
         assert_eq!(octant().evaluate_ratio(&at).unwrap(), want);
         // corners
-        assert_eq!(octant().evaluate(&r(&["1", "0", "0"])).unwrap(), r(&["1", "0", "0"]));
-        assert_eq!(octant().evaluate(&r(&["0", "0", "1"])).unwrap(), r(&["0", "0", "1"]));
+        assert_eq!(
+            octant().evaluate(&r(&["1", "0", "0"])).unwrap(),
+            r(&["1", "0", "0"])
+        );
+        assert_eq!(
+            octant().evaluate(&r(&["0", "0", "1"])).unwrap(),
+            r(&["0", "0", "1"])
+        );
     }
 
     #[test]
@@ -269,7 +323,10 @@ mod tests {
         let e = p.evaluate(&r(&["1", "0", "0"])).unwrap_err().to_string();
         assert!(e.contains("undefined at (1, 0, 0)"), "{e}");
         assert!(p.evaluate_ratio(&r(&["1", "0", "0"])).is_err());
-        assert!(p.derivative(&r(&["1", "0", "0"]), &r(&["-1", "1", "0"])).is_err());
+        assert!(
+            p.derivative(&r(&["1", "0", "0"]), &r(&["-1", "1", "0"]))
+                .is_err()
+        );
         // elsewhere it is defined
         assert!(p.evaluate(&r(&["1/3", "1/3", "1/3"])).is_ok());
     }
@@ -277,7 +334,10 @@ mod tests {
     #[test]
     fn round_trip_through_the_homogeneous_net() {
         let p = octant();
-        assert_eq!(RationalPatch::from_homogeneous(&p.homogeneous(), &p.patch).unwrap(), p);
+        assert_eq!(
+            RationalPatch::from_homogeneous(&p.homogeneous(), &p.patch).unwrap(),
+            p
+        );
     }
 
     #[test]
@@ -298,9 +358,18 @@ mod tests {
     fn derivative_of_a_quarter_circle_matches_the_formula() {
         // (1,0),(1,1),(0,1), weights 1,1,2 is ((1-t²), 2t)/(1+t²) with t = v... check D at t=0:
         // u=1, v=0: derivative along (-1, 1) is (0, 2).
-        let pts: Vec<Vec<BigRational>> = [["1", "0"], ["1", "1"], ["0", "1"]].iter().map(|p| r(p)).collect();
-        let rp = RationalPatch::new(Patch::new(ControlNet::from_points(1, 2, &pts)), r(&["1", "1", "2"]));
-        assert_eq!(rp.derivative(&r(&["1", "0"]), &r(&["-1", "1"])).unwrap(), r(&["0", "2"]));
+        let pts: Vec<Vec<BigRational>> = [["1", "0"], ["1", "1"], ["0", "1"]]
+            .iter()
+            .map(|p| r(p))
+            .collect();
+        let rp = RationalPatch::new(
+            Patch::new(ControlNet::from_points(1, 2, &pts)),
+            r(&["1", "1", "2"]),
+        );
+        assert_eq!(
+            rp.derivative(&r(&["1", "0"]), &r(&["-1", "1"])).unwrap(),
+            r(&["0", "2"])
+        );
     }
 
     #[test]

@@ -31,6 +31,7 @@ use std::ops::Div;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
+use crate::casteljau;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Float;
@@ -38,7 +39,6 @@ use crate::patch::ControlNet;
 use crate::report::tuple;
 use crate::scalar::Scalar;
 use crate::symbolic::{Polynomial, barycentric_form};
-use crate::casteljau;
 
 /// A strictly convex polygon with rational vertices in counter-clockwise order.
 #[derive(Clone, Debug, PartialEq)]
@@ -48,19 +48,24 @@ pub struct Polygon {
 
 /// `(b − a) × (c − a)`: twice the signed area of the triangle `a b c`.
 pub fn cross<T: Scalar>(a: &[T; 2], b: &[T; 2], c: &[T; 2]) -> T {
-    (b[0].clone() - &a[0]) * (c[1].clone() - &a[1]) - (b[1].clone() - &a[1]) * (c[0].clone() - &a[0])
+    (b[0].clone() - &a[0]) * (c[1].clone() - &a[1])
+        - (b[1].clone() - &a[1]) * (c[0].clone() - &a[0])
 }
 
 /// The doubled Wachspress weights `2^{N−1} ω_i(p)` (the factor cancels in `λ`), ring operations
 /// only, so the same code runs exactly and in floats.
 pub fn doubled_omega<T: Scalar>(vertices: &[[T; 2]], p: &[T; 2]) -> Vec<T> {
     let n = vertices.len();
-    let a: Vec<T> = (0..n).map(|j| cross(p, &vertices[j], &vertices[(j + 1) % n])).collect();
+    let a: Vec<T> = (0..n)
+        .map(|j| cross(p, &vertices[j], &vertices[(j + 1) % n]))
+        .collect();
     (0..n)
         .map(|i| {
             let prev = (i + n - 1) % n;
             let c = cross(&vertices[prev], &vertices[i], &vertices[(i + 1) % n]);
-            (0..n).filter(|&j| j != prev && j != i).fold(c, |acc, j| acc * &a[j])
+            (0..n)
+                .filter(|&j| j != prev && j != i)
+                .fold(c, |acc, j| acc * &a[j])
         })
         .collect()
 }
@@ -75,15 +80,19 @@ impl Polygon {
     pub fn new(vertices: Vec<Vec<BigRational>>) -> Result<Self, CoreError> {
         let n = vertices.len();
         if n < 3 {
-            return Err(CoreError::Invalid(format!("a polygon needs at least 3 vertices, found {n}")));
+            return Err(CoreError::Invalid(format!(
+                "a polygon needs at least 3 vertices, found {n}"
+            )));
         }
         let mut vs = Vec::with_capacity(n);
         for (i, v) in vertices.into_iter().enumerate() {
-            let [x, y]: [BigRational; 2] = v.try_into().map_err(|v: Vec<BigRational>| CoreError::WrongLength {
-                what: format!("polygon vertex {}", i + 1),
-                expected: 2,
-                found: v.len(),
-            })?;
+            let [x, y]: [BigRational; 2] =
+                v.try_into()
+                    .map_err(|v: Vec<BigRational>| CoreError::WrongLength {
+                        what: format!("polygon vertex {}", i + 1),
+                        expected: 2,
+                        found: v.len(),
+                    })?;
             vs.push([x, y]);
         }
         let mut left = true;
@@ -143,22 +152,36 @@ impl Polygon {
     pub fn areas(&self, p: &[BigRational; 2]) -> Vec<BigRational> {
         let n = self.len();
         let half = BigRational::new(1.into(), 2.into());
-        (0..n).map(|j| cross(p, &self.vertices[j], &self.vertices[(j + 1) % n]) * &half).collect()
+        (0..n)
+            .map(|j| cross(p, &self.vertices[j], &self.vertices[(j + 1) % n]) * &half)
+            .collect()
     }
 
     /// `C_i = signedArea(p_{i−1}, p_i, p_{i+1})`, `i = 1..N`.
     pub fn corner_areas(&self) -> Vec<BigRational> {
         let n = self.len();
         let half = BigRational::new(1.into(), 2.into());
-        (0..n).map(|i| cross(&self.vertices[(i + n - 1) % n], &self.vertices[i], &self.vertices[(i + 1) % n]) * &half).collect()
+        (0..n)
+            .map(|i| {
+                cross(
+                    &self.vertices[(i + n - 1) % n],
+                    &self.vertices[i],
+                    &self.vertices[(i + 1) % n],
+                ) * &half
+            })
+            .collect()
     }
 
     /// The point as a pair, checked to lie in the closed polygon.
     fn inside(&self, p: &[BigRational]) -> Result<[BigRational; 2], CoreError> {
-        let [x, y]: [BigRational; 2] = p
-            .to_vec()
-            .try_into()
-            .map_err(|v: Vec<BigRational>| CoreError::WrongLength { what: "point".into(), expected: 2, found: v.len() })?;
+        let [x, y]: [BigRational; 2] =
+            p.to_vec()
+                .try_into()
+                .map_err(|v: Vec<BigRational>| CoreError::WrongLength {
+                    what: "point".into(),
+                    expected: 2,
+                    found: v.len(),
+                })?;
         let q = [x, y];
         if let Some(j) = self.areas(&q).iter().position(Signed::is_negative) {
             return Err(CoreError::Invalid(format!(
@@ -196,14 +219,21 @@ impl Polygon {
         (0..n)
             .map(|i| {
                 let prev = (i + n - 1) % n;
-                (0..n).filter(|&j| j != prev && j != i).fold(Polynomial::constant(2, cs[i].clone()), |acc, j| acc.mul(&a[j]))
+                (0..n)
+                    .filter(|&j| j != prev && j != i)
+                    .fold(Polynomial::constant(2, cs[i].clone()), |acc, j| {
+                        acc.mul(&a[j])
+                    })
             })
             .collect()
     }
 }
 
 fn normalise<T: Scalar + Div<Output = T>>(omega: Vec<T>) -> Vec<T> {
-    let sum = omega.iter().skip(1).fold(omega[0].clone(), |acc, w| acc + w);
+    let sum = omega
+        .iter()
+        .skip(1)
+        .fold(omega[0].clone(), |acc, w| acc + w);
     omega.into_iter().map(|w| w / sum.clone()).collect()
 }
 
@@ -229,11 +259,18 @@ impl SPatch {
                 net.m() + 1
             )));
         }
-        Ok(SPatch { name: None, polygon, net })
+        Ok(SPatch {
+            name: None,
+            polygon,
+            net,
+        })
     }
 
     /// `S(p)` exactly at a Cartesian point of the closed polygon, with `λ(p)`.
-    pub fn evaluate(&self, p: &[BigRational]) -> Result<(Vec<BigRational>, Vec<BigRational>), CoreError> {
+    pub fn evaluate(
+        &self,
+        p: &[BigRational],
+    ) -> Result<(Vec<BigRational>, Vec<BigRational>), CoreError> {
         let lambda = self.polygon.wachspress(p)?;
         let value = ExactEvaluator::new(&self.net).evaluate(&lambda, Algorithm::Casteljau);
         Ok((lambda, value))
@@ -242,7 +279,12 @@ impl SPatch {
     /// The float path: vertices, point and control points rounded to `F`; `λ` by the doubled
     /// product form and one division each; then de Casteljau in `F`.
     pub fn evaluate_float<F: Float + Div<Output = F>>(&self, p: &[F; 2]) -> Vec<F> {
-        let verts: Vec<[F; 2]> = self.polygon.vertices.iter().map(|v| [F::round(&v[0]), F::round(&v[1])]).collect();
+        let verts: Vec<[F; 2]> = self
+            .polygon
+            .vertices
+            .iter()
+            .map(|v| [F::round(&v[0]), F::round(&v[1])])
+            .collect();
         let lambda = normalise(doubled_omega(&verts, p));
         casteljau::evaluate(&self.net.map(F::round), &lambda)
     }
@@ -251,7 +293,10 @@ impl SPatch {
     /// coordinate) and the common denominator `(Σ ω)^d`.
     pub fn rational_form(&self) -> (Vec<Polynomial>, Polynomial) {
         let omega = self.polygon.omega_polynomials();
-        let nums = barycentric_form(&self.net).iter().map(|p| p.compose(&omega)).collect();
+        let nums = barycentric_form(&self.net)
+            .iter()
+            .map(|p| p.compose(&omega))
+            .collect();
         let sum = omega.iter().fold(Polynomial::zero(2), |acc, w| acc.add(w));
         (nums, sum.pow(self.net.degree() as u32))
     }
@@ -270,12 +315,25 @@ mod tests {
     }
 
     fn pentagon() -> Polygon {
-        Polygon::new([["0", "0"], ["4", "0"], ["5", "3"], ["2", "5"], ["-1", "3"]].iter().map(|p| r(p)).collect()).unwrap()
+        Polygon::new(
+            [["0", "0"], ["4", "0"], ["5", "3"], ["2", "5"], ["-1", "3"]]
+                .iter()
+                .map(|p| r(p))
+                .collect(),
+        )
+        .unwrap()
     }
 
     fn net(m: usize, d: usize, seed: i64) -> ControlNet<BigRational> {
         let s = Simplex::new(m, d);
-        let coords = (0..s.len() * 3).map(|i| BigRational::new(((i as i64 * 37 + seed) % 23 - 11).into(), ((i as i64 + seed) % 5 + 1).into())).collect();
+        let coords = (0..s.len() * 3)
+            .map(|i| {
+                BigRational::new(
+                    ((i as i64 * 37 + seed) % 23 - 11).into(),
+                    ((i as i64 + seed) % 5 + 1).into(),
+                )
+            })
+            .collect();
         ControlNet::new(s, 3, coords)
     }
 
@@ -291,7 +349,11 @@ mod tests {
 
     #[test]
     fn bad_polygons() {
-        let poly = |v: &[[&str; 2]]| Polygon::new(v.iter().map(|p| r(p)).collect()).unwrap_err().to_string();
+        let poly = |v: &[[&str; 2]]| {
+            Polygon::new(v.iter().map(|p| r(p)).collect())
+                .unwrap_err()
+                .to_string()
+        };
         let cw = poly(&[["0", "0"], ["0", "1"], ["1", "0"]]);
         assert!(cw.contains("clockwise"), "{cw}");
         let nonconvex = poly(&[["0", "0"], ["4", "0"], ["1", "1"], ["0", "4"]]);
@@ -306,11 +368,20 @@ mod tests {
 
     #[test]
     fn outside_points_are_rejected() {
-        let e = pentagon().wachspress(&r(&["10", "0"])).unwrap_err().to_string();
+        let e = pentagon()
+            .wachspress(&r(&["10", "0"]))
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("outside the polygon"), "{e}");
         // vertices and edges are fine
-        assert_eq!(pentagon().wachspress(&r(&["4", "0"])).unwrap(), r(&["0", "1", "0", "0", "0"]));
-        assert_eq!(pentagon().wachspress(&r(&["2", "0"])).unwrap(), r(&["1/2", "1/2", "0", "0", "0"]));
+        assert_eq!(
+            pentagon().wachspress(&r(&["4", "0"])).unwrap(),
+            r(&["0", "1", "0", "0", "0"])
+        );
+        assert_eq!(
+            pentagon().wachspress(&r(&["2", "0"])).unwrap(),
+            r(&["1/2", "1/2", "0", "0", "0"])
+        );
     }
 
     #[test]
@@ -320,7 +391,10 @@ mod tests {
         let omega = p.omega_polynomials();
         let sum = omega.iter().fold(Polynomial::zero(2), |a, w| a.add(w));
         for c in 0..2 {
-            let lhs = omega.iter().zip(p.vertices()).fold(Polynomial::zero(2), |a, (w, v)| a.add(&w.scale(&v[c])));
+            let lhs = omega
+                .iter()
+                .zip(p.vertices())
+                .fold(Polynomial::zero(2), |a, (w, v)| a.add(&w.scale(&v[c])));
             let rhs = sum.mul(&Polynomial::variable(2, c));
             assert!(lhs.sub(&rhs).is_zero());
         }
@@ -353,7 +427,11 @@ mod tests {
         let mut coords = Vec::new();
         for alpha in s.iter() {
             for c in 0..2 {
-                let v: BigRational = alpha.iter().zip(p.vertices()).map(|(&a, v)| BigRational::from_integer(a.into()) * &v[c]).sum();
+                let v: BigRational = alpha
+                    .iter()
+                    .zip(p.vertices())
+                    .map(|(&a, v)| BigRational::from_integer(a.into()) * &v[c])
+                    .sum();
                 coords.push(v / BigRational::from_integer(d.into()));
             }
             coords.push(BigRational::zero());

@@ -3,9 +3,11 @@
 //! | op | inputs | value |
 //! |---|---|---|
 //! | `eval` | `at` (barycentric, summing to 1) or `cartesian` | the point |
-//! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names` | one polynomial per coordinate |
+//! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
+//! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
+//! | `direction` | `domain`, `vector` (Cartesian) | the directional coordinates (they sum to 0) |
 //! | `implicit` | `equation` (a polynomial in the coordinates), optional `coordinates` (their names, default `x, y, z`), `names` | the residual `W^k F(X/W)` as a polynomial in the patch's variables (barycentric; `x, y` for an S-patch); `"0"` proves the whole patch lies on `F = 0` |
 //! | `wachspress` | `cartesian` (a point of an S-patch's polygon) | `{ A = [A_j], C = [C_i], lambda = [λ_i] }` (FORMULAS.md §12) |
 //! | `abscissae` | (a functional or Bézier patch) | the Bézier abscissae `ξ_α` keyed by multi-index |
@@ -25,19 +27,35 @@ use crate::bernstein;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
 use crate::io::patch_file::index_key;
-use crate::patch::AnyPatch;
 use crate::io::tree::{Document, Node, Value as NodeValue};
+use crate::patch::AnyPatch;
 use crate::simplex::{Simplex, multinomial};
-use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names};
+use crate::symbolic::{
+    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
+};
 
 /// Every operation name, for messages.
-pub const OPS: &[&str] = &["eval", "symbolic", "basis", "basis_sum", "implicit", "wachspress", "abscissae", "ordinates", "graph"];
+pub const OPS: &[&str] = &[
+    "eval",
+    "symbolic",
+    "basis",
+    "basis_sum",
+    "barycentric",
+    "direction",
+    "implicit",
+    "wachspress",
+    "abscissae",
+    "ordinates",
+    "graph",
+];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
 fn op_keys(op: &str) -> Option<&'static [&'static str]> {
     Some(match op {
         "eval" => &["patch", "at", "cartesian"],
-        "symbolic" => &["patch", "variables", "names"],
+        "symbolic" => &["patch", "variables", "names", "component"],
+        "barycentric" => &["domain", "point"],
+        "direction" => &["domain", "vector"],
         "basis" | "basis_sum" => &["degree", "simplex", "names", "at", "variables"],
         "implicit" => &["patch", "equation", "coordinates", "names"],
         "wachspress" => &["patch", "cartesian"],
@@ -74,7 +92,9 @@ impl<'a> Inputs<'a> {
 
     /// A required list of rationals.
     pub fn rationals(&self, name: &str) -> Result<Vec<BigRational>, InputError> {
-        let node = self.get(name).ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
+        let node = self
+            .get(name)
+            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
         self.file.doc.rationals(node, &self.key(name))
     }
 
@@ -85,19 +105,29 @@ impl<'a> Inputs<'a> {
 
     /// An optional string.
     pub fn opt_string(&self, name: &str) -> Result<Option<String>, InputError> {
-        self.get(name).map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string)).transpose()
+        self.get(name)
+            .map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string))
+            .transpose()
     }
 
     /// An optional non-negative integer.
     pub fn opt_usize(&self, name: &str) -> Result<Option<usize>, InputError> {
-        self.get(name).map(|n| self.file.doc.usize(n, &self.key(name))).transpose()
+        self.get(name)
+            .map(|n| self.file.doc.usize(n, &self.key(name)))
+            .transpose()
     }
 
     /// An optional list of strings.
     pub fn opt_strings(&self, name: &str) -> Result<Option<Vec<String>>, InputError> {
-        let Some(node) = self.get(name) else { return Ok(None) };
+        let Some(node) = self.get(name) else {
+            return Ok(None);
+        };
         let items = self.file.doc.array(node, &self.key(name))?;
-        items.iter().map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string)).collect::<Result<Vec<_>, _>>().map(Some)
+        items
+            .iter()
+            .map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
     }
 
     /// The claim's patch.
@@ -110,18 +140,32 @@ impl<'a> Inputs<'a> {
         let m = patch.net.m();
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) => {
-                crate::commands::check_barycentric(&at, m, "point `at`").map_err(|e| self.error("at", e.to_string()))?;
+                crate::commands::check_barycentric(&at, m, "point `at`")
+                    .map_err(|e| self.error("at", e.to_string()))?;
                 Ok(at)
             }
-            (None, Some(x)) => patch.domain_or_reference().barycentric(&x).map_err(|e| self.error("cartesian", e.to_string())),
-            _ => Err(self.error("at", "give exactly one of `at` (barycentric) or `cartesian`")),
+            (None, Some(x)) => patch
+                .domain_or_reference()
+                .barycentric(&x)
+                .map_err(|e| self.error("cartesian", e.to_string())),
+            _ => Err(self.error(
+                "at",
+                "give exactly one of `at` (barycentric) or `cartesian`",
+            )),
         }
     }
 
     /// Variable names: `names` if given (checked against the count), else `default`.
     pub fn names(&self, default: Vec<String>) -> Result<Vec<String>, InputError> {
         match self.opt_strings("names")? {
-            Some(n) if n.len() != default.len() => Err(self.error("names", format!("{} names given, {} variables needed", n.len(), default.len()))),
+            Some(n) if n.len() != default.len() => Err(self.error(
+                "names",
+                format!(
+                    "{} names given, {} variables needed",
+                    n.len(),
+                    default.len()
+                ),
+            )),
             Some(n) => Ok(n),
             None => Ok(default),
         }
@@ -133,13 +177,29 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
     let table = file.doc.table(&claim.node, &claim.id)?;
     let keys = op_keys(&claim.op).ok_or_else(|| {
         let node = Document::get(table, "op").unwrap_or(&claim.node);
-        file.doc.error(node, &format!("{}.op", claim.id), format!("unknown operation `{}` (known: {})", claim.op, OPS.join(", ")))
+        file.doc.error(
+            node,
+            &format!("{}.op", claim.id),
+            format!(
+                "unknown operation `{}` (known: {})",
+                claim.op,
+                OPS.join(", ")
+            ),
+        )
     })?;
     let allowed: Vec<&str> = CLAIM_KEYS.iter().chain(keys).copied().collect();
-    file.doc.check_keys(&claim.node, table, &allowed, &claim.id)?;
+    file.doc
+        .check_keys(&claim.node, table, &allowed, &claim.id)?;
     let inputs = Inputs { file, claim, table };
     match claim.op.as_str() {
-        "eval" if !matches!(file.any_patch_for(claim)?, AnyPatch::Bezier(_) | AnyPatch::Functional(_)) => beyond::eval(&inputs),
+        "eval"
+            if !matches!(
+                file.any_patch_for(claim)?,
+                AnyPatch::Bezier(_) | AnyPatch::Functional(_)
+            ) =>
+        {
+            beyond::eval(&inputs)
+        }
         "implicit" => beyond::implicit(&inputs),
         "wachspress" => beyond::wachspress(&inputs),
         "abscissae" => beyond::abscissae(&inputs),
@@ -148,17 +208,61 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
         "eval" => {
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
-            Ok(Value::numbers(&ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau)))
+            Ok(Value::numbers(
+                &ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau),
+            ))
         }
         "symbolic" => {
             let patch = inputs.patch()?;
             let m = patch.net.m();
             let (names, polys) = match inputs.opt_string("variables")?.as_deref() {
-                None | Some("barycentric") => (inputs.names(barycentric_names(m))?, barycentric_form(&patch.net)),
-                Some("cartesian") => (inputs.names(cartesian_names(m))?, cartesian_form(&patch.net, &patch.domain_or_reference())),
-                Some(other) => return Err(inputs.error("variables", format!("`{other}`: expected \"barycentric\" or \"cartesian\""))),
+                None | Some("barycentric") => (
+                    inputs.names(barycentric_names(m))?,
+                    barycentric_form(&patch.net),
+                ),
+                Some("cartesian") => (
+                    inputs.names(cartesian_names(m))?,
+                    cartesian_form(&patch.net, &patch.domain_or_reference()),
+                ),
+                Some(other) => {
+                    return Err(inputs.error(
+                        "variables",
+                        format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+                    ));
+                }
             };
-            Ok(Value::List(polys.into_iter().map(|p| Value::Poly(p, names.clone())).collect()))
+            match inputs.opt_usize("component")? {
+                None => Ok(Value::List(
+                    polys
+                        .into_iter()
+                        .map(|p| Value::Poly(p, names.clone()))
+                        .collect(),
+                )),
+                Some(c) => {
+                    let p = polys.get(c).cloned().ok_or_else(|| inputs.error("component", format!("component {c} does not exist: the points have {} coordinates (0-based)", polys.len())))?;
+                    Ok(Value::Poly(p, names))
+                }
+            }
+        }
+        "barycentric" | "direction" => {
+            let node = inputs
+                .get("domain")
+                .ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
+            let rows = file.doc.array(node, &inputs.key("domain"))?;
+            let domain = crate::io::patch_file::domain(
+                &file.doc,
+                node,
+                rows.len().saturating_sub(1),
+                &inputs.key("domain"),
+            )?;
+            let (name, result) = if claim.op == "barycentric" {
+                ("point", domain.barycentric(&inputs.rationals("point")?))
+            } else {
+                ("vector", domain.direction(&inputs.rationals("vector")?))
+            };
+            Ok(Value::numbers(
+                &result.map_err(|e| inputs.error(name, e.to_string()))?,
+            ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
         _ => unreachable!("op_keys covers every operation"),
@@ -186,17 +290,29 @@ mod beyond {
         match inputs.file.any_patch_for(inputs.claim)? {
             AnyPatch::Rational(r) => {
                 let at = inputs.point(&r.patch)?;
-                let key = if inputs.get("at").is_some() { "at" } else { "cartesian" };
-                r.evaluate(&at).map(|v| Value::numbers(&v)).map_err(|e| inputs.error(key, e.to_string()))
+                let key = if inputs.get("at").is_some() {
+                    "at"
+                } else {
+                    "cartesian"
+                };
+                r.evaluate(&at)
+                    .map(|v| Value::numbers(&v))
+                    .map_err(|e| inputs.error(key, e.to_string()))
             }
             AnyPatch::SPatch(s) => {
                 if inputs.get("at").is_some() {
-                    return Err(inputs.error("at", "an S-patch takes Cartesian points: use `cartesian`"));
+                    return Err(
+                        inputs.error("at", "an S-patch takes Cartesian points: use `cartesian`")
+                    );
                 }
                 let x = inputs.rationals("cartesian")?;
-                s.evaluate(&x).map(|(_, v)| Value::numbers(&v)).map_err(|e| inputs.error("cartesian", e.to_string()))
+                s.evaluate(&x)
+                    .map(|(_, v)| Value::numbers(&v))
+                    .map_err(|e| inputs.error("cartesian", e.to_string()))
             }
-            AnyPatch::Bezier(_) | AnyPatch::Functional(_) => unreachable!("handled by the plain `eval`"),
+            AnyPatch::Bezier(_) | AnyPatch::Functional(_) => {
+                unreachable!("handled by the plain `eval`")
+            }
         }
     }
 
@@ -206,7 +322,11 @@ mod beyond {
         let (x, w, default_names) = match any {
             AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
                 let m = p.net.m();
-                (barycentric_form(&p.net), Polynomial::constant(m + 1, num_traits::One::one()), barycentric_names(m))
+                (
+                    barycentric_form(&p.net),
+                    Polynomial::constant(m + 1, num_traits::One::one()),
+                    barycentric_names(m),
+                )
             }
             AnyPatch::Rational(r) => {
                 let mut h = r.homogeneous_form();
@@ -220,13 +340,21 @@ mod beyond {
         };
         let d = x.len();
         let coords: Vec<String> = match inputs.opt_strings("coordinates")? {
-            Some(c) if c.len() != d => return Err(inputs.error("coordinates", format!("{} names given, the points have {d} coordinates", c.len()))),
+            Some(c) if c.len() != d => {
+                return Err(inputs.error(
+                    "coordinates",
+                    format!("{} names given, the points have {d} coordinates", c.len()),
+                ));
+            }
             Some(c) => c,
             None => cartesian_names(d),
         };
-        let text = inputs.opt_string("equation")?.ok_or_else(|| inputs.error("equation", "missing input `equation`"))?;
+        let text = inputs
+            .opt_string("equation")?
+            .ok_or_else(|| inputs.error("equation", "missing input `equation`"))?;
         let refs: Vec<&str> = coords.iter().map(String::as_str).collect();
-        let f = Polynomial::parse(&text, &refs).map_err(|e| inputs.error("equation", format!("`{text}`: {e}")))?;
+        let f = Polynomial::parse(&text, &refs)
+            .map_err(|e| inputs.error("equation", format!("`{text}`: {e}")))?;
         let names = inputs.names(default_names)?;
         Ok(Value::Poly(homogenised_residual(&f, &x, &w), names))
     }
@@ -234,10 +362,16 @@ mod beyond {
     /// Wachspress data of an S-patch's polygon at a point.
     pub fn wachspress(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         let AnyPatch::SPatch(s) = inputs.file.any_patch_for(inputs.claim)? else {
-            return Err(inputs.error("patch", "`wachspress` needs an S-patch (a patch file with `polygon`)"));
+            return Err(inputs.error(
+                "patch",
+                "`wachspress` needs an S-patch (a patch file with `polygon`)",
+            ));
         };
         let x = inputs.rationals("cartesian")?;
-        let lambda = s.polygon.wachspress(&x).map_err(|e| inputs.error("cartesian", e.to_string()))?;
+        let lambda = s
+            .polygon
+            .wachspress(&x)
+            .map_err(|e| inputs.error("cartesian", e.to_string()))?;
         let p = [x[0].clone(), x[1].clone()];
         Ok(Value::Map(vec![
             ("A".into(), Value::numbers(&s.polygon.areas(&p))),
@@ -256,7 +390,10 @@ mod beyond {
     /// The graph of a functional patch.
     pub fn graph(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         let AnyPatch::Functional(p) = inputs.file.any_patch_for(inputs.claim)? else {
-            return Err(inputs.error("patch", "`graph` needs a functional patch (kind = \"functional\")"));
+            return Err(inputs.error(
+                "patch",
+                "`graph` needs a functional patch (kind = \"functional\")",
+            ));
         };
         let g = functional::graph(p).map_err(|e| inputs.error("patch", e.to_string()))?;
         Ok(map(g.net.simplex(), g.net.points().map(Value::numbers)))
@@ -264,86 +401,150 @@ mod beyond {
 
     /// Control ordinates of a polynomial over a domain.
     pub fn ordinates(inputs: &Inputs<'_>) -> Result<Value, InputError> {
-        let node = inputs.get("domain").ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
+        let node = inputs
+            .get("domain")
+            .ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
         let doc = &inputs.file.doc;
         let m = doc.array(node, "domain")?.len().saturating_sub(1);
-        let domain = crate::io::patch_file::domain(doc, node, m, &format!("{}.domain", inputs.claim.id))?;
-        let n = inputs.opt_usize("degree")?.ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+        let domain =
+            crate::io::patch_file::domain(doc, node, m, &format!("{}.domain", inputs.claim.id))?;
+        let n = inputs
+            .opt_usize("degree")?
+            .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
         if n > crate::io::patch_file::MAX_DEGREE {
             return Err(inputs.error("degree", "degree out of range"));
         }
         let names = inputs.names(cartesian_names(m))?;
-        let text = inputs.opt_string("function")?.ok_or_else(|| inputs.error("function", "missing input `function`"))?;
+        let text = inputs
+            .opt_string("function")?
+            .ok_or_else(|| inputs.error("function", "missing input `function`"))?;
         let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-        let f = Polynomial::parse(&text, &refs).map_err(|e| inputs.error("function", format!("`{text}`: {e}")))?;
-        let b: Vec<BigRational> = functional::ordinates(&domain, n, &f).map_err(|e| inputs.error("function", e.to_string()))?;
-        Ok(map(&crate::simplex::Simplex::new(m, n), b.into_iter().map(Value::Number)))
+        let f = Polynomial::parse(&text, &refs)
+            .map_err(|e| inputs.error("function", format!("`{text}`: {e}")))?;
+        let b: Vec<BigRational> = functional::ordinates(&domain, n, &f)
+            .map_err(|e| inputs.error("function", e.to_string()))?;
+        Ok(map(
+            &crate::simplex::Simplex::new(m, n),
+            b.into_iter().map(Value::Number),
+        ))
     }
 }
 
 /// The Bernstein basis of a degree (symbolic or at a point), or its sum.
 fn basis(inputs: &Inputs<'_>, sum: bool) -> Result<Value, InputError> {
-    let n = inputs.opt_usize("degree")?.ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+    let n = inputs
+        .opt_usize("degree")?
+        .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
     let m = inputs.opt_usize("simplex")?.unwrap_or(2);
-    if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m) || n > crate::io::patch_file::MAX_DEGREE {
+    if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m)
+        || n > crate::io::patch_file::MAX_DEGREE
+    {
         return Err(inputs.error("degree", "degree or simplex dimension out of range"));
     }
     let simplex = Simplex::new(m, n);
     if let Some(at) = inputs.opt_rationals("at")? {
         if at.len() != m + 1 {
-            return Err(inputs.error("at", format!("{} coordinates, expected {}", at.len(), m + 1)));
+            return Err(inputs.error(
+                "at",
+                format!("{} coordinates, expected {}", at.len(), m + 1),
+            ));
         }
         let b = bernstein::basis(&simplex, &at);
         return Ok(if sum {
             Value::Number(b.iter().sum())
         } else {
-            Value::Map(simplex.iter().map(index_key).zip(b.into_iter().map(Value::Number)).collect())
+            Value::Map(
+                simplex
+                    .iter()
+                    .map(index_key)
+                    .zip(b.into_iter().map(Value::Number))
+                    .collect(),
+            )
         });
     }
     let cartesian = match inputs.opt_string("variables")?.as_deref() {
         None | Some("barycentric") => false,
         Some("cartesian") => true,
-        Some(other) => return Err(inputs.error("variables", format!("`{other}`: expected \"barycentric\" or \"cartesian\""))),
+        Some(other) => {
+            return Err(inputs.error(
+                "variables",
+                format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+            ));
+        }
     };
     let bary_names = inputs.names(barycentric_names(m))?;
     let polys: Vec<Polynomial> = simplex
         .iter()
-        .map(|alpha| Polynomial::monomial(m + 1, alpha.to_vec(), BigRational::from_integer(multinomial(alpha).into())))
+        .map(|alpha| {
+            Polynomial::monomial(
+                m + 1,
+                alpha.to_vec(),
+                BigRational::from_integer(multinomial(alpha).into()),
+            )
+        })
         .collect();
     let (names, polys) = if cartesian {
         let subs = crate::symbolic::barycentric_of_cartesian(&crate::domain::Domain::reference(m));
-        (cartesian_names(m), polys.iter().map(|p| p.compose(&subs)).collect::<Vec<_>>())
+        (
+            cartesian_names(m),
+            polys.iter().map(|p| p.compose(&subs)).collect::<Vec<_>>(),
+        )
     } else {
         (bary_names, polys)
     };
     Ok(if sum {
-        let total = polys.iter().fold(Polynomial::zero(names.len()), |acc, p| acc.add(p));
+        let total = polys
+            .iter()
+            .fold(Polynomial::zero(names.len()), |acc, p| acc.add(p));
         Value::Poly(total, names)
     } else {
-        Value::Map(simplex.iter().map(index_key).zip(polys.into_iter().map(|p| Value::Poly(p, names.clone()))).collect())
+        Value::Map(
+            simplex
+                .iter()
+                .map(index_key)
+                .zip(polys.into_iter().map(|p| Value::Poly(p, names.clone())))
+                .collect(),
+        )
     })
 }
 
 /// Read the claimed value at `node`, guided by the shape of the exact value.
-pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Result<Value, InputError> {
+pub fn read_claimed(
+    doc: &Document,
+    node: &Node,
+    exact: &Value,
+    key: &str,
+) -> Result<Value, InputError> {
     Ok(match (exact, &node.value) {
         (Value::Number(_), _) => Value::Number(doc.rational(node, key)?),
         (Value::Poly(_, names), NodeValue::String(s) | NodeValue::Number(s)) => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
-            let p = Polynomial::parse(s, &n).map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
+            let p = Polynomial::parse(s, &n)
+                .map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
             Value::Poly(p, names.clone())
         }
         (Value::Bool(_), NodeValue::Bool(b)) => Value::Bool(*b),
-        (Value::Integer(_), NodeValue::Number(t)) => {
-            Value::Integer(t.parse().map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?)
-        }
+        (Value::Integer(_), NodeValue::Number(t)) => Value::Integer(
+            t.parse()
+                .map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?,
+        ),
         (Value::List(xs), NodeValue::Array(items)) => {
-            let fallback = xs.first().cloned().unwrap_or(Value::Number(BigRational::default()));
+            let fallback = xs
+                .first()
+                .cloned()
+                .unwrap_or(Value::Number(BigRational::default()));
             Value::List(
                 items
                     .iter()
                     .enumerate()
-                    .map(|(i, it)| read_claimed(doc, it, xs.get(i).unwrap_or(&fallback), &format!("{key}[{i}]")))
+                    .map(|(i, it)| {
+                        read_claimed(
+                            doc,
+                            it,
+                            xs.get(i).unwrap_or(&fallback),
+                            &format!("{key}[{i}]"),
+                        )
+                    })
                     .collect::<Result<_, _>>()?,
             )
         }
@@ -351,9 +552,16 @@ pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Re
             items
                 .iter()
                 .map(|(k, it)| {
-                    let like = kv.iter().find(|(ek, _)| ek == k).map(|(_, v)| v).or_else(|| kv.first().map(|(_, v)| v));
+                    let like = kv
+                        .iter()
+                        .find(|(ek, _)| ek == k)
+                        .map(|(_, v)| v)
+                        .or_else(|| kv.first().map(|(_, v)| v));
                     let like = like.ok_or_else(|| doc.error(it, key, "unexpected key"))?;
-                    Ok((k.clone(), read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?))
+                    Ok((
+                        k.clone(),
+                        read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?,
+                    ))
                 })
                 .collect::<Result<_, InputError>>()?,
         ),
@@ -366,7 +574,11 @@ pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Re
                 Value::Map(_) => "a table",
                 Value::Number(_) => "a number",
             };
-            return Err(doc.error(node, key, format!("expected {kind}, found {}", node.value.kind())));
+            return Err(doc.error(
+                node,
+                key,
+                format!("expected {kind}, found {}", node.value.kind()),
+            ));
         }
     })
 }

@@ -34,7 +34,9 @@ fn raw_points(args: &Args, width: usize) -> Result<Vec<(String, Vec<BigRational>
         }
     }
     if raw.is_empty() {
-        return Err(CliError::Usage("give at least one point with --at or --points".into()));
+        return Err(CliError::Usage(
+            "give at least one point with --at or --points".into(),
+        ));
     }
     Ok(raw)
 }
@@ -45,10 +47,21 @@ struct Judged {
     inputs: Vec<BigRational>,
     /// `None` when the exact value at the rounded inputs is undefined.
     exact_at_inputs: Option<Vec<BigRational>>,
-    values: Vec<(String, String, Option<BigRational>, Option<BigRational>, Option<BigRational>)>,
+    values: Vec<(
+        String,
+        String,
+        Option<BigRational>,
+        Option<BigRational>,
+        Option<BigRational>,
+    )>,
 }
 
-fn judge<F: Float>(values: &[F], inputs: Vec<BigRational>, exact_at_inputs: Option<Vec<BigRational>>, intended: &[BigRational]) -> Judged {
+fn judge<F: Float>(
+    values: &[F],
+    inputs: Vec<BigRational>,
+    exact_at_inputs: Option<Vec<BigRational>>,
+    intended: &[BigRational],
+) -> Judged {
     let values = values
         .iter()
         .enumerate()
@@ -62,7 +75,12 @@ fn judge<F: Float>(values: &[F], inputs: Vec<BigRational>, exact_at_inputs: Opti
             (v.decimal(), v.hex(), x, alg, total)
         })
         .collect();
-    Judged { precision: F::PRECISION, inputs, exact_at_inputs, values }
+    Judged {
+        precision: F::PRECISION,
+        inputs,
+        exact_at_inputs,
+        values,
+    }
 }
 
 struct Row {
@@ -90,12 +108,18 @@ fn precisions(c: Option<FloatChoice>) -> Vec<Precision> {
     }
 }
 
-fn rational_float<F: Float + std::ops::Div<Output = F>>(r: &RationalPatch, lambda: &[BigRational], intended: &[BigRational]) -> Judged {
+fn rational_float<F: Float + std::ops::Div<Output = F>>(
+    r: &RationalPatch,
+    lambda: &[BigRational],
+    intended: &[BigRational],
+) -> Judged {
     let lam: Vec<F> = lambda.iter().map(F::round).collect();
     let lam_exact: Vec<BigRational> = lam.iter().map(|x| x.exact().expect("finite")).collect();
     let values = r.evaluate_float::<F>(&lam);
     // the exact value at what the float code saw: the rounded homogeneous net at the rounded λ
-    let h = r.homogeneous().map(|q| F::round(q).exact().unwrap_or_default());
+    let h = r
+        .homogeneous()
+        .map(|q| F::round(q).exact().unwrap_or_default());
     let v = ExactEvaluator::new(&h).evaluate(&lam_exact, Algorithm::Casteljau);
     let (w, x) = v.split_last().expect("d + 1");
     let exact = (!w.is_zero()).then(|| x.iter().map(|c| c / w).collect());
@@ -110,11 +134,23 @@ pub fn rational(args: &Args, file: String, r: RationalPatch) -> Result<Outcome, 
     let mut rows = Vec::new();
     for (what, p) in raw_points(args, width)? {
         let (at, cartesian) = if args.cartesian {
-            (domain.barycentric(&p).map_err(|e| CliError::core(&what, e))?, Some(p))
+            (
+                domain
+                    .barycentric(&p)
+                    .map_err(|e| CliError::core(&what, e))?,
+                Some(p),
+            )
         } else {
             if args.homogeneous {
                 if p.len() != m + 1 {
-                    return Err(CliError::core(&what, CoreError::WrongLength { what: "point".into(), expected: m + 1, found: p.len() }));
+                    return Err(CliError::core(
+                        &what,
+                        CoreError::WrongLength {
+                            what: "point".into(),
+                            expected: m + 1,
+                            found: p.len(),
+                        },
+                    ));
                 }
             } else {
                 check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
@@ -122,8 +158,13 @@ pub fn rational(args: &Args, file: String, r: RationalPatch) -> Result<Outcome, 
             (p, None)
         };
         let point = r.evaluate(&at).map_err(|e| CliError::core(&what, e))?;
-        let ratio = r.evaluate_ratio(&at).map_err(|e| CliError::core(&what, e))?;
-        debug_assert_eq!(point, ratio, "homogeneous de Casteljau and the ratio of two patches must agree exactly");
+        let ratio = r
+            .evaluate_ratio(&at)
+            .map_err(|e| CliError::core(&what, e))?;
+        debug_assert_eq!(
+            point, ratio,
+            "homogeneous de Casteljau and the ratio of two patches must agree exactly"
+        );
         let mut floats = Vec::new();
         for p in precisions(args.float) {
             floats.push(match p {
@@ -131,21 +172,58 @@ pub fn rational(args: &Args, file: String, r: RationalPatch) -> Result<Outcome, 
                 Precision::F32 => rational_float::<f32>(&r, &at, &point),
             });
         }
-        rows.push(Row { at, cartesian, lambda: None, point, floats });
+        rows.push(Row {
+            at,
+            cartesian,
+            lambda: None,
+            point,
+            floats,
+        });
     }
     let net = &r.patch.net;
-    let header = format!("rational, degree {} over the {}-simplex, points in R^{}", net.degree(), net.m(), net.dim());
-    Outcome::rendered(&Report { file, kind: "rational", header, algorithm: "homogeneous de Casteljau", rows }, args.out.format, true)
+    let header = format!(
+        "rational, degree {} over the {}-simplex, points in R^{}",
+        net.degree(),
+        net.m(),
+        net.dim()
+    );
+    Outcome::rendered(
+        &Report {
+            file,
+            kind: "rational",
+            header,
+            algorithm: "homogeneous de Casteljau",
+            rows,
+        },
+        args.out.format,
+        true,
+    )
 }
 
-fn spatch_float<F: Float + std::ops::Div<Output = F>>(s: &SPatch, p: &[BigRational], intended: &[BigRational]) -> Judged {
+fn spatch_float<F: Float + std::ops::Div<Output = F>>(
+    s: &SPatch,
+    p: &[BigRational],
+    intended: &[BigRational],
+) -> Judged {
     let q = [F::round(&p[0]), F::round(&p[1])];
     let inputs: Vec<BigRational> = q.iter().map(|x| x.exact().expect("finite")).collect();
     let values = s.evaluate_float::<F>(&q);
-    let rounded_vertices: Vec<Vec<BigRational>> =
-        s.polygon.vertices().iter().map(|v| v.iter().map(|c| F::round(c).exact().unwrap_or_default()).collect()).collect();
+    let rounded_vertices: Vec<Vec<BigRational>> = s
+        .polygon
+        .vertices()
+        .iter()
+        .map(|v| {
+            v.iter()
+                .map(|c| F::round(c).exact().unwrap_or_default())
+                .collect()
+        })
+        .collect();
     let exact = Polygon::new(rounded_vertices).ok().and_then(|poly| {
-        let sr = SPatch { name: None, polygon: poly, net: s.net.map(|c| F::round(c).exact().unwrap_or_default()) };
+        let sr = SPatch {
+            name: None,
+            polygon: poly,
+            net: s.net.map(|c| F::round(c).exact().unwrap_or_default()),
+        };
         sr.evaluate(&inputs).ok().map(|(_, v)| v)
     });
     judge(&values, inputs, exact, intended)
@@ -154,12 +232,21 @@ fn spatch_float<F: Float + std::ops::Div<Output = F>>(s: &SPatch, p: &[BigRation
 /// `tribez eval` on an S-patch (Cartesian points only).
 pub fn spatch(args: &Args, file: String, s: SPatch) -> Result<Outcome, CliError> {
     if !args.cartesian {
-        return Err(CliError::Usage(format!("{file} is an S-patch: give Cartesian points of its polygon with --cartesian --at x,y")));
+        return Err(CliError::Usage(format!(
+            "{file} is an S-patch: give Cartesian points of its polygon with --cartesian --at x,y"
+        )));
     }
     let mut rows = Vec::new();
     for (what, p) in raw_points(args, 2)? {
         if p.len() != 2 {
-            return Err(CliError::core(&what, CoreError::WrongLength { what: "point".into(), expected: 2, found: p.len() }));
+            return Err(CliError::core(
+                &what,
+                CoreError::WrongLength {
+                    what: "point".into(),
+                    expected: 2,
+                    found: p.len(),
+                },
+            ));
         }
         let (lambda, point) = s.evaluate(&p).map_err(|e| CliError::core(&what, e))?;
         let mut floats = Vec::new();
@@ -169,10 +256,31 @@ pub fn spatch(args: &Args, file: String, s: SPatch) -> Result<Outcome, CliError>
                 Precision::F32 => spatch_float::<f32>(&s, &p, &point),
             });
         }
-        rows.push(Row { at: p.clone(), cartesian: Some(p), lambda: Some(lambda), point, floats });
+        rows.push(Row {
+            at: p.clone(),
+            cartesian: Some(p),
+            lambda: Some(lambda),
+            point,
+            floats,
+        });
     }
-    let header = format!("S-patch, depth {} over a {}-gon, points in R^{}", s.net.degree(), s.polygon.len(), s.net.dim());
-    Outcome::rendered(&Report { file, kind: "s-patch", header, algorithm: "Wachspress + de Casteljau", rows }, args.out.format, true)
+    let header = format!(
+        "S-patch, depth {} over a {}-gon, points in R^{}",
+        s.net.degree(),
+        s.polygon.len(),
+        s.net.dim()
+    );
+    Outcome::rendered(
+        &Report {
+            file,
+            kind: "s-patch",
+            header,
+            algorithm: "Wachspress + de Casteljau",
+            rows,
+        },
+        args.out.format,
+        true,
+    )
 }
 
 fn opt(q: &Option<BigRational>) -> Json {
@@ -184,19 +292,44 @@ impl Render for Report {
         let mut out = format!("{}: {}\n", self.file, self.header);
         for r in &self.rows {
             match (&r.cartesian, &r.lambda) {
-                (Some(c), Some(l)) => out += &format!("at {} (Wachspress {}): {}\n", tuple(c), tuple(l), tuple(&r.point)),
-                (Some(c), None) => out += &format!("at {} (Cartesian {}): {}\n", tuple(&r.at), tuple(c), tuple(&r.point)),
+                (Some(c), Some(l)) => {
+                    out += &format!(
+                        "at {} (Wachspress {}): {}\n",
+                        tuple(c),
+                        tuple(l),
+                        tuple(&r.point)
+                    )
+                }
+                (Some(c), None) => {
+                    out += &format!(
+                        "at {} (Cartesian {}): {}\n",
+                        tuple(&r.at),
+                        tuple(c),
+                        tuple(&r.point)
+                    )
+                }
                 _ => out += &format!("at {}: {}\n", tuple(&r.at), tuple(&r.point)),
             }
             for f in &r.floats {
-                out += &format!("  {} {}: inputs as the code saw them {}\n", f.precision.name(), self.algorithm, tuple(&f.inputs));
+                out += &format!(
+                    "  {} {}: inputs as the code saw them {}\n",
+                    f.precision.name(),
+                    self.algorithm,
+                    tuple(&f.inputs)
+                );
                 for (c, (dec, hex, exact, alg, total)) in f.values.iter().enumerate() {
-                    let ulps = |u: &Option<BigRational>| u.as_ref().map_or("n/a".into(), |x| to_decimal_string(x, 4));
+                    let ulps = |u: &Option<BigRational>| {
+                        u.as_ref().map_or("n/a".into(), |x| to_decimal_string(x, 4))
+                    };
                     out += &format!(
                         "    [{c}] {dec} = {hex} = {}; {} ulp from the exact value at those inputs ({}), {} ulp from the exact value at the intended inputs\n",
-                        exact.as_ref().map_or("not finite".into(), ToString::to_string),
+                        exact
+                            .as_ref()
+                            .map_or("not finite".into(), ToString::to_string),
                         ulps(alg),
-                        f.exact_at_inputs.as_ref().map_or("undefined".into(), |e| e[c].to_string()),
+                        f.exact_at_inputs
+                            .as_ref()
+                            .map_or("undefined".into(), |e| e[c].to_string()),
                         ulps(total),
                     );
                 }

@@ -41,8 +41,8 @@ use super::tree::{Document, Node};
 use crate::domain::Domain;
 use crate::patch::{AnyPatch, ControlNet, Patch};
 use crate::rational::RationalPatch;
-use crate::spatch::{Polygon, SPatch};
 use crate::simplex::{self, Simplex};
+use crate::spatch::{Polygon, SPatch};
 
 /// The largest degree a patch file may have. Exact evaluation at degree 200 costs tens of
 /// milliseconds per point (README, "Scaling"); beyond that, results run to many kilobits.
@@ -53,7 +53,16 @@ pub const MAX_CONTROL_POINTS: usize = 250_000;
 pub const MAX_SIMPLEX_DIMENSION: usize = 16;
 
 /// The keys a patch file may have.
-pub const PATCH_KEYS: &[&str] = &["name", "degree", "domain", "control_points", "domain_in_parent", "weights", "polygon", "kind"];
+pub const PATCH_KEYS: &[&str] = &[
+    "name",
+    "degree",
+    "domain",
+    "control_points",
+    "domain_in_parent",
+    "weights",
+    "polygon",
+    "kind",
+];
 
 /// Read a patch file: a polynomial Bézier simplex (or a functional patch, as its scalar net).
 /// Rational patches and S-patches are rejected with a located error.
@@ -76,49 +85,102 @@ pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok(p),
         other => {
             let table = doc.table(node, prefix)?;
-            let k = if matches!(other, AnyPatch::Rational(_)) { "weights" } else { "polygon" };
+            let k = if matches!(other, AnyPatch::Rational(_)) {
+                "weights"
+            } else {
+                "polygon"
+            };
             let at = Document::get(table, k).unwrap_or(node);
-            let key = if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
-            Err(doc.error(at, &key, format!("this is a {} patch; only polynomial Bézier patches are accepted here", other.kind_name())))
+            let key = if prefix.is_empty() {
+                k.to_string()
+            } else {
+                format!("{prefix}.{k}")
+            };
+            Err(doc.error(
+                at,
+                &key,
+                format!(
+                    "this is a {} patch; only polynomial Bézier patches are accepted here",
+                    other.kind_name()
+                ),
+            ))
         }
     }
 }
 
 /// Parse a patch of any kind from a table node.
-pub fn any_patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<AnyPatch, InputError> {
-    let key = |k: &str| if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
+pub fn any_patch_from_document(
+    doc: &Document,
+    node: &Node,
+    prefix: &str,
+) -> Result<AnyPatch, InputError> {
+    let key = |k: &str| {
+        if prefix.is_empty() {
+            k.to_string()
+        } else {
+            format!("{prefix}.{k}")
+        }
+    };
     let table = doc.table(node, prefix)?;
     doc.check_keys(node, table, PATCH_KEYS, prefix)?;
-    let name = Document::get(table, "name").map(|n| doc.string(n, &key("name")).map(str::to_string)).transpose()?;
-    let degree_node = Document::get(table, "degree").ok_or_else(|| doc.error(node, &key("degree"), "missing key `degree`"))?;
+    let name = Document::get(table, "name")
+        .map(|n| doc.string(n, &key("name")).map(str::to_string))
+        .transpose()?;
+    let degree_node = Document::get(table, "degree")
+        .ok_or_else(|| doc.error(node, &key("degree"), "missing key `degree`"))?;
     let degree = doc.usize(degree_node, &key("degree"))?;
     if degree > MAX_DEGREE {
-        return Err(doc.error(degree_node, &key("degree"), format!("degree {degree} is above the limit of {MAX_DEGREE} (see README, Scaling)")));
+        return Err(doc.error(
+            degree_node,
+            &key("degree"),
+            format!("degree {degree} is above the limit of {MAX_DEGREE} (see README, Scaling)"),
+        ));
     }
-    let cp_node = Document::get(table, "control_points").ok_or_else(|| doc.error(node, &key("control_points"), "missing table `control_points`"))?;
+    let cp_node = Document::get(table, "control_points").ok_or_else(|| {
+        doc.error(
+            node,
+            &key("control_points"),
+            "missing table `control_points`",
+        )
+    })?;
     let net = control_points(doc, cp_node, degree, &key("control_points"))?;
     let kind_node = Document::get(table, "kind");
     let kind = kind_node.map(|n| doc.string(n, &key("kind"))).transpose()?;
     let kind_error = |message: String| doc.error(kind_node.unwrap_or(node), &key("kind"), message);
     if let Some(k) = kind {
         if !["bezier", "rational", "functional", "s-patch"].contains(&k) {
-            return Err(kind_error(format!("unknown kind `{k}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")")));
+            return Err(kind_error(format!(
+                "unknown kind `{k}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")"
+            )));
         }
     }
     let weights_node = Document::get(table, "weights");
     if let Some(poly_node) = Document::get(table, "polygon") {
         for other in ["domain", "weights"] {
             if let Some(n) = Document::get(table, other) {
-                return Err(doc.error(n, &key(other), format!("an S-patch (with `polygon`) cannot have `{other}`")));
+                return Err(doc.error(
+                    n,
+                    &key(other),
+                    format!("an S-patch (with `polygon`) cannot have `{other}`"),
+                ));
             }
         }
         if kind.is_some_and(|k| k != "s-patch") {
-            return Err(kind_error(format!("kind `{}` contradicts `polygon` (an S-patch)", kind.unwrap_or_default())));
+            return Err(kind_error(format!(
+                "kind `{}` contradicts `polygon` (an S-patch)",
+                kind.unwrap_or_default()
+            )));
         }
         let rows = doc.array(poly_node, &key("polygon"))?;
-        let vertices = rows.iter().enumerate().map(|(i, r)| doc.rationals(r, &format!("{}[{i}]", key("polygon")))).collect::<Result<Vec<_>, _>>()?;
-        let polygon = Polygon::new(vertices).map_err(|e| doc.error(poly_node, &key("polygon"), e.to_string()))?;
-        let mut s = SPatch::new(polygon, net).map_err(|e| doc.error(cp_node, &key("control_points"), e.to_string()))?;
+        let vertices = rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| doc.rationals(r, &format!("{}[{i}]", key("polygon"))))
+            .collect::<Result<Vec<_>, _>>()?;
+        let polygon = Polygon::new(vertices)
+            .map_err(|e| doc.error(poly_node, &key("polygon"), e.to_string()))?;
+        let mut s = SPatch::new(polygon, net)
+            .map_err(|e| doc.error(cp_node, &key("control_points"), e.to_string()))?;
         s.name = name;
         return Ok(AnyPatch::SPatch(s));
     }
@@ -129,8 +191,14 @@ pub fn any_patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Res
     let patch = Patch { name, net, domain };
     match (kind, weights_node) {
         (Some("s-patch"), _) => Err(kind_error("an S-patch needs `polygon`".into())),
-        (Some("bezier" | "functional"), Some(w)) => Err(doc.error(w, &key("weights"), format!("a {} patch has no weights", kind.unwrap_or_default()))),
-        (Some("rational"), None) => Err(kind_error("a rational patch needs a [weights] table".into())),
+        (Some("bezier" | "functional"), Some(w)) => Err(doc.error(
+            w,
+            &key("weights"),
+            format!("a {} patch has no weights", kind.unwrap_or_default()),
+        )),
+        (Some("rational"), None) => Err(kind_error(
+            "a rational patch needs a [weights] table".into(),
+        )),
         (_, Some(w)) => {
             let weights = weights(doc, w, &patch.net, &key("weights"))?;
             Ok(AnyPatch::Rational(RationalPatch::new(patch, weights)))
@@ -150,7 +218,12 @@ pub fn any_patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Res
 }
 
 /// Parse `[weights]`: one number per control point, keyed like `control_points`.
-fn weights(doc: &Document, node: &Node, net: &ControlNet<BigRational>, key: &str) -> Result<Vec<BigRational>, InputError> {
+fn weights(
+    doc: &Document,
+    node: &Node,
+    net: &ControlNet<BigRational>,
+    key: &str,
+) -> Result<Vec<BigRational>, InputError> {
     let table = doc.table(node, key)?;
     let simplex = net.simplex();
     let mut slots: Vec<Option<(String, BigRational)>> = vec![None; simplex.len()];
@@ -162,7 +235,11 @@ fn weights(doc: &Document, node: &Node, net: &ControlNet<BigRational>, key: &str
             .map(|a| simplex.rank(&a))
             .ok_or_else(|| doc.error(v, &here, format!("no control point \"{k}\" (weights are keyed by the multi-indices of the control points)")))?;
         if let Some((other, _)) = &slots[r] {
-            return Err(doc.error(v, &here, format!("duplicated weight: \"{other}\" names the same control point")));
+            return Err(doc.error(
+                v,
+                &here,
+                format!("duplicated weight: \"{other}\" names the same control point"),
+            ));
         }
         slots[r] = Some((k.clone(), doc.rational(v, &here)?));
     }
@@ -171,17 +248,33 @@ fn weights(doc: &Document, node: &Node, net: &ControlNet<BigRational>, key: &str
         match slot {
             Some((_, w)) => out.push(w),
             None => {
-                return Err(doc.error(node, key, format!("missing weight \"{}\" (every control point needs one)", index_key(simplex.index(r)))));
+                return Err(doc.error(
+                    node,
+                    key,
+                    format!(
+                        "missing weight \"{}\" (every control point needs one)",
+                        index_key(simplex.index(r))
+                    ),
+                ));
             }
         }
     }
     if out.iter().all(num_traits::Zero::is_zero) {
-        return Err(doc.error(node, key, "every weight is zero: the rational patch is undefined everywhere"));
+        return Err(doc.error(
+            node,
+            key,
+            "every weight is zero: the rational patch is undefined everywhere",
+        ));
     }
     Ok(out)
 }
 
-fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Result<ControlNet<BigRational>, InputError> {
+fn control_points(
+    doc: &Document,
+    node: &Node,
+    degree: usize,
+    key: &str,
+) -> Result<ControlNet<BigRational>, InputError> {
     let table = doc.table(node, key)?;
     let Some((first_key, first)) = table.first() else {
         return Err(doc.error(node, key, "no control points"));
@@ -194,7 +287,14 @@ fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Resu
     };
     let m = parts(first_key, first)?.len().saturating_sub(1);
     if m == 0 || m > MAX_SIMPLEX_DIMENSION {
-        return Err(doc.error(first, &format!("{key}.\"{first_key}\""), format!("a multi-index needs 2 to {} parts", MAX_SIMPLEX_DIMENSION + 1)));
+        return Err(doc.error(
+            first,
+            &format!("{key}.\"{first_key}\""),
+            format!(
+                "a multi-index needs 2 to {} parts",
+                MAX_SIMPLEX_DIMENSION + 1
+            ),
+        ));
     }
     let total = simplex::binomial((degree + m) as u64, m as u64);
     if total > MAX_CONTROL_POINTS as u128 {
@@ -211,11 +311,19 @@ fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Resu
         }
         let sum: u64 = alpha.iter().map(|&a| u64::from(a)).sum();
         if sum != degree as u64 {
-            return Err(doc.error(v, &here, format!("multi-index sums to {sum}, but the degree is {degree}")));
+            return Err(doc.error(
+                v,
+                &here,
+                format!("multi-index sums to {sum}, but the degree is {degree}"),
+            ));
         }
         let r = simplex.rank(&alpha);
         if let Some((other, _)) = &slots[r] {
-            return Err(doc.error(v, &here, format!("duplicated multi-index: \"{other}\" names the same control point")));
+            return Err(doc.error(
+                v,
+                &here,
+                format!("duplicated multi-index: \"{other}\" names the same control point"),
+            ));
         }
         let point = doc.rationals(v, &here)?;
         if point.is_empty() {
@@ -247,7 +355,15 @@ fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Resu
 pub fn domain(doc: &Document, node: &Node, m: usize, key: &str) -> Result<Domain, InputError> {
     let rows = doc.array(node, key)?;
     if rows.len() != m + 1 {
-        return Err(doc.error(node, key, format!("the domain needs {} vertices for a {m}-simplex, found {}", m + 1, rows.len())));
+        return Err(doc.error(
+            node,
+            key,
+            format!(
+                "the domain needs {} vertices for a {m}-simplex, found {}",
+                m + 1,
+                rows.len()
+            ),
+        ));
     }
     let vertices = rows
         .iter()
@@ -259,7 +375,11 @@ pub fn domain(doc: &Document, node: &Node, m: usize, key: &str) -> Result<Domain
 
 /// `"1,0,2"` for a multi-index.
 pub fn index_key(alpha: &[u32]) -> String {
-    alpha.iter().map(ToString::to_string).collect::<Vec<_>>().join(",")
+    alpha
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 fn strings(xs: &[BigRational]) -> Vec<String> {
@@ -274,7 +394,10 @@ pub fn patch_to_json(patch: &Patch) -> Json {
     }
     obj.insert("degree".into(), json!(patch.net.degree()));
     if let Some(d) = &patch.domain {
-        obj.insert("domain".into(), json!(d.vertices().iter().map(|v| strings(v)).collect::<Vec<_>>()));
+        obj.insert(
+            "domain".into(),
+            json!(d.vertices().iter().map(|v| strings(v)).collect::<Vec<_>>()),
+        );
     }
     let mut cps = Map::new();
     for (alpha, p) in patch.net.entries() {
@@ -289,7 +412,13 @@ fn toml_string(s: &str) -> String {
 }
 
 fn toml_list(xs: &[BigRational]) -> String {
-    format!("[{}]", xs.iter().map(|x| toml_string(&x.to_string())).collect::<Vec<_>>().join(", "))
+    format!(
+        "[{}]",
+        xs.iter()
+            .map(|x| toml_string(&x.to_string()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
 }
 
 /// The patch as a TOML patch file.
@@ -300,7 +429,14 @@ pub fn patch_to_toml(patch: &Patch) -> String {
     }
     out += &format!("degree = {}\n", patch.net.degree());
     if let Some(d) = &patch.domain {
-        out += &format!("domain = [{}]\n", d.vertices().iter().map(|v| toml_list(v)).collect::<Vec<_>>().join(", "));
+        out += &format!(
+            "domain = [{}]\n",
+            d.vertices()
+                .iter()
+                .map(|v| toml_list(v))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
     }
     out += "\n[control_points]\n";
     for (alpha, p) in patch.net.entries() {
@@ -355,24 +491,57 @@ degree = 2
     #[test]
     fn bad_patches_name_the_place() {
         let missing = FINN.replace("\"0,1,1\" = [\"1\", \"1\", \"1\"]\n", "");
-        assert!(err(&missing).contains("missing control point \"0,1,1\""), "{}", err(&missing));
-        let dup = FINN.replace("\"0,1,1\"", "\"0, 1,1\"").replace("\"0,0,2\"", "\"0,1,1\"");
-        assert!(err(&dup).contains("duplicated multi-index"), "{}", err(&dup));
+        assert!(
+            err(&missing).contains("missing control point \"0,1,1\""),
+            "{}",
+            err(&missing)
+        );
+        let dup = FINN
+            .replace("\"0,1,1\"", "\"0, 1,1\"")
+            .replace("\"0,0,2\"", "\"0,1,1\"");
+        assert!(
+            err(&dup).contains("duplicated multi-index"),
+            "{}",
+            err(&dup)
+        );
         let sum = FINN.replace("\"0,0,2\"", "\"0,0,3\"");
-        assert!(err(&sum).starts_with("p.toml:10: control_points.\"0,0,3\": multi-index sums to 3"), "{}", err(&sum));
+        assert!(
+            err(&sum).starts_with("p.toml:10: control_points.\"0,0,3\": multi-index sums to 3"),
+            "{}",
+            err(&sum)
+        );
         let len = FINN.replace("\"0,0,2\"", "\"0,0,0,2\"");
         assert!(err(&len).contains("has 4 parts"), "{}", err(&len));
         let dim = FINN.replace("[\"0\", \"2\", \"1\"]", "[\"0\", \"2\"]");
         assert!(err(&dim).contains("different dimensions"), "{}", err(&dim));
         let num = FINN.replace("\"1\", \"1\", \"1\"", "\"1\", \"x\", \"1\"");
-        assert!(err(&num).contains("control_points.\"0,1,1\"[1]"), "{}", err(&num));
+        assert!(
+            err(&num).contains("control_points.\"0,1,1\"[1]"),
+            "{}",
+            err(&num)
+        );
         let zero = FINN.replace("\"1\", \"1\", \"1\"", "\"1\", \"1/0\", \"1\"");
         assert!(err(&zero).contains("zero denominator"), "{}", err(&zero));
         let big = FINN.replace("degree = 2", "degree = 201");
-        assert!(err(&big).contains("above the limit of 200"), "{}", err(&big));
-        let degenerate = FINN.replace("degree = 2", "degree = 2\ndomain = [[\"0\",\"0\"],[\"1\",\"1\"],[\"2\",\"2\"]]");
-        assert!(err(&degenerate).contains("degenerate domain"), "{}", err(&degenerate));
+        assert!(
+            err(&big).contains("above the limit of 200"),
+            "{}",
+            err(&big)
+        );
+        let degenerate = FINN.replace(
+            "degree = 2",
+            "degree = 2\ndomain = [[\"0\",\"0\"],[\"1\",\"1\"],[\"2\",\"2\"]]",
+        );
+        assert!(
+            err(&degenerate).contains("degenerate domain"),
+            "{}",
+            err(&degenerate)
+        );
         let unknown = FINN.replace("degree = 2", "degree = 2\ndegre = 3");
-        assert!(err(&unknown).contains("degre: unknown key"), "{}", err(&unknown));
+        assert!(
+            err(&unknown).contains("degre: unknown key"),
+            "{}",
+            err(&unknown)
+        );
     }
 }
