@@ -252,6 +252,7 @@ impl RationalPatch {
 mod tests {
     use super::*;
     use crate::number::parse_rational as q;
+    use num_traits::One;
     use proptest::prelude::*;
 
     /// FORMULAS.md §10: the quartic octant, weights ×6 and points in canonical order.
@@ -381,6 +382,113 @@ mod tests {
         for (a, b) in f.iter().zip(&exact) {
             assert!((a - crate::number::round_f64(b)).abs() < 1e-14);
         }
+    }
+
+    /// Numbers a + b√2 with a, b rational: enough to run the generic de Casteljau on the
+    /// quadratic "octant" candidate, whose edge weights are √2/2 (FORMULAS.md §10).
+    #[derive(Clone, Debug, PartialEq)]
+    struct Q2(BigRational, BigRational);
+
+    impl std::ops::Add for Q2 {
+        type Output = Q2;
+        fn add(self, o: Q2) -> Q2 {
+            Q2(self.0 + o.0, self.1 + o.1)
+        }
+    }
+    impl<'a> std::ops::Add<&'a Q2> for Q2 {
+        type Output = Q2;
+        fn add(self, o: &Q2) -> Q2 {
+            self + o.clone()
+        }
+    }
+    impl std::ops::Sub for Q2 {
+        type Output = Q2;
+        fn sub(self, o: Q2) -> Q2 {
+            Q2(self.0 - o.0, self.1 - o.1)
+        }
+    }
+    impl<'a> std::ops::Sub<&'a Q2> for Q2 {
+        type Output = Q2;
+        fn sub(self, o: &Q2) -> Q2 {
+            self - o.clone()
+        }
+    }
+    impl std::ops::Mul for Q2 {
+        type Output = Q2;
+        fn mul(self, o: Q2) -> Q2 {
+            let two = BigRational::from_integer(2.into());
+            Q2(&self.0 * &o.0 + two * &self.1 * &o.1, &self.0 * &o.1 + &self.1 * &o.0)
+        }
+    }
+    impl<'a> std::ops::Mul<&'a Q2> for Q2 {
+        type Output = Q2;
+        fn mul(self, o: &Q2) -> Q2 {
+            self * o.clone()
+        }
+    }
+    impl std::ops::Neg for Q2 {
+        type Output = Q2;
+        fn neg(self) -> Q2 {
+            Q2(-self.0, -self.1)
+        }
+    }
+    impl Zero for Q2 {
+        fn zero() -> Q2 {
+            Q2(BigRational::zero(), BigRational::zero())
+        }
+        fn is_zero(&self) -> bool {
+            self.0.is_zero() && self.1.is_zero()
+        }
+    }
+    impl One for Q2 {
+        fn one() -> Q2 {
+            Q2(BigRational::one(), BigRational::zero())
+        }
+    }
+    impl crate::scalar::Scalar for Q2 {
+        fn from_u64(k: u64) -> Q2 {
+            Q2(BigRational::from_integer(k.into()), BigRational::zero())
+        }
+        fn from_biguint(k: &num_bigint::BigUint) -> Q2 {
+            Q2(BigRational::from_integer(k.clone().into()), BigRational::zero())
+        }
+    }
+
+    #[test]
+    fn quadratic_candidate_misses_the_sphere() {
+        // FORMULAS.md §10/§15: the only quadratic candidate for the octant has corners e_x, e_y,
+        // e_z (weight 1) and edge points (1,1,0), (0,1,1), (1,0,1) with weight √2/2. Run the
+        // generic homogeneous de Casteljau in Q(√2).
+        let rat = |t: &str| Q2(q(t).unwrap(), BigRational::zero());
+        let half_sqrt2 = Q2(BigRational::zero(), q("1/2").unwrap());
+        // canonical order 200, 110, 020, 101, 011, 002
+        let points = [["1", "0", "0"], ["1", "1", "0"], ["0", "1", "0"], ["1", "0", "1"], ["0", "1", "1"], ["0", "0", "1"]];
+        let weights = [rat("1"), half_sqrt2.clone(), rat("1"), half_sqrt2.clone(), half_sqrt2, rat("1")];
+        let mut coords = Vec::new();
+        for (p, w) in points.iter().zip(&weights) {
+            coords.extend(p.iter().map(|x| rat(x) * w));
+            coords.push(w.clone());
+        }
+        let net = ControlNet::new(crate::simplex::Simplex::new(2, 2), 4, coords);
+        let norm_minus_w2 = |lam: &[&str]| {
+            let lam: Vec<Q2> = lam.iter().map(|t| rat(t)).collect();
+            let h = casteljau::evaluate(&net, &lam);
+            h[0].clone() * &h[0] + h[1].clone() * &h[1] + h[2].clone() * &h[2] - h[3].clone() * &h[3]
+        };
+        // the edge midpoints are on the sphere (the boundary arcs are exact quarter circles) …
+        assert!(norm_minus_w2(&["1/2", "1/2", "0"]).is_zero());
+        assert!(norm_minus_w2(&["0", "1/2", "1/2"]).is_zero());
+        // … the centroid is not: X·X − W² ≠ 0. With W = (3 + 3√2)/9 and X·X = 3(1 + 2√2)²/81,
+        // |P|² = X·X / W² = 11/3 − 2√2 ≈ 0.838 (FORMULAS.md §10).
+        let c = norm_minus_w2(&["1/3", "1/3", "1/3"]);
+        assert!(!c.is_zero());
+        let lam: Vec<Q2> = ["1/3", "1/3", "1/3"].iter().map(|t| rat(t)).collect();
+        let h = casteljau::evaluate(&net, &lam);
+        let xx = h[0].clone() * &h[0] + h[1].clone() * &h[1] + h[2].clone() * &h[2];
+        let w2 = h[3].clone() * &h[3];
+        // xx = (11/3 − 2√2) · W², checked without division
+        assert_eq!(xx, Q2(q("11/3").unwrap(), q("-2").unwrap()) * w2);
+        assert_eq!(h[3], Q2(q("1/3").unwrap(), q("1/3").unwrap()));
     }
 
     proptest! {
