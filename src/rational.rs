@@ -417,7 +417,10 @@ mod tests {
         type Output = Q2;
         fn mul(self, o: Q2) -> Q2 {
             let two = BigRational::from_integer(2.into());
-            Q2(&self.0 * &o.0 + two * &self.1 * &o.1, &self.0 * &o.1 + &self.1 * &o.0)
+            Q2(
+                &self.0 * &o.0 + two * &self.1 * &o.1,
+                &self.0 * &o.1 + &self.1 * &o.0,
+            )
         }
     }
     impl<'a> std::ops::Mul<&'a Q2> for Q2 {
@@ -450,7 +453,10 @@ mod tests {
             Q2(BigRational::from_integer(k.into()), BigRational::zero())
         }
         fn from_biguint(k: &num_bigint::BigUint) -> Q2 {
-            Q2(BigRational::from_integer(k.clone().into()), BigRational::zero())
+            Q2(
+                BigRational::from_integer(k.clone().into()),
+                BigRational::zero(),
+            )
         }
     }
 
@@ -462,8 +468,22 @@ mod tests {
         let rat = |t: &str| Q2(q(t).unwrap(), BigRational::zero());
         let half_sqrt2 = Q2(BigRational::zero(), q("1/2").unwrap());
         // canonical order 200, 110, 020, 101, 011, 002
-        let points = [["1", "0", "0"], ["1", "1", "0"], ["0", "1", "0"], ["1", "0", "1"], ["0", "1", "1"], ["0", "0", "1"]];
-        let weights = [rat("1"), half_sqrt2.clone(), rat("1"), half_sqrt2.clone(), half_sqrt2, rat("1")];
+        let points = [
+            ["1", "0", "0"],
+            ["1", "1", "0"],
+            ["0", "1", "0"],
+            ["1", "0", "1"],
+            ["0", "1", "1"],
+            ["0", "0", "1"],
+        ];
+        let weights = [
+            rat("1"),
+            half_sqrt2.clone(),
+            rat("1"),
+            half_sqrt2.clone(),
+            half_sqrt2,
+            rat("1"),
+        ];
         let mut coords = Vec::new();
         for (p, w) in points.iter().zip(&weights) {
             coords.extend(p.iter().map(|x| rat(x) * w));
@@ -473,7 +493,8 @@ mod tests {
         let norm_minus_w2 = |lam: &[&str]| {
             let lam: Vec<Q2> = lam.iter().map(|t| rat(t)).collect();
             let h = casteljau::evaluate(&net, &lam);
-            h[0].clone() * &h[0] + h[1].clone() * &h[1] + h[2].clone() * &h[2] - h[3].clone() * &h[3]
+            h[0].clone() * &h[0] + h[1].clone() * &h[1] + h[2].clone() * &h[2]
+                - h[3].clone() * &h[3]
         };
         // the edge midpoints are on the sphere (the boundary arcs are exact quarter circles) …
         assert!(norm_minus_w2(&["1/2", "1/2", "0"]).is_zero());

@@ -321,12 +321,36 @@ fn bad_weights() {
 }
 
 #[test]
-fn a_command_that_takes_polynomial_patches_rejects_a_rational_one() {
-    fails(
-        RATIONAL,
-        &["symbolic"],
-        &["p.toml", "weights", "rational patch"],
+fn symbolic_rational_prints_numerators_and_denominator() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "p.toml", RATIONAL);
+    tribez()
+        .arg("symbolic")
+        .arg(&p)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "[0] u\n[1] 2*v\ndenominator u + 2*v + 3*w",
+        ));
+}
+
+#[test]
+fn a_claim_op_that_takes_polynomial_patches_rejects_a_rational_one() {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "p.toml", RATIONAL);
+    write(
+        dir.path(),
+        "x.claims.toml",
+        "patch = \"p.toml\"\n[[claim]]\nid = \"s\"\nop = \"symbolic\"\nexpect = [\"u\", \"v\"]\n",
     );
+    tribez()
+        .arg("reproduce")
+        .arg(dir.path())
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "operation `symbolic` does not take a rational patch",
+        ));
 }
 
 const SQUARE: &str = r#"degree = 1
