@@ -395,7 +395,7 @@ mod tests {
             Q2(self.0 + o.0, self.1 + o.1)
         }
     }
-    impl<'a> std::ops::Add<&'a Q2> for Q2 {
+    impl std::ops::Add<&Q2> for Q2 {
         type Output = Q2;
         fn add(self, o: &Q2) -> Q2 {
             self + o.clone()
@@ -407,7 +407,7 @@ mod tests {
             Q2(self.0 - o.0, self.1 - o.1)
         }
     }
-    impl<'a> std::ops::Sub<&'a Q2> for Q2 {
+    impl std::ops::Sub<&Q2> for Q2 {
         type Output = Q2;
         fn sub(self, o: &Q2) -> Q2 {
             self - o.clone()
@@ -423,7 +423,7 @@ mod tests {
             )
         }
     }
-    impl<'a> std::ops::Mul<&'a Q2> for Q2 {
+    impl std::ops::Mul<&Q2> for Q2 {
         type Output = Q2;
         fn mul(self, o: &Q2) -> Q2 {
             self * o.clone()

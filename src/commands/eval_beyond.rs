@@ -41,19 +41,23 @@ fn raw_points(args: &Args, width: usize) -> Result<Vec<(String, Vec<BigRational>
     Ok(raw)
 }
 
+/// One float coordinate: decimal, hex, exact value, ULPs at the rounded inputs, ULPs at the
+/// intended inputs.
+type JudgedValue = (
+    String,
+    String,
+    Option<BigRational>,
+    Option<BigRational>,
+    Option<BigRational>,
+);
+
 /// A float result judged against exact values.
 struct Judged {
     precision: Precision,
     inputs: Vec<BigRational>,
     /// `None` when the exact value at the rounded inputs is undefined.
     exact_at_inputs: Option<Vec<BigRational>>,
-    values: Vec<(
-        String,
-        String,
-        Option<BigRational>,
-        Option<BigRational>,
-        Option<BigRational>,
-    )>,
+    values: Vec<JudgedValue>,
 }
 
 fn judge<F: Float>(

@@ -147,12 +147,12 @@ pub fn any_patch_from_document(
     let kind_node = Document::get(table, "kind");
     let kind = kind_node.map(|n| doc.string(n, &key("kind"))).transpose()?;
     let kind_error = |message: String| doc.error(kind_node.unwrap_or(node), &key("kind"), message);
-    if let Some(k) = kind {
-        if !["bezier", "rational", "functional", "s-patch"].contains(&k) {
-            return Err(kind_error(format!(
-                "unknown kind `{k}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")"
-            )));
-        }
+    if let Some(k) = kind
+        && !["bezier", "rational", "functional", "s-patch"].contains(&k)
+    {
+        return Err(kind_error(format!(
+            "unknown kind `{k}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")"
+        )));
     }
     let weights_node = Document::get(table, "weights");
     if let Some(poly_node) = Document::get(table, "polygon") {
@@ -445,6 +445,89 @@ pub fn patch_to_toml(patch: &Patch) -> String {
     out
 }
 
+/// A patch of any kind as a TOML patch file (`kind` for functional patches, `polygon` for
+/// S-patches, `[weights]` for rational patches).
+pub fn any_patch_to_toml(patch: &AnyPatch) -> String {
+    match patch {
+        AnyPatch::Bezier(p) => patch_to_toml(p),
+        AnyPatch::Functional(p) => format!("kind = \"functional\"\n{}", patch_to_toml(p)),
+        AnyPatch::Rational(r) => {
+            let mut out = patch_to_toml(&r.patch);
+            out += "\n[weights]\n";
+            for (alpha, w) in r.patch.net.simplex().iter().zip(&r.weights) {
+                out += &format!(
+                    "\"{}\" = {}\n",
+                    index_key(alpha),
+                    toml_string(&w.to_string())
+                );
+            }
+            out
+        }
+        AnyPatch::SPatch(s) => {
+            let mut out = String::new();
+            if let Some(name) = &s.name {
+                out += &format!("name = {}\n", toml_string(name));
+            }
+            out += &format!("degree = {}\n", s.net.degree());
+            let vs: Vec<String> = s.polygon.vertices().iter().map(|v| toml_list(v)).collect();
+            out += &format!("polygon = [{}]\n\n[control_points]\n", vs.join(", "));
+            for (alpha, p) in s.net.entries() {
+                out += &format!("\"{}\" = {}\n", index_key(alpha), toml_list(p));
+            }
+            out
+        }
+    }
+}
+
+/// A patch of any kind as JSON, in the patch-file layout.
+pub fn any_patch_to_json(patch: &AnyPatch) -> Json {
+    match patch {
+        AnyPatch::Bezier(p) => patch_to_json(p),
+        AnyPatch::Functional(p) => {
+            let mut j = patch_to_json(p);
+            j["kind"] = json!("functional");
+            j
+        }
+        AnyPatch::Rational(r) => {
+            let mut j = patch_to_json(&r.patch);
+            let w: Map<String, Json> = r
+                .patch
+                .net
+                .simplex()
+                .iter()
+                .zip(&r.weights)
+                .map(|(a, w)| (index_key(a), json!(w.to_string())))
+                .collect();
+            j["weights"] = Json::Object(w);
+            j
+        }
+        AnyPatch::SPatch(s) => {
+            let mut obj = Map::new();
+            if let Some(name) = &s.name {
+                obj.insert("name".into(), json!(name));
+            }
+            obj.insert("degree".into(), json!(s.net.degree()));
+            obj.insert(
+                "polygon".into(),
+                json!(
+                    s.polygon
+                        .vertices()
+                        .iter()
+                        .map(|v| strings(v))
+                        .collect::<Vec<_>>()
+                ),
+            );
+            let cps: Map<String, Json> = s
+                .net
+                .entries()
+                .map(|(a, p)| (index_key(a), json!(strings(p))))
+                .collect();
+            obj.insert("control_points".into(), Json::Object(cps));
+            Json::Object(obj)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -543,5 +626,30 @@ degree = 2
             "{}",
             err(&unknown)
         );
+    }
+
+    #[test]
+    fn every_kind_round_trips_through_toml_and_json() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/beyond");
+        for f in [
+            "octant_quartic.toml",
+            "pentagon_depth2.toml",
+            "functional_linear.toml",
+            "tetra_quadratic.toml",
+        ] {
+            let p = read_any_patch(&dir.join(f)).unwrap();
+            let doc = Document::parse_toml("p.toml", &any_patch_to_toml(&p)).unwrap();
+            assert_eq!(
+                any_patch_from_document(&doc, &doc.root, "").unwrap(),
+                p,
+                "{f}"
+            );
+            let doc = Document::parse_json("p.json", &any_patch_to_json(&p).to_string()).unwrap();
+            assert_eq!(
+                any_patch_from_document(&doc, &doc.root, "").unwrap(),
+                p,
+                "{f}"
+            );
+        }
     }
 }
