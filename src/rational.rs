@@ -537,5 +537,28 @@ mod tests {
             let mu: Vec<BigRational> = lam.iter().zip(&rho).map(|(l, r)| l / r).collect();
             prop_assert_eq!(q2.evaluate(&mu).unwrap(), x);
         }
+
+        #[test]
+        fn quotient_rule_matches_the_symbolic_derivative(
+            a in 0i64..30, b in 0i64..30, c in 1i64..30, d0 in -5i64..6, d1 in -5i64..6,
+        ) {
+            // D_d p = Σ_k d_k ∂(X/W)/∂λ_k, from the polynomials of the homogeneous form.
+            let s = a + b + c;
+            let lam = vec![BigRational::new(a.into(), s.into()), BigRational::new(b.into(), s.into()), BigRational::new(c.into(), s.into())];
+            let d = vec![BigRational::from_integer(d0.into()), BigRational::from_integer(d1.into()), BigRational::from_integer((-d0 - d1).into())];
+            let p = octant();
+            let h = p.homogeneous_form();
+            let (w, x) = h.split_last().unwrap();
+            let wv = w.evaluate(&lam);
+            let dw: BigRational = (0..3).map(|k| &d[k] * w.derivative(k).evaluate(&lam)).sum();
+            let want: Vec<BigRational> = x
+                .iter()
+                .map(|xc| {
+                    let dx: BigRational = (0..3).map(|k| &d[k] * xc.derivative(k).evaluate(&lam)).sum();
+                    (dx * &wv - xc.evaluate(&lam) * &dw) / (&wv * &wv)
+                })
+                .collect();
+            prop_assert_eq!(p.derivative(&lam, &d).unwrap(), want);
+        }
     }
 }
