@@ -25,7 +25,7 @@ fn fails_with(args: &[&str], message: &str) {
     tribez().args(args).assert().code(2).stdout("").stderr(predicate::str::contains(message));
 }
 
-const FINN: &str = "derivatives/finn.toml";
+const FINN: &str = "finn_day30.toml";
 const FLOATER: &str = "derivatives/finn_floater.toml";
 
 #[test]
