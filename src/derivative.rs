@@ -73,7 +73,11 @@ pub fn check_order(order: usize, degree: usize) -> Result<(), CoreError> {
 
 /// `a × b` in `ℚ³`.
 pub fn cross(a: &[BigRational], b: &[BigRational]) -> Vec<BigRational> {
-    vec![&a[1] * &b[2] - &a[2] * &b[1], &a[2] * &b[0] - &a[0] * &b[2], &a[0] * &b[1] - &a[1] * &b[0]]
+    vec![
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
 }
 
 fn sub(a: &[BigRational], b: &[BigRational]) -> Vec<BigRational> {
@@ -99,14 +103,23 @@ pub struct TangentFrame {
 }
 
 /// The tangent frame of a patch at barycentric `λ` over `domain` (degree `n >= 1`, any `m`).
-pub fn tangent_frame(net: &ControlNet<BigRational>, domain: &Domain, at: &[BigRational]) -> Result<TangentFrame, CoreError> {
+pub fn tangent_frame(
+    net: &ControlNet<BigRational>,
+    domain: &Domain,
+    at: &[BigRational],
+) -> Result<TangentFrame, CoreError> {
     let n = net.degree();
     if n == 0 {
-        return Err(CoreError::Invalid("a patch of degree 0 is constant: it has no tangent plane".into()));
+        return Err(CoreError::Invalid(
+            "a patch of degree 0 is constant: it has no tangent plane".into(),
+        ));
     }
     let m = net.m();
     if domain.m() != m {
-        return Err(CoreError::Mismatch(format!("the domain is a {}-simplex, the patch is over a {m}-simplex", domain.m())));
+        return Err(CoreError::Mismatch(format!(
+            "the domain is a {}-simplex, the patch is over a {m}-simplex",
+            domain.m()
+        )));
     }
     let args = vec![at; n - 1];
     let level = casteljau::partial_blossom(net, &args);
@@ -119,19 +132,35 @@ pub fn tangent_frame(net: &ControlNet<BigRational>, domain: &Domain, at: &[BigRa
         unit[c] = BigRational::one();
         let delta = domain.direction(&unit)?;
         let v: Vec<BigRational> = (0..net.dim())
-            .map(|i| intermediate.iter().zip(&delta).map(|(p, dk)| dk * &p[i]).sum::<BigRational>() * &nq)
+            .map(|i| {
+                intermediate
+                    .iter()
+                    .zip(&delta)
+                    .map(|(p, dk)| dk * &p[i])
+                    .sum::<BigRational>()
+                    * &nq
+            })
             .collect();
         partials.push(v);
     }
     let (normal, normal_from_intermediate) = if m == 2 && net.dim() == 3 {
         let k = &nq * &nq / domain.determinant();
         let c = &intermediate;
-        let via = cross(&sub(&c[1], &c[0]), &sub(&c[2], &c[0])).into_iter().map(|x| x * &k).collect();
+        let via = cross(&sub(&c[1], &c[0]), &sub(&c[2], &c[0]))
+            .into_iter()
+            .map(|x| x * &k)
+            .collect();
         (Some(cross(&partials[0], &partials[1])), Some(via))
     } else {
         (None, None)
     };
-    Ok(TangentFrame { point, intermediate, partials, normal, normal_from_intermediate })
+    Ok(TangentFrame {
+        point,
+        intermediate,
+        partials,
+        normal,
+        normal_from_intermediate,
+    })
 }
 
 #[cfg(test)]
@@ -146,10 +175,21 @@ mod tests {
     }
 
     fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
-            .iter()
-            .map(|p| p.iter().map(|&x| BigRational::from_integer(x.into())).collect())
-            .collect();
+        let pts: Vec<Vec<BigRational>> = [
+            [0, 0, 0],
+            [1, 0, 2],
+            [0, 2, 0],
+            [0, 1, 0],
+            [1, 1, 1],
+            [0, 2, 1],
+        ]
+        .iter()
+        .map(|p| {
+            p.iter()
+                .map(|&x| BigRational::from_integer(x.into()))
+                .collect()
+        })
+        .collect();
         ControlNet::from_points(2, 2, &pts)
     }
 
@@ -157,8 +197,18 @@ mod tests {
     fn finn_tangent_frame_formulas_section_3() {
         let f = tangent_frame(&finn(), &Domain::reference(2), &r(&["1/2", "1/3", "1/6"])).unwrap();
         assert_eq!(f.point, r(&["4/9", "5/9", "29/36"]));
-        assert_eq!(f.intermediate, vec![r(&["1/3", "1/6", "2/3"]), r(&["2/3", "5/6", "7/6"]), r(&["1/3", "7/6", "1/2"])]);
-        assert_eq!(f.partials, vec![r(&["0", "-2", "1/3"]), r(&["2/3", "-2/3", "4/3"])]);
+        assert_eq!(
+            f.intermediate,
+            vec![
+                r(&["1/3", "1/6", "2/3"]),
+                r(&["2/3", "5/6", "7/6"]),
+                r(&["1/3", "7/6", "1/2"])
+            ]
+        );
+        assert_eq!(
+            f.partials,
+            vec![r(&["0", "-2", "1/3"]), r(&["2/3", "-2/3", "4/3"])]
+        );
         assert_eq!(f.normal, Some(r(&["-22/9", "2/9", "4/3"])));
         assert_eq!(f.normal_from_intermediate, f.normal);
     }
@@ -180,7 +230,13 @@ mod tests {
 
     #[test]
     fn order_above_degree_is_an_error() {
-        assert_eq!(check_order(3, 2), Err(CoreError::OrderTooHigh { order: 3, degree: 2 }));
+        assert_eq!(
+            check_order(3, 2),
+            Err(CoreError::OrderTooHigh {
+                order: 3,
+                degree: 2
+            })
+        );
         assert!(check_order(2, 2).is_ok());
     }
 
@@ -189,11 +245,17 @@ mod tests {
         // curve (m = 1): p(t) = (1−t)² ·0 + 2(1−t)t·1 + t²·4 → d/dt along (−1, 1) at t: 2(1−t)·1... check
         // p = 2uv + 4v², D_(−1,1) p = ∂_v P − ∂_u P = (2u + 8v) − 2v; at (u,v) = (1/2,1/2): 4.
         let c = ControlNet::from_points(1, 2, &[r(&["0"]), r(&["1"]), r(&["4"])]);
-        assert_eq!(directional_derivative(&c, &[&r(&["-1", "1"])], &r(&["1/2", "1/2"])), r(&["4"]));
+        assert_eq!(
+            directional_derivative(&c, &[&r(&["-1", "1"])], &r(&["1/2", "1/2"])),
+            r(&["4"])
+        );
         // tetrahedron of degree 1: p = Σ λ_k c_k, derivative along e_3 − e_0 is c_3 − c_0 everywhere
         let t = ControlNet::from_points(3, 1, &[r(&["1"]), r(&["2"]), r(&["5"]), r(&["11"])]);
         let at = r(&["1/4", "1/4", "1/4", "1/4"]);
-        assert_eq!(directional_derivative(&t, &[&r(&["-1", "0", "0", "1"])], &at), r(&["10"]));
+        assert_eq!(
+            directional_derivative(&t, &[&r(&["-1", "0", "0", "1"])], &at),
+            r(&["10"])
+        );
     }
 
     #[test]
@@ -209,7 +271,9 @@ mod tests {
     fn net_strategy(m: usize) -> impl Strategy<Value = ControlNet<BigRational>> {
         (1usize..=4, 1usize..=3).prop_flat_map(move |(n, d)| {
             let len = crate::simplex::count(m, n) * d;
-            proptest::collection::vec(small(), len).prop_map(move |coords| ControlNet::new(crate::simplex::Simplex::new(m, n), d, coords))
+            proptest::collection::vec(small(), len).prop_map(move |coords| {
+                ControlNet::new(crate::simplex::Simplex::new(m, n), d, coords)
+            })
         })
     }
 
@@ -229,13 +293,21 @@ mod tests {
         })
     }
 
-    type Case = (ControlNet<BigRational>, Vec<BigRational>, Vec<Vec<BigRational>>);
+    type Case = (
+        ControlNet<BigRational>,
+        Vec<BigRational>,
+        Vec<Vec<BigRational>>,
+    );
 
     fn case() -> impl Strategy<Value = Case> {
         (1usize..=3).prop_flat_map(|m| {
             net_strategy(m).prop_flat_map(move |net| {
                 let n = net.degree();
-                (Just(net), bary(m), (0..=n).prop_flat_map(move |r| proptest::collection::vec(dir(m), r)))
+                (
+                    Just(net),
+                    bary(m),
+                    (0..=n).prop_flat_map(move |r| proptest::collection::vec(dir(m), r)),
+                )
             })
         })
     }
@@ -295,9 +367,13 @@ mod tests {
 
     #[test]
     fn float_path_runs_the_same_algorithm() {
-        let net = finn().map(|x| crate::number::round_f64(x));
+        let net = finn().map(crate::number::round_f64);
         let px = directional_derivative(&net, &[&[1.0, 0.0, -1.0]], &[0.5, 0.25, 0.25]);
-        let exact = directional_derivative(&finn(), &[&r(&["1", "0", "-1"])], &r(&["1/2", "1/4", "1/4"]));
+        let exact = directional_derivative(
+            &finn(),
+            &[&r(&["1", "0", "-1"])],
+            &r(&["1/2", "1/4", "1/4"]),
+        );
         let want: Vec<f64> = exact.iter().map(crate::number::round_f64).collect();
         assert_eq!(px, want);
     }

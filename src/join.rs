@@ -61,7 +61,10 @@ fn facet_word(m: usize) -> &'static str {
 pub fn shared_facet(da: &Domain, db: &Domain) -> Result<SharedFacet, CoreError> {
     let m = da.m();
     if db.m() != m {
-        return Err(CoreError::Mismatch(format!("the domains are a {m}-simplex and a {}-simplex", db.m())));
+        return Err(CoreError::Mismatch(format!(
+            "the domains are a {m}-simplex and a {}-simplex",
+            db.m()
+        )));
     }
     let mut a = Vec::new();
     let mut b = Vec::new();
@@ -88,10 +91,20 @@ pub fn shared_facet(da: &Domain, db: &Domain) -> Result<SharedFacet, CoreError> 
             m
         )));
     }
-    let a_opposite = (0..=m).find(|k| !a.contains(k)).expect("one vertex is off the facet");
-    let b_opposite = (0..=m).find(|k| !b.contains(k)).expect("one vertex is off the facet");
+    let a_opposite = (0..=m)
+        .find(|k| !a.contains(k))
+        .expect("one vertex is off the facet");
+    let b_opposite = (0..=m)
+        .find(|k| !b.contains(k))
+        .expect("one vertex is off the facet");
     let vertices = a.iter().map(|&i| da.vertices()[i].clone()).collect();
-    Ok(SharedFacet { a, b, a_opposite, b_opposite, vertices })
+    Ok(SharedFacet {
+        a,
+        b,
+        a_opposite,
+        b_opposite,
+        vertices,
+    })
 }
 
 /// The rows of the C^n extension of `A` across a facet: `rows[ρ] = b_A[μ^ρ, ·^{n−ρ}]`, a net of
@@ -232,7 +245,12 @@ fn sub(a: &[Q], b: &[Q]) -> Vec<Q> {
 
 fn det3_poly(a: &[Polynomial; 3], b: &[Polynomial; 3], c: &[Polynomial; 3]) -> Polynomial {
     let m = |x: &Polynomial, y: &Polynomial, z: &Polynomial| x.mul(y).mul(z);
-    m(&a[0], &b[1], &c[2]).add(&m(&a[1], &b[2], &c[0])).add(&m(&a[2], &b[0], &c[1])).sub(&m(&a[2], &b[1], &c[0])).sub(&m(&a[1], &b[0], &c[2])).sub(&m(&a[0], &b[2], &c[1]))
+    m(&a[0], &b[1], &c[2])
+        .add(&m(&a[1], &b[2], &c[0]))
+        .add(&m(&a[2], &b[0], &c[1]))
+        .sub(&m(&a[2], &b[1], &c[0]))
+        .sub(&m(&a[1], &b[0], &c[2]))
+        .sub(&m(&a[0], &b[2], &c[1]))
 }
 
 /// All `k×k` minors (`k = 2, 3`) of the `d×k` matrix whose columns are `cols`, rows chosen in
@@ -270,7 +288,12 @@ fn edge_derivative(forms: &[Polynomial], dir: &[Q], edge: &[Polynomial]) -> Vec<
     forms
         .iter()
         .map(|p| {
-            let d = dir.iter().enumerate().fold(Polynomial::zero(p.nvars()), |acc, (k, dk)| acc.add(&p.derivative(k).scale(dk)));
+            let d = dir
+                .iter()
+                .enumerate()
+                .fold(Polynomial::zero(p.nvars()), |acc, (k, dk)| {
+                    acc.add(&p.derivative(k).scale(dk))
+                });
             d.compose(edge)
         })
         .collect()
@@ -301,7 +324,11 @@ fn cross(a: &[Q], b: &[Q]) -> Vec<Q> {
 pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
     let (na, nb) = (&a.net, &b.net);
     if na.m() != nb.m() {
-        return Err(CoreError::Mismatch(format!("the patches are over a {}-simplex and a {}-simplex", na.m(), nb.m())));
+        return Err(CoreError::Mismatch(format!(
+            "the patches are over a {}-simplex and a {}-simplex",
+            na.m(),
+            nb.m()
+        )));
     }
     if na.degree() != nb.degree() {
         return Err(CoreError::Mismatch(format!(
@@ -311,7 +338,11 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         )));
     }
     if na.dim() != nb.dim() {
-        return Err(CoreError::Mismatch(format!("the control points have {} and {} coordinates", na.dim(), nb.dim())));
+        return Err(CoreError::Mismatch(format!(
+            "the control points have {} and {} coordinates",
+            na.dim(),
+            nb.dim()
+        )));
     }
     let (da, db) = (a.domain_or_reference(), b.domain_or_reference());
     let facet = shared_facet(&da, &db)?;
@@ -341,10 +372,19 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         };
         if actual != required.as_slice() {
             rows_agree[rho] = false;
-            violations.push(Violation::Row { rho, index: beta.to_vec(), actual: actual.to_vec(), difference: sub(actual, &required), required });
+            violations.push(Violation::Row {
+                rho,
+                index: beta.to_vec(),
+                actual: actual.to_vec(),
+                difference: sub(actual, &required),
+                required,
+            });
         }
     }
-    let max_smoothness = rows_agree.iter().position(|&ok| !ok).map_or(n as i64, |r| r as i64 - 1);
+    let max_smoothness = rows_agree
+        .iter()
+        .position(|&ok| !ok)
+        .map_or(n as i64, |r| r as i64 - 1);
     let c0 = max_smoothness >= 0;
     let c1 = max_smoothness >= 1;
 
@@ -360,14 +400,28 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
             p2[facet.a[1]] += 1;
             let mut p3 = base;
             p3[facet.a_opposite] += 1;
-            let pts = [na.at(&p1).to_vec(), na.at(&p2).to_vec(), na.at(&p3).to_vec(), qb.to_vec()];
-            let vecs = [sub(&pts[1], &pts[0]), sub(&pts[2], &pts[0]), sub(&pts[3], &pts[0])];
+            let pts = [
+                na.at(&p1).to_vec(),
+                na.at(&p2).to_vec(),
+                na.at(&p3).to_vec(),
+                qb.to_vec(),
+            ];
+            let vecs = [
+                sub(&pts[1], &pts[0]),
+                sub(&pts[2], &pts[0]),
+                sub(&pts[3], &pts[0]),
+            ];
             let volume = first_nonzero_minor3(&vecs);
             if !volume.is_zero() {
                 all_planar = false;
                 violations.push(Violation::Coplanarity {
                     index: beta.to_vec(),
-                    points: vec![(p1, pts[0].clone()), (p2, pts[1].clone()), (p3, pts[2].clone()), (beta.to_vec(), pts[3].clone())],
+                    points: vec![
+                        (p1, pts[0].clone()),
+                        (p2, pts[1].clone()),
+                        (p3, pts[2].clone()),
+                        (beta.to_vec(), pts[3].clone()),
+                    ],
                     volume,
                 });
             }
@@ -383,11 +437,19 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         let xa = edge_derivative(&fa, &unit_diff(m, ka, ia), &la);
         let xb = edge_derivative(&fb, &unit_diff(m, kb, ib), &lb);
         g1_minors = minors(&[e.clone(), xa.clone(), xb.clone()]);
-        let regular_a = minors(&[e.clone(), xa.clone()]).iter().any(|p| !p.is_zero());
-        let regular_b = minors(&[e.clone(), xb.clone()]).iter().any(|p| !p.is_zero());
+        let regular_a = minors(&[e.clone(), xa.clone()])
+            .iter()
+            .any(|p| !p.is_zero());
+        let regular_b = minors(&[e.clone(), xb.clone()])
+            .iter()
+            .any(|p| !p.is_zero());
         let mut holds = c0 && regular_a && regular_b;
         if !c0 {
-            violations.push(Violation::G1 { reason: "the patches do not meet along the edge (not C0)".into(), determinant: None, witness: None });
+            violations.push(Violation::G1 {
+                reason: "the patches do not meet along the edge (not C0)".into(),
+                determinant: None,
+                witness: None,
+            });
         }
         for (who, ok) in [("A", regular_a), ("B", regular_b)] {
             if !ok {
@@ -408,10 +470,30 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
                 if value.is_zero() {
                     return None;
                 }
-                let at: Vec<Q> = la.iter().map(|p| p.evaluate(std::slice::from_ref(&t))).collect();
-                let ev = |v: &[Polynomial]| v.iter().map(|p| p.evaluate(std::slice::from_ref(&t))).collect::<Vec<_>>();
-                let (normal_a, normal_b) = if d == 3 { (Some(cross(&ev(&e), &ev(&xa))), Some(cross(&ev(&e), &ev(&xb)))) } else { (None, None) };
-                Some(G1Witness { t, at, value, normal_a, normal_b })
+                let at: Vec<Q> = la
+                    .iter()
+                    .map(|p| p.evaluate(std::slice::from_ref(&t)))
+                    .collect();
+                let ev = |v: &[Polynomial]| {
+                    v.iter()
+                        .map(|p| p.evaluate(std::slice::from_ref(&t)))
+                        .collect::<Vec<_>>()
+                };
+                let (normal_a, normal_b) = if d == 3 {
+                    (
+                        Some(cross(&ev(&e), &ev(&xa))),
+                        Some(cross(&ev(&e), &ev(&xb))),
+                    )
+                } else {
+                    (None, None)
+                };
+                Some(G1Witness {
+                    t,
+                    at,
+                    value,
+                    normal_a,
+                    normal_b,
+                })
             });
             violations.push(Violation::G1 {
                 reason: "B's cross-boundary derivative leaves the span of A's edge tangent and cross-boundary derivative: det[E, X_A, X_B](t) is not the zero polynomial".into(),
@@ -423,9 +505,24 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
     } else if m == 2 {
         notes.push(format!("G1 and seed 002's coplanarity are decided for surfaces in R^d with d >= 3; these points have d = {d}"));
     } else {
-        notes.push(format!("G1 is decided for triangles (m = 2) only; this is a join of {m}-simplices"));
+        notes.push(format!(
+            "G1 is decided for triangles (m = 2) only; this is a join of {m}-simplices"
+        ));
     }
-    Ok(Join { facet, mu, opposite_sides, rows_agree, c0, c1, max_smoothness, g1, g1_minors, coplanarity, violations, notes })
+    Ok(Join {
+        facet,
+        mu,
+        opposite_sides,
+        rows_agree,
+        c0,
+        c1,
+        max_smoothness,
+        g1,
+        g1_minors,
+        coplanarity,
+        violations,
+        notes,
+    })
 }
 
 /// The first non-zero `3×3` minor of the `d×3` matrix with the given columns (`d >= 3`), else 0.
@@ -434,7 +531,10 @@ fn first_nonzero_minor3(cols: &[Vec<Q>; 3]) -> Q {
     for i in 0..d {
         for j in i + 1..d {
             for l in j + 1..d {
-                let mat = [i, j, l].iter().map(|&r| cols.iter().map(|c| c[r].clone()).collect()).collect();
+                let mat = [i, j, l]
+                    .iter()
+                    .map(|&r| cols.iter().map(|c| c[r].clone()).collect())
+                    .collect();
                 let v = determinant(mat);
                 if !v.is_zero() {
                     return v;
@@ -466,12 +566,18 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
     let mut vertices: Vec<Vec<Q>> = facet.iter().map(|&k| da.vertices()[k].clone()).collect();
     vertices.push(new_vertex);
     let db = Domain::new(vertices)?;
-    let a_opposite = (0..=m).find(|k| !facet.contains(k)).expect("one vertex is off the facet");
+    let a_opposite = (0..=m)
+        .find(|k| !facet.contains(k))
+        .expect("one vertex is off the facet");
     let mu = da.barycentric(&db.vertices()[m])?;
     if !mu[a_opposite].is_negative() {
         return Err(CoreError::Invalid(format!(
             "the new vertex ({}) lies on the same side of the common {} as A's vertex {} (μ = {}): the triangles would overlap",
-            db.vertices()[m].iter().map(ToString::to_string).collect::<Vec<_>>().join(", "),
+            db.vertices()[m]
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", "),
             facet_word(m),
             a_opposite + 1,
             crate::report::tuple(&mu)
@@ -488,7 +594,10 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
     let simplex = Simplex::new(m, net.degree());
     let points: Vec<Vec<Q>> = simplex.iter().map(|beta| ext.point(&sf, beta)).collect();
     let out = ControlNet::from_points(m, net.degree(), &points);
-    let what = facet.iter().map(|k| format!("a{}", k + 1)).collect::<String>();
+    let what = facet
+        .iter()
+        .map(|k| format!("a{}", k + 1))
+        .collect::<String>();
     Ok(Patch {
         name: Some(format!(
             "C1 neighbour of {} across {what}: rows 0 and 1 (last index 0, 1) forced by C0 and the mu rule; rows >= 2 are free, filled with the C^n extension (blossom)",
@@ -511,7 +620,11 @@ mod tests {
 
     fn patch(n: usize, pts: &[&[&str]], domain: &[&[&str]]) -> Patch {
         let points: Vec<Vec<Q>> = pts.iter().map(|p| r(p)).collect();
-        Patch { name: None, net: ControlNet::from_points(2, n, &points), domain: Some(Domain::new(domain.iter().map(|v| r(v)).collect()).unwrap()) }
+        Patch {
+            name: None,
+            net: ControlNet::from_points(2, n, &points),
+            domain: Some(Domain::new(domain.iter().map(|v| r(v)).collect()).unwrap()),
+        }
     }
 
     /// FORMULAS.md §8: planar quadrilaterals, yet not G1 (normals not parallel at the midpoint).
@@ -519,8 +632,30 @@ mod tests {
     fn seed_002_g1_counterexample() {
         let t: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "1"]];
         let u: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "-1"]];
-        let p = patch(2, &[&["0", "0", "0"], &["1", "0", "0"], &["2", "0", "0"], &["1/2", "1", "0"], &["3/2", "1", "1"], &["1", "2", "1"]], t);
-        let q = patch(2, &[&["0", "0", "0"], &["1", "0", "0"], &["2", "0", "0"], &["1/2", "-2", "0"], &["3/2", "-1", "-1"], &["1", "-2", "-1"]], u);
+        let p = patch(
+            2,
+            &[
+                &["0", "0", "0"],
+                &["1", "0", "0"],
+                &["2", "0", "0"],
+                &["1/2", "1", "0"],
+                &["3/2", "1", "1"],
+                &["1", "2", "1"],
+            ],
+            t,
+        );
+        let q = patch(
+            2,
+            &[
+                &["0", "0", "0"],
+                &["1", "0", "0"],
+                &["2", "0", "0"],
+                &["1/2", "-2", "0"],
+                &["3/2", "-1", "-1"],
+                &["1", "-2", "-1"],
+            ],
+            u,
+        );
         let j = analyse(&p, &q).unwrap();
         assert!(j.c0);
         assert_eq!(j.coplanarity, Some(true));
@@ -536,17 +671,51 @@ mod tests {
         let t = Domain::new(vec![r(&["0", "0"]), r(&["1", "0"]), r(&["0", "1"])]).unwrap();
         let u = Domain::new(vec![r(&["1", "0"]), r(&["1", "-1"]), r(&["0", "0"])]).unwrap();
         let f = shared_facet(&t, &u).unwrap();
-        assert_eq!((f.a.clone(), f.b.clone(), f.a_opposite, f.b_opposite), (vec![0, 1], vec![2, 0], 2, 1));
+        assert_eq!(
+            (f.a.clone(), f.b.clone(), f.a_opposite, f.b_opposite),
+            (vec![0, 1], vec![2, 0], 2, 1)
+        );
         let far = Domain::new(vec![r(&["5", "5"]), r(&["6", "5"]), r(&["5", "6"])]).unwrap();
-        assert!(shared_facet(&t, &far).unwrap_err().to_string().contains("share no edge"));
-        assert!(shared_facet(&t, &t).unwrap_err().to_string().contains("same simplex"));
+        assert!(
+            shared_facet(&t, &far)
+                .unwrap_err()
+                .to_string()
+                .contains("share no edge")
+        );
+        assert!(
+            shared_facet(&t, &t)
+                .unwrap_err()
+                .to_string()
+                .contains("same simplex")
+        );
     }
 
     #[test]
     fn mu_rule_is_row_one_of_the_blossom_extension() {
-        let a = patch(3, &[&["0"], &["1"], &["5"], &["2"], &["7"], &["-3"], &["4"], &["1/2"], &["9"], &["6"]], &[&["0", "0"], &["3", "1"], &["1", "2"]]);
+        let a = patch(
+            3,
+            &[
+                &["0"],
+                &["1"],
+                &["5"],
+                &["2"],
+                &["7"],
+                &["-3"],
+                &["4"],
+                &["1/2"],
+                &["9"],
+                &["6"],
+            ],
+            &[&["0", "0"], &["3", "1"], &["1", "2"]],
+        );
         let mu = r(&["3/4", "11/12", "-2/3"]);
-        let facet = SharedFacet { a: vec![0, 1], b: vec![0, 1], a_opposite: 2, b_opposite: 2, vertices: vec![] };
+        let facet = SharedFacet {
+            a: vec![0, 1],
+            b: vec![0, 1],
+            a_opposite: 2,
+            b_opposite: 2,
+            vertices: vec![],
+        };
         let ext = Extension::new(&a.net, &mu);
         for beta in Simplex::new(2, 3).iter().filter(|b| b[2] == 1) {
             assert_eq!(mu_rule(&a.net, &facet, &mu, beta), ext.point(&facet, beta));
@@ -595,12 +764,30 @@ mod tests {
         let u: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "-1"]];
         let p1 = patch(1, &[&["0"], &["1"], &["2"]], t);
         let p2 = patch(2, &[&["0"], &["1"], &["2"], &["0"], &["1"], &["2"]], u);
-        assert!(analyse(&p1, &p2).unwrap_err().to_string().contains("degrees 1 and 2"));
+        assert!(
+            analyse(&p1, &p2)
+                .unwrap_err()
+                .to_string()
+                .contains("degrees 1 and 2")
+        );
         let p3 = patch(1, &[&["0", "1"], &["1", "1"], &["2", "1"]], u);
-        assert!(analyse(&p1, &p3).unwrap_err().to_string().contains("coordinates"));
+        assert!(
+            analyse(&p1, &p3)
+                .unwrap_err()
+                .to_string()
+                .contains("coordinates")
+        );
         // same side: an error for --make-c1
-        assert!(c1_neighbour(&p1, &[0, 1], r(&["1", "1"])).unwrap_err().to_string().contains("same side"));
+        assert!(
+            c1_neighbour(&p1, &[0, 1], r(&["1", "1"]))
+                .unwrap_err()
+                .to_string()
+                .contains("same side")
+        );
         // collinear new vertex: degenerate domain
-        assert!(matches!(c1_neighbour(&p1, &[0, 1], r(&["3", "0"])).unwrap_err(), CoreError::DegenerateDomain(_)));
+        assert!(matches!(
+            c1_neighbour(&p1, &[0, 1], r(&["3", "0"])).unwrap_err(),
+            CoreError::DegenerateDomain(_)
+        ));
     }
 }

@@ -258,10 +258,16 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
 
 /// A list of lists of rationals (`dirs = [["1", "0", "-1"], …]`), possibly absent.
 fn opt_rational_rows(inputs: &Inputs<'_>, name: &str) -> Result<Vec<Vec<BigRational>>, InputError> {
-    let Some(node) = inputs.get(name) else { return Ok(Vec::new()) };
+    let Some(node) = inputs.get(name) else {
+        return Ok(Vec::new());
+    };
     let key = format!("{}.{name}", inputs.claim.id);
     let items = inputs.file.doc.array(node, &key)?;
-    items.iter().enumerate().map(|(i, n)| inputs.file.doc.rationals(n, &format!("{key}[{i}]"))).collect()
+    items
+        .iter()
+        .enumerate()
+        .map(|(i, n)| inputs.file.doc.rationals(n, &format!("{key}[{i}]")))
+        .collect()
 }
 
 fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
@@ -270,36 +276,63 @@ fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     let m = patch.net.m();
     let mut dirs = Vec::new();
     for (i, d) in opt_rational_rows(inputs, "dirs")?.into_iter().enumerate() {
-        crate::commands::check_direction(&d, m, "direction").map_err(|e| inputs.error("dirs", format!("direction {}: {e}", i + 1)))?;
+        crate::commands::check_direction(&d, m, "direction")
+            .map_err(|e| inputs.error("dirs", format!("direction {}: {e}", i + 1)))?;
         dirs.push(d);
     }
     let domain = patch.domain_or_reference();
-    for (i, v) in opt_rational_rows(inputs, "vectors")?.into_iter().enumerate() {
-        dirs.push(domain.direction(&v).map_err(|e| inputs.error("vectors", format!("vector {}: {e}", i + 1)))?);
+    for (i, v) in opt_rational_rows(inputs, "vectors")?
+        .into_iter()
+        .enumerate()
+    {
+        dirs.push(
+            domain
+                .direction(&v)
+                .map_err(|e| inputs.error("vectors", format!("vector {}: {e}", i + 1)))?,
+        );
     }
     if dirs.is_empty() {
-        return Err(inputs.error("dirs", "give at least one direction in `dirs` (barycentric) or `vectors` (Cartesian)"));
+        return Err(inputs.error(
+            "dirs",
+            "give at least one direction in `dirs` (barycentric) or `vectors` (Cartesian)",
+        ));
     }
-    crate::derivative::check_order(dirs.len(), patch.net.degree()).map_err(|e| inputs.error("dirs", e.to_string()))?;
+    crate::derivative::check_order(dirs.len(), patch.net.degree())
+        .map_err(|e| inputs.error("dirs", e.to_string()))?;
     let refs: Vec<&[BigRational]> = dirs.iter().map(Vec::as_slice).collect();
-    Ok(Value::numbers(&crate::derivative::directional_derivative(&patch.net, &refs, &at)))
+    Ok(Value::numbers(&crate::derivative::directional_derivative(
+        &patch.net, &refs, &at,
+    )))
 }
 
 /// Select `part` of a map value, if the claim names one.
 fn select_part(inputs: &Inputs<'_>, value: Value) -> Result<Value, InputError> {
-    let Some(part) = inputs.opt_string("part")? else { return Ok(value) };
-    let Value::Map(kv) = value else { unreachable!("parts are of maps") };
+    let Some(part) = inputs.opt_string("part")? else {
+        return Ok(value);
+    };
+    let Value::Map(kv) = value else {
+        unreachable!("parts are of maps")
+    };
     let known: Vec<String> = kv.iter().map(|(k, _)| k.clone()).collect();
     kv.into_iter()
         .find(|(k, _)| *k == part)
         .map(|(_, v)| v)
-        .ok_or_else(|| inputs.error("part", format!("`{part}` is not available here (available: {})", known.join(", "))))
+        .ok_or_else(|| {
+            inputs.error(
+                "part",
+                format!(
+                    "`{part}` is not available here (available: {})",
+                    known.join(", ")
+                ),
+            )
+        })
 }
 
 fn tangent(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     let patch = inputs.patch()?;
     let at = inputs.point(patch)?;
-    let f = crate::derivative::tangent_frame(&patch.net, &patch.domain_or_reference(), &at).map_err(|e| inputs.error("at", e.to_string()))?;
+    let f = crate::derivative::tangent_frame(&patch.net, &patch.domain_or_reference(), &at)
+        .map_err(|e| inputs.error("at", e.to_string()))?;
     let rows = |v: &[Vec<BigRational>]| Value::List(v.iter().map(|p| Value::numbers(p)).collect());
     let mut kv = vec![
         ("point".to_string(), Value::numbers(&f.point)),
@@ -310,11 +343,23 @@ fn tangent(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         kv.push(("normal".into(), Value::numbers(nrm)));
         // the plane through the intermediate points contains the point and has normal ∥ p_x × p_y
         let c = &f.intermediate;
-        let d = |a: &[BigRational], b: &[BigRational]| a.iter().zip(b).map(|(x, y)| x - y).collect::<Vec<_>>();
+        let d = |a: &[BigRational], b: &[BigRational]| {
+            a.iter().zip(b).map(|(x, y)| x - y).collect::<Vec<_>>()
+        };
         let plane = crate::derivative::cross(&d(&c[1], &c[0]), &d(&c[2], &c[0]));
-        let parallel = crate::derivative::cross(&plane, nrm).iter().all(Zero::is_zero) && plane.iter().any(|x| !x.is_zero());
-        let on: BigRational = d(&f.point, &c[0]).iter().zip(&plane).map(|(a, b)| a * b).sum();
-        kv.push(("spans_tangent_plane".into(), Value::Bool(parallel && on.is_zero())));
+        let parallel = crate::derivative::cross(&plane, nrm)
+            .iter()
+            .all(Zero::is_zero)
+            && plane.iter().any(|x| !x.is_zero());
+        let on: BigRational = d(&f.point, &c[0])
+            .iter()
+            .zip(&plane)
+            .map(|(a, b)| a * b)
+            .sum();
+        kv.push((
+            "spans_tangent_plane".into(),
+            Value::Bool(parallel && on.is_zero()),
+        ));
     }
     select_part(inputs, Value::Map(kv))
 }
@@ -323,9 +368,20 @@ fn edge_curve(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     let patch = inputs.patch()?;
     let m = patch.net.m();
     let corner = |name: &str| -> Result<usize, InputError> {
-        let k = inputs.opt_usize(name)?.ok_or_else(|| inputs.error(name, format!("missing input `{name}` (a corner, 1 to {})", m + 1)))?;
+        let k = inputs.opt_usize(name)?.ok_or_else(|| {
+            inputs.error(
+                name,
+                format!("missing input `{name}` (a corner, 1 to {})", m + 1),
+            )
+        })?;
         if !(1..=m + 1).contains(&k) {
-            return Err(inputs.error(name, format!("corner {k} does not exist: corners are numbered 1 to {}", m + 1)));
+            return Err(inputs.error(
+                name,
+                format!(
+                    "corner {k} does not exist: corners are numbered 1 to {}",
+                    m + 1
+                ),
+            ));
         }
         Ok(k - 1)
     };
@@ -338,19 +394,41 @@ fn edge_curve(inputs: &Inputs<'_>) -> Result<Value, InputError> {
 }
 
 fn join(inputs: &Inputs<'_>) -> Result<Value, InputError> {
-    let names = inputs.opt_strings("patches")?.ok_or_else(|| inputs.error("patches", "missing input `patches` (two names under [patches])"))?;
+    let names = inputs.opt_strings("patches")?.ok_or_else(|| {
+        inputs.error(
+            "patches",
+            "missing input `patches` (two names under [patches])",
+        )
+    })?;
     if names.len() != 2 {
-        return Err(inputs.error("patches", format!("a join needs two patches, {} named", names.len())));
+        return Err(inputs.error(
+            "patches",
+            format!("a join needs two patches, {} named", names.len()),
+        ));
     }
     let find = |name: &str| {
-        inputs.file.patches.iter().find(|(n, _)| n == name).map(|(_, p)| p).ok_or_else(|| inputs.error("patches", format!("no patch named `{name}` under [patches]")))
+        inputs
+            .file
+            .patches
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p)
+            .ok_or_else(|| {
+                inputs.error(
+                    "patches",
+                    format!("no patch named `{name}` under [patches]"),
+                )
+            })
     };
     let (a, b) = (find(&names[0])?, find(&names[1])?);
     let j = crate::join::analyse(a, b).map_err(|e| inputs.error("patches", e.to_string()))?;
     let mut kv = vec![
         ("c0".to_string(), Value::Bool(j.c0)),
         ("c1".to_string(), Value::Bool(j.c1)),
-        ("max_smoothness".to_string(), Value::Integer(j.max_smoothness)),
+        (
+            "max_smoothness".to_string(),
+            Value::Integer(j.max_smoothness),
+        ),
         ("mu".to_string(), Value::numbers(&j.mu)),
     ];
     if let Some(g) = j.g1 {
@@ -360,14 +438,28 @@ fn join(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         kv.push(("coplanarity".into(), Value::Bool(c)));
     }
     if j.g1_minors.len() == 1 {
-        kv.push(("g1_determinant".into(), Value::Poly(j.g1_minors[0].clone(), vec!["t".into()])));
+        kv.push((
+            "g1_determinant".into(),
+            Value::Poly(j.g1_minors[0].clone(), vec!["t".into()]),
+        ));
     }
     // row and coplanarity violations, keyed "C1 1,0,1" / "coplanarity 0,1,1"
     let mut viol = Vec::new();
     for v in &j.violations {
         match v {
-            crate::join::Violation::Row { rho, index, difference, .. } => viol.push((format!("C{rho} {}", index_key(index)), Value::numbers(difference))),
-            crate::join::Violation::Coplanarity { index, volume, .. } => viol.push((format!("coplanarity {}", index_key(index)), Value::Number(volume.clone()))),
+            crate::join::Violation::Row {
+                rho,
+                index,
+                difference,
+                ..
+            } => viol.push((
+                format!("C{rho} {}", index_key(index)),
+                Value::numbers(difference),
+            )),
+            crate::join::Violation::Coplanarity { index, volume, .. } => viol.push((
+                format!("coplanarity {}", index_key(index)),
+                Value::Number(volume.clone()),
+            )),
             crate::join::Violation::G1 { .. } => {}
         }
     }

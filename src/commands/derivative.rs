@@ -49,7 +49,9 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let p = parse_list(&args.at, "--at")?;
     let what = format!("--at {}", args.at);
     let at = if args.cartesian {
-        domain.barycentric(&p).map_err(|e| CliError::core(&what, e))?
+        domain
+            .barycentric(&p)
+            .map_err(|e| CliError::core(&what, e))?
     } else {
         check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
         p
@@ -62,20 +64,40 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     for x in &args.vector {
         let v = parse_list(x, "--vector")?;
-        directions.push(domain.direction(&v).map_err(|e| CliError::core(format!("--vector {x}"), e))?);
+        directions.push(
+            domain
+                .direction(&v)
+                .map_err(|e| CliError::core(format!("--vector {x}"), e))?,
+        );
     }
     if directions.is_empty() {
-        return Err(CliError::Usage("give at least one direction with --dir (barycentric) or --vector (Cartesian)".into()));
+        return Err(CliError::Usage(
+            "give at least one direction with --dir (barycentric) or --vector (Cartesian)".into(),
+        ));
     }
     check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
     let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
     let value = directional_derivative(&patch.net, &refs, &at);
-    Outcome::rendered(&DerivativeReport { file, at, directions, value }, args.out.format, true)
+    Outcome::rendered(
+        &DerivativeReport {
+            file,
+            at,
+            directions,
+            value,
+        },
+        args.out.format,
+        true,
+    )
 }
 
 impl Render for DerivativeReport {
     fn text(&self) -> String {
-        let dirs = self.directions.iter().map(|d| tuple(d)).collect::<Vec<_>>().join(", ");
+        let dirs = self
+            .directions
+            .iter()
+            .map(|d| tuple(d))
+            .collect::<Vec<_>>()
+            .join(", ");
         format!(
             "{}: derivative of order {} along the barycentric direction(s) {dirs}\nat {}: {}\n",
             self.file,

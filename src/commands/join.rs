@@ -61,20 +61,46 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         let edge: Vec<usize> = args
             .edge
             .split(',')
-            .map(|s| s.trim().parse::<usize>().ok().filter(|&k| (1..=a.net.m() + 1).contains(&k)).map(|k| k - 1))
+            .map(|s| {
+                s.trim()
+                    .parse::<usize>()
+                    .ok()
+                    .filter(|&k| (1..=a.net.m() + 1).contains(&k))
+                    .map(|k| k - 1)
+            })
             .collect::<Option<Vec<_>>>()
-            .ok_or_else(|| CliError::Usage(format!("--edge {}: expected two corner numbers from 1 to {}, like 1,2", args.edge, a.net.m() + 1)))?;
-        let b = c1_neighbour(&a, &edge, v).map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
+            .ok_or_else(|| {
+                CliError::Usage(format!(
+                    "--edge {}: expected two corner numbers from 1 to {}, like 1,2",
+                    args.edge,
+                    a.net.m() + 1
+                ))
+            })?;
+        let b = c1_neighbour(&a, &edge, v)
+            .map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
         if args.out.format == Format::Latex {
-            return Err(CliError::Usage("--format latex is not available for a patch".into()));
+            return Err(CliError::Usage(
+                "--format latex is not available for a patch".into(),
+            ));
         }
         return Outcome::rendered(&PatchOutput(b), args.out.format, true);
     }
-    let bpath = args.b.as_ref().ok_or_else(|| CliError::Usage("give two patches (A B), or one with --make-c1 --domain X,Y".into()))?;
+    let bpath = args.b.as_ref().ok_or_else(|| {
+        CliError::Usage("give two patches (A B), or one with --make-c1 --domain X,Y".into())
+    })?;
     let bfile = bpath.display().to_string();
     let b = read_patch(bpath)?;
     let join = analyse(&a, &b).map_err(|e| CliError::core(format!("{afile} and {bfile}"), e))?;
-    Outcome::rendered(&JoinReport { a: afile, b: bfile, degree: a.net.degree(), join }, args.out.format, true)
+    Outcome::rendered(
+        &JoinReport {
+            a: afile,
+            b: bfile,
+            degree: a.net.degree(),
+            join,
+        },
+        args.out.format,
+        true,
+    )
 }
 
 fn condition(rho: usize) -> String {
@@ -94,20 +120,34 @@ fn points_json(points: &[(Vec<u32>, Vec<num_rational::BigRational>)], labels: &[
 /// One violation as JSON (shared with the claim op).
 pub fn violation_json(v: &Violation) -> Json {
     match v {
-        Violation::Row { rho, index, actual, required, difference } => json!({
+        Violation::Row {
+            rho,
+            index,
+            actual,
+            required,
+            difference,
+        } => json!({
             "condition": condition(*rho),
             "index": index_key(index),
             "actual": json_rationals(actual),
             "required": json_rationals(required),
             "difference": json_rationals(difference),
         }),
-        Violation::Coplanarity { index, points, volume } => json!({
+        Violation::Coplanarity {
+            index,
+            points,
+            volume,
+        } => json!({
             "condition": "coplanarity",
             "index": index_key(index),
             "points": points_json(points, &["A", "A", "A", "B"]),
             "volume": volume.to_string(),
         }),
-        Violation::G1 { reason, determinant, witness } => {
+        Violation::G1 {
+            reason,
+            determinant,
+            witness,
+        } => {
             let mut o = Map::new();
             o.insert("condition".into(), json!("G1"));
             o.insert("reason".into(), json!(reason));
@@ -129,7 +169,13 @@ pub fn violation_json(v: &Violation) -> Json {
 
 fn violation_text(v: &Violation) -> String {
     match v {
-        Violation::Row { rho, index, actual, required, difference } => format!(
+        Violation::Row {
+            rho,
+            index,
+            actual,
+            required,
+            difference,
+        } => format!(
             "{}: B[{}] = {} but C{rho} requires {} (difference {})",
             condition(*rho),
             index_key(index),
@@ -137,22 +183,39 @@ fn violation_text(v: &Violation) -> String {
             tuple(required),
             tuple(difference)
         ),
-        Violation::Coplanarity { index, points, volume } => format!(
+        Violation::Coplanarity {
+            index,
+            points,
+            volume,
+        } => format!(
             "coplanarity: quadrilateral A[{}], A[{}], A[{}], B[{}] is not planar: det[P2−P1, P3−P1, P4−P1] = {volume}",
             index_key(&points[0].0),
             index_key(&points[1].0),
             index_key(&points[2].0),
             index_key(index)
         ),
-        Violation::G1 { reason, determinant, witness } => {
+        Violation::G1 {
+            reason,
+            determinant,
+            witness,
+        } => {
             let mut s = format!("G1: {reason}");
             if let Some(d) = determinant {
                 s += &format!("\n    det[E, X_A, X_B](t) = {}", d.to_text(&["t"]));
             }
             if let Some(w) = witness {
-                s += &format!("\n    at t = {} (A's point {}) it is {}", w.t, tuple(&w.at), w.value);
+                s += &format!(
+                    "\n    at t = {} (A's point {}) it is {}",
+                    w.t,
+                    tuple(&w.at),
+                    w.value
+                );
                 if let (Some(na), Some(nb)) = (&w.normal_a, &w.normal_b) {
-                    s += &format!("; normals {} (A) and {} (B) are not parallel", tuple(na), tuple(nb));
+                    s += &format!(
+                        "; normals {} (A) and {} (B) are not parallel",
+                        tuple(na),
+                        tuple(nb)
+                    );
                 }
             }
             s
@@ -168,8 +231,17 @@ impl Render for JoinReport {
     fn text(&self) -> String {
         let j = &self.join;
         let f = &j.facet;
-        let one = |v: &[usize]| v.iter().map(|k| (k + 1).to_string()).collect::<Vec<_>>().join(",");
-        let word = |b: Option<bool>| b.map_or("not decided".to_string(), |x| if x { "yes".into() } else { "no".into() });
+        let one = |v: &[usize]| {
+            v.iter()
+                .map(|k| (k + 1).to_string())
+                .collect::<Vec<_>>()
+                .join(",")
+        };
+        let word = |b: Option<bool>| {
+            b.map_or("not decided".to_string(), |x| {
+                if x { "yes".into() } else { "no".into() }
+            })
+        };
         let mut out = format!(
             "{} and {}: degree {}\nshared edge {} = A's vertices {} = B's vertices {}\nmu (B's fourth vertex w.r.t. A's domain) = {}{}\n",
             self.a,
@@ -179,21 +251,27 @@ impl Render for JoinReport {
             one(&f.a),
             one(&f.b),
             tuple(&j.mu),
-            if j.opposite_sides { "" } else { " (same side: the domains overlap)" }
+            if j.opposite_sides {
+                ""
+            } else {
+                " (same side: the domains overlap)"
+            }
         );
         out += &format!(
             "C0: {}\nC1: {}\nmax smoothness: C^{}{}\nG1: {}\nseed 002 coplanarity: {}\n",
             word(Some(j.c0)),
             word(Some(j.c1)),
             j.max_smoothness,
-            if j.max_smoothness == self.degree as i64 { " (B is the extension of A: the same polynomial)" } else { "" },
+            if j.max_smoothness == self.degree as i64 {
+                " (B is the extension of A: the same polynomial)"
+            } else {
+                ""
+            },
             word(j.g1),
             word(j.coplanarity)
         );
-        if let Some(det) = j.g1_minors.first() {
-            if j.g1_minors.len() == 1 {
-                out += &format!("det[E, X_A, X_B](t) = {}\n", det.to_text(&["t"]));
-            }
+        if let [det] = j.g1_minors.as_slice() {
+            out += &format!("det[E, X_A, X_B](t) = {}\n", det.to_text(&["t"]));
         }
         if !j.violations.is_empty() {
             out += "violations:\n";

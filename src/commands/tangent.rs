@@ -44,13 +44,24 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let p = parse_list(&args.at, "--at")?;
     let what = format!("--at {}", args.at);
     let at = if args.cartesian {
-        domain.barycentric(&p).map_err(|e| CliError::core(&what, e))?
+        domain
+            .barycentric(&p)
+            .map_err(|e| CliError::core(&what, e))?
     } else {
         check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
         p
     };
     let frame = tangent_frame(&patch.net, &domain, &at).map_err(|e| CliError::core(&file, e))?;
-    Outcome::rendered(&TangentReport { file, degree: patch.net.degree(), at, frame }, args.out.format, true)
+    Outcome::rendered(
+        &TangentReport {
+            file,
+            degree: patch.net.degree(),
+            at,
+            frame,
+        },
+        args.out.format,
+        true,
+    )
 }
 
 impl TangentReport {
@@ -65,8 +76,17 @@ impl Render for TangentReport {
     fn text(&self) -> String {
         let f = &self.frame;
         let m = self.at.len() - 1;
-        let mut out = format!("{}: degree {}, at {}\npoint {}\n", self.file, self.degree, tuple(&self.at), tuple(&f.point));
-        out += &format!("de Casteljau level {} (the tangent plane passes through these):\n", self.degree - 1);
+        let mut out = format!(
+            "{}: degree {}, at {}\npoint {}\n",
+            self.file,
+            self.degree,
+            tuple(&self.at),
+            tuple(&f.point)
+        );
+        out += &format!(
+            "de Casteljau level {} (the tangent plane passes through these):\n",
+            self.degree - 1
+        );
         for (k, p) in f.intermediate.iter().enumerate() {
             out += &format!("  c[{}] = {}\n", self.unit_key(k), tuple(p));
         }
@@ -75,7 +95,11 @@ impl Render for TangentReport {
         }
         if let (Some(nrm), Some(via)) = (&f.normal, &f.normal_from_intermediate) {
             out += &format!("normal p_x × p_y = {}\n", tuple(nrm));
-            out += &format!("(n²/D)(c[0,1,0] − c[1,0,0]) × (c[0,0,1] − c[1,0,0]) = {} ({})\n", tuple(via), if nrm == via { "equal" } else { "DIFFERENT" });
+            out += &format!(
+                "(n²/D)(c[0,1,0] − c[1,0,0]) × (c[0,0,1] − c[1,0,0]) = {} ({})\n",
+                tuple(via),
+                if nrm == via { "equal" } else { "DIFFERENT" }
+            );
         }
         out
     }
@@ -91,7 +115,8 @@ impl Render for TangentReport {
         for (name, p) in cartesian_names(m).iter().zip(&f.partials) {
             partials.insert(name.clone(), json_rationals(p));
         }
-        let opt = |v: &Option<Vec<BigRational>>| v.as_ref().map_or(Json::Null, |x| json_rationals(x));
+        let opt =
+            |v: &Option<Vec<BigRational>>| v.as_ref().map_or(Json::Null, |x| json_rationals(x));
         json!({
             "patch": self.file,
             "at": json_rationals(&self.at),
