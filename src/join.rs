@@ -25,6 +25,24 @@
 //!
 //! **Seed 002's condition:** each quadrilateral `c_{i+1,j,0}, c_{i,j+1,0}, c_{i,j,1}, c̃_{i,j,1}`
 //! (`i + j = n − 1`) is planar. Seed 002 claims this suffices for G1; it does not (FORMULAS.md §8).
+//!
+//! ```
+//! use tribez::domain::Domain;
+//! use tribez::join::analyse;
+//! use tribez::number::parse_rational as q;
+//! use tribez::patch::{ControlNet, Patch};
+//! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
+//! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
+//! // FORMULAS.md §8: planar quadrilaterals, C0, yet not G1
+//! let p = Patch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "1"]])), net: ControlNet::from_points(2, 2,
+//!     &pts(&[["0", "0", "0"], ["1", "0", "0"], ["2", "0", "0"], ["1/2", "1", "0"], ["3/2", "1", "1"], ["1", "2", "1"]])) };
+//! let b = Patch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "-1"]])), net: ControlNet::from_points(2, 2,
+//!     &pts(&[["0", "0", "0"], ["1", "0", "0"], ["2", "0", "0"], ["1/2", "-2", "0"], ["3/2", "-1", "-1"], ["1", "-2", "-1"]])) };
+//! let j = analyse(&p, &b).unwrap();
+//! assert!(j.c0 && !j.c1);
+//! assert_eq!((j.coplanarity, j.g1), (Some(true), Some(false)));
+//! assert_eq!(j.g1_minors[0].to_text(&["t"]), "-8*t^2 + 8*t");
+//! ```
 
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -612,6 +630,7 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
 mod tests {
     use super::*;
     use crate::number::parse_rational;
+    use crate::symbolic::cartesian_form;
     use proptest::prelude::*;
 
     fn r(v: &[&str]) -> Vec<Q> {
@@ -664,6 +683,55 @@ mod tests {
         let det = &j.g1_minors[0];
         let tt = |s: &str| det.evaluate(&r(&[s]));
         assert!(tt("0").is_zero() && tt("1").is_zero() && !tt("1/2").is_zero());
+    }
+
+    /// FORMULAS.md §8: row 1 from a common λ ≠ μ (Σλ = 1, λ_3 < 0) is G1 but not C1.
+    #[test]
+    fn common_lambda_gives_g1_without_c1() {
+        let t: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "1"]];
+        let a = patch(
+            3,
+            &[
+                &["0", "0", "0"],
+                &["1", "0", "1"],
+                &["2", "1", "0"],
+                &["3", "0", "1"],
+                &["0", "1", "1"],
+                &["1", "2", "3"],
+                &["3", "1", "2"],
+                &["1", "3", "0"],
+                &["2", "3", "1"],
+                &["1", "4", "2"],
+            ],
+            t,
+        );
+        let lambda = r(&["2/5", "4/5", "-1/5"]);
+        let facet = SharedFacet {
+            a: vec![0, 1],
+            b: vec![0, 1],
+            a_opposite: 2,
+            b_opposite: 2,
+            vertices: vec![],
+        };
+        let mut pts = Vec::new();
+        for beta in Simplex::new(2, 3).iter() {
+            pts.push(match beta[2] {
+                0 => a.net.at(beta).to_vec(),
+                1 => mu_rule(&a.net, &facet, &lambda, beta),
+                _ => r(&["5", "-7", "1"]),
+            });
+        }
+        let b = Patch {
+            name: None,
+            net: ControlNet::from_points(2, 3, &pts),
+            domain: Some(
+                Domain::new(vec![r(&["0", "0"]), r(&["1", "0"]), r(&["1", "-1"])]).unwrap(),
+            ),
+        };
+        let j = analyse(&a, &b).unwrap();
+        assert!(j.c0 && !j.c1);
+        assert_eq!(j.g1, Some(true));
+        assert_eq!(j.coplanarity, Some(true));
     }
 
     #[test]
@@ -746,6 +814,9 @@ mod tests {
             let j = analyse(&a, &b).unwrap();
             prop_assert_eq!(j.max_smoothness, n as i64);
             prop_assert!(j.c0 && j.c1);
+            // independent check: the C^n extension is the same polynomial in x, y (symbolic.rs)
+            let (ca, cb) = (cartesian_form(&a.net, a.domain.as_ref().unwrap()), cartesian_form(&b.net, b.domain.as_ref().unwrap()));
+            prop_assert_eq!(&ca, &cb);
             prop_assert_eq!(j.g1, Some(j.g1_minors.iter().all(Polynomial::is_zero) && j.violations.is_empty()));
             let rho = rho_pick % (n + 1);
             let mut pts: Vec<Vec<Q>> = b.net.points().map(<[Q]>::to_vec).collect();
@@ -754,6 +825,18 @@ mod tests {
             let b2 = Patch { net: ControlNet::from_points(2, n, &pts), ..b };
             let j2 = analyse(&a, &b2).unwrap();
             prop_assert_eq!(j2.max_smoothness, rho as i64 - 1);
+            // independent check: the difference of the Cartesian forms has transversal derivatives of
+            // order < ρ that vanish on the edge line, and one of order ρ that does not
+            let diff = cartesian_form(&b2.net, b2.domain.as_ref().unwrap())[0].sub(&ca[0]);
+            let (a1, a2, a4) = (r(&["0", "0"]), r(&["4", "1"]), b2.domain.as_ref().unwrap().vertices()[2].clone());
+            let tpar = Polynomial::variable(1, 0);
+            let line: Vec<Polynomial> = (0..2).map(|c| Polynomial::constant(1, a1[c].clone()).add(&tpar.scale(&(&a2[c] - &a1[c])))).collect();
+            let mut dk = diff;
+            for k in 0..=rho {
+                let on_edge = dk.compose(&line);
+                prop_assert_eq!(on_edge.is_zero(), k < rho, "order {} of {}", k, rho);
+                dk = dk.derivative(0).scale(&(&a4[0] - &a1[0])).add(&dk.derivative(1).scale(&(&a4[1] - &a1[1])));
+            }
             prop_assert_eq!(j2.violations.iter().filter(|v| matches!(v, Violation::Row { .. })).count(), 1);
         }
     }
