@@ -52,7 +52,9 @@ use crate::domain::{Domain, determinant};
 use crate::error::CoreError;
 use crate::patch::{ControlNet, Patch};
 use crate::simplex::Simplex;
-use crate::symbolic::{Polynomial, barycentric_form};
+use crate::symbolic::Polynomial;
+#[cfg(test)]
+use crate::symbolic::barycentric_form;
 
 type Q = BigRational;
 
@@ -301,9 +303,38 @@ fn minors(cols: &[Vec<Polynomial>]) -> Vec<Polynomial> {
     out
 }
 
-/// `Σ_k d_k ∂P/∂λ_k` for each coordinate, restricted to the edge `λ(t)`: polynomials in `t`.
-fn edge_derivative(forms: &[Polynomial], dir: &[Q], edge: &[Polynomial]) -> Vec<Polynomial> {
-    forms
+/// `Σ_k d_k ∂P/∂λ_k` for each coordinate, restricted to the edge `λ(t) = (1−t) e_i + t e_j`:
+/// polynomials in `t`. The derivative net (one de Casteljau step with `d`, times `n`) restricted to
+/// the edge is the Bézier curve of its face `[i, j]`: `Σ_k b_k C(n−1, k) (1−t)^{n−1−k} t^k`.
+fn edge_derivative(net: &ControlNet<Q>, dir: &[Q], i: usize, j: usize) -> Vec<Polynomial> {
+    let dn = crate::derivative::derivative_net(net, &[dir]);
+    let face = dn.face(&[i, j]);
+    let q = face.degree();
+    let t = Polynomial::variable(1, 0);
+    let s = Polynomial::constant(1, Q::one()).sub(&t);
+    let basis: Vec<Polynomial> = (0..=q)
+        .map(|k| {
+            s.pow((q - k) as u32)
+                .mul(&t.pow(k as u32))
+                .scale(&Q::from_integer(
+                    crate::simplex::binomial(q as u64, k as u64).into(),
+                ))
+        })
+        .collect();
+    (0..net.dim())
+        .map(|c| {
+            face.points()
+                .zip(&basis)
+                .fold(Polynomial::zero(1), |acc, (p, b)| acc.add(&b.scale(&p[c])))
+        })
+        .collect()
+}
+
+/// The same, from the symbolic form (`Σ_k d_k ∂P/∂λ_k` composed with `λ(t)`): the independent check.
+#[cfg(test)]
+fn edge_derivative_symbolic(net: &ControlNet<Q>, dir: &[Q], i: usize, j: usize) -> Vec<Polynomial> {
+    let edge = edge_param(net.m(), i, j);
+    barycentric_form(net)
         .iter()
         .map(|p| {
             let d = dir
@@ -312,7 +343,7 @@ fn edge_derivative(forms: &[Polynomial], dir: &[Q], edge: &[Polynomial]) -> Vec<
                 .fold(Polynomial::zero(p.nvars()), |acc, (k, dk)| {
                     acc.add(&p.derivative(k).scale(dk))
                 });
-            d.compose(edge)
+            d.compose(&edge)
         })
         .collect()
 }
@@ -449,11 +480,10 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         // G1 as a polynomial identity in the edge parameter t
         let (ia, ja, ka) = (facet.a[0], facet.a[1], facet.a_opposite);
         let (ib, jb, kb) = (facet.b[0], facet.b[1], facet.b_opposite);
-        let (fa, fb) = (barycentric_form(na), barycentric_form(nb));
-        let (la, lb) = (edge_param(m, ia, ja), edge_param(m, ib, jb));
-        let e = edge_derivative(&fa, &unit_diff(m, ja, ia), &la);
-        let xa = edge_derivative(&fa, &unit_diff(m, ka, ia), &la);
-        let xb = edge_derivative(&fb, &unit_diff(m, kb, ib), &lb);
+        let la = edge_param(m, ia, ja);
+        let e = edge_derivative(na, &unit_diff(m, ja, ia), ia, ja);
+        let xa = edge_derivative(na, &unit_diff(m, ka, ia), ia, ja);
+        let xb = edge_derivative(nb, &unit_diff(m, kb, ib), ib, jb);
         g1_minors = minors(&[e.clone(), xa.clone(), xb.clone()]);
         let regular_a = minors(&[e.clone(), xa.clone()])
             .iter()
@@ -818,6 +848,11 @@ mod tests {
             let (ca, cb) = (cartesian_form(&a.net, a.domain.as_ref().unwrap()), cartesian_form(&b.net, b.domain.as_ref().unwrap()));
             prop_assert_eq!(&ca, &cb);
             prop_assert_eq!(j.g1, Some(j.g1_minors.iter().all(Polynomial::is_zero) && j.violations.is_empty()));
+            // the edge polynomials from the derivative net equal those of the symbolic form
+            for (i, jj, k) in [(0, 1, 2), (1, 2, 0), (2, 0, 1)] {
+                let d = unit_diff(2, k, i);
+                prop_assert_eq!(edge_derivative(&a.net, &d, i, jj), edge_derivative_symbolic(&a.net, &d, i, jj));
+            }
             let rho = rho_pick % (n + 1);
             let mut pts: Vec<Vec<Q>> = b.net.points().map(<[Q]>::to_vec).collect();
             let k = b.net.simplex().iter().position(|beta| beta[2] as usize == rho).unwrap();
@@ -839,6 +874,50 @@ mod tests {
             }
             prop_assert_eq!(j2.violations.iter().filter(|v| matches!(v, Violation::Row { .. })).count(), 1);
         }
+    }
+
+    #[test]
+    fn g1_undecided_below_d3_and_tetrahedra_join() {
+        // scalar patches (d = 1): C^r decided, G1 and coplanarity not
+        let t: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "1"]];
+        let a = patch(2, &[&["0"], &["1"], &["2"], &["3"], &["1/2"], &["7"]], t);
+        let b = c1_neighbour(&a, &[1, 0], r(&["1", "-1"])).unwrap();
+        let j = analyse(&a, &b).unwrap();
+        assert_eq!((j.max_smoothness, j.g1, j.coplanarity), (2, None, None));
+        assert!(j.notes[0].contains("d >= 3"));
+        // two tetrahedra sharing a facet: the C^n extension, then a perturbed row 2
+        let pts: Vec<Vec<Q>> = (0..crate::simplex::count(3, 2))
+            .map(|k| vec![Q::from_integer((k as i64 * 7 % 5 - 2).into())])
+            .collect();
+        let tet = Patch {
+            name: None,
+            net: ControlNet::from_points(3, 2, &pts),
+            domain: Some(
+                Domain::new(vec![
+                    r(&["0", "0", "0"]),
+                    r(&["2", "0", "0"]),
+                    r(&["0", "3", "0"]),
+                    r(&["1", "1", "4"]),
+                ])
+                .unwrap(),
+            ),
+        };
+        let nb = c1_neighbour(&tet, &[0, 1, 2], r(&["1", "1", "-2"])).unwrap();
+        let jt = analyse(&tet, &nb).unwrap();
+        assert_eq!((jt.max_smoothness, jt.g1), (2, None));
+        assert_eq!(jt.facet.a_opposite, 3);
+        let mut p2: Vec<Vec<Q>> = nb.net.points().map(<[Q]>::to_vec).collect();
+        let last = p2.len() - 1; // the corner 0,0,0,2 (row 2)
+        p2[last][0] += Q::one();
+        let jt2 = analyse(
+            &tet,
+            &Patch {
+                net: ControlNet::from_points(3, 2, &p2),
+                ..nb
+            },
+        )
+        .unwrap();
+        assert_eq!(jt2.max_smoothness, 1);
     }
 
     #[test]

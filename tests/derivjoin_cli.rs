@@ -302,3 +302,64 @@ fn reproduce_derivative_and_join_fixtures() {
             .stdout(predicate::str::contains("0 failed"));
     }
 }
+
+#[test]
+fn derivative_of_a_tetrahedron_and_a_curve() {
+    let dir = tempfile::tempdir().unwrap();
+    // p = Σ λ_k c_k (degree 1) over the tetrahedron (0,0,0),(2,0,0),(0,3,0),(1,1,4) with values 1, 2, 5, 11:
+    // the affine function 1 + x/2 + 4y/3 + ... ; D_v p for v = (2,0,0) is c_1 - c_0 = 1 (moving to vertex 2)
+    let t = dir.path().join("t.toml");
+    std::fs::write(
+        &t,
+        "degree = 1\ndomain = [[\"0\",\"0\",\"0\"],[\"2\",\"0\",\"0\"],[\"0\",\"3\",\"0\"],[\"1\",\"1\",\"4\"]]\n[control_points]\n\"1,0,0,0\" = [\"1\"]\n\"0,1,0,0\" = [\"2\"]\n\"0,0,1,0\" = [\"5\"]\n\"0,0,0,1\" = [\"11\"]\n",
+    )
+    .unwrap();
+    let v = json(&[
+        "derivative",
+        t.to_str().unwrap(),
+        "--at",
+        "1/4,1/4,1/4,1/4",
+        "--vector",
+        "2,0,0",
+    ]);
+    assert_eq!(strings(&v["value"]), ["1"]);
+    let v = json(&[
+        "derivative",
+        t.to_str().unwrap(),
+        "--at",
+        "1/4,1/4,1/4,1/4",
+        "--dir",
+        "-1,0,0,1",
+    ]);
+    assert_eq!(strings(&v["value"]), ["10"]);
+    // a quadratic curve 0, 1, 4 over [0, 1]: p(x) = 2x(1-x) + 4x^2 = 2x + 2x^2 with the reference
+    // domain (1), (0) (u = x): p'(1/2) = 4, p'' = 4
+    let c = dir.path().join("c.toml");
+    std::fs::write(
+        &c,
+        "degree = 2\n[control_points]\n\"2,0\" = [\"4\"]\n\"1,1\" = [\"1\"]\n\"0,2\" = [\"0\"]\n",
+    )
+    .unwrap();
+    let v = json(&[
+        "derivative",
+        c.to_str().unwrap(),
+        "--at",
+        "1/2",
+        "--cartesian",
+        "--vector",
+        "1",
+        "--vector",
+        "1",
+    ]);
+    assert_eq!(strings(&v["value"]), ["4"]);
+    let v = json(&[
+        "derivative",
+        c.to_str().unwrap(),
+        "--at",
+        "1/2",
+        "--cartesian",
+        "--vector",
+        "1",
+    ]);
+    assert_eq!(strings(&v["value"]), ["4"]);
+}

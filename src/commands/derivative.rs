@@ -17,13 +17,13 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// The point: barycentric coordinates summing to 1 (`1/2,1/3,1/6`), or Cartesian with --cartesian.
-    #[arg(long = "at", value_name = "POINT")]
+    #[arg(long = "at", value_name = "POINT", allow_hyphen_values = true)]
     pub at: String,
     /// The point is Cartesian (converted by the domain, Cramer's rule).
     #[arg(long)]
     pub cartesian: bool,
     /// A barycentric direction (m+1 components summing to 0, e.g. `1,0,-1`). Repeat for higher orders.
-    #[arg(long = "dir", value_name = "D")]
+    #[arg(long = "dir", value_name = "D", allow_hyphen_values = true)]
     pub dir: Vec<String>,
     /// A Cartesian direction vector (m components, e.g. `1,-2`), converted by the domain (seed 000 eqs. 9-10). Repeatable; mixes with --dir.
     #[arg(long = "vector", value_name = "X,Y", allow_hyphen_values = true)]

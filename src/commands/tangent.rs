@@ -18,7 +18,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// The point: barycentric coordinates summing to 1, or Cartesian with --cartesian.
-    #[arg(long = "at", value_name = "POINT")]
+    #[arg(long = "at", value_name = "POINT", allow_hyphen_values = true)]
     pub at: String,
     /// The point is Cartesian (converted by the domain, Cramer's rule).
     #[arg(long)]
