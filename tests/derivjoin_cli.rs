@@ -363,3 +363,55 @@ fn derivative_of_a_tetrahedron_and_a_curve() {
     ]);
     assert_eq!(strings(&v["value"]), ["4"]);
 }
+
+#[test]
+fn bad_claims_of_the_new_ops_are_located_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let quad = fixture("joins/quad_a.toml");
+    let cases = [
+        (
+            "op = \"join\"\npatches = [\"a\"]\npart = \"c1\"\nexpect = true",
+            "a join needs two patches",
+        ),
+        (
+            "op = \"join\"\npatches = [\"a\", \"nope\"]\npart = \"c1\"\nexpect = true",
+            "no patch named `nope`",
+        ),
+        (
+            "op = \"join\"\npatches = [\"a\", \"a\"]\npart = \"c1\"\nexpect = true",
+            "same simplex",
+        ),
+        (
+            "op = \"tangent\"\npatch = \"a\"\nat = [\"1\", \"0\", \"0\"]\npart = \"curvature\"\nexpect = true",
+            "`curvature` is not available",
+        ),
+        (
+            "op = \"derivative\"\npatch = \"a\"\nat = [\"1\", \"0\", \"0\"]\ndirs = [[\"1\", \"0\", \"0\"]]\nexpect = [\"0\"]",
+            "sums to 1, not 0",
+        ),
+        (
+            "op = \"derivative\"\npatch = \"a\"\nat = [\"1\", \"0\", \"0\"]\ndirs = [[\"1\", \"0\", \"-1\"], [\"1\", \"0\", \"-1\"], [\"1\", \"0\", \"-1\"]]\nexpect = [\"0\"]",
+            "order 3",
+        ),
+        (
+            "op = \"edge_curve\"\npatch = \"a\"\nfrom = 1\nto = 4\nexpect = []",
+            "corner 4 does not exist",
+        ),
+    ];
+    for (i, (claim, message)) in cases.iter().enumerate() {
+        let sub = dir.path().join(format!("case{i}"));
+        std::fs::create_dir(&sub).unwrap();
+        std::fs::write(
+            sub.join("x.claims.toml"),
+            format!("[patches]\na = \"{quad}\"\n\n[[claim]]\nid = \"c\"\n{claim}\n"),
+        )
+        .unwrap();
+        tribez()
+            .args(["reproduce", sub.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(
+                predicate::str::contains(*message).and(predicate::str::contains("x.claims.toml:")),
+            );
+    }
+}
