@@ -932,6 +932,18 @@ mod tests {
                 .to_string()
                 .contains("degrees 1 and 2")
         );
+        // overlapping domains (fourth vertex on the same side): analysed, with a note
+        let over = patch(
+            1,
+            &[&["0"], &["1"], &["5"]],
+            &[&["0", "0"], &["1", "0"], &["1", "1"]],
+        );
+        let j = analyse(&p1, &over).unwrap();
+        assert!(
+            !j.opposite_sides && j.notes[0].contains("the domains overlap"),
+            "{:?}",
+            j.notes
+        );
         let p3 = patch(1, &[&["0", "1"], &["1", "1"], &["2", "1"]], u);
         assert!(
             analyse(&p1, &p3)
