@@ -484,3 +484,34 @@ fn functional_patches() {
         &["kind", "unknown kind `funtional`"],
     );
 }
+
+#[test]
+fn derivative_of_a_rational_patch() {
+    tribez()
+        .args(["derivative"])
+        .arg(fixture("octant_quartic.toml"))
+        .args(["--at", "1,0,0", "--dir", "-1,1,0"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("at (1, 0, 0): (0, 2, 0)"));
+    tribez()
+        .args(["derivative"])
+        .arg(fixture("octant_quartic.toml"))
+        .args(["--at", "1,0,0", "--dir", "-1,1,0", "--dir", "-1,0,1"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("first-order derivatives only"));
+    let zero_corner = RATIONAL.replace("\"1,0,0\" = 1", "\"1,0,0\" = 0");
+    fails(
+        &zero_corner,
+        &["derivative", "--at", "1,0,0", "--dir", "-1,1,0"],
+        &["--at 1,0,0", "undefined at (1, 0, 0)"],
+    );
+    tribez()
+        .args(["derivative"])
+        .arg(fixture("pentagon_depth2.toml"))
+        .args(["--at", "2,2", "--dir", "-1,1"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("does not take S-patches"));
+}

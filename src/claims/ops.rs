@@ -301,7 +301,15 @@ fn opt_rational_rows(inputs: &Inputs<'_>, name: &str) -> Result<Vec<Vec<BigRatio
 }
 
 fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
-    let patch = inputs.patch()?;
+    let any = inputs.file.any_patch_for(inputs.claim)?;
+    let rational = match any {
+        AnyPatch::Rational(r) => Some(r),
+        _ => None,
+    };
+    let patch = match rational {
+        Some(r) => &r.patch,
+        None => inputs.patch()?,
+    };
     let at = inputs.point(patch)?;
     let m = patch.net.m();
     let mut dirs = Vec::new();
@@ -330,6 +338,24 @@ fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     crate::derivative::check_order(dirs.len(), patch.net.degree())
         .map_err(|e| inputs.error("dirs", e.to_string()))?;
     let refs: Vec<&[BigRational]> = dirs.iter().map(Vec::as_slice).collect();
+    if let Some(r) = rational {
+        // rational patches: first order, by the quotient rule on the homogeneous net
+        if refs.len() != 1 {
+            return Err(inputs.error(
+                "dirs",
+                "a rational patch takes exactly one direction (first-order derivatives only)",
+            ));
+        }
+        let key = if inputs.get("at").is_some() {
+            "at"
+        } else {
+            "cartesian"
+        };
+        return r
+            .derivative(&at, refs[0])
+            .map(|v| Value::numbers(&v))
+            .map_err(|e| inputs.error(key, e.to_string()));
+    }
     Ok(Value::numbers(&crate::derivative::directional_derivative(
         &patch.net, &refs, &at,
     )))
