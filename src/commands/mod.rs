@@ -1,7 +1,14 @@
 //! One module per command; [`main`] dispatches and maps outcomes to exit statuses.
 
+pub mod blossom;
+pub mod construct;
+pub mod elevate;
 pub mod eval;
+pub mod halve;
+pub mod matrix;
 pub mod reproduce;
+pub mod subdivide;
+pub mod subpatch;
 pub mod symbolic;
 
 use std::io::Write;
@@ -65,6 +72,12 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Blossom(a) => (blossom::run(a), &a.out),
+        Command::Subpatch(a) => (subpatch::run(a), &a.out),
+        Command::Subdivide(a) => (subdivide::run(a), &a.out),
+        Command::Halve(a) => (halve::run(a), &a.out),
+        Command::Elevate(a) => (elevate::run(a), &a.out),
+        Command::Matrix(a) => (matrix::run(a), &a.out),
     };
     match result.and_then(|o| emit(&o, out).map(|()| o.success)) {
         Ok(true) => 0,
