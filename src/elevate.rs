@@ -24,7 +24,10 @@
 //! assert_eq!(s, ["2/3", "2/3", "1"]);
 //! ```
 
-use num_bigint::BigUint;
+use num_bigint::{BigInt, BigUint};
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
 
 use crate::blossom::Field;
 use crate::patch::ControlNet;
@@ -93,6 +96,60 @@ pub fn elevate<T: Field>(net: &ControlNet<T>, r: usize) -> ControlNet<T> {
     ControlNet::new(up, dim, coords)
 }
 
+/// [`elevate`] for exact rationals in integer arithmetic: each coordinate brought to a common
+/// denominator `L_c`, the sums taken on integers, one division (one gcd) per result.
+pub fn elevate_exact(net: &ControlNet<BigRational>, r: usize) -> ControlNet<BigRational> {
+    if r == 0 {
+        return net.clone();
+    }
+    let (m, n, dim) = (net.m(), net.degree(), net.dim());
+    let den: Vec<BigInt> = (0..dim)
+        .map(|c| {
+            net.points()
+                .fold(BigInt::one(), |acc, p| acc.lcm(p[c].denom()))
+        })
+        .collect();
+    // C(n; b) z_b, per point and coordinate
+    let z: Vec<BigInt> = net
+        .entries()
+        .flat_map(|(b, p)| {
+            let k = BigInt::from(multinomial(b));
+            p.iter()
+                .zip(&den)
+                .map(move |(x, l)| x.numer() * (l / x.denom()) * &k)
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let up = Simplex::new(m, n + r);
+    let steps = Simplex::new(m, r);
+    let cr: Vec<BigInt> = steps.iter().map(|g| BigInt::from(multinomial(g))).collect();
+    let mut coords = Vec::with_capacity(up.len() * dim);
+    let mut b = vec![0u32; m + 1];
+    let mut acc: Vec<BigInt> = vec![BigInt::zero(); dim];
+    for a in up.iter() {
+        acc.iter_mut().for_each(|x| *x = BigInt::zero());
+        for (gi, gamma) in steps.iter().enumerate() {
+            if gamma.iter().zip(a).any(|(g, x)| g > x) {
+                continue;
+            }
+            for k in 0..=m {
+                b[k] = a[k] - gamma[k];
+            }
+            let rb = rank(&b);
+            for (c, x) in acc.iter_mut().enumerate() {
+                *x += &z[rb * dim + c] * &cr[gi];
+            }
+        }
+        let ca = BigInt::from(multinomial(a));
+        coords.extend(
+            acc.iter()
+                .zip(&den)
+                .map(|(x, l)| BigRational::new(x.clone(), l * &ca)),
+        );
+    }
+    ControlNet::new(up, dim, coords)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -100,15 +157,24 @@ mod tests {
     use crate::domain::Domain;
     use crate::simplex;
     use crate::symbolic::cartesian_form;
-    use num_rational::BigRational;
-    use num_traits::One;
     use proptest::prelude::*;
 
     fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
-            .iter()
-            .map(|p| p.iter().map(|&x| BigRational::from_integer(x.into())).collect())
-            .collect();
+        let pts: Vec<Vec<BigRational>> = [
+            [0, 0, 0],
+            [1, 0, 2],
+            [0, 2, 0],
+            [0, 1, 0],
+            [1, 1, 1],
+            [0, 2, 1],
+        ]
+        .iter()
+        .map(|p| {
+            p.iter()
+                .map(|&x| BigRational::from_integer(x.into()))
+                .collect()
+        })
+        .collect();
         ControlNet::from_points(2, 2, &pts)
     }
 
@@ -126,7 +192,11 @@ mod tests {
             ["2/3", "4/3", "1"],
             ["0", "2", "1"],
         ];
-        for net in [elevate(&finn(), 1), elevate_once(&finn())] {
+        for net in [
+            elevate(&finn(), 1),
+            elevate_once(&finn()),
+            elevate_exact(&finn(), 1),
+        ] {
             for (p, w) in net.points().zip(want) {
                 assert_eq!(p.iter().map(ToString::to_string).collect::<Vec<_>>(), w);
             }
@@ -159,6 +229,7 @@ mod tests {
                 steps = elevate_once(&steps);
             }
             prop_assert_eq!(&up, &steps);
+            prop_assert_eq!(&elevate_exact(&net, r), &up);
             let mut at: Vec<BigRational> = seed[..m].to_vec();
             let s: BigRational = at.iter().sum();
             at.push(BigRational::one() - s);

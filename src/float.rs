@@ -187,11 +187,15 @@ mod tests {
     fn pseudo_random_net(n: usize, seed: u64) -> ControlNet<BigRational> {
         let mut s = seed;
         let mut next = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (s >> 33) as i64 % 2001 - 1000
         };
         let simplex = Simplex::new(2, n);
-        let coords = (0..simplex.len() * 3).map(|_| BigRational::new(next().into(), (next().abs() + 1).into())).collect();
+        let coords = (0..simplex.len() * 3)
+            .map(|_| BigRational::new(next().into(), (next().abs() + 1).into()))
+            .collect();
         ControlNet::new(simplex, 3, coords)
     }
 

@@ -228,10 +228,15 @@ mod tests {
 
     #[test]
     fn canonical_order_matches_formulas_section_1() {
-        assert_eq!(names(&Simplex::new(2, 2)), ["200", "110", "020", "101", "011", "002"]);
+        assert_eq!(
+            names(&Simplex::new(2, 2)),
+            ["200", "110", "020", "101", "011", "002"]
+        );
         assert_eq!(
             names(&Simplex::new(2, 3)),
-            ["300", "210", "120", "030", "201", "111", "021", "102", "012", "003"]
+            [
+                "300", "210", "120", "030", "201", "111", "021", "102", "012", "003"
+            ]
         );
         assert_eq!(names(&Simplex::new(1, 3)), ["30", "21", "12", "03"]);
     }

@@ -32,7 +32,9 @@
 //! assert_eq!(s(pieces[0].at(&[1, 1, 0])), ["2/3", "5/6", "7/6"]);
 //! ```
 
-use crate::blossom::{Field, pyramid_face, subpatch};
+use num_rational::BigRational;
+
+use crate::blossom::{Field, pyramid_face, split_at_exact, subpatch, subpatch_exact};
 use crate::casteljau::levels;
 use crate::error::CoreError;
 use crate::patch::ControlNet;
@@ -49,18 +51,26 @@ pub struct Piece<T> {
 }
 
 fn unit<T: Scalar>(m: usize, k: usize) -> Vec<T> {
-    (0..=m).map(|i| if i == k { T::one() } else { T::zero() }).collect()
+    (0..=m)
+        .map(|i| if i == k { T::one() } else { T::zero() })
+        .collect()
 }
 
 /// The vertices of the parent simplex with vertex `s` replaced by `x`.
 pub fn replaced<T: Scalar>(m: usize, s: usize, x: &[T]) -> Vec<Vec<T>> {
-    (0..=m).map(|k| if k == s { x.to_vec() } else { unit(m, k) }).collect()
+    (0..=m)
+        .map(|k| if k == s { x.to_vec() } else { unit(m, k) })
+        .collect()
 }
 
 /// Split at the point `t` (`m + 1` barycentric coordinates): the `m + 1` faces of the
 /// de Casteljau pyramid; piece `s` is the parent with vertex `s` replaced by `t`.
 pub fn split_at<T: Scalar>(net: &ControlNet<T>, t: &[T]) -> Vec<ControlNet<T>> {
-    assert_eq!(t.len(), net.m() + 1, "the split point has the wrong number of coordinates");
+    assert_eq!(
+        t.len(),
+        net.m() + 1,
+        "the split point has the wrong number of coordinates"
+    );
     if net.degree() == 0 {
         return vec![net.clone(); net.m() + 1];
     }
@@ -70,7 +80,26 @@ pub fn split_at<T: Scalar>(net: &ControlNet<T>, t: &[T]) -> Vec<ControlNet<T>> {
 
 /// [`split_at`] with the pieces' domains. A piece whose simplex is degenerate (`t_s = 0`: the
 /// point lies on the facet opposite vertex `s`) is an error.
-pub fn split_at_pieces<T: Scalar>(net: &ControlNet<T>, t: &[T]) -> Result<Vec<Piece<T>>, CoreError> {
+pub fn split_at_pieces<T: Scalar>(
+    net: &ControlNet<T>,
+    t: &[T],
+) -> Result<Vec<Piece<T>>, CoreError> {
+    split_pieces_with(net, t, split_at)
+}
+
+/// [`split_at_pieces`] for exact rationals, in integer arithmetic ([`split_at_exact`]).
+pub fn split_at_pieces_exact(
+    net: &ControlNet<BigRational>,
+    t: &[BigRational],
+) -> Result<Vec<Piece<BigRational>>, CoreError> {
+    split_pieces_with(net, t, split_at_exact)
+}
+
+fn split_pieces_with<T: Scalar>(
+    net: &ControlNet<T>,
+    t: &[T],
+    split: impl Fn(&ControlNet<T>, &[T]) -> Vec<ControlNet<T>>,
+) -> Result<Vec<Piece<T>>, CoreError> {
     let m = net.m();
     if let Some(s) = t.iter().position(num_traits::Zero::is_zero) {
         return Err(CoreError::Invalid(format!(
@@ -80,13 +109,23 @@ pub fn split_at_pieces<T: Scalar>(net: &ControlNet<T>, t: &[T]) -> Result<Vec<Pi
             s + 1
         )));
     }
-    Ok(split_at(net, t).into_iter().enumerate().map(|(s, n)| Piece { domain_in_parent: replaced(m, s, t), net: n }).collect())
+    Ok(split(net, t)
+        .into_iter()
+        .enumerate()
+        .map(|(s, n)| Piece {
+            domain_in_parent: replaced(m, s, t),
+            net: n,
+        })
+        .collect())
 }
 
 /// Check an edge `I, J` given with corners numbered from 1; returns the 0-based pair.
 pub fn check_edge(m: usize, i: usize, j: usize) -> Result<(usize, usize), CoreError> {
     if i == j || !(1..=m + 1).contains(&i) || !(1..=m + 1).contains(&j) {
-        return Err(CoreError::Invalid(format!("edge {i},{j}: an edge is two distinct corners numbered 1 to {}", m + 1)));
+        return Err(CoreError::Invalid(format!(
+            "edge {i},{j}: an edge is two distinct corners numbered 1 to {}",
+            m + 1
+        )));
     }
     Ok((i - 1, j - 1))
 }
@@ -94,7 +133,15 @@ pub fn check_edge(m: usize, i: usize, j: usize) -> Result<(usize, usize), CoreEr
 /// The midpoint of corners `i` and `j` (0-based).
 pub fn midpoint<T: Field>(m: usize, i: usize, j: usize) -> Vec<T> {
     let half = T::one() / T::from_u64(2);
-    (0..=m).map(|k| if k == i || k == j { half.clone() } else { T::zero() }).collect()
+    (0..=m)
+        .map(|k| {
+            if k == i || k == j {
+                half.clone()
+            } else {
+                T::zero()
+            }
+        })
+        .collect()
 }
 
 /// The two sub-simplices of halving along the edge between corners `i` and `j` (0-based): the
@@ -107,9 +154,23 @@ pub fn halve_domains<T: Field>(m: usize, i: usize, j: usize) -> [Vec<Vec<T>>; 2]
 /// Halve along the edge between corners `i` and `j` (0-based), by blossoms: two pieces, the
 /// first keeping corner `i`, the second keeping corner `j`.
 pub fn halve<T: Field>(net: &ControlNet<T>, i: usize, j: usize) -> [Piece<T>; 2] {
+    halve_with(net, i, j, subpatch)
+}
+
+/// [`halve`] for exact rationals, in integer arithmetic ([`subpatch_exact`]).
+pub fn halve_exact(net: &ControlNet<BigRational>, i: usize, j: usize) -> [Piece<BigRational>; 2] {
+    halve_with(net, i, j, subpatch_exact)
+}
+
+type Sub<T> = fn(&ControlNet<T>, &[Vec<T>]) -> Result<ControlNet<T>, CoreError>;
+
+fn halve_with<T: Field>(net: &ControlNet<T>, i: usize, j: usize, sub: Sub<T>) -> [Piece<T>; 2] {
     halve_domains(net.m(), i, j).map(|d| {
-        let n = subpatch(net, &d).expect("a half is non-degenerate");
-        Piece { domain_in_parent: d, net: n }
+        let n = sub(net, &d).expect("a half is non-degenerate");
+        Piece {
+            domain_in_parent: d,
+            net: n,
+        }
     })
 }
 
@@ -117,13 +178,31 @@ pub fn halve<T: Field>(net: &ControlNet<T>, i: usize, j: usize) -> [Piece<T>; 2]
 /// orientation of the parent: `[a1, m12, m13]`, `[m12, a2, m23]`, `[m13, m23, a3]`,
 /// `[m23, m13, m12]`.
 pub fn midpoint_split<T: Field>(net: &ControlNet<T>) -> Result<Vec<Piece<T>>, CoreError> {
+    midpoint_split_with(net, subpatch)
+}
+
+/// [`midpoint_split`] for exact rationals, in integer arithmetic ([`subpatch_exact`]).
+pub fn midpoint_split_exact(
+    net: &ControlNet<BigRational>,
+) -> Result<Vec<Piece<BigRational>>, CoreError> {
+    midpoint_split_with(net, subpatch_exact)
+}
+
+fn midpoint_split_with<T: Field>(
+    net: &ControlNet<T>,
+    sub: Sub<T>,
+) -> Result<Vec<Piece<T>>, CoreError> {
     if net.m() != 2 {
         return Err(CoreError::Invalid(format!(
             "the four-way midpoint split is defined for triangles; this patch is over the {}-simplex (use `subdivide --at` or `halve`)",
             net.m()
         )));
     }
-    let (m12, m13, m23) = (midpoint::<T>(2, 0, 1), midpoint::<T>(2, 0, 2), midpoint::<T>(2, 1, 2));
+    let (m12, m13, m23) = (
+        midpoint::<T>(2, 0, 1),
+        midpoint::<T>(2, 0, 2),
+        midpoint::<T>(2, 1, 2),
+    );
     let domains = [
         vec![unit(2, 0), m12.clone(), m13.clone()],
         vec![m12.clone(), unit(2, 1), m23.clone()],
@@ -132,7 +211,12 @@ pub fn midpoint_split<T: Field>(net: &ControlNet<T>) -> Result<Vec<Piece<T>>, Co
     ];
     domains
         .into_iter()
-        .map(|d| Ok(Piece { net: subpatch(net, &d)?, domain_in_parent: d }))
+        .map(|d| {
+            Ok(Piece {
+                net: sub(net, &d)?,
+                domain_in_parent: d,
+            })
+        })
         .collect()
 }
 
@@ -151,13 +235,23 @@ pub enum HalvingOrder {
 /// Halving with additions and exact divisions by two only, in place (seed 003): the piece that
 /// keeps corner `keep` and replaces corner `replace` (0-based) by the midpoint of the two. With
 /// [`HalvingOrder::TopDown`] this equals [`halve`]'s piece, for every degree and dimension.
-pub fn add_and_halve<T: Field>(net: &ControlNet<T>, keep: usize, replace: usize, order: HalvingOrder) -> ControlNet<T> {
+pub fn add_and_halve<T: Field>(
+    net: &ControlNet<T>,
+    keep: usize,
+    replace: usize,
+    order: HalvingOrder,
+) -> ControlNet<T> {
     assert!(keep != replace && keep <= net.m() && replace <= net.m());
     let two = T::from_u64(2);
     let dim = net.dim();
     let mut coords = net.coords().to_vec();
     let mut alpha = vec![0u32; net.m() + 1];
-    let lines: Vec<Vec<u32>> = net.simplex().iter().filter(|a| a[replace] == 0).map(<[u32]>::to_vec).collect();
+    let lines: Vec<Vec<u32>> = net
+        .simplex()
+        .iter()
+        .filter(|a| a[replace] == 0)
+        .map(<[u32]>::to_vec)
+        .collect();
     for start in lines {
         let d = start[keep] as usize;
         // ranks of P_0 … P_d along the line from corner `keep` towards corner `replace`
@@ -177,7 +271,8 @@ pub fn add_and_halve<T: Field>(net: &ControlNet<T>, keep: usize, replace: usize,
             for j in d + 1 - s..=d {
                 let (a, b) = (ranks[j - 1], ranks[j]);
                 for c in 0..dim {
-                    coords[b * dim + c] = (coords[a * dim + c].clone() + &coords[b * dim + c]) / &two;
+                    coords[b * dim + c] =
+                        (coords[a * dim + c].clone() + &coords[b * dim + c]) / &two;
                 }
             }
         }
@@ -191,7 +286,6 @@ mod tests {
     use crate::blossom::map_point;
     use crate::casteljau::evaluate;
     use crate::number::parse_rational;
-    use num_rational::BigRational;
     use num_traits::One;
     use proptest::prelude::*;
 
@@ -202,10 +296,21 @@ mod tests {
         p.iter().map(ToString::to_string).collect()
     }
     fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
-            .iter()
-            .map(|p| p.iter().map(|&x| BigRational::from_integer(x.into())).collect())
-            .collect();
+        let pts: Vec<Vec<BigRational>> = [
+            [0, 0, 0],
+            [1, 0, 2],
+            [0, 2, 0],
+            [0, 1, 0],
+            [1, 1, 1],
+            [0, 2, 1],
+        ]
+        .iter()
+        .map(|p| {
+            p.iter()
+                .map(|&x| BigRational::from_integer(x.into()))
+                .collect()
+        })
+        .collect();
         ControlNet::from_points(2, 2, &pts)
     }
 
@@ -213,7 +318,14 @@ mod tests {
     fn split_of_formulas_section_5_1() {
         let pieces = split_at_pieces(&finn(), &r(&["1/2", "1/3", "1/6"])).unwrap();
         let t1 = &pieces[0].net;
-        let want = [["4/9", "5/9", "29/36"], ["2/3", "5/6", "7/6"], ["0", "2", "0"], ["1/3", "7/6", "1/2"], ["1", "1", "1"], ["0", "2", "1"]];
+        let want = [
+            ["4/9", "5/9", "29/36"],
+            ["2/3", "5/6", "7/6"],
+            ["0", "2", "0"],
+            ["1/3", "7/6", "1/2"],
+            ["1", "1", "1"],
+            ["0", "2", "1"],
+        ];
         for (p, w) in t1.points().zip(want) {
             assert_eq!(s(p), w);
         }
@@ -223,7 +335,14 @@ mod tests {
     #[test]
     fn half_of_formulas_section_5_2() {
         let [a, _] = halve(&finn(), 0, 1);
-        let want = [["0", "0", "0"], ["1/2", "0", "1"], ["1/2", "1/2", "1"], ["0", "1", "0"], ["1/2", "1", "1/2"], ["0", "2", "1"]];
+        let want = [
+            ["0", "0", "0"],
+            ["1/2", "0", "1"],
+            ["1/2", "1/2", "1"],
+            ["0", "1", "0"],
+            ["1/2", "1", "1/2"],
+            ["0", "2", "1"],
+        ];
         for (p, w) in a.net.points().zip(want) {
             assert_eq!(s(p), w);
         }
@@ -253,12 +372,14 @@ mod tests {
         (-6i64..=6, 1i64..=4).prop_map(|(a, b)| BigRational::new(a.into(), b.into()))
     }
 
-    fn net_and_point() -> impl Strategy<Value = (ControlNet<BigRational>, Vec<BigRational>, Vec<BigRational>)> {
+    fn net_and_point()
+    -> impl Strategy<Value = (ControlNet<BigRational>, Vec<BigRational>, Vec<BigRational>)> {
         (1usize..=3, 0usize..=5)
             .prop_flat_map(|(m, n)| {
                 let len = simplex::count(m, n) * 2;
                 (
-                    proptest::collection::vec(small_rational(), len).prop_map(move |c| ControlNet::new(simplex::Simplex::new(m, n), 2, c)),
+                    proptest::collection::vec(small_rational(), len)
+                        .prop_map(move |c| ControlNet::new(simplex::Simplex::new(m, n), 2, c)),
                     proptest::collection::vec(small_rational(), m),
                     proptest::collection::vec(small_rational(), m),
                 )
@@ -272,9 +393,16 @@ mod tests {
             })
     }
 
-    fn check_pieces(parent: &ControlNet<BigRational>, pieces: &[Piece<BigRational>], q: &[BigRational]) -> Result<(), TestCaseError> {
+    fn check_pieces(
+        parent: &ControlNet<BigRational>,
+        pieces: &[Piece<BigRational>],
+        q: &[BigRational],
+    ) -> Result<(), TestCaseError> {
         for p in pieces {
-            prop_assert_eq!(evaluate(&p.net, q), evaluate(parent, &map_point(&p.domain_in_parent, q)));
+            prop_assert_eq!(
+                evaluate(&p.net, q),
+                evaluate(parent, &map_point(&p.domain_in_parent, q))
+            );
         }
         Ok(())
     }
@@ -287,12 +415,14 @@ mod tests {
             let m = net.m();
             if let Ok(pieces) = split_at_pieces(&net, &t) {
                 prop_assert_eq!(pieces.len(), m + 1);
+                prop_assert_eq!(&split_at_pieces_exact(&net, &t).unwrap(), &pieces);
                 check_pieces(&net, &pieces, &q)?;
             }
             for (i, j) in [(0, 1), (m, 0), (1, m)] {
                 if i != j {
                     let halves = halve(&net, i, j);
                     check_pieces(&net, &halves, &q)?;
+                    prop_assert_eq!(&halve_exact(&net, i, j), &halves);
                     prop_assert_eq!(&add_and_halve(&net, i, j, HalvingOrder::TopDown), &halves[0].net);
                     prop_assert_eq!(&add_and_halve(&net, j, i, HalvingOrder::TopDown), &halves[1].net);
                 }
@@ -300,6 +430,7 @@ mod tests {
             if m == 2 {
                 let four = midpoint_split(&net).unwrap();
                 check_pieces(&net, &four, &q)?;
+                prop_assert_eq!(&midpoint_split_exact(&net).unwrap(), &four);
             }
         }
     }

@@ -26,10 +26,23 @@ use crate::io::InputError;
 use crate::io::patch_file::index_key;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::simplex::{Simplex, multinomial};
-use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names};
+use crate::symbolic::{
+    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
+};
 
 /// Every operation name, for messages.
-pub const OPS: &[&str] = &["eval", "symbolic", "basis", "basis_sum", "blossom", "subpatch", "subdivide", "halve", "elevate", "matrix"];
+pub const OPS: &[&str] = &[
+    "eval",
+    "symbolic",
+    "basis",
+    "basis_sum",
+    "blossom",
+    "subpatch",
+    "subdivide",
+    "halve",
+    "elevate",
+    "matrix",
+];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
 fn op_keys(op: &str) -> Option<&'static [&'static str]> {
@@ -74,7 +87,9 @@ impl<'a> Inputs<'a> {
 
     /// A required list of rationals.
     pub fn rationals(&self, name: &str) -> Result<Vec<BigRational>, InputError> {
-        let node = self.get(name).ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
+        let node = self
+            .get(name)
+            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
         self.file.doc.rationals(node, &self.key(name))
     }
 
@@ -85,19 +100,29 @@ impl<'a> Inputs<'a> {
 
     /// An optional string.
     pub fn opt_string(&self, name: &str) -> Result<Option<String>, InputError> {
-        self.get(name).map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string)).transpose()
+        self.get(name)
+            .map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string))
+            .transpose()
     }
 
     /// An optional non-negative integer.
     pub fn opt_usize(&self, name: &str) -> Result<Option<usize>, InputError> {
-        self.get(name).map(|n| self.file.doc.usize(n, &self.key(name))).transpose()
+        self.get(name)
+            .map(|n| self.file.doc.usize(n, &self.key(name)))
+            .transpose()
     }
 
     /// An optional list of strings.
     pub fn opt_strings(&self, name: &str) -> Result<Option<Vec<String>>, InputError> {
-        let Some(node) = self.get(name) else { return Ok(None) };
+        let Some(node) = self.get(name) else {
+            return Ok(None);
+        };
         let items = self.file.doc.array(node, &self.key(name))?;
-        items.iter().map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string)).collect::<Result<Vec<_>, _>>().map(Some)
+        items
+            .iter()
+            .map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
     }
 
     /// The claim's patch.
@@ -110,18 +135,32 @@ impl<'a> Inputs<'a> {
         let m = patch.net.m();
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) => {
-                crate::commands::check_barycentric(&at, m, "point `at`").map_err(|e| self.error("at", e.to_string()))?;
+                crate::commands::check_barycentric(&at, m, "point `at`")
+                    .map_err(|e| self.error("at", e.to_string()))?;
                 Ok(at)
             }
-            (None, Some(x)) => patch.domain_or_reference().barycentric(&x).map_err(|e| self.error("cartesian", e.to_string())),
-            _ => Err(self.error("at", "give exactly one of `at` (barycentric) or `cartesian`")),
+            (None, Some(x)) => patch
+                .domain_or_reference()
+                .barycentric(&x)
+                .map_err(|e| self.error("cartesian", e.to_string())),
+            _ => Err(self.error(
+                "at",
+                "give exactly one of `at` (barycentric) or `cartesian`",
+            )),
         }
     }
 
     /// Variable names: `names` if given (checked against the count), else `default`.
     pub fn names(&self, default: Vec<String>) -> Result<Vec<String>, InputError> {
         match self.opt_strings("names")? {
-            Some(n) if n.len() != default.len() => Err(self.error("names", format!("{} names given, {} variables needed", n.len(), default.len()))),
+            Some(n) if n.len() != default.len() => Err(self.error(
+                "names",
+                format!(
+                    "{} names given, {} variables needed",
+                    n.len(),
+                    default.len()
+                ),
+            )),
             Some(n) => Ok(n),
             None => Ok(default),
         }
@@ -133,42 +172,77 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
     let table = file.doc.table(&claim.node, &claim.id)?;
     let keys = op_keys(&claim.op).ok_or_else(|| {
         let node = Document::get(table, "op").unwrap_or(&claim.node);
-        file.doc.error(node, &format!("{}.op", claim.id), format!("unknown operation `{}` (known: {})", claim.op, OPS.join(", ")))
+        file.doc.error(
+            node,
+            &format!("{}.op", claim.id),
+            format!(
+                "unknown operation `{}` (known: {})",
+                claim.op,
+                OPS.join(", ")
+            ),
+        )
     })?;
     let allowed: Vec<&str> = CLAIM_KEYS.iter().chain(keys).copied().collect();
-    file.doc.check_keys(&claim.node, table, &allowed, &claim.id)?;
+    file.doc
+        .check_keys(&claim.node, table, &allowed, &claim.id)?;
     let inputs = Inputs { file, claim, table };
     match claim.op.as_str() {
         "eval" => {
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
-            Ok(Value::numbers(&ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau)))
+            Ok(Value::numbers(
+                &ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau),
+            ))
         }
         "symbolic" => {
             let patch = inputs.patch()?;
             let m = patch.net.m();
             let (names, polys) = match inputs.opt_string("variables")?.as_deref() {
-                None | Some("barycentric") => (inputs.names(barycentric_names(m))?, barycentric_form(&patch.net)),
-                Some("cartesian") => (inputs.names(cartesian_names(m))?, cartesian_form(&patch.net, &patch.domain_or_reference())),
-                Some(other) => return Err(inputs.error("variables", format!("`{other}`: expected \"barycentric\" or \"cartesian\""))),
+                None | Some("barycentric") => (
+                    inputs.names(barycentric_names(m))?,
+                    barycentric_form(&patch.net),
+                ),
+                Some("cartesian") => (
+                    inputs.names(cartesian_names(m))?,
+                    cartesian_form(&patch.net, &patch.domain_or_reference()),
+                ),
+                Some(other) => {
+                    return Err(inputs.error(
+                        "variables",
+                        format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+                    ));
+                }
             };
-            Ok(Value::List(polys.into_iter().map(|p| Value::Poly(p, names.clone())).collect()))
+            Ok(Value::List(
+                polys
+                    .into_iter()
+                    .map(|p| Value::Poly(p, names.clone()))
+                    .collect(),
+            ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
-        "blossom" | "subpatch" | "subdivide" | "halve" | "elevate" | "matrix" => construction(&inputs, &claim.op),
+        "blossom" | "subpatch" | "subdivide" | "halve" | "elevate" | "matrix" => {
+            construction(&inputs, &claim.op)
+        }
         _ => unreachable!("op_keys covers every operation"),
     }
 }
 
 /// Control points keyed like a patch file: `{"2,0,0": [...], ...}`.
 pub fn net_value(net: &crate::patch::ControlNet<BigRational>) -> Value {
-    Value::Map(net.entries().map(|(alpha, p)| (index_key(alpha), Value::numbers(p))).collect())
+    Value::Map(
+        net.entries()
+            .map(|(alpha, p)| (index_key(alpha), Value::numbers(p)))
+            .collect(),
+    )
 }
 
 impl Inputs<'_> {
     /// A required list of barycentric points (each with `m + 1` coordinates summing to one).
     fn bary_points(&self, name: &str, m: usize) -> Result<Vec<Vec<BigRational>>, InputError> {
-        let node = self.get(name).ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
+        let node = self
+            .get(name)
+            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
         let items = self.file.doc.array(node, &self.key(name))?;
         items
             .iter()
@@ -176,7 +250,8 @@ impl Inputs<'_> {
             .map(|(i, n)| {
                 let key = format!("{}[{i}]", self.key(name));
                 let p = self.file.doc.rationals(n, &key)?;
-                crate::commands::check_barycentric(&p, m, "point").map_err(|e| self.file.doc.error(n, &key, e.to_string()))?;
+                crate::commands::check_barycentric(&p, m, "point")
+                    .map_err(|e| self.file.doc.error(n, &key, e.to_string()))?;
                 Ok(p)
             })
             .collect()
@@ -184,11 +259,20 @@ impl Inputs<'_> {
 
     /// An edge `[I, J]` (corners numbered from 1), returned 0-based.
     fn edge(&self, m: usize) -> Result<(usize, usize), InputError> {
-        let node = self.get("edge").ok_or_else(|| self.error("edge", "missing input `edge` (two corner numbers, like [1, 2])"))?;
+        let node = self.get("edge").ok_or_else(|| {
+            self.error(
+                "edge",
+                "missing input `edge` (two corner numbers, like [1, 2])",
+            )
+        })?;
         let items = self.file.doc.array(node, &self.key("edge"))?;
-        let nums = items.iter().map(|n| self.file.doc.usize(n, &self.key("edge"))).collect::<Result<Vec<_>, _>>()?;
+        let nums = items
+            .iter()
+            .map(|n| self.file.doc.usize(n, &self.key("edge")))
+            .collect::<Result<Vec<_>, _>>()?;
         match nums.as_slice() {
-            [i, j] => crate::subdivide::check_edge(m, *i, *j).map_err(|e| self.error("edge", e.to_string())),
+            [i, j] => crate::subdivide::check_edge(m, *i, *j)
+                .map_err(|e| self.error("edge", e.to_string())),
             _ => Err(self.error("edge", "an edge is two corner numbers, like [1, 2]")),
         }
     }
@@ -196,22 +280,32 @@ impl Inputs<'_> {
 
 /// The construction operations: blossom, subpatch, subdivide, halve, elevate, matrix.
 fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
-    use crate::subdivide::{HalvingOrder, add_and_halve, halve, midpoint_split, split_at_pieces};
+    use crate::subdivide::{
+        HalvingOrder, add_and_halve, halve_exact, midpoint_split_exact, split_at_pieces_exact,
+    };
     if op == "matrix" {
         return matrix(inputs);
     }
     let patch = inputs.patch()?;
     let net = &patch.net;
     let m = net.m();
-    let pieces = |ps: Vec<crate::subdivide::Piece<BigRational>>| Value::List(ps.iter().map(|p| net_value(&p.net)).collect());
+    let pieces = |ps: Vec<crate::subdivide::Piece<BigRational>>| {
+        Value::List(ps.iter().map(|p| net_value(&p.net)).collect())
+    };
     Ok(match op {
         "blossom" => {
             let args = inputs.bary_points("args", m)?;
-            Value::numbers(&crate::blossom::blossom(net, &args).map_err(|e| inputs.error("args", e.to_string()))?)
+            Value::numbers(
+                &crate::blossom::blossom(net, &args)
+                    .map_err(|e| inputs.error("args", e.to_string()))?,
+            )
         }
         "subpatch" => {
             let f = inputs.bary_points("vertices", m)?;
-            net_value(&crate::blossom::subpatch(net, &f).map_err(|e| inputs.error("vertices", e.to_string()))?)
+            net_value(
+                &crate::blossom::subpatch_exact(net, &f)
+                    .map_err(|e| inputs.error("vertices", e.to_string()))?,
+            )
         }
         "subdivide" => {
             let midpoints = match inputs.get("midpoints") {
@@ -223,17 +317,29 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
             };
             match (inputs.opt_rationals("at")?, midpoints) {
                 (Some(t), false) => {
-                    crate::commands::check_barycentric(&t, m, "point `at`").map_err(|e| inputs.error("at", e.to_string()))?;
-                    pieces(split_at_pieces(net, &t).map_err(|e| inputs.error("at", e.to_string()))?)
+                    crate::commands::check_barycentric(&t, m, "point `at`")
+                        .map_err(|e| inputs.error("at", e.to_string()))?;
+                    pieces(
+                        split_at_pieces_exact(net, &t)
+                            .map_err(|e| inputs.error("at", e.to_string()))?,
+                    )
                 }
-                (None, true) => pieces(midpoint_split(net).map_err(|e| inputs.error("midpoints", e.to_string()))?),
-                _ => return Err(inputs.error("at", "give exactly one of `at` (a barycentric point) or `midpoints = true`")),
+                (None, true) => pieces(
+                    midpoint_split_exact(net)
+                        .map_err(|e| inputs.error("midpoints", e.to_string()))?,
+                ),
+                _ => {
+                    return Err(inputs.error(
+                        "at",
+                        "give exactly one of `at` (a barycentric point) or `midpoints = true`",
+                    ));
+                }
             }
         }
         "halve" => {
             let (i, j) = inputs.edge(m)?;
             match inputs.opt_string("method")?.as_deref() {
-                None | Some("blossom") => pieces(halve(net, i, j).to_vec()),
+                None | Some("blossom") => pieces(halve_exact(net, i, j).to_vec()),
                 Some(method @ ("add-and-halve" | "add-and-halve-bottom-first")) => {
                     let order = if method == "add-and-halve" { HalvingOrder::TopDown } else { HalvingOrder::BottomFirst };
                     Value::List(vec![net_value(&add_and_halve(net, i, j, order)), net_value(&add_and_halve(net, j, i, order))])
@@ -244,9 +350,15 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
         "elevate" => {
             let r = inputs.opt_usize("by")?.unwrap_or(1);
             if r == 0 || net.degree() + r > crate::io::patch_file::MAX_DEGREE {
-                return Err(inputs.error("by", format!("elevate by 1 to {}", crate::io::patch_file::MAX_DEGREE - net.degree())));
+                return Err(inputs.error(
+                    "by",
+                    format!(
+                        "elevate by 1 to {}",
+                        crate::io::patch_file::MAX_DEGREE - net.degree()
+                    ),
+                ));
             }
-            net_value(&crate::elevate::elevate(net, r))
+            net_value(&crate::elevate::elevate_exact(net, r))
         }
         _ => unreachable!("construction ops only"),
     })
@@ -254,14 +366,20 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
 
 /// The matrix of a halving or a subpatch, as a list of rows.
 fn matrix(inputs: &Inputs<'_>) -> Result<Value, InputError> {
-    let n = inputs.opt_usize("degree")?.ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+    let n = inputs
+        .opt_usize("degree")?
+        .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
     let (m, f) = match inputs.opt_string("kind")?.as_deref() {
         Some("halve") => {
             let m = inputs.opt_usize("simplex")?.unwrap_or(2);
             if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m) {
                 return Err(inputs.error("simplex", "the simplex dimension must be 1 to 16"));
             }
-            let (i, j) = if inputs.get("edge").is_some() { inputs.edge(m)? } else { (0, 1) };
+            let (i, j) = if inputs.get("edge").is_some() {
+                inputs.edge(m)?
+            } else {
+                (0, 1)
+            };
             let [a, b] = crate::subdivide::halve_domains(m, i, j);
             match inputs.opt_usize("piece")?.unwrap_or(1) {
                 1 => (m, a),
@@ -270,7 +388,9 @@ fn matrix(inputs: &Inputs<'_>) -> Result<Value, InputError> {
             }
         }
         Some("subpatch") => {
-            let node = inputs.get("vertices").ok_or_else(|| inputs.error("vertices", "missing input `vertices`"))?;
+            let node = inputs
+                .get("vertices")
+                .ok_or_else(|| inputs.error("vertices", "missing input `vertices`"))?;
             let count = inputs.file.doc.array(node, &inputs.key("vertices"))?.len();
             if count < 2 {
                 return Err(inputs.error("vertices", "give m+1 vertices (3 for a triangle)"));
@@ -279,76 +399,133 @@ fn matrix(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         }
         _ => return Err(inputs.error("kind", "`kind` must be \"halve\" or \"subpatch\"")),
     };
-    if crate::simplex::binomial((n + m) as u64, m as u64) > crate::commands::matrix::MAX_ROWS as u128 {
+    if crate::simplex::binomial((n + m) as u64, m as u64)
+        > crate::commands::matrix::MAX_ROWS as u128
+    {
         return Err(inputs.error("degree", "the matrix would be too large"));
     }
-    let rows = crate::blossom::subpatch_matrix(m, n, &f).map_err(|e| inputs.error("vertices", e.to_string()))?;
-    Ok(Value::List(rows.iter().map(|r| Value::numbers(r)).collect()))
+    let rows = crate::blossom::subpatch_matrix(m, n, &f)
+        .map_err(|e| inputs.error("vertices", e.to_string()))?;
+    Ok(Value::List(
+        rows.iter().map(|r| Value::numbers(r)).collect(),
+    ))
 }
 
 /// The Bernstein basis of a degree (symbolic or at a point), or its sum.
 fn basis(inputs: &Inputs<'_>, sum: bool) -> Result<Value, InputError> {
-    let n = inputs.opt_usize("degree")?.ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+    let n = inputs
+        .opt_usize("degree")?
+        .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
     let m = inputs.opt_usize("simplex")?.unwrap_or(2);
-    if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m) || n > crate::io::patch_file::MAX_DEGREE {
+    if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m)
+        || n > crate::io::patch_file::MAX_DEGREE
+    {
         return Err(inputs.error("degree", "degree or simplex dimension out of range"));
     }
     let simplex = Simplex::new(m, n);
     if let Some(at) = inputs.opt_rationals("at")? {
         if at.len() != m + 1 {
-            return Err(inputs.error("at", format!("{} coordinates, expected {}", at.len(), m + 1)));
+            return Err(inputs.error(
+                "at",
+                format!("{} coordinates, expected {}", at.len(), m + 1),
+            ));
         }
         let b = bernstein::basis(&simplex, &at);
         return Ok(if sum {
             Value::Number(b.iter().sum())
         } else {
-            Value::Map(simplex.iter().map(index_key).zip(b.into_iter().map(Value::Number)).collect())
+            Value::Map(
+                simplex
+                    .iter()
+                    .map(index_key)
+                    .zip(b.into_iter().map(Value::Number))
+                    .collect(),
+            )
         });
     }
     let cartesian = match inputs.opt_string("variables")?.as_deref() {
         None | Some("barycentric") => false,
         Some("cartesian") => true,
-        Some(other) => return Err(inputs.error("variables", format!("`{other}`: expected \"barycentric\" or \"cartesian\""))),
+        Some(other) => {
+            return Err(inputs.error(
+                "variables",
+                format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+            ));
+        }
     };
     let bary_names = inputs.names(barycentric_names(m))?;
     let polys: Vec<Polynomial> = simplex
         .iter()
-        .map(|alpha| Polynomial::monomial(m + 1, alpha.to_vec(), BigRational::from_integer(multinomial(alpha).into())))
+        .map(|alpha| {
+            Polynomial::monomial(
+                m + 1,
+                alpha.to_vec(),
+                BigRational::from_integer(multinomial(alpha).into()),
+            )
+        })
         .collect();
     let (names, polys) = if cartesian {
         let subs = crate::symbolic::barycentric_of_cartesian(&crate::domain::Domain::reference(m));
-        (cartesian_names(m), polys.iter().map(|p| p.compose(&subs)).collect::<Vec<_>>())
+        (
+            cartesian_names(m),
+            polys.iter().map(|p| p.compose(&subs)).collect::<Vec<_>>(),
+        )
     } else {
         (bary_names, polys)
     };
     Ok(if sum {
-        let total = polys.iter().fold(Polynomial::zero(names.len()), |acc, p| acc.add(p));
+        let total = polys
+            .iter()
+            .fold(Polynomial::zero(names.len()), |acc, p| acc.add(p));
         Value::Poly(total, names)
     } else {
-        Value::Map(simplex.iter().map(index_key).zip(polys.into_iter().map(|p| Value::Poly(p, names.clone()))).collect())
+        Value::Map(
+            simplex
+                .iter()
+                .map(index_key)
+                .zip(polys.into_iter().map(|p| Value::Poly(p, names.clone())))
+                .collect(),
+        )
     })
 }
 
 /// Read the claimed value at `node`, guided by the shape of the exact value.
-pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Result<Value, InputError> {
+pub fn read_claimed(
+    doc: &Document,
+    node: &Node,
+    exact: &Value,
+    key: &str,
+) -> Result<Value, InputError> {
     Ok(match (exact, &node.value) {
         (Value::Number(_), _) => Value::Number(doc.rational(node, key)?),
         (Value::Poly(_, names), NodeValue::String(s) | NodeValue::Number(s)) => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
-            let p = Polynomial::parse(s, &n).map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
+            let p = Polynomial::parse(s, &n)
+                .map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
             Value::Poly(p, names.clone())
         }
         (Value::Bool(_), NodeValue::Bool(b)) => Value::Bool(*b),
-        (Value::Integer(_), NodeValue::Number(t)) => {
-            Value::Integer(t.parse().map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?)
-        }
+        (Value::Integer(_), NodeValue::Number(t)) => Value::Integer(
+            t.parse()
+                .map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?,
+        ),
         (Value::List(xs), NodeValue::Array(items)) => {
-            let fallback = xs.first().cloned().unwrap_or(Value::Number(BigRational::default()));
+            let fallback = xs
+                .first()
+                .cloned()
+                .unwrap_or(Value::Number(BigRational::default()));
             Value::List(
                 items
                     .iter()
                     .enumerate()
-                    .map(|(i, it)| read_claimed(doc, it, xs.get(i).unwrap_or(&fallback), &format!("{key}[{i}]")))
+                    .map(|(i, it)| {
+                        read_claimed(
+                            doc,
+                            it,
+                            xs.get(i).unwrap_or(&fallback),
+                            &format!("{key}[{i}]"),
+                        )
+                    })
                     .collect::<Result<_, _>>()?,
             )
         }
@@ -356,9 +533,16 @@ pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Re
             items
                 .iter()
                 .map(|(k, it)| {
-                    let like = kv.iter().find(|(ek, _)| ek == k).map(|(_, v)| v).or_else(|| kv.first().map(|(_, v)| v));
+                    let like = kv
+                        .iter()
+                        .find(|(ek, _)| ek == k)
+                        .map(|(_, v)| v)
+                        .or_else(|| kv.first().map(|(_, v)| v));
                     let like = like.ok_or_else(|| doc.error(it, key, "unexpected key"))?;
-                    Ok((k.clone(), read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?))
+                    Ok((
+                        k.clone(),
+                        read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?,
+                    ))
                 })
                 .collect::<Result<_, InputError>>()?,
         ),
@@ -371,7 +555,11 @@ pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Re
                 Value::Map(_) => "a table",
                 Value::Number(_) => "a number",
             };
-            return Err(doc.error(node, key, format!("expected {kind}, found {}", node.value.kind())));
+            return Err(doc.error(
+                node,
+                key,
+                format!("expected {kind}, found {}", node.value.kind()),
+            ));
         }
     })
 }

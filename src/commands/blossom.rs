@@ -35,16 +35,38 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let patch = read_patch(&args.patch)?;
     let n = patch.net.degree();
     if args.args.len() != n {
-        return Err(CliError::core("--arg", CoreError::BlossomArity { degree: n, found: args.args.len() }));
+        return Err(CliError::core(
+            "--arg",
+            CoreError::BlossomArity {
+                degree: n,
+                found: args.args.len(),
+            },
+        ));
     }
     let points = barycentric_points(&args.args, "arg", patch.net.m())?;
-    let point = crate::blossom::blossom(&patch.net, &points).map_err(|e| CliError::core("--arg", e))?;
-    Outcome::rendered(&BlossomReport { args: points, point }, args.out.format, true)
+    let point =
+        crate::blossom::blossom(&patch.net, &points).map_err(|e| CliError::core("--arg", e))?;
+    Outcome::rendered(
+        &BlossomReport {
+            args: points,
+            point,
+        },
+        args.out.format,
+        true,
+    )
 }
 
 impl Render for BlossomReport {
     fn text(&self) -> String {
-        format!("b[{}] = {}\n", self.args.iter().map(|a| tuple(a)).collect::<Vec<_>>().join(", "), tuple(&self.point))
+        format!(
+            "b[{}] = {}\n",
+            self.args
+                .iter()
+                .map(|a| tuple(a))
+                .collect::<Vec<_>>()
+                .join(", "),
+            tuple(&self.point)
+        )
     }
     fn json(&self) -> Json {
         json!({ "point": json_rationals(&self.point) })

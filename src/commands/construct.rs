@@ -14,7 +14,11 @@ use crate::report::Render;
 use crate::simplex;
 
 /// Parse barycentric points given as `--{flag} a,b,c`, each with `m + 1` coordinates summing to 1.
-pub fn barycentric_points(texts: &[String], flag: &str, m: usize) -> Result<Vec<Vec<BigRational>>, CliError> {
+pub fn barycentric_points(
+    texts: &[String],
+    flag: &str,
+    m: usize,
+) -> Result<Vec<Vec<BigRational>>, CliError> {
     texts
         .iter()
         .map(|t| {
@@ -32,8 +36,16 @@ pub fn parse_edge(text: &str, m: usize) -> Result<(usize, usize), CliError> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     let nums: Option<Vec<usize>> = parts.iter().map(|p| p.parse::<usize>().ok()).collect();
     match nums.as_deref() {
-        Some([i, j]) => crate::subdivide::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e)),
-        _ => Err(CliError::core(what, CoreError::Invalid(format!("an edge is two corner numbers separated by a comma, like 1,2 (corners 1 to {})", m + 1)))),
+        Some([i, j]) => {
+            crate::subdivide::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e))
+        }
+        _ => Err(CliError::core(
+            what,
+            CoreError::Invalid(format!(
+                "an edge is two corner numbers separated by a comma, like 1,2 (corners 1 to {})",
+                m + 1
+            )),
+        )),
     }
 }
 
@@ -53,9 +65,17 @@ pub fn check_size(m: usize, n: usize, what: &str) -> Result<(), CliError> {
 
 /// The patch with `net` over the sub-simplex `f` of `parent` (barycentric vertices); its
 /// Cartesian domain, if the parent has one, is the image of `f`.
-pub fn child_patch(parent: &Patch, net: ControlNet<BigRational>, f: Option<&[Vec<BigRational>]>, label: &str) -> Result<Patch, CliError> {
+pub fn child_patch(
+    parent: &Patch,
+    net: ControlNet<BigRational>,
+    f: Option<&[Vec<BigRational>]>,
+    label: &str,
+) -> Result<Patch, CliError> {
     let domain = match (&parent.domain, f) {
-        (Some(d), Some(f)) => Some(Domain::new(f.iter().map(|v| d.cartesian(v)).collect()).map_err(|e| CliError::core("the sub-simplex", e))?),
+        (Some(d), Some(f)) => Some(
+            Domain::new(f.iter().map(|v| d.cartesian(v)).collect())
+                .map_err(|e| CliError::core("the sub-simplex", e))?,
+        ),
         (d, _) => d.clone(),
     };
     let name = Some(match &parent.name {
@@ -70,14 +90,28 @@ fn strings(p: &[BigRational]) -> Vec<String> {
 }
 
 fn toml_points(f: &[Vec<BigRational>]) -> String {
-    let rows: Vec<String> = f.iter().map(|p| format!("[{}]", strings(p).iter().map(|x| format!("\"{x}\"")).collect::<Vec<_>>().join(", "))).collect();
+    let rows: Vec<String> = f
+        .iter()
+        .map(|p| {
+            format!(
+                "[{}]",
+                strings(p)
+                    .iter()
+                    .map(|x| format!("\"{x}\""))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
+        .collect();
     format!("[{}]", rows.join(", "))
 }
 
 /// The TOML patch file, with `domain_in_parent` if given, and every table under `prefix`.
 fn toml_with(patch: &Patch, f: Option<&[Vec<BigRational>]>, prefix: &str) -> String {
     let text = patch_to_toml(patch);
-    let (head, tail) = text.split_once("\n[control_points]\n").expect("patch_to_toml writes a control_points table");
+    let (head, tail) = text
+        .split_once("\n[control_points]\n")
+        .expect("patch_to_toml writes a control_points table");
     let mut out = head.to_string();
     if !out.is_empty() && !out.ends_with('\n') {
         out.push('\n');
@@ -129,7 +163,10 @@ impl Render for PiecesReport {
             if i > 0 {
                 out.push('\n');
             }
-            out += &format!("[[pieces]]\ndomain_in_parent = {}\n\n[pieces.patch]\n", toml_points(f));
+            out += &format!(
+                "[[pieces]]\ndomain_in_parent = {}\n\n[pieces.patch]\n",
+                toml_points(f)
+            );
             out += &toml_with(p, None, "pieces.patch.");
         }
         out

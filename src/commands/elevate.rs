@@ -24,11 +24,26 @@ pub struct Args {
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let parent = read_patch(&args.patch)?;
     if args.by == 0 {
-        return Err(CliError::core("--by 0", CoreError::Invalid("elevate by at least 1".into())));
+        return Err(CliError::core(
+            "--by 0",
+            CoreError::Invalid("elevate by at least 1".into()),
+        ));
     }
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let net = crate::elevate::elevate(&parent.net, args.by);
-    let patch = child_patch(&parent, net, None, &format!("elevated to degree {}", n + args.by))?;
-    Outcome::rendered(&PatchReport { patch, domain_in_parent: None }, args.out.format, true)
+    let net = crate::elevate::elevate_exact(&parent.net, args.by);
+    let patch = child_patch(
+        &parent,
+        net,
+        None,
+        &format!("elevated to degree {}", n + args.by),
+    )?;
+    Outcome::rendered(
+        &PatchReport {
+            patch,
+            domain_in_parent: None,
+        },
+        args.out.format,
+        true,
+    )
 }

@@ -8,7 +8,7 @@ use super::construct::{PiecesReport, child_patch, parse_edge};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::io::patch_file::read_patch;
-use crate::subdivide::{HalvingOrder, add_and_halve, halve};
+use crate::subdivide::{HalvingOrder, Piece, add_and_halve, halve_domains, halve_exact};
 
 /// Arguments of `tribez halve`.
 #[derive(Debug, clap::Args)]
@@ -29,16 +29,31 @@ pub struct Args {
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let parent = read_patch(&args.patch)?;
     let (i, j) = parse_edge(&args.edge, parent.net.m())?;
-    let mut halves = halve(&parent.net, i, j);
-    if args.add_and_halve {
-        halves[0].net = add_and_halve(&parent.net, i, j, HalvingOrder::TopDown);
-        halves[1].net = add_and_halve(&parent.net, j, i, HalvingOrder::TopDown);
-    }
+    let halves = if args.add_and_halve {
+        let [a, b] = halve_domains(parent.net.m(), i, j);
+        [
+            Piece {
+                domain_in_parent: a,
+                net: add_and_halve(&parent.net, i, j, HalvingOrder::TopDown),
+            },
+            Piece {
+                domain_in_parent: b,
+                net: add_and_halve(&parent.net, j, i, HalvingOrder::TopDown),
+            },
+        ]
+    } else {
+        halve_exact(&parent.net, i, j)
+    };
     let pieces = halves
         .into_iter()
         .enumerate()
         .map(|(k, p)| {
-            let patch = child_patch(&parent, p.net, Some(&p.domain_in_parent), &format!("half {} of edge {}", k + 1, args.edge))?;
+            let patch = child_patch(
+                &parent,
+                p.net,
+                Some(&p.domain_in_parent),
+                &format!("half {} of edge {}", k + 1, args.edge),
+            )?;
             Ok((p.domain_in_parent, patch))
         })
         .collect::<Result<_, CliError>>()?;

@@ -64,16 +64,30 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         Kind::Halve => {
             let m = args.simplex;
             if m == 0 || m > crate::io::patch_file::MAX_SIMPLEX_DIMENSION {
-                return Err(CliError::core(format!("--simplex {m}"), CoreError::Invalid("the simplex dimension must be 1 to 16".into())));
+                return Err(CliError::core(
+                    format!("--simplex {m}"),
+                    CoreError::Invalid("the simplex dimension must be 1 to 16".into()),
+                ));
             }
             let (i, j) = parse_edge(&args.edge, m)?;
             let [a, b] = halve_domains(m, i, j);
             let (f, replaced) = if args.piece == 1 { (a, j) } else { (b, i) };
-            (m, f, format!("halving along edge {}, piece {}: corner {} replaced by the midpoint", args.edge, args.piece, replaced + 1))
+            (
+                m,
+                f,
+                format!(
+                    "halving along edge {}, piece {}: corner {} replaced by the midpoint",
+                    args.edge,
+                    args.piece,
+                    replaced + 1
+                ),
+            )
         }
         Kind::Subpatch => {
             if args.vertices.len() < 2 {
-                return Err(CliError::Usage("give the sub-simplex with --vertex, m+1 times (3 for a triangle)".into()));
+                return Err(CliError::Usage(
+                    "give the sub-simplex with --vertex, m+1 times (3 for a triangle)".into(),
+                ));
             }
             let m = args.vertices.len() - 1;
             let f = barycentric_points(&args.vertices, "vertex", m)?;
@@ -83,12 +97,32 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let n = args.degree;
     let len = simplex::binomial((n + m) as u64, m as u64);
     if len > MAX_ROWS as u128 {
-        return Err(CliError::core(format!("--degree {n}"), CoreError::Invalid(format!("the matrix would have {len} rows, above the limit of {MAX_ROWS}"))));
+        return Err(CliError::core(
+            format!("--degree {n}"),
+            CoreError::Invalid(format!(
+                "the matrix would have {len} rows, above the limit of {MAX_ROWS}"
+            )),
+        ));
     }
-    let context = args.vertices.iter().map(|v| format!("--vertex {v}")).collect::<Vec<_>>().join(" ");
+    let context = args
+        .vertices
+        .iter()
+        .map(|v| format!("--vertex {v}"))
+        .collect::<Vec<_>>()
+        .join(" ");
     let rows = subpatch_matrix(m, n, &f).map_err(|e| CliError::core(context, e))?;
-    let title = format!("{title}; degree {n} on the {m}-simplex; child = M · parent, rows and columns in canonical order");
-    Outcome::rendered(&MatrixReport { title, order: Simplex::new(m, n), rows }, args.out.format, true)
+    let title = format!(
+        "{title}; degree {n} on the {m}-simplex; child = M · parent, rows and columns in canonical order"
+    );
+    Outcome::rendered(
+        &MatrixReport {
+            title,
+            order: Simplex::new(m, n),
+            rows,
+        },
+        args.out.format,
+        true,
+    )
 }
 
 fn key(alpha: &[u32]) -> String {
@@ -100,18 +134,48 @@ fn latex_number(q: &BigRational) -> String {
         q.to_string()
     } else {
         let sign = if q.numer() < &0.into() { "-" } else { "" };
-        format!("{sign}\\frac{{{}}}{{{}}}", num_traits::Signed::abs(q.numer()), q.denom())
+        format!(
+            "{sign}\\frac{{{}}}{{{}}}",
+            num_traits::Signed::abs(q.numer()),
+            q.denom()
+        )
     }
 }
 
 impl Render for MatrixReport {
     fn text(&self) -> String {
-        let cells: Vec<Vec<String>> = self.rows.iter().map(|r| r.iter().map(ToString::to_string).collect()).collect();
-        let width = cells.iter().flatten().map(String::len).chain(self.order.iter().map(|a| key(a).len())).max().unwrap_or(1);
+        let cells: Vec<Vec<String>> = self
+            .rows
+            .iter()
+            .map(|r| r.iter().map(ToString::to_string).collect())
+            .collect();
+        let width = cells
+            .iter()
+            .flatten()
+            .map(String::len)
+            .chain(self.order.iter().map(|a| key(a).len()))
+            .max()
+            .unwrap_or(1);
         let label = self.order.iter().map(|a| key(a).len()).max().unwrap_or(1);
-        let mut out = format!("{}\n{:label$}   {}\n", self.title, "", self.order.iter().map(|a| format!("{:>width$}", key(a))).collect::<Vec<_>>().join(" "));
+        let mut out = format!(
+            "{}\n{:label$}   {}\n",
+            self.title,
+            "",
+            self.order
+                .iter()
+                .map(|a| format!("{:>width$}", key(a)))
+                .collect::<Vec<_>>()
+                .join(" ")
+        );
         for (alpha, row) in self.order.iter().zip(&cells) {
-            out += &format!("{:>label$} [ {} ]\n", key(alpha), row.iter().map(|c| format!("{c:>width$}")).collect::<Vec<_>>().join(" "));
+            out += &format!(
+                "{:>label$} [ {} ]\n",
+                key(alpha),
+                row.iter()
+                    .map(|c| format!("{c:>width$}"))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            );
         }
         out
     }
@@ -122,7 +186,15 @@ impl Render for MatrixReport {
         })
     }
     fn latex(&self) -> Option<String> {
-        let rows: Vec<String> = self.rows.iter().map(|r| r.iter().map(latex_number).collect::<Vec<_>>().join(" & ")).collect();
-        Some(format!("% {}\n\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}\n", self.title, rows.join(" \\\\\n")))
+        let rows: Vec<String> = self
+            .rows
+            .iter()
+            .map(|r| r.iter().map(latex_number).collect::<Vec<_>>().join(" & "))
+            .collect();
+        Some(format!(
+            "% {}\n\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}\n",
+            self.title,
+            rows.join(" \\\\\n")
+        ))
     }
 }

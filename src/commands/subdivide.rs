@@ -7,7 +7,7 @@ use super::construct::{PiecesReport, barycentric_points, child_patch};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::io::patch_file::read_patch;
-use crate::subdivide::{midpoint_split, split_at_pieces};
+use crate::subdivide::{midpoint_split_exact, split_at_pieces_exact};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]
@@ -15,7 +15,12 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// Split at this barycentric point: piece k replaces corner k by the point.
-    #[arg(long = "at", value_name = "POINT", conflicts_with = "midpoints", required_unless_present = "midpoints")]
+    #[arg(
+        long = "at",
+        value_name = "POINT",
+        conflicts_with = "midpoints",
+        required_unless_present = "midpoints"
+    )]
     pub at: Option<String>,
     /// Four-way split at the edge midpoints (triangles only).
     #[arg(long)]
@@ -32,16 +37,22 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let pieces = match &args.at {
         Some(text) => {
             let t = barycentric_points(std::slice::from_ref(text), "at", m)?.remove(0);
-            split_at_pieces(&parent.net, &t).map_err(|e| CliError::core(format!("--at {text}"), e))?
+            split_at_pieces_exact(&parent.net, &t)
+                .map_err(|e| CliError::core(format!("--at {text}"), e))?
         }
-        None => midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?,
+        None => midpoint_split_exact(&parent.net).map_err(|e| CliError::core(&file, e))?,
     };
     let total = pieces.len();
     let pieces = pieces
         .into_iter()
         .enumerate()
         .map(|(k, p)| {
-            let patch = child_patch(&parent, p.net, Some(&p.domain_in_parent), &format!("piece {} of {total}", k + 1))?;
+            let patch = child_patch(
+                &parent,
+                p.net,
+                Some(&p.domain_in_parent),
+                &format!("piece {} of {total}", k + 1),
+            )?;
             Ok((p.domain_in_parent, patch))
         })
         .collect::<Result<_, CliError>>()?;

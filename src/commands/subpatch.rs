@@ -28,12 +28,29 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if args.vertices.len() != m + 1 {
         return Err(CliError::core(
             "--vertex",
-            CoreError::WrongLength { what: format!("the sub-simplex of a patch over the {m}-simplex (vertices given)"), expected: m + 1, found: args.vertices.len() },
+            CoreError::WrongLength {
+                what: format!("the sub-simplex of a patch over the {m}-simplex (vertices given)"),
+                expected: m + 1,
+                found: args.vertices.len(),
+            },
         ));
     }
     let f = barycentric_points(&args.vertices, "vertex", m)?;
-    let context = args.vertices.iter().map(|v| format!("--vertex {v}")).collect::<Vec<_>>().join(" ");
-    let net = crate::blossom::subpatch(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
+    let context = args
+        .vertices
+        .iter()
+        .map(|v| format!("--vertex {v}"))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let net =
+        crate::blossom::subpatch_exact(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
     let patch = child_patch(&parent, net, Some(&f), "subpatch")?;
-    Outcome::rendered(&PatchReport { patch, domain_in_parent: Some(f) }, args.out.format, true)
+    Outcome::rendered(
+        &PatchReport {
+            patch,
+            domain_in_parent: Some(f),
+        },
+        args.out.format,
+        true,
+    )
 }
