@@ -172,9 +172,9 @@ pub fn determinant(mut a: Vec<Vec<BigRational>>) -> BigRational {
                 continue;
             }
             let f = &a[r][col] / &p;
-            for c in col..n {
-                let delta = &f * &a[col][c];
-                a[r][c] -= delta;
+            let (top, bottom) = a.split_at_mut(r);
+            for (x, pivot_row_x) in bottom[0][col..].iter_mut().zip(&top[col][col..]) {
+                *x -= &f * pivot_row_x;
             }
         }
     }

@@ -120,6 +120,7 @@ impl Simplex {
     }
 
     /// The multi-index of rank `r` (unrank by table look-up).
+    #[allow(clippy::should_implement_trait)] // returns a slice, not `&Self::Output`
     pub fn index(&self, r: usize) -> &[u32] {
         &self.indices[r * (self.m + 1)..(r + 1) * (self.m + 1)]
     }

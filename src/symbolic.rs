@@ -265,6 +265,19 @@ struct PolyParser<'a> {
 }
 
 impl PolyParser<'_> {
+    /// Is the character at `i` part of a number? Digits, `.`, `/`, and `e`/`E` only when an
+    /// exponent follows (so that a variable named `e` is not swallowed).
+    fn number_char_at(&self, i: usize) -> bool {
+        match self.s.get(i) {
+            Some(c) if c.is_ascii_digit() || matches!(c, '.' | '/') => true,
+            Some('e' | 'E') => self
+                .s
+                .get(i + 1)
+                .is_some_and(|c| c.is_ascii_digit() || *c == '-'),
+            _ => false,
+        }
+    }
+
     fn peek(&mut self) -> Option<char> {
         while self.s.get(self.pos).is_some_and(|c| c.is_whitespace()) {
             self.pos += 1;
@@ -308,16 +321,7 @@ impl PolyParser<'_> {
             match self.peek() {
                 Some(c) if c.is_ascii_digit() || c == '.' => {
                     let start = self.pos;
-                    while self
-                        .s
-                        .get(self.pos)
-                        .is_some_and(|c| c.is_ascii_digit() || matches!(c, '.' | '/' | 'e' | 'E'))
-                        && !(matches!(self.s[self.pos], 'e' | 'E')
-                            && !self
-                                .s
-                                .get(self.pos + 1)
-                                .is_some_and(|c| c.is_ascii_digit() || *c == '-'))
-                    {
+                    while self.number_char_at(self.pos) {
                         self.pos += 1;
                     }
                     let text: String = self.s[start..self.pos].iter().collect();

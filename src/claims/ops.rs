@@ -3,7 +3,7 @@
 //! | op | inputs | value |
 //! |---|---|---|
 //! | `eval` | `at` (barycentric, summing to 1) or `cartesian` | the point |
-//! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names` | one polynomial per coordinate |
+//! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
 //! | `blossom` | `args`: exactly n barycentric points | the point `b[args]` |
@@ -12,6 +12,8 @@
 //! | `halve` | `edge = [I, J]`; optional `method` = `"blossom"` (default), `"add-and-halve"`, `"add-and-halve-bottom-first"` | the two halves, a list of tables |
 //! | `elevate` | optional `by` (default 1) | control points keyed like a patch file |
 //! | `matrix` | `kind` = `"halve"` (`degree`, optional `simplex`, `edge`, `piece`) or `"subpatch"` (`degree`, `vertices`) | the rows, a list of lists |
+//! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
+//! | `direction` | `domain`, `vector` (Cartesian) | the directional coordinates (they sum to 0) |
 //!
 //! Each op lists the keys it reads; any other key in a claim is an error (a typo must not be
 //! silently ignored).
@@ -42,13 +44,17 @@ pub const OPS: &[&str] = &[
     "halve",
     "elevate",
     "matrix",
+    "barycentric",
+    "direction",
 ];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
 fn op_keys(op: &str) -> Option<&'static [&'static str]> {
     Some(match op {
         "eval" => &["patch", "at", "cartesian"],
-        "symbolic" => &["patch", "variables", "names"],
+        "symbolic" => &["patch", "variables", "names", "component"],
+        "barycentric" => &["domain", "point"],
+        "direction" => &["domain", "vector"],
         "basis" | "basis_sum" => &["degree", "simplex", "names", "at", "variables"],
         "blossom" => &["patch", "args"],
         "subpatch" => &["patch", "vertices"],
@@ -213,11 +219,37 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
                     ));
                 }
             };
-            Ok(Value::List(
-                polys
-                    .into_iter()
-                    .map(|p| Value::Poly(p, names.clone()))
-                    .collect(),
+            match inputs.opt_usize("component")? {
+                None => Ok(Value::List(
+                    polys
+                        .into_iter()
+                        .map(|p| Value::Poly(p, names.clone()))
+                        .collect(),
+                )),
+                Some(c) => {
+                    let p = polys.get(c).cloned().ok_or_else(|| inputs.error("component", format!("component {c} does not exist: the points have {} coordinates (0-based)", polys.len())))?;
+                    Ok(Value::Poly(p, names))
+                }
+            }
+        }
+        "barycentric" | "direction" => {
+            let node = inputs
+                .get("domain")
+                .ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
+            let rows = file.doc.array(node, &inputs.key("domain"))?;
+            let domain = crate::io::patch_file::domain(
+                &file.doc,
+                node,
+                rows.len().saturating_sub(1),
+                &inputs.key("domain"),
+            )?;
+            let (name, result) = if claim.op == "barycentric" {
+                ("point", domain.barycentric(&inputs.rationals("point")?))
+            } else {
+                ("vector", domain.direction(&inputs.rationals("vector")?))
+            };
+            Ok(Value::numbers(
+                &result.map_err(|e| inputs.error(name, e.to_string()))?,
             ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),

@@ -96,9 +96,11 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
             }
         }
         (Value::Map(a), Value::Map(b))
-            if a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.0 == y.0) =>
+            if a.len() == b.len() && b.iter().all(|(k, _)| a.iter().any(|(j, _)| j == k)) =>
         {
-            for ((k, x), (_, y)) in a.iter().zip(b) {
+            // Keys are matched by name: a file may list them in any order.
+            for (k, y) in b {
+                let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
                 compare_exact(x, y, &format!("{path}.\"{k}\""), out);
             }
         }

@@ -7,6 +7,7 @@ use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome, check_barycentric, parse_list};
+use crate::bernstein;
 use crate::cli::OutputArgs;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::{Float, Precision, net_to};
@@ -15,7 +16,6 @@ use crate::io::points::read_points;
 use crate::number::to_decimal_string;
 use crate::patch::{ControlNet, Patch};
 use crate::report::{Render, json_rationals, tuple};
-use crate::{bernstein, casteljau};
 
 /// Arguments of `tribez eval`.
 #[derive(Debug, clap::Args)]
@@ -129,7 +129,7 @@ fn float_results<F: Float>(
     let exact_at_inputs =
         ExactEvaluator::new(&exact_net).evaluate(&lam_exact, Algorithm::Casteljau);
     [
-        ("casteljau", casteljau::evaluate(&fnet, &lam)),
+        ("casteljau", crate::float::casteljau(&fnet, &lam)),
         ("bernstein", bernstein::evaluate(&fnet, &lam)),
     ]
     .into_iter()
