@@ -357,6 +357,71 @@ mod tests {
         assert_ne!(add_and_halve(&net, 0, 1, HalvingOrder::BottomFirst), a.net);
     }
 
+    /// The identity net of degree n on the triangle: control point β is the unit vector e_β, so a
+    /// linear construction applied to it gives its matrix (row α = child point α).
+    fn identity(n: usize) -> ControlNet<BigRational> {
+        let sx = simplex::Simplex::new(2, n);
+        let len = sx.len();
+        let coords = (0..len * len)
+            .map(|i| {
+                if i / len == i % len {
+                    BigRational::one()
+                } else {
+                    BigRational::default()
+                }
+            })
+            .collect();
+        ControlNet::new(sx, len, coords)
+    }
+
+    #[test]
+    fn add_and_halve_equals_the_matrix_for_every_degree_up_to_8() {
+        for n in 0..=8 {
+            for (keep, replace, piece) in [(0, 1, 0), (1, 0, 1), (1, 2, 0), (2, 0, 0)] {
+                let (i, j) = if piece == 0 {
+                    (keep, replace)
+                } else {
+                    (replace, keep)
+                };
+                let f = &halve_domains::<BigRational>(2, i, j)[piece];
+                let matrix = crate::blossom::subpatch_matrix(2, n, f).unwrap();
+                let added = add_and_halve(&identity(n), keep, replace, HalvingOrder::TopDown);
+                let rows: Vec<Vec<BigRational>> =
+                    added.points().map(<[BigRational]>::to_vec).collect();
+                assert_eq!(rows, matrix, "n = {n}, keep {keep}, replace {replace}");
+            }
+        }
+    }
+
+    #[test]
+    fn halving_matrices_follow_the_closed_form_of_formulas_5_2() {
+        // d_ijk = 2^-j Σ_l C(j,l) c_(i+j−l, l, k) (first half), 2^-i Σ_l C(i,l) c_(i−l, j+l, k) (second).
+        let n = 5;
+        let sx = simplex::Simplex::new(2, n);
+        let binom = |a: u32, b: u32| {
+            BigRational::from_integer(simplex::binomial(a.into(), b.into()).into())
+        };
+        let pow2 = |e: u32| BigRational::from_integer(num_bigint::BigInt::from(1u64 << e));
+        for piece in 0..2 {
+            let f = &halve_domains::<BigRational>(2, 0, 1)[piece];
+            let matrix = crate::blossom::subpatch_matrix(2, n, f).unwrap();
+            for (r, a) in sx.iter().enumerate() {
+                let (i, j, k) = (a[0], a[1], a[2]);
+                let mut want = vec![BigRational::default(); sx.len()];
+                if piece == 0 {
+                    for l in 0..=j {
+                        want[sx.rank(&[i + j - l, l, k])] = binom(j, l) / pow2(j);
+                    }
+                } else {
+                    for l in 0..=i {
+                        want[sx.rank(&[i - l, j + l, k])] = binom(i, l) / pow2(i);
+                    }
+                }
+                assert_eq!(matrix[r], want, "piece {piece}, row {a:?}");
+            }
+        }
+    }
+
     #[test]
     fn bad_edges_and_split_points() {
         assert!(check_edge(2, 1, 1).is_err());
