@@ -423,6 +423,31 @@ mod tests {
     }
 
     #[test]
+    fn the_same_code_runs_in_f64() {
+        // Finn's integer net halved: every value is dyadic, so f64 is exact here.
+        let exact = halve(&finn(), 0, 1);
+        let float = halve(&finn().map(crate::number::round_f64), 0, 1);
+        for (e, f) in exact.iter().zip(&float) {
+            assert_eq!(e.net.map(crate::number::round_f64), f.net);
+        }
+        assert_eq!(
+            add_and_halve(
+                &finn().map(crate::number::round_f64),
+                0,
+                1,
+                HalvingOrder::TopDown
+            ),
+            float[0].net
+        );
+        assert_eq!(
+            midpoint_split(&finn().map(crate::number::round_f64)).unwrap()[3].net,
+            midpoint_split(&finn()).unwrap()[3]
+                .net
+                .map(crate::number::round_f64)
+        );
+    }
+
+    #[test]
     fn bad_edges_and_split_points() {
         assert!(check_edge(2, 1, 1).is_err());
         assert!(check_edge(2, 0, 2).is_err());

@@ -311,6 +311,21 @@ fn errors() {
     );
     fails(&["elevate", &f, "--by", "0"], "at least 1");
     fails(
+        &["matrix", "halve", "--degree", "2", "--vertex", "1,0,0"],
+        "--vertex belongs to `matrix subpatch`",
+    );
+    fails(
+        &[
+            "matrix", "subpatch", "--degree", "2", "--edge", "1,2", "--vertex", "1,0,0",
+            "--vertex", "0,1,0", "--vertex", "0,0,1",
+        ],
+        "--edge and --piece belong to `matrix halve`",
+    );
+    fails(
+        &["matrix", "halve", "--degree", "60"],
+        "above the limit of 1000",
+    );
+    fails(
         &["elevate", &f, "--by", "199"],
         "above the patch-file limits",
     );
@@ -329,4 +344,42 @@ fn the_construction_fixtures_reproduce() {
                 .and(predicate::str::contains("add-and-halve-bottom-row-first"))
                 .and(predicate::str::contains(" 0 failed")),
         );
+}
+
+#[test]
+fn a_subpatch_of_a_patch_with_a_domain_has_the_image_domain() {
+    let d = tempfile::tempdir().unwrap();
+    let with_domain = FINN.replace(
+        "degree = 2",
+        "degree = 2\ndomain = [[\"1\", \"2\"], [\"7\", \"3\"], [\"2\", \"8\"]]",
+    );
+    let f = write(&d, "finn.toml", &with_domain);
+    let out = d.path().join("sub.json");
+    tribez()
+        .args([
+            "subpatch",
+            &f,
+            "--vertex",
+            "1,0,0",
+            "--vertex",
+            "1/2,1/2,0",
+            "--vertex",
+            "1/3,1/3,1/3",
+            "--format",
+            "json",
+            "-o",
+        ])
+        .arg(&out)
+        .assert()
+        .success();
+    let sub: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    // vertices a1 = (1,2), (a1+a2)/2 = (4, 5/2), (a1+a2+a3)/3 = (10/3, 13/3)
+    assert_eq!(
+        sub["domain"],
+        serde_json::json!([["1", "2"], ["4", "5/2"], ["10/3", "13/3"]])
+    );
+    // the same Cartesian point gives the same value in both
+    let a = json(&["eval", &f, "--cartesian", "--at", "3,3"]);
+    let b = json(&["eval", out.to_str().unwrap(), "--cartesian", "--at", "3,3"]);
+    assert_eq!(a["results"][0]["point"], b["results"][0]["point"]);
 }

@@ -39,11 +39,11 @@ pub struct Args {
     #[arg(long, default_value_t = 2)]
     pub simplex: usize,
     /// halve: the edge, two corner numbers (default 1,2).
-    #[arg(long, value_name = "I,J", default_value = "1,2")]
-    pub edge: String,
-    /// halve: piece 1 replaces corner J by the midpoint (keeps corner I), piece 2 replaces corner I.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=2))]
-    pub piece: u8,
+    #[arg(long, value_name = "I,J")]
+    pub edge: Option<String>,
+    /// halve: piece 1 (default) replaces corner J by the midpoint (keeps corner I), piece 2 replaces corner I.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=2))]
+    pub piece: Option<u8>,
     /// subpatch: a vertex of the sub-simplex in the parent's barycentric coordinates (m+1 of them; m is their count minus one).
     #[arg(long = "vertex", value_name = "POINT")]
     pub vertices: Vec<String>,
@@ -62,6 +62,11 @@ pub struct MatrixReport {
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let (m, f, title) = match args.kind {
         Kind::Halve => {
+            if !args.vertices.is_empty() {
+                return Err(CliError::Usage("--vertex belongs to `matrix subpatch`; `matrix halve` takes --edge and --piece".into()));
+            }
+            let edge = args.edge.as_deref().unwrap_or("1,2");
+            let piece = args.piece.unwrap_or(1);
             let m = args.simplex;
             if m == 0 || m > crate::io::patch_file::MAX_SIMPLEX_DIMENSION {
                 return Err(CliError::core(
@@ -69,21 +74,27 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                     CoreError::Invalid("the simplex dimension must be 1 to 16".into()),
                 ));
             }
-            let (i, j) = parse_edge(&args.edge, m)?;
+            let (i, j) = parse_edge(edge, m)?;
             let [a, b] = halve_domains(m, i, j);
-            let (f, replaced) = if args.piece == 1 { (a, j) } else { (b, i) };
+            let (f, replaced) = if piece == 1 { (a, j) } else { (b, i) };
             (
                 m,
                 f,
                 format!(
                     "halving along edge {}, piece {}: corner {} replaced by the midpoint",
-                    args.edge,
-                    args.piece,
+                    edge,
+                    piece,
                     replaced + 1
                 ),
             )
         }
         Kind::Subpatch => {
+            if args.edge.is_some() || args.piece.is_some() {
+                return Err(CliError::Usage(
+                    "--edge and --piece belong to `matrix halve`; `matrix subpatch` takes --vertex"
+                        .into(),
+                ));
+            }
             if args.vertices.len() < 2 {
                 return Err(CliError::Usage(
                     "give the sub-simplex with --vertex, m+1 times (3 for a triangle)".into(),
