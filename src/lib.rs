@@ -23,12 +23,14 @@
 //! command line.
 
 pub mod bernstein;
+pub mod blossom;
 pub mod casteljau;
 pub mod claims;
 pub mod cli;
 pub mod commands;
 pub mod derivative;
 pub mod domain;
+pub mod elevate;
 pub mod error;
 pub mod exact;
 pub mod float;
@@ -42,4 +44,5 @@ pub mod report;
 pub mod scalar;
 pub mod simplex;
 pub mod spatch;
+pub mod subdivide;
 pub mod symbolic;
