@@ -238,6 +238,37 @@ pub fn homogenised_residual(f: &Polynomial, x: &[Polynomial], w: &Polynomial) ->
 }
 
 impl RationalPatch {
+    /// Degree elevation by `r`, on the homogeneous net (FORMULAS.md §6 applied to `(w c, w)`):
+    /// the same rational patch, degree `n + r`. An error if an elevated weight is zero (possible
+    /// only with weights of both signs).
+    pub fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError> {
+        RationalPatch::from_homogeneous(
+            &crate::elevate::elevate_exact(&self.homogeneous(), r),
+            &self.patch,
+        )
+    }
+
+    /// The same rational patch over the sub-simplex `[f_0, …, f_m]` (barycentric points of the
+    /// parent): the homogeneous net's subpatch (FORMULAS.md §4), then back to points and weights.
+    /// The result keeps the parent's name and domain.
+    pub fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError> {
+        RationalPatch::from_homogeneous(
+            &crate::blossom::subpatch_exact(&self.homogeneous(), f)?,
+            &self.patch,
+        )
+    }
+
+    /// Split at `t` into `m + 1` pieces (piece `s`: vertex `s` replaced by `t`), on the
+    /// homogeneous net.
+    pub fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError> {
+        crate::blossom::split_at_exact(&self.homogeneous(), t)
+            .iter()
+            .map(|h| RationalPatch::from_homogeneous(h, &self.patch))
+            .collect()
+    }
+}
+
+impl RationalPatch {
     /// All weights equal to one: the polynomial patch.
     pub fn polynomial(patch: Patch) -> Self {
         let n = patch.net.len();
@@ -510,6 +541,66 @@ mod tests {
         // xx = (11/3 − 2√2) · W², checked without division
         assert_eq!(xx, Q2(q("11/3").unwrap(), q("-2").unwrap()) * w2);
         assert_eq!(h[3], Q2(q("1/3").unwrap(), q("1/3").unwrap()));
+    }
+
+    #[test]
+    fn elevation_and_subdivision_of_the_octant_stay_on_the_sphere() {
+        let f = Polynomial::parse("x^2 + y^2 + z^2 - 1", &["x", "y", "z"]).unwrap();
+        let p = octant();
+        let up = p.elevate(2).unwrap();
+        assert_eq!(up.patch.net.degree(), 6);
+        assert!(up.implicit_residual(&f).is_zero());
+        let at = r(&["1/3", "1/4", "5/12"]);
+        assert_eq!(up.evaluate(&at).unwrap(), p.evaluate(&at).unwrap());
+        // split at the centroid: piece s is the parent with vertex s replaced by t
+        let t = r(&["1/3", "1/3", "1/3"]);
+        let pieces = p.split_at(&t).unwrap();
+        for (s, piece) in pieces.iter().enumerate() {
+            assert!(piece.implicit_residual(&f).is_zero());
+            assert!(piece.weights.iter().all(|w| w > &BigRational::zero()));
+            // the piece's point (1/2, 1/4, 1/4) maps to Σ μ_k v_k in the parent
+            let mu = r(&["1/2", "1/4", "1/4"]);
+            let mut parent = vec![BigRational::zero(); 3];
+            for (k, m) in mu.iter().enumerate() {
+                let v: Vec<BigRational> = if k == s {
+                    t.clone()
+                } else {
+                    (0..3)
+                        .map(|i| {
+                            if i == k {
+                                BigRational::one()
+                            } else {
+                                BigRational::zero()
+                            }
+                        })
+                        .collect()
+                };
+                for i in 0..3 {
+                    parent[i] += m * &v[i];
+                }
+            }
+            assert_eq!(piece.evaluate(&mu).unwrap(), p.evaluate(&parent).unwrap());
+        }
+        // a subpatch over [a1, midpoint(a1,a2), centroid]
+        let f3 = vec![r(&["1", "0", "0"]), r(&["1/2", "1/2", "0"]), t.clone()];
+        let sub = p.subpatch(&f3).unwrap();
+        assert!(sub.implicit_residual(&f).is_zero());
+        assert_eq!(
+            sub.evaluate(&r(&["0", "0", "1"])).unwrap(),
+            p.evaluate(&t).unwrap()
+        );
+    }
+
+    #[test]
+    fn a_zero_weight_after_elevation_is_an_error() {
+        // weights 1, -1 on a linear curve: the elevated middle weight is (1 + -1)/2 = 0
+        let pts: Vec<Vec<BigRational>> = [["0"], ["1"]].iter().map(|p| r(p)).collect();
+        let rp = RationalPatch::new(
+            Patch::new(ControlNet::from_points(1, 1, &pts)),
+            r(&["1", "-1"]),
+        );
+        let e = rp.elevate(1).unwrap_err().to_string();
+        assert!(e.contains("weight 0"), "{e}");
     }
 
     proptest! {
