@@ -515,3 +515,73 @@ fn derivative_of_a_rational_patch() {
         .code(2)
         .stderr(predicate::str::contains("does not take S-patches"));
 }
+
+#[test]
+fn elevate_and_subpatch_a_rational_patch() {
+    let dir = tempfile::tempdir().unwrap();
+    let up = dir.path().join("up.toml");
+    tribez()
+        .args(["elevate", "--by", "2"])
+        .arg(fixture("octant_quartic.toml"))
+        .arg("-o")
+        .arg(&up)
+        .assert()
+        .success();
+    let text = std::fs::read_to_string(&up).unwrap();
+    assert!(
+        text.contains("degree = 6") && text.contains("[weights]"),
+        "{text}"
+    );
+    tribez()
+        .arg("eval")
+        .arg(&up)
+        .args(["--at", "1/3,1/4,5/12"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("(1020/1681, 969/1681, 920/1681)"));
+    // the elevated patch is still on the sphere, identically
+    write(
+        dir.path(),
+        "up.claims.toml",
+        "patch = \"up.toml\"\n[[claim]]\nid = \"s\"\nop = \"implicit\"\nequation = \"x^2 + y^2 + z^2 - 1\"\nexpect = \"0\"\n",
+    );
+    tribez().arg("reproduce").arg(dir.path()).assert().success();
+    // subpatch over [a1, midpoint of a1 a2, centroid]: its corner 3 is the parent's centroid,
+    // (80, 100, 59)/141 (80² + 100² + 59² = 141²)
+    let sub = dir.path().join("sub.toml");
+    tribez()
+        .arg("subpatch")
+        .arg(fixture("octant_quartic.toml"))
+        .args([
+            "--vertex",
+            "1,0,0",
+            "--vertex",
+            "1/2,1/2,0",
+            "--vertex",
+            "1/3,1/3,1/3",
+            "-o",
+        ])
+        .arg(&sub)
+        .assert()
+        .success();
+    tribez()
+        .arg("eval")
+        .arg(&sub)
+        .args(["--at", "0,0,1"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("(80/141, 100/141, 59/141)"));
+    tribez()
+        .arg("eval")
+        .arg(fixture("octant_quartic.toml"))
+        .args(["--at", "1/3,1/3,1/3"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("(80/141, 100/141, 59/141)"));
+    // a weight that becomes 0 on elevation
+    fails(
+        "degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n[weights]\n\"1,0\" = 1\n\"0,1\" = -1\n",
+        &["elevate"],
+        &["weight 0"],
+    );
+}

@@ -8,7 +8,9 @@ use serde_json::Value as Json;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::functional::graph;
-use crate::io::patch_file::{patch_to_json, patch_to_toml, read_any_patch};
+use crate::io::patch_file::{
+    any_patch_to_json, any_patch_to_toml, patch_to_json, patch_to_toml, read_any_patch,
+};
 use crate::patch::{AnyPatch, Patch};
 use crate::report::Render;
 
@@ -49,5 +51,19 @@ impl Render for GraphReport {
 
     fn json(&self) -> Json {
         patch_to_json(&self.patch)
+    }
+}
+
+/// A patch of any kind, written as a patch file (TOML text, or JSON): the output of commands that
+/// construct rational patches (`elevate`, `subpatch`).
+pub struct AnyPatchReport(pub AnyPatch);
+
+impl Render for AnyPatchReport {
+    fn text(&self) -> String {
+        any_patch_to_toml(&self.0)
+    }
+
+    fn json(&self) -> Json {
+        any_patch_to_json(&self.0)
     }
 }
