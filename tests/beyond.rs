@@ -585,3 +585,50 @@ fn elevate_and_subpatch_a_rational_patch() {
         &["weight 0"],
     );
 }
+
+#[test]
+fn subdivide_a_rational_patch() {
+    let out = tribez()
+        .args(["subdivide", "--format", "json", "--at", "1/3,1/3,1/3"])
+        .arg(fixture("octant_quartic.toml"))
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let pieces = j["pieces"].as_array().unwrap();
+    assert_eq!(pieces.len(), 3);
+    let dir = tempfile::tempdir().unwrap();
+    for (s, piece) in pieces.iter().enumerate() {
+        let p = write(
+            dir.path(),
+            &format!("piece{s}.json"),
+            &piece["patch"].to_string(),
+        );
+        // corner s of piece s is the split point, the parent's centroid (80, 100, 59)/141
+        let mut at = vec!["0"; 3];
+        at[s] = "1";
+        tribez()
+            .arg("eval")
+            .arg(&p)
+            .args(["--at", &at.join(",")])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("(80/141, 100/141, 59/141)"));
+        write(
+            dir.path(),
+            &format!("piece{s}.claims.toml"),
+            &format!(
+                "patch = \"piece{s}.json\"\n[[claim]]\nid = \"s\"\nop = \"implicit\"\nequation = \"x^2 + y^2 + z^2 - 1\"\nexpect = \"0\"\n"
+            ),
+        );
+    }
+    tribez().arg("reproduce").arg(dir.path()).assert().success();
+    tribez()
+        .args(["subdivide", "--midpoints"])
+        .arg(fixture("octant_quartic.toml"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("[pieces.patch.weights]"));
+}

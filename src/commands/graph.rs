@@ -67,3 +67,58 @@ impl Render for AnyPatchReport {
         any_patch_to_json(&self.0)
     }
 }
+
+/// Pieces of a rational patch (`subdivide`), in the layout of the polynomial pieces report:
+/// `[[pieces]]` with `domain_in_parent` and a `[pieces.patch]` table (now with `weights`).
+pub struct AnyPiecesReport(pub Vec<(Vec<Vec<num_rational::BigRational>>, AnyPatch)>);
+
+fn toml_rows(f: &[Vec<num_rational::BigRational>]) -> String {
+    let rows: Vec<String> = f
+        .iter()
+        .map(|p| {
+            let xs: Vec<String> = p.iter().map(|x| format!("\"{x}\"")).collect();
+            format!("[{}]", xs.join(", "))
+        })
+        .collect();
+    format!("[{}]", rows.join(", "))
+}
+
+impl Render for AnyPiecesReport {
+    fn text(&self) -> String {
+        let mut out = String::new();
+        for (i, (f, p)) in self.0.iter().enumerate() {
+            if i > 0 {
+                out.push('\n');
+            }
+            out += &format!(
+                "[[pieces]]\ndomain_in_parent = {}\n\n[pieces.patch]\n",
+                toml_rows(f)
+            );
+            out += &any_patch_to_toml(p)
+                .replace("\n[control_points]\n", "\n[pieces.patch.control_points]\n")
+                .replace("\n[weights]\n", "\n[pieces.patch.weights]\n");
+        }
+        out
+    }
+
+    fn json(&self) -> Json {
+        Json::Object(
+            [(
+                "pieces".to_string(),
+                Json::Array(
+                    self.0
+                        .iter()
+                        .map(|(f, p)| {
+                            serde_json::json!({
+                                "domain_in_parent": f.iter().map(|v| v.iter().map(ToString::to_string).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                                "patch": any_patch_to_json(p),
+                            })
+                        })
+                        .collect(),
+                ),
+            )]
+            .into_iter()
+            .collect(),
+        )
+    }
+}
