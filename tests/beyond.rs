@@ -607,7 +607,7 @@ fn subdivide_a_rational_patch() {
             &piece["patch"].to_string(),
         );
         // corner s of piece s is the split point, the parent's centroid (80, 100, 59)/141
-        let mut at = vec!["0"; 3];
+        let mut at = ["0"; 3];
         at[s] = "1";
         tribez()
             .arg("eval")
