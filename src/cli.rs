@@ -26,6 +26,10 @@ pub enum Command {
     Eval(commands::eval::Args),
     /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
     Symbolic(commands::symbolic::Args),
+    /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
+    Check(commands::check::Args),
+    /// Run tribez's own float algorithms and show every error lies within its proven bound.
+    Certify(commands::certify::Args),
 }
 
 /// Output options shared by every command.

@@ -24,6 +24,7 @@
 
 pub mod bernstein;
 pub mod casteljau;
+pub mod certify;
 pub mod claims;
 pub mod cli;
 pub mod commands;

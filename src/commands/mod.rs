@@ -1,5 +1,9 @@
 //! One module per command; [`main`] dispatches and maps outcomes to exit statuses.
 
+pub mod baseline;
+pub mod batch;
+pub mod certify;
+pub mod check;
 pub mod eval;
 pub mod reproduce;
 pub mod symbolic;
@@ -65,6 +69,8 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Check(a) => (check::run(a), &a.out),
+        Command::Certify(a) => (certify::run(a), &a.out),
     };
     match result.and_then(|o| emit(&o, out).map(|()| o.success)) {
         Ok(true) => 0,
