@@ -576,7 +576,11 @@ impl Render for BatchReport {
             self.tolerance,
             self.precision.map_or("exact numbers".to_string(), |p| format!("each number the nearest {}", p.name()))
         );
-        out += &format!("  passed {}, failed {}; decided by the float filter {}, fell back to exact arithmetic {}\n", self.passed, self.failed, self.rows - self.fell_back, self.fell_back);
+        if self.histogram_upper_bounds {
+            out += &format!("  passed {}, failed {}; decided by the float filter {}, fell back to exact arithmetic {}\n", self.passed, self.failed, self.rows - self.fell_back, self.fell_back);
+        } else {
+            out += &format!("  passed {}, failed {}; every row computed exactly (no float filter without --precision, or with --cartesian)\n", self.passed, self.failed);
+        }
         if !self.histogram.is_empty() {
             out += &format!(
                 "\nErrors in ULPs against the exact value at the inputs as the code saw them{}\n",
@@ -614,7 +618,8 @@ impl Render for BatchReport {
             "precision": self.precision.map(|p| p.name()),
             "summary": {
                 "claims": self.rows, "passed": self.passed, "failed": self.failed,
-                "decided_by_filter": self.rows - self.fell_back, "fell_back_to_exact": self.fell_back,
+                "filter_used": self.histogram_upper_bounds,
+                "decided_by_filter": if self.histogram_upper_bounds { self.rows - self.fell_back } else { 0 }, "fell_back_to_exact": self.fell_back,
                 "ulp_histogram": self.histogram.json(), "histogram_upper_bounds": self.histogram_upper_bounds,
             },
             "worst": self.worst.as_ref().map(|(u, line, coords)| json!({"ulps": u, "line": line, "coordinates": coords.iter().map(coord_json).collect::<Vec<_>>()})),
