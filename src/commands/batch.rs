@@ -379,8 +379,11 @@ impl Prepared {
     }
 }
 
+/// A parsed row: its input numbers and its claimed numbers.
+type Row = (Vec<Num>, Vec<Num>);
+
 /// Read one data line into numbers; `None` for blank and comment lines.
-fn parse_line(line: &str, json_lines: bool, width: usize, dim: usize, precision: Option<Precision>, file: &str, line_no: usize) -> Result<Option<(Vec<Num>, Vec<Num>)>, InputError> {
+fn parse_line(line: &str, json_lines: bool, width: usize, dim: usize, precision: Option<Precision>, file: &str, line_no: usize) -> Result<Option<Row>, InputError> {
     let t = line.trim();
     if t.is_empty() || t.starts_with('#') {
         return Ok(None);
