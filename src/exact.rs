@@ -64,11 +64,18 @@ impl ExactEvaluator {
     pub fn new(net: &ControlNet<BigRational>) -> Self {
         let dim = net.dim();
         let denominators: Vec<BigInt> = (0..dim)
-            .map(|c| net.points().fold(BigInt::one(), |acc, p| acc.lcm(p[c].denom())))
+            .map(|c| {
+                net.points()
+                    .fold(BigInt::one(), |acc, p| acc.lcm(p[c].denom()))
+            })
             .collect();
         let coords: Vec<BigInt> = net
             .points()
-            .flat_map(|p| p.iter().zip(&denominators).map(|(x, l)| x.numer() * (l / x.denom())))
+            .flat_map(|p| {
+                p.iter()
+                    .zip(&denominators)
+                    .map(|(x, l)| x.numer() * (l / x.denom()))
+            })
             .collect();
         let integer_net = ControlNet::new(net.simplex().clone(), dim, coords);
         let scaled: Vec<BigInt> = integer_net
@@ -79,7 +86,11 @@ impl ExactEvaluator {
             })
             .collect();
         let scaled_net = ControlNet::new(net.simplex().clone(), dim, scaled);
-        ExactEvaluator { integer_net, scaled_net, denominators }
+        ExactEvaluator {
+            integer_net,
+            scaled_net,
+            denominators,
+        }
     }
 
     /// The homogeneous form `P(λ)` at a rational point (which need not sum to one).
@@ -122,16 +133,31 @@ fn monomial_sum(scaled: &ControlNet<BigInt>, a: &[BigInt]) -> Vec<BigInt> {
     let monomials: Vec<BigInt> = scaled
         .simplex()
         .iter()
-        .map(|alpha| alpha.iter().enumerate().fold(BigInt::one(), |acc, (k, &e)| acc * &pw[k][e as usize]))
+        .map(|alpha| {
+            alpha
+                .iter()
+                .enumerate()
+                .fold(BigInt::one(), |acc, (k, &e)| acc * &pw[k][e as usize])
+        })
         .collect();
     (0..scaled.dim())
-        .map(|c| monomials.iter().zip(scaled.points()).map(|(mono, p)| mono * &p[c]).sum())
+        .map(|c| {
+            monomials
+                .iter()
+                .zip(scaled.points())
+                .map(|(mono, p)| mono * &p[c])
+                .sum()
+        })
         .collect()
 }
 
 /// Exact evaluation of a rational net by the generic algorithms on rationals (gcd after every
 /// operation). The reference the fast paths are tested against; slow.
-pub fn evaluate_rational(net: &ControlNet<BigRational>, lambda: &[BigRational], algorithm: Algorithm) -> Vec<BigRational> {
+pub fn evaluate_rational(
+    net: &ControlNet<BigRational>,
+    lambda: &[BigRational],
+    algorithm: Algorithm,
+) -> Vec<BigRational> {
     match algorithm {
         Algorithm::Casteljau => casteljau::evaluate(net, lambda),
         Algorithm::Bernstein => bernstein::evaluate(net, lambda),

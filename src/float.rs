@@ -120,6 +120,8 @@ pub trait Float: crate::scalar::Scalar + Copy + PartialOrd + Send + Sync + 'stat
     fn finite(self) -> bool;
     /// As f64 (exact widening).
     fn widen(self) -> f64;
+    /// de Casteljau through the glam kernel, for a triangle with points in R³ (`None` otherwise).
+    fn casteljau_glam(net: &ControlNet<Self>, lambda: &[Self]) -> Option<Vec<Self>>;
 }
 
 impl Float for f64 {
@@ -144,6 +146,16 @@ impl Float for f64 {
     }
     fn widen(self) -> f64 {
         self
+    }
+    fn casteljau_glam(net: &ControlNet<Self>, lambda: &[Self]) -> Option<Vec<Self>> {
+        (net.m() == 2 && net.dim() == 3).then(|| {
+            let p = casteljau_dvec3(
+                &dvec3_points(net),
+                net.degree(),
+                [lambda[0], lambda[1], lambda[2]],
+            );
+            vec![p.x, p.y, p.z]
+        })
     }
 }
 
@@ -170,6 +182,22 @@ impl Float for f32 {
     fn widen(self) -> f64 {
         f64::from(self)
     }
+    fn casteljau_glam(net: &ControlNet<Self>, lambda: &[Self]) -> Option<Vec<Self>> {
+        (net.m() == 2 && net.dim() == 3).then(|| {
+            let p = casteljau_vec3(
+                &vec3_points(net),
+                net.degree(),
+                [lambda[0], lambda[1], lambda[2]],
+            );
+            vec![p.x, p.y, p.z]
+        })
+    }
+}
+
+/// de Casteljau in floating point: the glam kernel for triangles in R³ (bit-identical to the
+/// generic code, which runs otherwise).
+pub fn casteljau<F: Float>(net: &ControlNet<F>, lambda: &[F]) -> Vec<F> {
+    F::casteljau_glam(net, lambda).unwrap_or_else(|| crate::casteljau::evaluate(net, lambda))
 }
 
 /// The control net rounded to the float type `F`.
@@ -187,11 +215,15 @@ mod tests {
     fn pseudo_random_net(n: usize, seed: u64) -> ControlNet<BigRational> {
         let mut s = seed;
         let mut next = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (s >> 33) as i64 % 2001 - 1000
         };
         let simplex = Simplex::new(2, n);
-        let coords = (0..simplex.len() * 3).map(|_| BigRational::new(next().into(), (next().abs() + 1).into())).collect();
+        let coords = (0..simplex.len() * 3)
+            .map(|_| BigRational::new(next().into(), (next().abs() + 1).into()))
+            .collect();
         ControlNet::new(simplex, 3, coords)
     }
 

@@ -36,11 +36,22 @@ impl Value {
     pub fn to_text(&self) -> String {
         match self {
             Value::Number(q) => q.to_string(),
-            Value::Poly(p, names) => p.to_text(&names.iter().map(String::as_str).collect::<Vec<_>>()),
+            Value::Poly(p, names) => {
+                p.to_text(&names.iter().map(String::as_str).collect::<Vec<_>>())
+            }
             Value::Bool(b) => b.to_string(),
             Value::Integer(i) => i.to_string(),
-            Value::List(xs) => format!("[{}]", xs.iter().map(Value::to_text).collect::<Vec<_>>().join(", ")),
-            Value::Map(kv) => format!("{{{}}}", kv.iter().map(|(k, v)| format!("{k}: {}", v.to_text())).collect::<Vec<_>>().join(", ")),
+            Value::List(xs) => format!(
+                "[{}]",
+                xs.iter().map(Value::to_text).collect::<Vec<_>>().join(", ")
+            ),
+            Value::Map(kv) => format!(
+                "{{{}}}",
+                kv.iter()
+                    .map(|(k, v)| format!("{k}: {}", v.to_text()))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
         }
     }
 
@@ -73,7 +84,8 @@ pub struct Mismatch {
 
 /// Compare two values exactly; collect every mismatching leaf.
 pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<Mismatch>) {
-    compare(claimed, exact, &Tolerance::Exact, &|_| Leaf::default(), &mut 0, path, out).expect("the exact tolerance needs nothing");
+    compare(claimed, exact, &Tolerance::Exact, &|_| Leaf::default(), &mut 0, path, out)
+        .expect("the exact tolerance needs nothing");
 }
 
 /// Compare two values leaf by leaf under a tolerance; collect every leaf it rejects.
@@ -91,36 +103,59 @@ pub fn compare(
     path: &str,
     out: &mut Vec<Mismatch>,
 ) -> Result<(), String> {
-    let mismatch = |reason: String| Mismatch { path: path.into(), claimed: claimed.to_text(), exact: exact.to_text(), reason };
+    let mismatch = |reason: String| Mismatch {
+        path: path.into(),
+        claimed: claimed.to_text(),
+        exact: exact.to_text(),
+        reason,
+    };
     match (claimed, exact) {
         (Value::List(a), Value::List(b)) if a.len() == b.len() => {
             for (i, (x, y)) in a.iter().zip(b).enumerate() {
                 compare(x, y, tolerance, leaf, counter, &format!("{path}[{i}]"), out)?;
             }
         }
-        (Value::Map(a), Value::Map(b)) if a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.0 == y.0) => {
-            for ((k, x), (_, y)) in a.iter().zip(b) {
+        (Value::Map(a), Value::Map(b))
+            if a.len() == b.len() && b.iter().all(|(k, _)| a.iter().any(|(j, _)| j == k)) =>
+        {
+            // Keys are matched by name: a file may list them in any order.
+            for (k, y) in b {
+                let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
                 compare(x, y, tolerance, leaf, counter, &format!("{path}.\"{k}\""), out)?;
             }
         }
-        (Value::List(a), Value::List(b)) => out.push(mismatch(format!("{} values claimed, {} exact", a.len(), b.len()))),
-        (Value::Map(_), Value::Map(_)) => out.push(mismatch("the claimed keys differ from the exact ones".into())),
+        (Value::List(a), Value::List(b)) => out.push(mismatch(format!(
+            "{} values claimed, {} exact",
+            a.len(),
+            b.len()
+        ))),
+        (Value::Map(_), Value::Map(_)) => out.push(mismatch(
+            "the claimed keys differ from the exact ones".into(),
+        )),
         (Value::Number(a), Value::Number(b)) => {
             let l = leaf(*counter);
             *counter += 1;
             if !tolerance.accepts(a, b, &l)? {
                 out.push(mismatch(match tolerance {
                     Tolerance::Exact => format!("differs by {}", a - b),
-                    t => format!("breaks tolerance `{t}`: {}", Measures::new(a, b, l.precision).text()),
+                    t => format!(
+                        "breaks tolerance `{t}`: {}",
+                        Measures::new(a, b, l.precision).text()
+                    ),
                 }));
             }
         }
         (Value::Poly(a, names), Value::Poly(b, _)) if a != b => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
-            out.push(mismatch(format!("claimed − exact = {}", a.sub(b).to_text(&n))));
+            out.push(mismatch(format!(
+                "claimed − exact = {}",
+                a.sub(b).to_text(&n)
+            )));
         }
         (a, b) if a == b => {}
-        (Value::Bool(_), Value::Bool(_)) | (Value::Integer(_), Value::Integer(_)) => out.push(mismatch("differs".into())),
+        (Value::Bool(_), Value::Bool(_)) | (Value::Integer(_), Value::Integer(_)) => {
+            out.push(mismatch("differs".into()))
+        }
         _ => out.push(mismatch("the claimed value has a different kind".into())),
     }
     Ok(())
@@ -132,7 +167,11 @@ pub fn round_numbers(v: &Value, p: crate::float::Precision) -> Option<Value> {
     Some(match v {
         Value::Number(q) => Value::Number(crate::certify::measures::as_float(q, p)?),
         Value::List(xs) => Value::List(xs.iter().map(|x| round_numbers(x, p)).collect::<Option<_>>()?),
-        Value::Map(kv) => Value::Map(kv.iter().map(|(k, x)| round_numbers(x, p).map(|y| (k.clone(), y))).collect::<Option<_>>()?),
+        Value::Map(kv) => Value::Map(
+            kv.iter()
+                .map(|(k, x)| round_numbers(x, p).map(|y| (k.clone(), y)))
+                .collect::<Option<_>>()?,
+        ),
         other => other.clone(),
     })
 }
