@@ -68,7 +68,14 @@ pub fn condition(net: &ControlNet<BigRational>, lambda: &[BigRational]) -> Vec<B
 /// The a-priori absolute error bound of `algorithm` in precision `p` at one coordinate with
 /// condition number `condition` (see the module documentation). `lambda` are the exact values
 /// of the float inputs. `None` when `Kε ≥ 1`.
-pub fn a_priori(algorithm: Algorithm, p: Precision, m: usize, n: usize, condition: &BigRational, lambda: &[BigRational]) -> Option<BigRational> {
+pub fn a_priori(
+    algorithm: Algorithm,
+    p: Precision,
+    m: usize,
+    n: usize,
+    condition: &BigRational,
+    lambda: &[BigRational],
+) -> Option<BigRational> {
     let g = gamma(roundings(algorithm, m, n), p)?;
     let mut b = g * condition;
     if algorithm == Algorithm::Casteljau && n > 0 {
@@ -96,7 +103,10 @@ mod tests {
     #[test]
     fn gamma_values() {
         // γ_1 = ε/(1-ε) = 1/(2^53 - 1)
-        assert_eq!(gamma(1, Precision::F64).unwrap(), q("1/9007199254740991").unwrap());
+        assert_eq!(
+            gamma(1, Precision::F64).unwrap(),
+            q("1/9007199254740991").unwrap()
+        );
         assert_eq!(gamma(9, Precision::F32).unwrap(), q("9/16777207").unwrap());
         assert!(gamma(1 << 24, Precision::F32).is_none());
     }
@@ -111,7 +121,15 @@ mod tests {
     #[test]
     fn condition_uses_absolute_values() {
         // Linear patch with c = (1, -2, 3) at λ = (2, -1/2, -1/2): Σ|c_i||λ_i| = 2 + 1 + 3/2.
-        let net = ControlNet::from_points(2, 1, &[vec![q("1").unwrap()], vec![q("-2").unwrap()], vec![q("3").unwrap()]]);
+        let net = ControlNet::from_points(
+            2,
+            1,
+            &[
+                vec![q("1").unwrap()],
+                vec![q("-2").unwrap()],
+                vec![q("3").unwrap()],
+            ],
+        );
         let lam = [q("2").unwrap(), q("-1/2").unwrap(), q("-1/2").unwrap()];
         assert_eq!(condition(&net, &lam), vec![q("9/2").unwrap()]);
     }

@@ -78,13 +78,22 @@ fn enclose(q: &num_rational::BigRational) -> (f64, f64) {
     if !x.is_finite() {
         return (f64::MAX, f64::INFINITY);
     }
-    ((x * (1.0 - 4.0 * EPS)).max(0.0), x * (1.0 + 4.0 * EPS) + TINY)
+    (
+        (x * (1.0 - 4.0 * EPS)).max(0.0),
+        x * (1.0 + 4.0 * EPS) + TINY,
+    )
 }
 
 impl Thresholds {
     /// Prepare `tolerance` for claims of precision `precision` about a degree-`n` patch on the
     /// m-simplex evaluated by `algorithm` (used by `bound`).
-    pub fn new(tolerance: &Tolerance, precision: Precision, algorithm: Algorithm, m: usize, n: usize) -> Self {
+    pub fn new(
+        tolerance: &Tolerance,
+        precision: Precision,
+        algorithm: Algorithm,
+        m: usize,
+        n: usize,
+    ) -> Self {
         let (k_lo, k_hi) = match tolerance {
             Tolerance::Exact | Tolerance::CorrectlyRounded | Tolerance::Faithful => (0.0, 0.0),
             Tolerance::Ulps(x) | Tolerance::Abs(x) | Tolerance::Rel(x) => enclose(x),
@@ -117,7 +126,11 @@ impl Thresholds {
         }
         let e_hi = ((y - e.value).abs() * (1.0 + R) + e.mu * (1.0 + R)) * (1.0 + R);
         let w = e.mu * (1.0 + R) + e.value.abs() * 2.0 * EPS + TINY;
-        let lo = if e.value.abs() > w { e.value.abs() - w } else { 0.0 };
+        let lo = if e.value.abs() > w {
+            e.value.abs() - w
+        } else {
+            0.0
+        };
         e_hi / ulp_of(lo * (1.0 - R), self.precision)
     }
 
@@ -164,9 +177,10 @@ impl Thresholds {
             }
             Tolerance::Abs(_) => by_threshold(self.k_lo, self.k_hi),
             Tolerance::Rel(_) => by_threshold(self.k_lo * pabs_lo, self.k_hi * pabs_hi),
-            Tolerance::Ulps(_) => {
-                by_threshold(self.k_lo * ulp_of(pabs_lo, self.precision), self.k_hi * ulp_of(pabs_hi, self.precision))
-            }
+            Tolerance::Ulps(_) => by_threshold(
+                self.k_lo * ulp_of(pabs_lo, self.precision),
+                self.k_hi * ulp_of(pabs_hi, self.precision),
+            ),
             Tolerance::Cond(_) => by_threshold(self.k_lo * e.s_lo, self.k_hi * e.s_hi),
             Tolerance::Bound => {
                 let extra = if self.sum_abs_powers {
@@ -186,14 +200,21 @@ impl Thresholds {
                 let (prev, next) = neighbours(y, self.precision);
                 let (fail_lo, fail_hi) = match self.precision {
                     Precision::F64 => (p_lo, p_hi),
-                    Precision::F32 => (neighbours(p_lo as f32 as f64, Precision::F32).0, neighbours(p_hi as f32 as f64, Precision::F32).1),
+                    Precision::F32 => (
+                        neighbours(p_lo as f32 as f64, Precision::F32).0,
+                        neighbours(p_hi as f32 as f64, Precision::F32).1,
+                    ),
                 };
                 if y < fail_lo || y > fail_hi {
                     return Decision::Fail;
                 }
                 let faithful = matches!(self.tolerance, Tolerance::Faithful);
                 // distances from y to the edges of the set of P for which y is acceptable
-                let (g_lo, g_hi) = if faithful { (y - prev, next - y) } else { ((y - prev) * 0.5, (next - y) * 0.5) };
+                let (g_lo, g_hi) = if faithful {
+                    (y - prev, next - y)
+                } else {
+                    ((y - prev) * 0.5, (next - y) * 0.5)
+                };
                 let d_hi = d + dabs * 4.0 * EPS;
                 let d_lo = d - dabs * 4.0 * EPS;
                 let mu = e.mu * (1.0 + R) + TINY;
@@ -228,7 +249,11 @@ fn ulp_of(x: f64, p: Precision) -> f64 {
         Precision::F64 => (-1022, 52),
         Precision::F32 => (-126, 23),
     };
-    let e = if x == 0.0 { emin } else { floor_log2(x.abs()).max(emin) };
+    let e = if x == 0.0 {
+        emin
+    } else {
+        floor_log2(x.abs()).max(emin)
+    };
     pow2f(e - digits)
 }
 
@@ -282,7 +307,10 @@ impl Filter {
     /// Prepare a net of floats (its values are exact: the control points as the code saw them).
     pub fn new(net: &ControlNet<f64>) -> Self {
         let (m, n, dim) = (net.m(), net.degree(), net.dim());
-        let stencils = (1..=n).rev().map(|q| Simplex::new(m, q).step_stencil()).collect();
+        let stencils = (1..=n)
+            .rev()
+            .map(|q| Simplex::new(m, q).step_stencil())
+            .collect();
         let k = ((3 * m + 5) * n.max(1)) as f64;
         let nodes = crate::simplex::count(m, n) as f64 * (n as f64 + 1.0);
         Filter {
@@ -306,7 +334,14 @@ impl Filter {
     pub fn evaluate(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
         let (m, dim) = (self.m, self.dim);
         debug_assert_eq!(lambda.len(), m + 1);
-        let Scratch { v, mu, s, v2, mu2, s2 } = scratch;
+        let Scratch {
+            v,
+            mu,
+            s,
+            v2,
+            mu2,
+            s2,
+        } = scratch;
         v.clear();
         v.extend_from_slice(&self.coords);
         mu.clear();
@@ -365,16 +400,37 @@ mod tests {
     use num_traits::Signed;
 
     fn lcg(state: &mut u64) -> f64 {
-        *state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        *state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((*state >> 11) as f64) / (1u64 << 53) as f64
     }
 
     #[test]
     fn ulp_by_bits_matches_the_exact_ulp() {
-        for x in [0.0, 5e-324, 1e-310, 2.2250738585072014e-308, 1e-40, 1.1754943508222875e-38, 0.1, 1.0, 3.0, 1e300] {
+        for x in [
+            0.0,
+            5e-324,
+            1e-310,
+            2.2250738585072014e-308,
+            1e-40,
+            1.1754943508222875e-38,
+            0.1,
+            1.0,
+            3.0,
+            1e300,
+        ] {
             let q = exact_f64(x).unwrap();
-            assert_eq!(exact_f64(ulp_of(x, Precision::F64)).unwrap(), crate::number::ulp_f64(&q), "{x}");
-            assert_eq!(exact_f64(ulp_of(x, Precision::F32)).unwrap(), crate::number::ulp_f32(&q), "{x}");
+            assert_eq!(
+                exact_f64(ulp_of(x, Precision::F64)).unwrap(),
+                crate::number::ulp_f64(&q),
+                "{x}"
+            );
+            assert_eq!(
+                exact_f64(ulp_of(x, Precision::F32)).unwrap(),
+                crate::number::ulp_f32(&q),
+                "{x}"
+            );
         }
     }
 
@@ -383,14 +439,20 @@ mod tests {
         let mut st = 7u64;
         for n in [1usize, 2, 3, 5] {
             let simplex = Simplex::new(2, n);
-            let coords: Vec<f64> = (0..simplex.len() * 2).map(|i| (lcg(&mut st) - 0.5) * 10f64.powi((i % 7) as i32 * 40 - 120)).collect();
+            let coords: Vec<f64> = (0..simplex.len() * 2)
+                .map(|i| (lcg(&mut st) - 0.5) * 10f64.powi((i % 7) as i32 * 40 - 120))
+                .collect();
             let net = ControlNet::new(simplex, 2, coords);
             let f = Filter::new(&net);
             let exact = ExactEvaluator::new(&net.map(|x| exact_f64(*x).unwrap()));
             let mut sc = Scratch::default();
             let mut out = vec![Enclosure::default(); 2];
             for _ in 0..200 {
-                let lam = [lcg(&mut st) * 3.0 - 1.0, lcg(&mut st) * 3.0 - 1.0, lcg(&mut st) * 3.0 - 1.0];
+                let lam = [
+                    lcg(&mut st) * 3.0 - 1.0,
+                    lcg(&mut st) * 3.0 - 1.0,
+                    lcg(&mut st) * 3.0 - 1.0,
+                ];
                 f.evaluate(&lam, &mut sc, &mut out);
                 let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
                 let p = exact.evaluate(&l, Algorithm::Casteljau);
@@ -399,7 +461,9 @@ mod tests {
                     let e = &out[c];
                     let err = (exact_f64(e.value).unwrap() - &p[c]).abs();
                     assert!(err <= exact_f64(e.mu).unwrap(), "n={n} {lam:?}");
-                    assert!(exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap());
+                    assert!(
+                        exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap()
+                    );
                 }
             }
         }
@@ -408,13 +472,29 @@ mod tests {
     #[test]
     fn decisions_agree_with_the_exact_judgement() {
         use crate::certify::measures::{Leaf, Tolerance};
-        let net = ControlNet::new(Simplex::new(2, 3), 1, (0..10).map(|i| 1.0 / (i as f64 + 1.0)).collect());
+        let net = ControlNet::new(
+            Simplex::new(2, 3),
+            1,
+            (0..10).map(|i| 1.0 / (i as f64 + 1.0)).collect(),
+        );
         let f = Filter::new(&net);
         let exact = ExactEvaluator::new(&net.map(|x| exact_f64(*x).unwrap()));
         let mut sc = Scratch::default();
         let mut out = vec![Enclosure::default(); 1];
         let mut st = 3u64;
-        let tols = ["exact", "ulps=64", "cond=64", "ulps=1", "ulps=3", "abs=1e-16", "rel=1e-16", "correctly_rounded", "faithful", "cond=2", "bound"];
+        let tols = [
+            "exact",
+            "ulps=64",
+            "cond=64",
+            "ulps=1",
+            "ulps=3",
+            "abs=1e-16",
+            "rel=1e-16",
+            "correctly_rounded",
+            "faithful",
+            "cond=2",
+            "bound",
+        ];
         for p in [Precision::F64, Precision::F32] {
             for t in tols {
                 let tol = Tolerance::parse(t).unwrap();
@@ -440,9 +520,17 @@ mod tests {
                         };
                     }
                     let yq = exact_f64(y).unwrap();
-                    let s = crate::certify::bound::condition(&net.map(|x| exact_f64(*x).unwrap()), &l)[0].clone();
-                    let bound = crate::certify::bound::a_priori(Algorithm::Casteljau, p, 2, 3, &s, &l);
-                    let leaf = Leaf { precision: Some(p), condition: Some(s), bound };
+                    let s =
+                        crate::certify::bound::condition(&net.map(|x| exact_f64(*x).unwrap()), &l)
+                            [0]
+                        .clone();
+                    let bound =
+                        crate::certify::bound::a_priori(Algorithm::Casteljau, p, 2, 3, &s, &l);
+                    let leaf = Leaf {
+                        precision: Some(p),
+                        condition: Some(s),
+                        bound,
+                    };
                     let truth = tol.accepts(&yq, pe, &leaf).unwrap();
                     match th.decide(y, &out[0], lam.iter().map(|x| x.abs()).sum()) {
                         Decision::Pass => {
@@ -459,7 +547,10 @@ mod tests {
                 // f64 claims within 2 steps of the exact value are too close for the f64 filter at tight
                 // tolerances (they fall back to the exact path); loose ones and f32 are decided.
                 let tight = p == Precision::F64 && !matches!(t, "ulps=64" | "cond=64");
-                assert!(decided > 0 || tight || t == "exact", "{t} {p:?} never decided");
+                assert!(
+                    decided > 0 || tight || t == "exact",
+                    "{t} {p:?} never decided"
+                );
             }
         }
         let _ = q("1");

@@ -32,7 +32,9 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use crate::float::Precision;
-use crate::number::{exact_f32, exact_f64, parse_rational, pow2, round_f32, round_f64, ulp_f32, ulp_f64};
+use crate::number::{
+    exact_f32, exact_f64, parse_rational, pow2, round_f32, round_f64, ulp_f32, ulp_f64,
+};
 
 /// What a claim accepts as agreement.
 #[derive(Clone, Debug, PartialEq)]
@@ -56,7 +58,8 @@ pub enum Tolerance {
 }
 
 /// The tolerance names, for messages.
-pub const TOLERANCES: &str = "exact, ulps=N, abs=E, rel=E, correctly_rounded, faithful, cond=K, bound";
+pub const TOLERANCES: &str =
+    "exact, ulps=N, abs=E, rel=E, correctly_rounded, faithful, cond=K, bound";
 
 impl Tolerance {
     /// Parse `exact`, `ulps=2`, `abs=1e-12`, `rel=1e-9`, `correctly_rounded`, `faithful`,
@@ -75,7 +78,13 @@ impl Tolerance {
             }
             Ok(q)
         };
-        let bare = |tol: Tolerance| if arg.is_some() { Err(format!("tolerance `{name}` takes no value")) } else { Ok(tol) };
+        let bare = |tol: Tolerance| {
+            if arg.is_some() {
+                Err(format!("tolerance `{name}` takes no value"))
+            } else {
+                Ok(tol)
+            }
+        };
         match name {
             "exact" => bare(Tolerance::Exact),
             "correctly_rounded" => bare(Tolerance::CorrectlyRounded),
@@ -91,7 +100,14 @@ impl Tolerance {
 
     /// Does the tolerance need a precision (`f64`/`f32`) to mean anything?
     pub fn needs_precision(&self) -> bool {
-        matches!(self, Tolerance::Ulps(_) | Tolerance::CorrectlyRounded | Tolerance::Faithful | Tolerance::Cond(_) | Tolerance::Bound)
+        matches!(
+            self,
+            Tolerance::Ulps(_)
+                | Tolerance::CorrectlyRounded
+                | Tolerance::Faithful
+                | Tolerance::Cond(_)
+                | Tolerance::Bound
+        )
     }
 
     /// Does it need the condition number `Σ|c_i|B_i(|λ|)` (only evaluation claims have one)?
@@ -100,9 +116,18 @@ impl Tolerance {
     }
 
     /// Judge one number. `Err` names what the tolerance lacks (a precision, a condition number).
-    pub fn accepts(&self, claimed: &BigRational, exact: &BigRational, leaf: &Leaf) -> Result<bool, String> {
+    pub fn accepts(
+        &self,
+        claimed: &BigRational,
+        exact: &BigRational,
+        leaf: &Leaf,
+    ) -> Result<bool, String> {
         let err = (claimed - exact).abs();
-        let precision = || leaf.precision.ok_or_else(|| format!("tolerance `{}` needs `precision` (f64 or f32)", self.text()));
+        let precision = || {
+            leaf.precision.ok_or_else(|| {
+                format!("tolerance `{}` needs `precision` (f64 or f32)", self.text())
+            })
+        };
         Ok(match self {
             Tolerance::Exact => err.is_zero(),
             Tolerance::Abs(e) => &err <= e,
@@ -111,7 +136,9 @@ impl Tolerance {
             Tolerance::CorrectlyRounded => nearest(exact, precision()?).as_ref() == Some(claimed),
             Tolerance::Faithful => is_faithful(claimed, exact, precision()?),
             Tolerance::Cond(k) => {
-                let s = leaf.condition.as_ref().ok_or("tolerance `cond` needs an evaluation claim (the condition number Σ|c_i|B_i)")?;
+                let s = leaf.condition.as_ref().ok_or(
+                    "tolerance `cond` needs an evaluation claim (the condition number Σ|c_i|B_i)",
+                )?;
                 err <= k * unit_roundoff(precision()?) * s
             }
             Tolerance::Bound => {
@@ -183,8 +210,14 @@ pub fn as_float(q: &BigRational, p: Precision) -> Option<BigRational> {
 /// Is `claimed` (the exact value of a float) a faithful rounding of `q`?
 pub fn is_faithful(claimed: &BigRational, q: &BigRational, p: Precision) -> bool {
     match p {
-        Precision::F64 => crate::number::is_faithful_f64(round_f64(claimed), q) && exact_f64(round_f64(claimed)).as_ref() == Some(claimed),
-        Precision::F32 => crate::number::is_faithful_f32(round_f32(claimed), q) && exact_f32(round_f32(claimed)).as_ref() == Some(claimed),
+        Precision::F64 => {
+            crate::number::is_faithful_f64(round_f64(claimed), q)
+                && exact_f64(round_f64(claimed)).as_ref() == Some(claimed)
+        }
+        Precision::F32 => {
+            crate::number::is_faithful_f32(round_f32(claimed), q)
+                && exact_f32(round_f32(claimed)).as_ref() == Some(claimed)
+        }
     }
 }
 
@@ -208,7 +241,12 @@ impl Measures {
         let rel = (!exact.is_zero()).then(|| &abs / exact.abs());
         let ulps = precision.map(|p| &abs / ulp(exact, p));
         let correctly_rounded = precision.map(|p| nearest(exact, p).as_ref() == Some(claimed));
-        Measures { abs, rel, ulps, correctly_rounded }
+        Measures {
+            abs,
+            rel,
+            ulps,
+            correctly_rounded,
+        }
     }
 
     /// JSON, numbers as exact strings plus a short decimal.
@@ -248,7 +286,11 @@ pub fn sci(q: &BigRational) -> String {
         return "0".into();
     }
     let x = round_f64(q);
-    if x.is_finite() && x != 0.0 { format!("{x:.3e}") } else { crate::number::to_decimal_string(q, 4) }
+    if x.is_finite() && x != 0.0 {
+        format!("{x:.3e}")
+    } else {
+        crate::number::to_decimal_string(q, 4)
+    }
 }
 
 #[cfg(test)]
@@ -257,18 +299,50 @@ mod tests {
     use crate::number::parse_rational as q;
 
     fn leaf(p: Option<Precision>) -> Leaf {
-        Leaf { precision: p, condition: Some(q("3").unwrap()), bound: Some(q("1e-15").unwrap()) }
+        Leaf {
+            precision: p,
+            condition: Some(q("3").unwrap()),
+            bound: Some(q("1e-15").unwrap()),
+        }
     }
 
     #[test]
     fn parses_every_tolerance_and_rejects_others() {
-        for t in ["exact", "ulps=2", "abs=1e-12", "rel=1/3", "correctly_rounded", "faithful", "cond=4", "bound"] {
-            assert_eq!(Tolerance::parse(t).unwrap().text().split('=').next(), t.split('=').next());
+        for t in [
+            "exact",
+            "ulps=2",
+            "abs=1e-12",
+            "rel=1/3",
+            "correctly_rounded",
+            "faithful",
+            "cond=4",
+            "bound",
+        ] {
+            assert_eq!(
+                Tolerance::parse(t).unwrap().text().split('=').next(),
+                t.split('=').next()
+            );
         }
-        assert!(Tolerance::parse("ulp=2").unwrap_err().contains("unknown tolerance"));
-        assert!(Tolerance::parse("ulps").unwrap_err().contains("needs a value"));
-        assert!(Tolerance::parse("ulps=-1").unwrap_err().contains("negative"));
-        assert!(Tolerance::parse("exact=1").unwrap_err().contains("takes no value"));
+        assert!(
+            Tolerance::parse("ulp=2")
+                .unwrap_err()
+                .contains("unknown tolerance")
+        );
+        assert!(
+            Tolerance::parse("ulps")
+                .unwrap_err()
+                .contains("needs a value")
+        );
+        assert!(
+            Tolerance::parse("ulps=-1")
+                .unwrap_err()
+                .contains("negative")
+        );
+        assert!(
+            Tolerance::parse("exact=1")
+                .unwrap_err()
+                .contains("takes no value")
+        );
     }
 
     #[test]
@@ -280,21 +354,69 @@ mod tests {
         let m = Measures::new(&y, &x, Some(Precision::F64));
         assert_eq!(m.ulps.unwrap(), q("4/5").unwrap());
         assert_eq!(m.correctly_rounded, Some(false));
-        assert!(Tolerance::parse("ulps=0.8").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(!Tolerance::parse("ulps=0.79").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(Tolerance::parse("faithful").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(!Tolerance::parse("correctly_rounded").unwrap().accepts(&y, &x, &l).unwrap());
+        assert!(
+            Tolerance::parse("ulps=0.8")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            !Tolerance::parse("ulps=0.79")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            Tolerance::parse("faithful")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            !Tolerance::parse("correctly_rounded")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
         // 0.8 ulp of 3/10 (binade 2^-2): 0.8 · 2^-54 = 4.44e-17; ε·3 = 3.33e-16.
-        assert!(Tolerance::parse("cond=1").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(!Tolerance::parse("abs=4e-17").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(Tolerance::parse("abs=5e-17").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(Tolerance::parse("rel=2e-16").unwrap().accepts(&y, &x, &l).unwrap());
-        assert!(Tolerance::parse("bound").unwrap().accepts(&y, &x, &l).unwrap());
+        assert!(
+            Tolerance::parse("cond=1")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            !Tolerance::parse("abs=4e-17")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            Tolerance::parse("abs=5e-17")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            Tolerance::parse("rel=2e-16")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
+        assert!(
+            Tolerance::parse("bound")
+                .unwrap()
+                .accepts(&y, &x, &l)
+                .unwrap()
+        );
     }
 
     #[test]
     fn float_tolerances_need_a_precision() {
-        let e = Tolerance::parse("ulps=1").unwrap().accepts(&q("1").unwrap(), &q("1").unwrap(), &leaf(None)).unwrap_err();
+        let e = Tolerance::parse("ulps=1")
+            .unwrap()
+            .accepts(&q("1").unwrap(), &q("1").unwrap(), &leaf(None))
+            .unwrap_err();
         assert!(e.contains("precision"));
     }
 }

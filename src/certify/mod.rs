@@ -58,7 +58,8 @@ impl<F: Float> Certifier<F> {
         Certifier {
             filter: Filter::new(&fnet.map(|x| x.widen())),
             exact: ExactEvaluator::new(&exact_net),
-            thresholds: [Algorithm::Casteljau, Algorithm::Bernstein].map(|a| Thresholds::new(&Tolerance::Bound, F::PRECISION, a, m, n)),
+            thresholds: [Algorithm::Casteljau, Algorithm::Bernstein]
+                .map(|a| Thresholds::new(&Tolerance::Bound, F::PRECISION, a, m, n)),
             net: fnet,
             exact_net,
         }
@@ -66,11 +67,24 @@ impl<F: Float> Certifier<F> {
 
     /// Run `algorithm` in `F` at `lambda` (floats) and check its result against the a-priori
     /// bound ([`bound::a_priori`]): by the float filter when it decides, else exactly.
-    pub fn check(&self, algorithm: Algorithm, lambda: &[F], scratch: &mut (Scratch, Vec<Enclosure>)) -> (Vec<F>, BoundCheck) {
+    pub fn check(
+        &self,
+        algorithm: Algorithm,
+        lambda: &[F],
+        scratch: &mut (Scratch, Vec<Enclosure>),
+    ) -> (Vec<F>, BoundCheck) {
         let y = run::<F>(algorithm, &self.net, lambda);
-        let outside = y.iter().any(|v| !v.finite()) || (algorithm == Algorithm::Bernstein && bernstein_may_underflow(&self.net, lambda));
+        let outside = y.iter().any(|v| !v.finite())
+            || (algorithm == Algorithm::Bernstein && bernstein_may_underflow(&self.net, lambda));
         if outside {
-            return (y, BoundCheck { within: true, fell_back: false, outside_hypothesis: true });
+            return (
+                y,
+                BoundCheck {
+                    within: true,
+                    fell_back: false,
+                    outside_hypothesis: true,
+                },
+            );
         }
         let lam64: Vec<f64> = lambda.iter().map(|x| x.widen()).collect();
         let (sc, enc) = scratch;
@@ -78,23 +92,49 @@ impl<F: Float> Certifier<F> {
         self.filter.evaluate(&lam64, sc, enc);
         let th = &self.thresholds[usize::from(algorithm == Algorithm::Bernstein)];
         let s: f64 = lam64.iter().map(|x| x.abs()).sum();
-        let decisions: Vec<Decision> = y.iter().zip(enc.iter()).map(|(v, e)| th.decide(v.widen(), e, s)).collect();
+        let decisions: Vec<Decision> = y
+            .iter()
+            .zip(enc.iter())
+            .map(|(v, e)| th.decide(v.widen(), e, s))
+            .collect();
         if decisions.iter().all(|d| *d == Decision::Pass) {
-            return (y, BoundCheck { within: true, fell_back: false, outside_hypothesis: false });
+            return (
+                y,
+                BoundCheck {
+                    within: true,
+                    fell_back: false,
+                    outside_hypothesis: false,
+                },
+            );
         }
         let within = self.exact_within(algorithm, lambda, &y);
-        (y, BoundCheck { within, fell_back: true, outside_hypothesis: false })
+        (
+            y,
+            BoundCheck {
+                within,
+                fell_back: true,
+                outside_hypothesis: false,
+            },
+        )
     }
 
     /// The exact check: `|y_c − P_c(λ)| ≤ bound_c` for every coordinate.
     pub fn exact_within(&self, algorithm: Algorithm, lambda: &[F], y: &[F]) -> bool {
-        let lam: Vec<BigRational> = lambda.iter().map(|x| x.exact().unwrap_or_default()).collect();
+        let lam: Vec<BigRational> = lambda
+            .iter()
+            .map(|x| x.exact().unwrap_or_default())
+            .collect();
         let p = self.exact.evaluate(&lam, Algorithm::Casteljau);
         let cond = bound::condition(&self.exact_net, &lam);
         let (m, n) = (self.net.m(), self.net.degree());
         y.iter().enumerate().all(|(c, v)| {
-            let leaf = Leaf { precision: Some(F::PRECISION), condition: Some(cond[c].clone()), bound: bound::a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam) };
-            v.exact().is_some_and(|yq| Tolerance::Bound.accepts(&yq, &p[c], &leaf).unwrap_or(false))
+            let leaf = Leaf {
+                precision: Some(F::PRECISION),
+                condition: Some(cond[c].clone()),
+                bound: bound::a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam),
+            };
+            v.exact()
+                .is_some_and(|yq| Tolerance::Bound.accepts(&yq, &p[c], &leaf).unwrap_or(false))
         })
     }
 }
@@ -119,10 +159,17 @@ pub fn bernstein_may_underflow<F: Float>(net: &ControlNet<F>, lambda: &[F]) -> b
     };
     let logs: Vec<f64> = lambda.iter().map(|x| x.widen().abs().log2()).collect();
     for (alpha, point) in net.entries() {
-        if alpha.iter().zip(&logs).any(|(&a, l)| a > 0 && *l == f64::NEG_INFINITY) {
+        if alpha
+            .iter()
+            .zip(&logs)
+            .any(|(&a, l)| a > 0 && *l == f64::NEG_INFINITY)
+        {
             continue; // the term is exactly zero
         }
-        let mut acc = crate::number::round_f64(&BigRational::from_integer(crate::simplex::multinomial(alpha).into())).log2();
+        let mut acc = crate::number::round_f64(&BigRational::from_integer(
+            crate::simplex::multinomial(alpha).into(),
+        ))
+        .log2();
         for (&a, l) in alpha.iter().zip(&logs) {
             acc += f64::from(a) * l;
             if acc < emin + 2.0 {

@@ -29,18 +29,27 @@ pub mod value;
 
 use std::path::{Path, PathBuf};
 
+use crate::certify::measures::{Leaf, Measures, Tolerance};
+use crate::float::Precision;
 use crate::io::InputError;
 use crate::io::patch_file::patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::patch::Patch;
-use crate::certify::measures::{Leaf, Measures, Tolerance};
-use crate::float::Precision;
 use value::{Mismatch, Value, compare};
 
 /// Keys a claim file may have at its top level.
 pub const FILE_KEYS: &[&str] = &["source", "description", "patch", "patches", "claim"];
 /// Keys every claim may have, besides its operation's own inputs.
-pub const CLAIM_KEYS: &[&str] = &["id", "op", "source", "expect", "erratum", "tolerance", "precision", "note"];
+pub const CLAIM_KEYS: &[&str] = &[
+    "id",
+    "op",
+    "source",
+    "expect",
+    "erratum",
+    "tolerance",
+    "precision",
+    "note",
+];
 
 /// A parsed claim file.
 pub struct ClaimFile {
@@ -263,7 +272,10 @@ impl ClaimFile {
     }
 
     /// The claim's tolerance and precision (located errors for unknown ones).
-    pub fn tolerance_of(&self, claim: &Claim) -> Result<(Tolerance, Option<Precision>), InputError> {
+    pub fn tolerance_of(
+        &self,
+        claim: &Claim,
+    ) -> Result<(Tolerance, Option<Precision>), InputError> {
         let t = self.doc.table(&claim.node, &claim.id)?;
         let tolerance = match Document::get(t, "tolerance") {
             Some(n) => Tolerance::parse(self.doc.string(n, &format!("{}.tolerance", claim.id))?)
@@ -281,7 +293,11 @@ impl ClaimFile {
         };
         let at = |name: &str| Document::get(t, name).unwrap_or(&claim.node);
         if tolerance.needs_precision() && precision.is_none() {
-            return Err(self.doc.error(at("tolerance"), &format!("{}.tolerance", claim.id), format!("tolerance `{tolerance}` needs `precision = \"f64\"` or `\"f32\"`")));
+            return Err(self.doc.error(
+                at("tolerance"),
+                &format!("{}.tolerance", claim.id),
+                format!("tolerance `{tolerance}` needs `precision = \"f64\"` or `\"f32\"`"),
+            ));
         }
         if tolerance.needs_condition() && claim.op != "eval" {
             return Err(self.doc.error(
@@ -298,30 +314,62 @@ impl ClaimFile {
         let exact = ops::exact_value(self, claim)?;
         let (tolerance, precision) = self.tolerance_of(claim)?;
         let t = self.doc.table(&claim.node, &claim.id)?;
-        let expect = Document::get(t, "expect").ok_or_else(|| self.doc.error(&claim.node, &claim.id, "missing key `expect` (the claimed value)"))?;
+        let expect = Document::get(t, "expect").ok_or_else(|| {
+            self.doc.error(
+                &claim.node,
+                &claim.id,
+                "missing key `expect` (the claimed value)",
+            )
+        })?;
         let key = format!("{}.expect", claim.id);
         let mut claimed = ops::read_claimed(&self.doc, expect, &exact, &key)?;
         if let Some(p) = precision {
-            claimed = value::round_numbers(&claimed, p)
-                .ok_or_else(|| self.doc.error(expect, &key, format!("a claimed number overflows {}", p.name())))?;
+            claimed = value::round_numbers(&claimed, p).ok_or_else(|| {
+                self.doc.error(
+                    expect,
+                    &key,
+                    format!("a claimed number overflows {}", p.name()),
+                )
+            })?;
         }
         let float_eval = match (precision, claim.op.as_str()) {
             (Some(p), "eval") => Some(ops::eval_float(self, claim, p)?),
             _ => None,
         };
-        let judged_against = float_eval.as_ref().map_or_else(|| exact.clone(), |f| Value::numbers(&f.exact_seen));
+        let judged_against = float_eval
+            .as_ref()
+            .map_or_else(|| exact.clone(), |f| Value::numbers(&f.exact_seen));
         let leaf = |k: usize| Leaf {
             precision,
-            condition: float_eval.as_ref().and_then(|f| f.condition.get(k).cloned()),
-            bound: float_eval.as_ref().and_then(|f| f.bound.get(k).cloned().flatten()),
+            condition: float_eval
+                .as_ref()
+                .and_then(|f| f.condition.get(k).cloned()),
+            bound: float_eval
+                .as_ref()
+                .and_then(|f| f.bound.get(k).cloned().flatten()),
         };
         let mut mismatches = Vec::new();
-        compare(&claimed, &judged_against, &tolerance, &leaf, &mut 0, "", &mut mismatches)
-            .map_err(|e| self.doc.error(&claim.node, &format!("{}.tolerance", claim.id), e))?;
+        compare(
+            &claimed,
+            &judged_against,
+            &tolerance,
+            &leaf,
+            &mut 0,
+            "",
+            &mut mismatches,
+        )
+        .map_err(|e| {
+            self.doc
+                .error(&claim.node, &format!("{}.tolerance", claim.id), e)
+        })?;
         let mut floats = Vec::new();
         if let (Some(f), Value::List(items), Some(p)) = (&float_eval, &claimed, precision) {
             for (k, item) in items.iter().enumerate() {
-                let (Value::Number(y), Some(es), Some(ei)) = (item, f.exact_seen.get(k), f.exact_intended.get(k)) else { continue };
+                let (Value::Number(y), Some(es), Some(ei)) =
+                    (item, f.exact_seen.get(k), f.exact_intended.get(k))
+                else {
+                    continue;
+                };
                 let (decimal, hex) = match p {
                     Precision::F64 => {
                         let x = crate::number::round_f64(y);

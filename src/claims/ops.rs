@@ -125,7 +125,10 @@ impl<'a> Inputs<'a> {
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) if self.get("precision").is_some() => {
                 if at.len() != m + 1 {
-                    return Err(self.error("at", format!("{} coordinates, expected {}", at.len(), m + 1)));
+                    return Err(self.error(
+                        "at",
+                        format!("{} coordinates, expected {}", at.len(), m + 1),
+                    ));
                 }
                 Ok(at)
             }
@@ -262,24 +265,44 @@ pub struct FloatEval {
 
 /// The float view of an `eval` claim in precision `p`. A Cartesian point is rounded to `p` and
 /// converted to barycentric coordinates exactly.
-pub fn eval_float(file: &ClaimFile, claim: &Claim, p: crate::float::Precision) -> Result<FloatEval, InputError> {
+pub fn eval_float(
+    file: &ClaimFile,
+    claim: &Claim,
+    p: crate::float::Precision,
+) -> Result<FloatEval, InputError> {
     let table = file.doc.table(&claim.node, &claim.id)?;
     let inputs = Inputs { file, claim, table };
     let patch = inputs.patch()?;
     let algorithm = match inputs.opt_string("algorithm")?.as_deref() {
         None | Some("casteljau") => Algorithm::Casteljau,
         Some("bernstein") => Algorithm::Bernstein,
-        Some(other) => return Err(inputs.error("algorithm", format!("unknown algorithm `{other}` (known: casteljau, bernstein)"))),
+        Some(other) => {
+            return Err(inputs.error(
+                "algorithm",
+                format!("unknown algorithm `{other}` (known: casteljau, bernstein)"),
+            ));
+        }
     };
     let round = |q: &BigRational| crate::certify::measures::as_float(q, p);
     let overflow = |name: &str| inputs.error(name, format!("an input overflows {}", p.name()));
     let intended = inputs.point(patch)?;
     let seen_inputs: Vec<BigRational> = match inputs.opt_rationals("cartesian")? {
         Some(x) => {
-            let xr: Vec<BigRational> = x.iter().map(round).collect::<Option<_>>().ok_or_else(|| overflow("cartesian"))?;
-            patch.domain_or_reference().barycentric(&xr).map_err(|e| inputs.error("cartesian", e.to_string()))?
+            let xr: Vec<BigRational> = x
+                .iter()
+                .map(round)
+                .collect::<Option<_>>()
+                .ok_or_else(|| overflow("cartesian"))?;
+            patch
+                .domain_or_reference()
+                .barycentric(&xr)
+                .map_err(|e| inputs.error("cartesian", e.to_string()))?
         }
-        None => intended.iter().map(round).collect::<Option<_>>().ok_or_else(|| overflow("at"))?,
+        None => intended
+            .iter()
+            .map(round)
+            .collect::<Option<_>>()
+            .ok_or_else(|| overflow("at"))?,
     };
     if patch.net.coords().iter().any(|q| round(q).is_none()) {
         return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
@@ -289,8 +312,17 @@ pub fn eval_float(file: &ClaimFile, claim: &Claim, p: crate::float::Precision) -
     let exact_intended = ExactEvaluator::new(&patch.net).evaluate(&intended, Algorithm::Casteljau);
     let condition = crate::certify::bound::condition(&seen_net, &seen_inputs);
     let (m, n) = (patch.net.m(), patch.net.degree());
-    let bound = condition.iter().map(|s| crate::certify::bound::a_priori(algorithm, p, m, n, s, &seen_inputs)).collect();
-    Ok(FloatEval { seen_inputs, exact_seen, exact_intended, condition, bound })
+    let bound = condition
+        .iter()
+        .map(|s| crate::certify::bound::a_priori(algorithm, p, m, n, s, &seen_inputs))
+        .collect();
+    Ok(FloatEval {
+        seen_inputs,
+        exact_seen,
+        exact_intended,
+        condition,
+        bound,
+    })
 }
 
 /// The Bernstein basis of a degree (symbolic or at a point), or its sum.

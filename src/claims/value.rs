@@ -84,8 +84,16 @@ pub struct Mismatch {
 
 /// Compare two values exactly; collect every mismatching leaf.
 pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<Mismatch>) {
-    compare(claimed, exact, &Tolerance::Exact, &|_| Leaf::default(), &mut 0, path, out)
-        .expect("the exact tolerance needs nothing");
+    compare(
+        claimed,
+        exact,
+        &Tolerance::Exact,
+        &|_| Leaf::default(),
+        &mut 0,
+        path,
+        out,
+    )
+    .expect("the exact tolerance needs nothing");
 }
 
 /// Compare two values leaf by leaf under a tolerance; collect every leaf it rejects.
@@ -121,7 +129,15 @@ pub fn compare(
             // Keys are matched by name: a file may list them in any order.
             for (k, y) in b {
                 let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
-                compare(x, y, tolerance, leaf, counter, &format!("{path}.\"{k}\""), out)?;
+                compare(
+                    x,
+                    y,
+                    tolerance,
+                    leaf,
+                    counter,
+                    &format!("{path}.\"{k}\""),
+                    out,
+                )?;
             }
         }
         (Value::List(a), Value::List(b)) => out.push(mismatch(format!(
@@ -166,7 +182,11 @@ pub fn compare(
 pub fn round_numbers(v: &Value, p: crate::float::Precision) -> Option<Value> {
     Some(match v {
         Value::Number(q) => Value::Number(crate::certify::measures::as_float(q, p)?),
-        Value::List(xs) => Value::List(xs.iter().map(|x| round_numbers(x, p)).collect::<Option<_>>()?),
+        Value::List(xs) => Value::List(
+            xs.iter()
+                .map(|x| round_numbers(x, p))
+                .collect::<Option<_>>()?,
+        ),
         Value::Map(kv) => Value::Map(
             kv.iter()
                 .map(|(k, x)| round_numbers(x, p).map(|y| (k.clone(), y)))

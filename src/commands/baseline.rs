@@ -40,7 +40,8 @@ pub fn record(path: &Path, worst: &[Worst]) -> Result<(), CliError> {
 /// Compare against a baseline file: one line per (op, algorithm, precision) that got worse.
 pub fn compare(path: &Path, worst: &[Worst]) -> Result<Vec<String>, CliError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
     let doc: serde_json::Value = serde_json::from_str(&text).map_err(|e| InputError {
         file: file.clone(),
         line: Some(e.line()),
@@ -48,17 +49,34 @@ pub fn compare(path: &Path, worst: &[Worst]) -> Result<Vec<String>, CliError> {
         key: None,
         message: format!("not a baseline file: {e}"),
     })?;
-    let entries = doc.get("worst").and_then(|w| w.as_array()).ok_or_else(|| InputError::file(&file, "not a baseline file: no `worst` array"))?;
+    let entries = doc
+        .get("worst")
+        .and_then(|w| w.as_array())
+        .ok_or_else(|| InputError::file(&file, "not a baseline file: no `worst` array"))?;
     let mut out = Vec::new();
     for (i, e) in entries.iter().enumerate() {
         let field = |k: &str| e.get(k).and_then(|v| v.as_str()).map(str::to_string);
-        let (Some(op), Some(alg), Some(prec), Some(ulps)) = (field("op"), field("algorithm"), field("precision"), e.get("ulps").and_then(|v| v.as_f64())) else {
-            return Err(InputError::file(&file, format!("worst[{i}]: needs op, algorithm, precision (strings) and ulps (a number)")).into());
+        let (Some(op), Some(alg), Some(prec), Some(ulps)) = (
+            field("op"),
+            field("algorithm"),
+            field("precision"),
+            e.get("ulps").and_then(|v| v.as_f64()),
+        ) else {
+            return Err(InputError::file(
+                &file,
+                format!("worst[{i}]: needs op, algorithm, precision (strings) and ulps (a number)"),
+            )
+            .into());
         };
-        if let Some(w) = worst.iter().find(|w| w.op == op && w.algorithm == alg && w.precision == prec)
+        if let Some(w) = worst
+            .iter()
+            .find(|w| w.op == op && w.algorithm == alg && w.precision == prec)
             && w.ulps > ulps
         {
-            out.push(format!("{op} {alg} {prec}: worst error {} ulp, baseline {ulps} ulp (at {})", w.ulps, w.at));
+            out.push(format!(
+                "{op} {alg} {prec}: worst error {} ulp, baseline {ulps} ulp (at {})",
+                w.ulps, w.at
+            ));
         }
     }
     Ok(out)

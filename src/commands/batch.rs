@@ -70,7 +70,10 @@ enum Num {
     /// `nan`, `inf` or empty: the row is a failed claim.
     NotFinite(String),
     /// A number.
-    Value { float: f64, text_exact: Option<BigRational> },
+    Value {
+        float: f64,
+        text_exact: Option<BigRational>,
+    },
 }
 
 /// A failed row, in full.
@@ -134,14 +137,29 @@ struct Prepared {
     intended: ExactEvaluator,
 }
 
-fn parse_num(f: &Field<'_>, precision: Option<Precision>, file: &str, line: usize) -> Result<Num, InputError> {
+fn parse_num(
+    f: &Field<'_>,
+    precision: Option<Precision>,
+    file: &str,
+    line: usize,
+) -> Result<Num, InputError> {
     let t = f.text.trim().trim_matches('"');
     let lower = t.to_ascii_lowercase();
     let body = lower.trim_start_matches(['+', '-']);
     if t.is_empty() || body == "nan" || body == "inf" || body == "infinity" {
-        return Ok(Num::NotFinite(if t.is_empty() { "empty field".into() } else { format!("`{t}`") }));
+        return Ok(Num::NotFinite(if t.is_empty() {
+            "empty field".into()
+        } else {
+            format!("`{t}`")
+        }));
     }
-    let bad = |msg: String| InputError { file: file.into(), line: Some(line), column: Some(f.column), key: None, message: msg };
+    let bad = |msg: String| InputError {
+        file: file.into(),
+        line: Some(line),
+        column: Some(f.column),
+        key: None,
+        message: msg,
+    };
     match precision {
         Some(p) => {
             // Fast path: the standard library's correctly rounded decimal parsing.
@@ -150,17 +168,26 @@ fn parse_num(f: &Field<'_>, precision: Option<Precision>, file: &str, line: usiz
                 Precision::F32 => t.parse::<f32>().ok().map(f64::from),
             };
             if let Some(x) = fast.filter(|x| x.is_finite()) {
-                return Ok(Num::Value { float: x, text_exact: None });
+                return Ok(Num::Value {
+                    float: x,
+                    text_exact: None,
+                });
             }
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
             match as_float(&q, p) {
-                Some(x) => Ok(Num::Value { float: crate::number::round_f64(&x), text_exact: Some(q) }),
+                Some(x) => Ok(Num::Value {
+                    float: crate::number::round_f64(&x),
+                    text_exact: Some(q),
+                }),
                 None => Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name()))),
             }
         }
         None => {
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
-            Ok(Num::Value { float: crate::number::round_f64(&q), text_exact: Some(q) })
+            Ok(Num::Value {
+                float: crate::number::round_f64(&q),
+                text_exact: Some(q),
+            })
         }
     }
 }
@@ -169,7 +196,10 @@ impl Num {
     /// The exact value of the text (intended).
     fn text_value(&self, text: &str) -> Option<BigRational> {
         match self {
-            Num::Value { text_exact: Some(q), .. } => Some(q.clone()),
+            Num::Value {
+                text_exact: Some(q),
+                ..
+            } => Some(q.clone()),
             Num::Value { .. } => parse_rational(text).ok(),
             Num::NotFinite(_) => None,
         }
@@ -181,19 +211,33 @@ fn split_csv(line: &str) -> Vec<Field<'_>> {
     let mut start = 0;
     for (i, ch) in line.char_indices() {
         if ch == ',' {
-            out.push(Field { text: &line[start..i], column: start + 1 });
+            out.push(Field {
+                text: &line[start..i],
+                column: start + 1,
+            });
             start = i + 1;
         }
     }
-    out.push(Field { text: &line[start..], column: start + 1 });
+    out.push(Field {
+        text: &line[start..],
+        column: start + 1,
+    });
     out
 }
 
 /// The fields of a JSON-lines row (an array of numbers, strings or nulls).
 fn split_json<'a>(line: &'a str, file: &str, line_no: usize) -> Result<Vec<Field<'a>>, InputError> {
-    let bad = |col: usize, msg: &str| InputError { file: file.into(), line: Some(line_no), column: Some(col), key: None, message: msg.into() };
+    let bad = |col: usize, msg: &str| InputError {
+        file: file.into(),
+        line: Some(line_no),
+        column: Some(col),
+        key: None,
+        message: msg.into(),
+    };
     let t = line.trim_end();
-    let open = t.find('[').ok_or_else(|| bad(1, "expected a JSON array `[…]`"))?;
+    let open = t
+        .find('[')
+        .ok_or_else(|| bad(1, "expected a JSON array `[…]`"))?;
     if !t[..open].trim().is_empty() || !t.ends_with(']') {
         return Err(bad(1, "expected a JSON array `[…]`"));
     }
@@ -203,16 +247,25 @@ fn split_json<'a>(line: &'a str, file: &str, line_no: usize) -> Result<Vec<Field
     }
     let mut out = Vec::new();
     let mut start = 0;
-    for (i, ch) in inner.char_indices().chain(std::iter::once((inner.len(), ','))) {
+    for (i, ch) in inner
+        .char_indices()
+        .chain(std::iter::once((inner.len(), ',')))
+    {
         if ch == ',' {
             let raw = &inner[start..i];
             let lead = raw.len() - raw.trim_start().len();
             let text = raw.trim();
             let text = if text == "null" { "" } else { text };
             if text.contains(['[', '{', ']', '}']) {
-                return Err(bad(open + 2 + start + lead, "expected numbers, strings or null"));
+                return Err(bad(
+                    open + 2 + start + lead,
+                    "expected numbers, strings or null",
+                ));
             }
-            out.push(Field { text, column: open + 2 + start + lead });
+            out.push(Field {
+                text,
+                column: open + 2 + start + lead,
+            });
             start = i + 1;
         }
     }
@@ -222,21 +275,31 @@ fn split_json<'a>(line: &'a str, file: &str, line_no: usize) -> Result<Vec<Field
 impl Prepared {
     fn new(args: &Args, patch: Patch) -> Result<Self, CliError> {
         let tolerance = match &args.tolerance {
-            Some(t) => Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?,
+            Some(t) => {
+                Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?
+            }
             None => Tolerance::Exact,
         };
         let precision = match &args.precision {
-            Some(p) => Some(p.parse::<Precision>().map_err(|e| CliError::Usage(format!("--precision: {e}")))?),
+            Some(p) => Some(
+                p.parse::<Precision>()
+                    .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+            ),
             None => None,
         };
         if tolerance.needs_precision() && precision.is_none() {
-            return Err(CliError::Usage(format!("--tolerance {tolerance} needs --precision f64 or f32")));
+            return Err(CliError::Usage(format!(
+                "--tolerance {tolerance} needs --precision f64 or f32"
+            )));
         }
         let algorithm = args.algorithm.algorithm();
         let seen_net = match precision {
             Some(p) => {
                 if patch.net.coords().iter().any(|q| as_float(q, p).is_none()) {
-                    return Err(CliError::Usage(format!("a control point of the patch overflows {}", p.name())));
+                    return Err(CliError::Usage(format!(
+                        "a control point of the patch overflows {}",
+                        p.name()
+                    )));
                 }
                 patch.net.map(|q| as_float(q, p).unwrap_or_default())
             }
@@ -245,7 +308,10 @@ impl Prepared {
         let (m, n) = (patch.net.m(), patch.net.degree());
         let filter = precision.filter(|_| !args.cartesian).map(|p| {
             let fnet = seen_net.map(crate::number::round_f64);
-            (Filter::new(&fnet), Thresholds::new(&tolerance, p, algorithm, m, n))
+            (
+                Filter::new(&fnet),
+                Thresholds::new(&tolerance, p, algorithm, m, n),
+            )
         });
         Ok(Prepared {
             seen: ExactEvaluator::new(&seen_net),
@@ -267,11 +333,21 @@ impl Prepared {
 
     /// Barycentric coordinates of an input row (exact), as seen or intended.
     fn barycentric(&self, xs: Vec<BigRational>) -> Option<Vec<BigRational>> {
-        if self.cartesian { self.patch.domain_or_reference().barycentric(&xs).ok() } else { Some(xs) }
+        if self.cartesian {
+            self.patch.domain_or_reference().barycentric(&xs).ok()
+        } else {
+            Some(xs)
+        }
     }
 
     /// Judge one row exactly; `texts` are the row's fields (for the intended values).
-    fn exact_row(&self, inputs: &[Num], claimed: &[Num], texts: Option<&[&str]>, detail: bool) -> (bool, f64, Option<String>, Vec<FailedCoord>) {
+    fn exact_row(
+        &self,
+        inputs: &[Num],
+        claimed: &[Num],
+        texts: Option<&[&str]>,
+        detail: bool,
+    ) -> (bool, f64, Option<String>, Vec<FailedCoord>) {
         let seen_in: Option<Vec<BigRational>> = inputs
             .iter()
             .map(|x| match x {
@@ -286,10 +362,23 @@ impl Prepared {
             return (false, f64::INFINITY, Some("an input is not a finite number (or the Cartesian point has no barycentric coordinates)".into()), Vec::new());
         };
         let exact = self.seen.evaluate(&lambda, Algorithm::Casteljau);
-        let cond = if self.tolerance.needs_condition() { Some(condition(&self.seen_net, &lambda)) } else { None };
+        let cond = if self.tolerance.needs_condition() {
+            Some(condition(&self.seen_net, &lambda))
+        } else {
+            None
+        };
         let (m, n) = (self.patch.net.m(), self.patch.net.degree());
         let intended: Option<Vec<BigRational>> = if detail {
-            texts.and_then(|t| inputs.iter().zip(t).map(|(x, s)| x.text_value(s)).collect::<Option<Vec<_>>>()).and_then(|x| self.barycentric(x)).map(|l| self.intended.evaluate(&l, Algorithm::Casteljau))
+            texts
+                .and_then(|t| {
+                    inputs
+                        .iter()
+                        .zip(t)
+                        .map(|(x, s)| x.text_value(s))
+                        .collect::<Option<Vec<_>>>()
+                })
+                .and_then(|x| self.barycentric(x))
+                .map(|l| self.intended.evaluate(&l, Algorithm::Casteljau))
         } else {
             None
         };
@@ -302,7 +391,12 @@ impl Prepared {
                 pass = false;
                 worst = f64::INFINITY;
                 if let Num::NotFinite(what) = y {
-                    reason.get_or_insert_with(|| format!("claimed coordinate {} is not a finite number: {what}", c + 1));
+                    reason.get_or_insert_with(|| {
+                        format!(
+                            "claimed coordinate {} is not a finite number: {what}",
+                            c + 1
+                        )
+                    });
                 }
                 continue;
             };
@@ -313,20 +407,49 @@ impl Prepared {
             let leaf = Leaf {
                 precision: self.precision,
                 condition: cond.as_ref().map(|s| s[c].clone()),
-                bound: cond.as_ref().and_then(|s| a_priori(self.algorithm, self.precision.unwrap_or(Precision::F64), m, n, &s[c], &lambda)),
+                bound: cond.as_ref().and_then(|s| {
+                    a_priori(
+                        self.algorithm,
+                        self.precision.unwrap_or(Precision::F64),
+                        m,
+                        n,
+                        &s[c],
+                        &lambda,
+                    )
+                }),
             };
-            let ok = self.tolerance.accepts(&yq, &exact[c], &leaf).unwrap_or(false);
+            let ok = self
+                .tolerance
+                .accepts(&yq, &exact[c], &leaf)
+                .unwrap_or(false);
             let meas = Measures::new(&yq, &exact[c], self.precision.or(Some(Precision::F64)));
-            let u = meas.ulps.as_ref().and_then(ToPrimitive::to_f64).unwrap_or(f64::INFINITY);
+            let u = meas
+                .ulps
+                .as_ref()
+                .and_then(ToPrimitive::to_f64)
+                .unwrap_or(f64::INFINITY);
             worst = worst.max(u);
             if !ok {
                 pass = false;
-                reason.get_or_insert_with(|| format!("coordinate {} breaks tolerance `{}`: {}", c + 1, self.tolerance, meas.text()));
+                reason.get_or_insert_with(|| {
+                    format!(
+                        "coordinate {} breaks tolerance `{}`: {}",
+                        c + 1,
+                        self.tolerance,
+                        meas.text()
+                    )
+                });
             }
             if detail {
                 let (decimal, hex) = match self.precision {
-                    Some(Precision::F32) => (crate::number::display_f32(*float as f32), crate::number::hex_f32(*float as f32)),
-                    _ => (crate::number::display_f64(*float), crate::number::hex_f64(*float)),
+                    Some(Precision::F32) => (
+                        crate::number::display_f32(*float as f32),
+                        crate::number::hex_f32(*float as f32),
+                    ),
+                    _ => (
+                        crate::number::display_f64(*float),
+                        crate::number::hex_f64(*float),
+                    ),
                 };
                 let ei = intended.as_ref().map(|v| v[c].clone());
                 coords.push(FailedCoord {
@@ -343,14 +466,37 @@ impl Prepared {
     }
 
     /// Judge one row: filter first, exact when undecided.
-    fn row(&self, line: usize, inputs: Vec<Num>, claimed: Vec<Num>, scratch: &mut (Scratch, Vec<Enclosure>)) -> RowOutcome {
+    fn row(
+        &self,
+        line: usize,
+        inputs: Vec<Num>,
+        claimed: Vec<Num>,
+        scratch: &mut (Scratch, Vec<Enclosure>),
+    ) -> RowOutcome {
         let finite = |xs: &[Num]| xs.iter().all(|x| matches!(x, Num::Value { .. }));
         if !finite(&inputs) || !finite(&claimed) {
             let (_, _, reason, _) = self.exact_row(&inputs, &claimed, None, false);
-            return RowOutcome { line, pass: false, fell_back: false, ulps: f64::INFINITY, failure: reason, inputs, claimed };
+            return RowOutcome {
+                line,
+                pass: false,
+                fell_back: false,
+                ulps: f64::INFINITY,
+                failure: reason,
+                inputs,
+                claimed,
+            };
         }
         if let Some((filter, th)) = &self.filter {
-            let lambda: Vec<f64> = inputs.iter().map(|x| if let Num::Value { float, .. } = x { *float } else { 0.0 }).collect();
+            let lambda: Vec<f64> = inputs
+                .iter()
+                .map(|x| {
+                    if let Num::Value { float, .. } = x {
+                        *float
+                    } else {
+                        0.0
+                    }
+                })
+                .collect();
             let (sc, enc) = scratch;
             enc.resize(filter.dim(), Enclosure::default());
             filter.evaluate(&lambda, sc, enc);
@@ -359,7 +505,9 @@ impl Prepared {
             let mut any_fail = false;
             let mut ulps = 0f64;
             for (c, y) in claimed.iter().enumerate() {
-                let Num::Value { float, .. } = y else { unreachable!() };
+                let Num::Value { float, .. } = y else {
+                    unreachable!()
+                };
                 match th.decide(*float, &enc[c], s) {
                     Decision::Pass => {}
                     Decision::Fail => any_fail = true,
@@ -368,14 +516,38 @@ impl Prepared {
                 ulps = ulps.max(th.ulps_upper(*float, &enc[c]));
             }
             if all_pass && !any_fail {
-                return RowOutcome { line, pass: true, fell_back: false, ulps, failure: None, inputs, claimed };
+                return RowOutcome {
+                    line,
+                    pass: true,
+                    fell_back: false,
+                    ulps,
+                    failure: None,
+                    inputs,
+                    claimed,
+                };
             }
             if any_fail {
-                return RowOutcome { line, pass: false, fell_back: false, ulps, failure: Some(String::new()), inputs, claimed };
+                return RowOutcome {
+                    line,
+                    pass: false,
+                    fell_back: false,
+                    ulps,
+                    failure: Some(String::new()),
+                    inputs,
+                    claimed,
+                };
             }
         }
         let (pass, ulps, reason, _) = self.exact_row(&inputs, &claimed, None, false);
-        RowOutcome { line, pass, fell_back: self.filter.is_some(), ulps, failure: if pass { None } else { reason }, inputs, claimed }
+        RowOutcome {
+            line,
+            pass,
+            fell_back: self.filter.is_some(),
+            ulps,
+            failure: if pass { None } else { reason },
+            inputs,
+            claimed,
+        }
     }
 }
 
@@ -383,34 +555,63 @@ impl Prepared {
 type Row = (Vec<Num>, Vec<Num>);
 
 /// Read one data line into numbers; `None` for blank and comment lines.
-fn parse_line(line: &str, json_lines: bool, width: usize, dim: usize, precision: Option<Precision>, file: &str, line_no: usize) -> Result<Option<Row>, InputError> {
+fn parse_line(
+    line: &str,
+    json_lines: bool,
+    width: usize,
+    dim: usize,
+    precision: Option<Precision>,
+    file: &str,
+    line_no: usize,
+) -> Result<Option<Row>, InputError> {
     let t = line.trim();
     if t.is_empty() || t.starts_with('#') {
         return Ok(None);
     }
-    let fields = if json_lines { split_json(line, file, line_no)? } else { split_csv(line) };
+    let fields = if json_lines {
+        split_json(line, file, line_no)?
+    } else {
+        split_csv(line)
+    };
     if fields.len() != width + dim {
         return Err(InputError {
             file: file.into(),
             line: Some(line_no),
             column: None,
             key: None,
-            message: format!("{} columns, expected {} ({width} input coordinates, then the {dim} claimed coordinates of the point)", fields.len(), width + dim),
+            message: format!(
+                "{} columns, expected {} ({width} input coordinates, then the {dim} claimed coordinates of the point)",
+                fields.len(),
+                width + dim
+            ),
         });
     }
-    let nums = fields.iter().map(|f| parse_num(f, precision, file, line_no)).collect::<Result<Vec<_>, _>>()?;
+    let nums = fields
+        .iter()
+        .map(|f| parse_num(f, precision, file, line_no))
+        .collect::<Result<Vec<_>, _>>()?;
     let (a, b) = nums.split_at(width);
     Ok(Some((a.to_vec(), b.to_vec())))
 }
 
 fn texts_of(line: &str, json_lines: bool, file: &str, line_no: usize) -> Vec<String> {
-    let fields = if json_lines { split_json(line, file, line_no).unwrap_or_default() } else { split_csv(line) };
-    fields.iter().map(|f| f.text.trim().trim_matches('"').to_string()).collect()
+    let fields = if json_lines {
+        split_json(line, file, line_no).unwrap_or_default()
+    } else {
+        split_csv(line)
+    };
+    fields
+        .iter()
+        .map(|f| f.text.trim().trim_matches('"').to_string())
+        .collect()
 }
 
 /// Run the batch mode of `tribez check`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let patch_path = args.patch.as_ref().expect("clap requires --patch with --results");
+    let patch_path = args
+        .patch
+        .as_ref()
+        .expect("clap requires --patch with --results");
     let results = args.results.as_ref().expect("checked by the caller");
     let patch = read_patch(patch_path)?;
     let prepared = Prepared::new(args, patch)?;
@@ -427,7 +628,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if let Some(path) = &args.baseline {
         regressions = super::baseline::compare(path, &worst)?;
     }
-    let mut outcome = Outcome::rendered(&report, args.out.format, success && regressions.is_empty())?;
+    let mut outcome =
+        Outcome::rendered(&report, args.out.format, success && regressions.is_empty())?;
     for r in regressions {
         outcome.output += &format!("baseline regression: {r}\n");
     }
@@ -436,9 +638,14 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 
 fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport, CliError> {
     let file = path.display().to_string();
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
     let json_lines = matches!(ext.as_str(), "jsonl" | "ndjson" | "json");
-    let reader = std::fs::File::open(path).map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+    let reader = std::fs::File::open(path)
+        .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
     let mut reader = BufReader::with_capacity(1 << 20, reader);
     let (width, dim) = (p.width(), p.patch.net.dim());
     let progress = std::io::stderr().is_terminal();
@@ -464,7 +671,9 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
         let mut eof = false;
         while lines.len() < CHUNK {
             let mut buf = String::new();
-            let n = reader.read_line(&mut buf).map_err(|e| InputError::file(&file, format!("cannot read line {}: {e}", line_no + 1)))?;
+            let n = reader.read_line(&mut buf).map_err(|e| {
+                InputError::file(&file, format!("cannot read line {}: {e}", line_no + 1))
+            })?;
             if n == 0 {
                 eof = true;
                 break;
@@ -477,7 +686,11 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
             .map_init(
                 || (Scratch::default(), Vec::new()),
                 |scratch, (no, text)| -> Result<Option<RowOutcome>, InputError> {
-                    let Some((inputs, claimed)) = parse_line(text, json_lines, width, dim, p.precision, &file, *no)? else { return Ok(None) };
+                    let Some((inputs, claimed)) =
+                        parse_line(text, json_lines, width, dim, p.precision, &file, *no)?
+                    else {
+                        return Ok(None);
+                    };
                     Ok(Some(p.row(*no, inputs, claimed, scratch)))
                 },
             )
@@ -496,17 +709,33 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
             } else {
                 report.failed += 1;
                 if report.failures.len() < MAX_LISTED {
-                    let text = &lines.iter().find(|(n, _)| *n == o.line).expect("the line is in this chunk").1;
+                    let text = &lines
+                        .iter()
+                        .find(|(n, _)| *n == o.line)
+                        .expect("the line is in this chunk")
+                        .1;
                     let texts = texts_of(text, json_lines, &file, o.line);
                     let refs: Vec<&str> = texts.iter().map(String::as_str).collect();
-                    let (_, _, reason, coords) = p.exact_row(&o.inputs, &o.claimed, Some(&refs), true);
-                    let reason = o.failure.filter(|r| !r.is_empty()).or(reason).unwrap_or_else(|| "fails".into());
-                    report.failures.push(FailedRow { line: o.line, reason, coords });
+                    let (_, _, reason, coords) =
+                        p.exact_row(&o.inputs, &o.claimed, Some(&refs), true);
+                    let reason = o
+                        .failure
+                        .filter(|r| !r.is_empty())
+                        .or(reason)
+                        .unwrap_or_else(|| "fails".into());
+                    report.failures.push(FailedRow {
+                        line: o.line,
+                        reason,
+                        coords,
+                    });
                 }
             }
         }
         if progress {
-            eprint!("\rtribez check: {} rows, {} failed", report.rows, report.failed);
+            eprint!(
+                "\rtribez check: {} rows, {} failed",
+                report.rows, report.failed
+            );
             let _ = std::io::stderr().flush();
         }
         if eof {
@@ -521,7 +750,10 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
     }
     if let Some((_, line, inputs, claimed)) = worst_row {
         // Recompute the worst row exactly (its filter figure is an upper bound).
-        let mut reader = BufReader::new(std::fs::File::open(path).map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?);
+        let mut reader = BufReader::new(
+            std::fs::File::open(path)
+                .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?,
+        );
         let mut text = String::new();
         for _ in 0..line {
             text.clear();
@@ -552,9 +784,19 @@ impl BatchReport {
 }
 
 fn coord_text(c: &FailedCoord) -> String {
-    let mut s = format!("claimed {} = {}; exact at the inputs as seen {} ({})", c.decimal, c.hex, to_decimal_string(&c.exact_seen, 20), c.seen.text());
+    let mut s = format!(
+        "claimed {} = {}; exact at the inputs as seen {} ({})",
+        c.decimal,
+        c.hex,
+        to_decimal_string(&c.exact_seen, 20),
+        c.seen.text()
+    );
     if let (Some(e), Some(m)) = (&c.exact_intended, &c.intended) {
-        s += &format!("; at the intended inputs {} ({})", to_decimal_string(e, 20), m.text());
+        s += &format!(
+            "; at the intended inputs {} ({})",
+            to_decimal_string(e, 20),
+            m.text()
+        );
     }
     s
 }
@@ -577,22 +819,42 @@ impl Render for BatchReport {
             self.rows,
             self.patch,
             self.tolerance,
-            self.precision.map_or("exact numbers".to_string(), |p| format!("each number the nearest {}", p.name()))
+            self.precision
+                .map_or("exact numbers".to_string(), |p| format!(
+                    "each number the nearest {}",
+                    p.name()
+                ))
         );
         if self.histogram_upper_bounds {
-            out += &format!("  passed {}, failed {}; decided by the float filter {}, fell back to exact arithmetic {}\n", self.passed, self.failed, self.rows - self.fell_back, self.fell_back);
+            out += &format!(
+                "  passed {}, failed {}; decided by the float filter {}, fell back to exact arithmetic {}\n",
+                self.passed,
+                self.failed,
+                self.rows - self.fell_back,
+                self.fell_back
+            );
         } else {
-            out += &format!("  passed {}, failed {}; every row computed exactly (no float filter without --precision, or with --cartesian)\n", self.passed, self.failed);
+            out += &format!(
+                "  passed {}, failed {}; every row computed exactly (no float filter without --precision, or with --cartesian)\n",
+                self.passed, self.failed
+            );
         }
         if !self.histogram.is_empty() {
             out += &format!(
                 "\nErrors in ULPs against the exact value at the inputs as the code saw them{}\n",
-                if self.histogram_upper_bounds { " (filter-decided rows: an upper bound)" } else { "" }
+                if self.histogram_upper_bounds {
+                    " (filter-decided rows: an upper bound)"
+                } else {
+                    ""
+                }
             );
             out += &self.histogram.text();
         }
         if let Some((u, line, coords)) = &self.worst {
-            out += &format!("\nworst error: {} ulp at line {line}\n", to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4));
+            out += &format!(
+                "\nworst error: {} ulp at line {line}\n",
+                to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4)
+            );
             for (k, c) in coords.iter().enumerate() {
                 out += &format!("  [{k}] {}\n", coord_text(c));
             }
@@ -606,10 +868,16 @@ impl Render for BatchReport {
                 }
             }
             if self.failed as usize > self.failures.len() {
-                out += &format!("  … and {} more\n", self.failed as usize - self.failures.len());
+                out += &format!(
+                    "  … and {} more\n",
+                    self.failed as usize - self.failures.len()
+                );
             }
         }
-        out += &format!("\n{} claims: {} passed, {} failed\n", self.rows, self.passed, self.failed);
+        out += &format!(
+            "\n{} claims: {} passed, {} failed\n",
+            self.rows, self.passed, self.failed
+        );
         out
     }
 
@@ -634,10 +902,24 @@ impl Render for BatchReport {
 
 impl Exporter for BatchReport {
     fn junit(&self) -> String {
-        let mut failures: Vec<String> = self.failures.iter().map(|f| format!("line {}: {}", f.line, f.reason)).collect();
+        let mut failures: Vec<String> = self
+            .failures
+            .iter()
+            .map(|f| format!("line {}: {}", f.line, f.reason))
+            .collect();
         if self.failed as usize > self.failures.len() {
-            failures.push(format!("… and {} more", self.failed as usize - self.failures.len()));
+            failures.push(format!(
+                "… and {} more",
+                self.failed as usize - self.failures.len()
+            ));
         }
-        junit_xml("check", &[JunitCase { name: self.file.clone(), checks: self.rows as usize, failures }])
+        junit_xml(
+            "check",
+            &[JunitCase {
+                name: self.file.clone(),
+                checks: self.rows as usize,
+                failures,
+            }],
+        )
     }
 }

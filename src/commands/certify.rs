@@ -148,19 +148,38 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
         .map(|point| {
             let lam: Vec<F> = point.iter().map(F::round).collect();
             let y = crate::certify::run(algorithm, &cert.net, &lam);
-            let lam_q: Vec<BigRational> = lam.iter().map(|x| x.exact().unwrap_or_default()).collect();
-            let outside = y.iter().any(|v| !v.finite()) || (algorithm == Algorithm::Bernstein && crate::certify::bernstein_may_underflow(&cert.net, &lam));
+            let lam_q: Vec<BigRational> =
+                lam.iter().map(|x| x.exact().unwrap_or_default()).collect();
+            let outside = y.iter().any(|v| !v.finite())
+                || (algorithm == Algorithm::Bernstein
+                    && crate::certify::bernstein_may_underflow(&cert.net, &lam));
             let p = cert.exact.evaluate(&lam_q, Algorithm::Casteljau);
             let cond = condition(&cert.exact_net, &lam_q);
-            let mut case = Case { ulps: 0.0, cr: 0, coords: y.len(), cond: 0.0, rel_cond: 0.0, ratio: 0.0, violation: None, outside };
+            let mut case = Case {
+                ulps: 0.0,
+                cr: 0,
+                coords: y.len(),
+                cond: 0.0,
+                rel_cond: 0.0,
+                ratio: 0.0,
+                violation: None,
+                outside,
+            };
             for (c, v) in y.iter().enumerate() {
                 case.cond = case.cond.max(cond[c].to_f64().unwrap_or(f64::INFINITY));
                 if !p[c].is_zero() {
-                    case.rel_cond = case.rel_cond.max((&cond[c] / p[c].abs()).to_f64().unwrap_or(f64::INFINITY));
+                    case.rel_cond = case
+                        .rel_cond
+                        .max((&cond[c] / p[c].abs()).to_f64().unwrap_or(f64::INFINITY));
                 }
                 let Some(yq) = v.exact() else { continue };
                 let meas = Measures::new(&yq, &p[c], Some(F::PRECISION));
-                case.ulps = case.ulps.max(meas.ulps.as_ref().and_then(ToPrimitive::to_f64).unwrap_or(f64::INFINITY));
+                case.ulps = case.ulps.max(
+                    meas.ulps
+                        .as_ref()
+                        .and_then(ToPrimitive::to_f64)
+                        .unwrap_or(f64::INFINITY),
+                );
                 if meas.correctly_rounded == Some(true) {
                     case.cr += 1;
                 }
@@ -169,7 +188,9 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
                 }
                 if let Some(b) = a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam_q) {
                     if !b.is_zero() {
-                        case.ratio = case.ratio.max((&meas.abs / &b).to_f64().unwrap_or(f64::INFINITY));
+                        case.ratio = case
+                            .ratio
+                            .max((&meas.abs / &b).to_f64().unwrap_or(f64::INFINITY));
                     }
                     if meas.abs > b {
                         case.violation = Some(format!(
@@ -222,13 +243,20 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let m = patch.net.m();
     let precisions = match args.precision.as_str() {
         "all" => vec![Precision::F64, Precision::F32],
-        p => vec![p.parse::<Precision>().map_err(|e| CliError::Usage(format!("--precision: {e}")))?],
+        p => vec![
+            p.parse::<Precision>()
+                .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+        ],
     };
     let algorithms = match args.algorithm.as_str() {
         "all" => vec![Algorithm::Casteljau, Algorithm::Bernstein],
         "casteljau" => vec![Algorithm::Casteljau],
         "bernstein" => vec![Algorithm::Bernstein],
-        other => return Err(CliError::Usage(format!("--algorithm: unknown algorithm `{other}` (known: casteljau, bernstein, all)"))),
+        other => {
+            return Err(CliError::Usage(format!(
+                "--algorithm: unknown algorithm `{other}` (known: casteljau, bernstein, all)"
+            )));
+        }
     };
     let (points, random) = match (&args.points, args.random) {
         (Some(path), None) => (read_points(path, m + 1)?, None),
@@ -236,12 +264,28 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             if n == 0 {
                 return Err(CliError::Usage("--random needs at least one point".into()));
             }
-            let pts: Vec<Vec<BigRational>> =
-                random_points(m, n, args.seed).into_iter().map(|p| p.into_iter().map(|x| BigRational::from_float(x).expect("finite")).collect()).collect();
-            let command = format!("tribez certify {} --random {n} --seed {} --precision {} --algorithm {}", args.patch.display(), args.seed, args.precision, args.algorithm);
+            let pts: Vec<Vec<BigRational>> = random_points(m, n, args.seed)
+                .into_iter()
+                .map(|p| {
+                    p.into_iter()
+                        .map(|x| BigRational::from_float(x).expect("finite"))
+                        .collect()
+                })
+                .collect();
+            let command = format!(
+                "tribez certify {} --random {n} --seed {} --precision {} --algorithm {}",
+                args.patch.display(),
+                args.seed,
+                args.precision,
+                args.algorithm
+            );
             (pts, Some((n, args.seed, command)))
         }
-        (None, None) => return Err(CliError::Usage("give --points FILE or --random N [--seed S]".into())),
+        (None, None) => {
+            return Err(CliError::Usage(
+                "give --points FILE or --random N [--seed S]".into(),
+            ));
+        }
         (Some(_), Some(_)) => unreachable!("clap rejects --points with --random"),
     };
     let mut rows = Vec::new();
@@ -253,7 +297,13 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             });
         }
     }
-    let mut report = CertifyReport { patch: args.patch.display().to_string(), points: points.len(), random, rows, regressions: Vec::new() };
+    let mut report = CertifyReport {
+        patch: args.patch.display().to_string(),
+        points: points.len(),
+        random,
+        rows,
+        regressions: Vec::new(),
+    };
     let worst: Vec<super::baseline::Worst> = report
         .rows
         .iter()
@@ -262,7 +312,10 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             algorithm: alg_name(r.algorithm).into(),
             precision: r.precision.name().into(),
             ulps: r.max_ulps,
-            at: r.worst_point.as_ref().map_or(String::new(), |p| crate::report::tuple(p)),
+            at: r
+                .worst_point
+                .as_ref()
+                .map_or(String::new(), |p| crate::report::tuple(p)),
         })
         .collect();
     if let Some(path) = &args.record_baseline {
@@ -271,7 +324,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if let Some(path) = &args.baseline {
         report.regressions = super::baseline::compare(path, &worst)?;
     }
-    let success = report.rows.iter().all(|r| r.violations.is_empty()) && report.regressions.is_empty();
+    let success =
+        report.rows.iter().all(|r| r.violations.is_empty()) && report.regressions.is_empty();
     if let Some(path) = &args.junit {
         super::write_atomically(path, report.junit().as_bytes())?;
     }
@@ -279,7 +333,16 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 }
 
 fn g(x: f64) -> String {
-    if x == 0.0 { "0".into() } else if (1e-3..1e6).contains(&x.abs()) { format!("{x:.4}").trim_end_matches('0').trim_end_matches('.').to_string() } else { format!("{x:.3e}") }
+    if x == 0.0 {
+        "0".into()
+    } else if (1e-3..1e6).contains(&x.abs()) {
+        format!("{x:.4}")
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .to_string()
+    } else {
+        format!("{x:.3e}")
+    }
 }
 
 impl Render for CertifyReport {
@@ -290,7 +353,16 @@ impl Render for CertifyReport {
         }
         out += &format!(
             "\n{:<10} {:<5} {:>9} {:>10} {:>9} {:>11} {:>11} {:>8} {:>9} {:>8}\n",
-            "algorithm", "prec", "coords", "max ulp", "cr share", "max cond", "max relcond", "bound", "err/bound", "verdict"
+            "algorithm",
+            "prec",
+            "coords",
+            "max ulp",
+            "cr share",
+            "max cond",
+            "max relcond",
+            "bound",
+            "err/bound",
+            "verdict"
         );
         for r in &self.rows {
             out += &format!(
@@ -304,16 +376,29 @@ impl Render for CertifyReport {
                 g(r.max_relative_condition),
                 format!("γ_{}", r.gamma_k),
                 g(r.max_bound_ratio),
-                if r.violations.is_empty() { "within" } else { "EXCEEDED" }
+                if r.violations.is_empty() {
+                    "within"
+                } else {
+                    "EXCEEDED"
+                }
             );
         }
         out += "\nbound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i(|λ|) (γ_K = Kε/(1−Kε)); cond = Σ|c_i|B_i(|λ|), relcond = cond/|P|; err/bound = largest observed error over its bound\n";
         for r in &self.rows {
             if r.outside_hypothesis > 0 {
-                out += &format!("{} {}: {} points outside the bound's hypothesis (overflow or near underflow), not judged\n", alg_name(r.algorithm), r.precision.name(), r.outside_hypothesis);
+                out += &format!(
+                    "{} {}: {} points outside the bound's hypothesis (overflow or near underflow), not judged\n",
+                    alg_name(r.algorithm),
+                    r.precision.name(),
+                    r.outside_hypothesis
+                );
             }
             for v in r.violations.iter().take(20) {
-                out += &format!("BOUND EXCEEDED: {} {}: {v}\n", alg_name(r.algorithm), r.precision.name());
+                out += &format!(
+                    "BOUND EXCEEDED: {} {}: {v}\n",
+                    alg_name(r.algorithm),
+                    r.precision.name()
+                );
             }
         }
         for reg in &self.regressions {
@@ -345,9 +430,12 @@ impl Exporter for CertifyReport {
         let cases: Vec<JunitCase> = self
             .rows
             .iter()
-            .map(|r| JunitCase { name: format!("{} {}", alg_name(r.algorithm), r.precision.name()), checks: r.cases, failures: r.violations.clone() })
+            .map(|r| JunitCase {
+                name: format!("{} {}", alg_name(r.algorithm), r.precision.name()),
+                checks: r.cases,
+                failures: r.violations.clone(),
+            })
             .collect();
         junit_xml("certify", &cases)
     }
 }
-

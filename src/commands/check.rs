@@ -66,13 +66,20 @@ pub fn judge_paths(paths: &[PathBuf]) -> Result<Vec<(String, Vec<Judged>)>, CliE
         if p.is_dir() {
             let found = find_claim_files(p)?;
             if found.is_empty() {
-                return Err(CliError::Usage(format!("{}: no claim files (*.claims.toml, *.claims.json)", p.display())));
+                return Err(CliError::Usage(format!(
+                    "{}: no claim files (*.claims.toml, *.claims.json)",
+                    p.display()
+                )));
             }
             files.extend(found);
         } else if p.exists() {
             files.push(p.clone());
         } else {
-            return Err(crate::io::InputError::file(p.display().to_string(), "no such file or directory").into());
+            return Err(crate::io::InputError::file(
+                p.display().to_string(),
+                "no such file or directory",
+            )
+            .into());
         }
     }
     let mut out = Vec::new();
@@ -87,20 +94,34 @@ pub fn judge_paths(paths: &[PathBuf]) -> Result<Vec<(String, Vec<Judged>)>, CliE
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if args.results.is_some() {
         if !args.paths.is_empty() {
-            return Err(CliError::Usage("give either claim files or --patch/--results, not both".into()));
+            return Err(CliError::Usage(
+                "give either claim files or --patch/--results, not both".into(),
+            ));
         }
         return super::batch::run(args);
     }
-    for (flag, given) in [("--tolerance", args.tolerance.is_some()), ("--precision", args.precision.is_some()), ("--cartesian", args.cartesian)] {
+    for (flag, given) in [
+        ("--tolerance", args.tolerance.is_some()),
+        ("--precision", args.precision.is_some()),
+        ("--cartesian", args.cartesian),
+    ] {
         if given {
-            return Err(CliError::Usage(format!("{flag} applies to batches (--patch PATCH --results FILE); claim files state it per claim")));
+            return Err(CliError::Usage(format!(
+                "{flag} applies to batches (--patch PATCH --results FILE); claim files state it per claim"
+            )));
         }
     }
     if args.paths.is_empty() {
-        return Err(CliError::Usage("give claim files or directories, or --patch PATCH --results FILE".into()));
+        return Err(CliError::Usage(
+            "give claim files or directories, or --patch PATCH --results FILE".into(),
+        ));
     }
     let files = judge_paths(&args.paths)?;
-    let mut report = CheckReport { files, ok_word: "passed", regressions: Vec::new() };
+    let mut report = CheckReport {
+        files,
+        ok_word: "passed",
+        regressions: Vec::new(),
+    };
     let worst = report.worst_errors();
     if let Some(path) = &args.record_baseline {
         super::baseline::record(path, &worst)?;
@@ -125,11 +146,17 @@ fn verdict_word(v: &Verdict, ok: &'static str) -> &'static str {
 }
 
 fn clip(s: &str, n: usize) -> String {
-    if s.chars().count() <= n { s.to_string() } else { format!("{}…", s.chars().take(n - 1).collect::<String>()) }
+    if s.chars().count() <= n {
+        s.to_string()
+    } else {
+        format!("{}…", s.chars().take(n - 1).collect::<String>())
+    }
 }
 
 fn short(file: &str) -> String {
-    std::path::Path::new(file).file_name().map_or(file.to_string(), |f| f.to_string_lossy().into_owned())
+    std::path::Path::new(file)
+        .file_name()
+        .map_or(file.to_string(), |f| f.to_string_lossy().into_owned())
 }
 
 impl CheckReport {
@@ -145,7 +172,19 @@ impl CheckReport {
     /// Errors in ULPs (as seen) of every float coordinate, with where.
     fn float_errors(&self) -> Vec<(f64, &Judged, usize)> {
         self.judged()
-            .flat_map(|j| j.floats.iter().enumerate().map(move |(k, f)| (f.seen.ulps.as_ref().and_then(ToPrimitive::to_f64).unwrap_or(f64::INFINITY), j, k)))
+            .flat_map(|j| {
+                j.floats.iter().enumerate().map(move |(k, f)| {
+                    (
+                        f.seen
+                            .ulps
+                            .as_ref()
+                            .and_then(ToPrimitive::to_f64)
+                            .unwrap_or(f64::INFINITY),
+                        j,
+                        k,
+                    )
+                })
+            })
             .collect()
     }
 
@@ -153,14 +192,27 @@ impl CheckReport {
     pub fn worst_errors(&self) -> Vec<super::baseline::Worst> {
         let mut out: Vec<super::baseline::Worst> = Vec::new();
         for (ulps, j, _) in self.float_errors() {
-            let key = (j.op.clone(), "claimed".to_string(), j.precision.map_or("exact", |p| p.name()).to_string());
-            match out.iter_mut().find(|w| (w.op.clone(), w.algorithm.clone(), w.precision.clone()) == key) {
+            let key = (
+                j.op.clone(),
+                "claimed".to_string(),
+                j.precision.map_or("exact", |p| p.name()).to_string(),
+            );
+            match out
+                .iter_mut()
+                .find(|w| (w.op.clone(), w.algorithm.clone(), w.precision.clone()) == key)
+            {
                 Some(w) if w.ulps < ulps => {
                     w.ulps = ulps;
                     w.at = format!("{} / {}", j.file, j.id);
                 }
                 Some(_) => {}
-                None => out.push(super::baseline::Worst { op: key.0, algorithm: key.1, precision: key.2, ulps, at: format!("{} / {}", j.file, j.id) }),
+                None => out.push(super::baseline::Worst {
+                    op: key.0,
+                    algorithm: key.1,
+                    precision: key.2,
+                    ulps,
+                    at: format!("{} / {}", j.file, j.id),
+                }),
             }
         }
         out
@@ -169,26 +221,58 @@ impl CheckReport {
 
 impl Render for CheckReport {
     fn text(&self) -> String {
-        let mut out = format!("{:<34} {:<30} {:<18} {:<40} verdict\n", "file", "claim", "tolerance", "exact value");
+        let mut out = format!(
+            "{:<34} {:<30} {:<18} {:<40} verdict\n",
+            "file", "claim", "tolerance", "exact value"
+        );
         for j in self.judged() {
             out += &format!(
                 "{:<34} {:<30} {:<18} {:<40} {}\n",
                 clip(&short(&j.file), 34),
                 clip(&j.id, 30),
-                clip(&format!("{}{}", j.tolerance, j.precision.map_or(String::new(), |p| format!(" {}", p.name()))), 18),
+                clip(
+                    &format!(
+                        "{}{}",
+                        j.tolerance,
+                        j.precision
+                            .map_or(String::new(), |p| format!(" {}", p.name()))
+                    ),
+                    18
+                ),
                 clip(&j.exact.to_text(), 40),
                 verdict_word(&j.verdict, self.ok_word)
             );
         }
-        let errata: Vec<&Judged> = self.judged().filter(|j| matches!(j.verdict, Verdict::KnownErratum(_))).collect();
+        let errata: Vec<&Judged> = self
+            .judged()
+            .filter(|j| matches!(j.verdict, Verdict::KnownErratum(_)))
+            .collect();
         if !errata.is_empty() {
-            out += "\nErrata: values printed in the sources that the exact computation contradicts\n";
+            out +=
+                "\nErrata: values printed in the sources that the exact computation contradicts\n";
             for j in errata {
-                out += &format!("  {} / {} ({})\n", j.file, j.id, j.source.as_deref().unwrap_or("no source given"));
-                out += &format!("    printed: {}\n    exact:   {}\n", j.claimed.to_text(), j.exact.to_text());
+                out += &format!(
+                    "  {} / {} ({})\n",
+                    j.file,
+                    j.id,
+                    j.source.as_deref().unwrap_or("no source given")
+                );
+                out += &format!(
+                    "    printed: {}\n    exact:   {}\n",
+                    j.claimed.to_text(),
+                    j.exact.to_text()
+                );
                 if let Verdict::KnownErratum(ms) = &j.verdict {
                     for m in ms {
-                        out += &format!("    at {}: {}\n", if m.path.is_empty() { "the value" } else { &m.path }, m.reason);
+                        out += &format!(
+                            "    at {}: {}\n",
+                            if m.path.is_empty() {
+                                "the value"
+                            } else {
+                                &m.path
+                            },
+                            m.reason
+                        );
                     }
                 }
                 out += &format!("    note: {}\n", j.erratum.as_deref().unwrap_or(""));
@@ -198,14 +282,33 @@ impl Render for CheckReport {
         if !failed.is_empty() {
             out += "\nFailures\n";
             for j in &failed {
-                out += &format!("  {} / {} (tolerance {}): claimed {}\n    exact {}\n", j.file, j.id, j.tolerance, j.claimed.to_text(), j.exact.to_text());
+                out += &format!(
+                    "  {} / {} (tolerance {}): claimed {}\n    exact {}\n",
+                    j.file,
+                    j.id,
+                    j.tolerance,
+                    j.claimed.to_text(),
+                    j.exact.to_text()
+                );
                 match &j.verdict {
                     Verdict::Fails(ms) => {
                         for m in ms {
-                            out += &format!("    at {}: claimed {}, exact {}: {}\n", if m.path.is_empty() { "the value" } else { &m.path }, m.claimed, m.exact, m.reason);
+                            out += &format!(
+                                "    at {}: claimed {}, exact {}: {}\n",
+                                if m.path.is_empty() {
+                                    "the value"
+                                } else {
+                                    &m.path
+                                },
+                                m.claimed,
+                                m.exact,
+                                m.reason
+                            );
                         }
                     }
-                    _ => out += "    marked as an erratum, but the claimed value is exactly right: remove the erratum\n",
+                    _ => {
+                        out += "    marked as an erratum, but the claimed value is exactly right: remove the erratum\n"
+                    }
                 }
                 for (k, f) in j.floats.iter().enumerate() {
                     out += &format!(
@@ -227,7 +330,15 @@ impl Render for CheckReport {
             out += "\nErrors of float claims in ULPs (against the exact value at the inputs as the code saw them)\n";
             out += &h.text();
             if let Some((u, j, k)) = errors.iter().max_by(|a, b| a.0.total_cmp(&b.0)) {
-                out += &format!("  worst: {} ulp at {} / {}[{k}]\n", to_decimal_string(&num_rational::BigRational::from_float(*u).unwrap_or_default(), 4), j.file, j.id);
+                out += &format!(
+                    "  worst: {} ulp at {} / {}[{k}]\n",
+                    to_decimal_string(
+                        &num_rational::BigRational::from_float(*u).unwrap_or_default(),
+                        4
+                    ),
+                    j.file,
+                    j.id
+                );
             }
         }
         for r in &self.regressions {
@@ -311,7 +422,15 @@ impl Exporter for CheckReport {
                 failures: judged
                     .iter()
                     .filter(|j| j.verdict.fails_run())
-                    .map(|j| format!("{}: claimed {}, exact {} (tolerance {})", j.id, j.claimed.to_text(), j.exact.to_text(), j.tolerance))
+                    .map(|j| {
+                        format!(
+                            "{}: claimed {}, exact {} (tolerance {})",
+                            j.id,
+                            j.claimed.to_text(),
+                            j.exact.to_text(),
+                            j.tolerance
+                        )
+                    })
                     .collect(),
             })
             .collect();

@@ -79,7 +79,12 @@ pub fn junit_xml(suite: &str, cases: &[JunitCase]) -> String {
         cases.len()
     );
     for c in cases {
-        out += &format!("    <testcase classname=\"tribez.{}\" name=\"{}\" assertions=\"{}\"", xml_escape(suite), xml_escape(&c.name), c.checks);
+        out += &format!(
+            "    <testcase classname=\"tribez.{}\" name=\"{}\" assertions=\"{}\"",
+            xml_escape(suite),
+            xml_escape(&c.name),
+            c.checks
+        );
         if c.failures.is_empty() {
             out += "/>\n";
         } else {
@@ -119,7 +124,16 @@ pub struct UlpHistogram {
 }
 
 /// The bucket labels of [`UlpHistogram`].
-pub const ULP_BUCKETS: [&str; 8] = ["0", "(0, 1/2]", "(1/2, 1]", "(1, 2]", "(2, 4]", "(4, 16]", "(16, 256]", "> 256"];
+pub const ULP_BUCKETS: [&str; 8] = [
+    "0",
+    "(0, 1/2]",
+    "(1/2, 1]",
+    "(1, 2]",
+    "(2, 4]",
+    "(4, 16]",
+    "(16, 256]",
+    "> 256",
+];
 
 impl UlpHistogram {
     /// Count one error of `ulps` ULPs.
@@ -169,6 +183,12 @@ impl UlpHistogram {
 
     /// JSON: bucket label → count.
     pub fn json(&self) -> Json {
-        Json::Object(ULP_BUCKETS.iter().zip(self.counts).map(|(l, c)| (l.to_string(), Json::from(c))).collect())
+        Json::Object(
+            ULP_BUCKETS
+                .iter()
+                .zip(self.counts)
+                .map(|(l, c)| (l.to_string(), Json::from(c)))
+                .collect(),
+        )
     }
 }
