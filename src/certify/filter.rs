@@ -290,6 +290,8 @@ pub struct Filter {
     mu_inflate: f64,
     mu_absolute: f64,
     s_rel: f64,
+    /// `γ_{(m+1)n}` for f64, rounded up.
+    gamma: f64,
 }
 
 /// Reusable buffers for [`Filter::evaluate`] (one per thread).
@@ -322,6 +324,11 @@ impl Filter {
             mu_inflate: 1.0 + 4.0 * k * EPS,
             mu_absolute: nodes * (4 * m + 8) as f64 * TINY,
             s_rel: 4.0 * ((m + 1) * n.max(1)) as f64 * EPS,
+            gamma: {
+                // γ_{(m+1)n} in f64, rounded up generously
+                let ke = ((m + 1) * n) as f64 * EPS;
+                if ke < 0.5 { ke / (1.0 - ke) * (1.0 + 8.0 * EPS) } else { f64::INFINITY }
+            },
         }
     }
 
@@ -379,15 +386,29 @@ impl Filter {
             std::mem::swap(mu, mu2);
             std::mem::swap(s, s2);
         }
+        // The filter's own evaluation is de Casteljau in f64, so its a-priori bound applies too
+        // (bound.rs): |ŷ − P| ≤ γ_{(m+1)n} Σ|c_i|B_i(|λ|) + 2(m+1)η Σ_{j<n} s^j, s = Σ|λ_k|.
+        // The running bound is sharper near cancellation, the a-priori one on well-conditioned
+        // data; both hold, so we take the smaller.
+        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
+        let mut geometric = 0.0;
+        let mut power = 1.0;
+        for _ in 0..self.n {
+            geometric += power;
+            power *= sum_abs;
+        }
+        let underflow = 2.0 * (m + 1) as f64 * TINY * geometric * (1.0 + R) + TINY;
         for c in 0..dim {
+            let s_hi = s[c] * (1.0 + self.s_rel) + self.mu_absolute;
+            let running = mu[c] * self.mu_inflate + self.mu_absolute;
+            let a_priori = self.gamma * s_hi * (1.0 + R) + underflow;
             out[c] = Enclosure {
                 value: v[c],
-                mu: mu[c] * self.mu_inflate + self.mu_absolute,
+                mu: if a_priori.is_finite() { running.min(a_priori) } else { running },
                 s_lo: (s[c] * (1.0 - self.s_rel) - self.mu_absolute).max(0.0),
-                s_hi: s[c] * (1.0 + self.s_rel) + self.mu_absolute,
+                s_hi,
             };
         }
-        let _ = self.n;
     }
 }
 

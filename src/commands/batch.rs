@@ -86,6 +86,7 @@ pub struct FailedRow {
 
 #[derive(Clone, Debug)]
 struct FailedCoord {
+    index: usize,
     decimal: String,
     hex: String,
     exact_seen: BigRational,
@@ -453,6 +454,7 @@ impl Prepared {
                 };
                 let ei = intended.as_ref().map(|v| v[c].clone());
                 coords.push(FailedCoord {
+                    index: c,
                     decimal,
                     hex,
                     intended: ei.as_ref().map(|e| Measures::new(&yq, e, self.precision)),
@@ -803,6 +805,7 @@ fn coord_text(c: &FailedCoord) -> String {
 
 fn coord_json(c: &FailedCoord) -> Json {
     json!({
+        "coordinate": c.index,
         "claimed": {"decimal": c.decimal, "hex": c.hex},
         "exact_at_inputs_as_seen": c.exact_seen.to_string(),
         "error_at_inputs_as_seen": c.seen.to_json(),
@@ -855,16 +858,16 @@ impl Render for BatchReport {
                 "\nworst error: {} ulp at line {line}\n",
                 to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4)
             );
-            for (k, c) in coords.iter().enumerate() {
-                out += &format!("  [{k}] {}\n", coord_text(c));
+            for c in coords {
+                out += &format!("  [{}] {}\n", c.index, coord_text(c));
             }
         }
         if !self.failures.is_empty() {
             out += "\nFailures\n";
             for f in &self.failures {
                 out += &format!("  line {}: {}\n", f.line, f.reason);
-                for (k, c) in f.coords.iter().enumerate() {
-                    out += &format!("    [{k}] {}\n", coord_text(c));
+                for c in &f.coords {
+                    out += &format!("    [{}] {}\n", c.index, coord_text(c));
                 }
             }
             if self.failed as usize > self.failures.len() {
