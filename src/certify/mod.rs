@@ -92,11 +92,15 @@ impl<F: Float> Certifier<F> {
         self.filter.evaluate(&lam64, sc, enc);
         let th = &self.thresholds[usize::from(algorithm == Algorithm::Bernstein)];
         let s: f64 = lam64.iter().map(|x| x.abs()).sum();
-        let decisions: Vec<Decision> = y
+        let mut decisions: Vec<Decision> = y
             .iter()
             .zip(enc.iter())
             .map(|(v, e)| th.decide(v.widen(), e, s))
             .collect();
+        if !decisions.iter().all(|d| *d == Decision::Pass) {
+            self.filter.evaluate_compensated(&lam64, sc, enc);
+            decisions = y.iter().zip(enc.iter()).map(|(v, e)| th.decide(v.widen(), e, s)).collect();
+        }
         if decisions.iter().all(|d| *d == Decision::Pass) {
             return (
                 y,

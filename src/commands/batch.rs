@@ -517,6 +517,23 @@ impl Prepared {
                 }
                 ulps = ulps.max(th.ulps_upper(*float, &enc[c]));
             }
+            if !all_pass && !any_fail {
+                // second stage: the compensated enclosure (error of order ε² Σ|c|B)
+                filter.evaluate_compensated(&lambda, sc, enc);
+                all_pass = true;
+                ulps = 0.0;
+                for (c, y) in claimed.iter().enumerate() {
+                    let Num::Value { float, .. } = y else {
+                        unreachable!()
+                    };
+                    match th.decide(*float, &enc[c], s) {
+                        Decision::Pass => {}
+                        Decision::Fail => any_fail = true,
+                        Decision::Undecided => all_pass = false,
+                    }
+                    ulps = ulps.max(th.ulps_upper(*float, &enc[c]));
+                }
+            }
             if all_pass && !any_fail {
                 return RowOutcome {
                     line,
