@@ -31,11 +31,19 @@ fn main() {
             [u, v, 1.0 - u - v]
         })
         .collect();
+    // plain f64 evaluation: the glam kernel (no allocation per point), as a renderer would run it
+    let dpts = tribez::float::dvec3_points(&net);
     let t = Instant::now();
-    let claimed: Vec<Vec<f64>> = pts.iter().map(|p| tribez::casteljau::evaluate(&net, p)).collect();
+    let claimed: Vec<Vec<f64>> = pts
+        .iter()
+        .map(|p| {
+            let v = tribez::float::casteljau_dvec3(&dpts, n, *p);
+            vec![v.x, v.y, v.z]
+        })
+        .collect();
     let eval = t.elapsed();
     let filter = Filter::new(&net);
-    for tol in ["ulps=4", "cond=64", "bound"] {
+    for tol in ["ulps=4", "cond=9", "correctly_rounded", "bound"] {
         let th = Thresholds::new(&Tolerance::parse(tol).unwrap(), tribez::float::Precision::F64, Algorithm::Casteljau, 2, n);
         let mut scratch = Scratch::default();
         let mut enc = vec![Enclosure::default(); 3];
@@ -45,7 +53,10 @@ fn main() {
             filter.evaluate(p, &mut scratch, &mut enc);
             let s: f64 = p.iter().map(|x| x.abs()).sum();
             if y.iter().zip(&enc).any(|(v, e)| th.decide(*v, e, s) != Decision::Pass) {
-                undecided += 1;
+                filter.evaluate_compensated(p, &mut scratch, &mut enc);
+                if y.iter().zip(&enc).any(|(v, e)| th.decide(*v, e, s) != Decision::Pass) {
+                    undecided += 1;
+                }
             }
         }
         let check = t.elapsed();

@@ -872,7 +872,7 @@ impl Render for BatchReport {
         }
         if let Some((u, line, coords)) = &self.worst {
             out += &format!(
-                "\nworst error: {} ulp at line {line}\n",
+                "\nworst row (largest error bound; filter-decided rows are bounded, not measured): line {line}, exactly {} ulp\n",
                 to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4)
             );
             for c in coords {
