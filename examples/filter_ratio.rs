@@ -16,12 +16,16 @@ use tribez::simplex::Simplex;
 fn main() {
     let n = 3;
     let simplex = Simplex::new(2, n);
-    let coords: Vec<BigRational> = (0..simplex.len() * 3).map(|i| BigRational::new(((i * 37 % 23) as i64 - 11).into(), 7.into())).collect();
+    let coords: Vec<BigRational> = (0..simplex.len() * 3)
+        .map(|i| BigRational::new(((i * 37 % 23) as i64 - 11).into(), 7.into()))
+        .collect();
     let net = net_f64(&ControlNet::new(simplex, 3, coords));
     let count = 1_000_000;
     let mut s = 1u64;
     let mut unit = || {
-        s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (s >> 11) as f64 / (1u64 << 53) as f64
     };
     let pts: Vec<[f64; 3]> = (0..count)
@@ -44,7 +48,13 @@ fn main() {
     let eval = t.elapsed();
     let filter = Filter::new(&net);
     for tol in ["ulps=4", "cond=9", "correctly_rounded", "bound"] {
-        let th = Thresholds::new(&Tolerance::parse(tol).unwrap(), tribez::float::Precision::F64, Algorithm::Casteljau, 2, n);
+        let th = Thresholds::new(
+            &Tolerance::parse(tol).unwrap(),
+            tribez::float::Precision::F64,
+            Algorithm::Casteljau,
+            2,
+            n,
+        );
         let mut scratch = Scratch::default();
         let mut enc = vec![Enclosure::default(); 3];
         let t = Instant::now();
@@ -52,9 +62,16 @@ fn main() {
         for (p, y) in pts.iter().zip(&claimed) {
             filter.evaluate(p, &mut scratch, &mut enc);
             let s: f64 = p.iter().map(|x| x.abs()).sum();
-            if y.iter().zip(&enc).any(|(v, e)| th.decide(*v, e, s) != Decision::Pass) {
+            // a row is settled by the plain stage when every coordinate is decided
+            if y.iter()
+                .zip(&enc)
+                .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
+            {
                 filter.evaluate_compensated(p, &mut scratch, &mut enc);
-                if y.iter().zip(&enc).any(|(v, e)| th.decide(*v, e, s) != Decision::Pass) {
+                if y.iter()
+                    .zip(&enc)
+                    .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
+                {
                     undecided += 1;
                 }
             }

@@ -337,7 +337,11 @@ impl Filter {
             gamma: {
                 // γ_{(m+1)n} in f64, rounded up generously
                 let ke = ((m + 1) * n) as f64 * EPS;
-                if ke < 0.5 { ke / (1.0 - ke) * (1.0 + 8.0 * EPS) } else { f64::INFINITY }
+                if ke < 0.5 {
+                    ke / (1.0 - ke) * (1.0 + 8.0 * EPS)
+                } else {
+                    f64::INFINITY
+                }
             },
         }
     }
@@ -415,14 +419,17 @@ impl Filter {
             out[c] = Enclosure {
                 value: v[c],
                 corr: 0.0,
-                mu: if a_priori.is_finite() { running.min(a_priori) } else { running },
+                mu: if a_priori.is_finite() {
+                    running.min(a_priori)
+                } else {
+                    running
+                },
                 s_lo: (s[c] * (1.0 - self.s_rel) - self.mu_absolute).max(0.0),
                 s_hi,
             };
         }
     }
 }
-
 
 /// Dekker's TwoProduct without FMA: `a·b = p + π` exactly when no split overflows and the
 /// partial products do not underflow (guarded by the caller) ([Higham02] §4.3, Dekker 1971).
@@ -455,13 +462,26 @@ impl Filter {
     /// errors `E_k` the node's exact error is `E = Σ_k π_k + Σ σ + Σ_k λ_k E_k`. We compute it in
     /// f64 (`Ê`) with a running bound `ν ≥ |E − Ê|`: `ν = Σ|λ_k| ν_k + ε Σ|partials| + (m+1)η`
     /// (the same model as the plain running bound). Then `|V + Ê − P| ≤ ν`, of order `ε² Σ|c|B`.
-    /// Guards: a factor of magnitude `≥ 2^995` (the split could overflow) or a non-zero product
+    /// `out` must hold the plain enclosures of [`Filter::evaluate`] at the same `λ`: their
+    /// condition-number bounds are kept. Guards: a factor of magnitude `≥ 2^995` (the split could overflow) or a non-zero product
     /// below `2^-900` (TwoProduct could be inexact) makes the enclosure undecided (NaN).
-    pub fn evaluate_compensated(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+    pub fn evaluate_compensated(
+        &self,
+        lambda: &[f64],
+        scratch: &mut Scratch,
+        out: &mut [Enclosure],
+    ) {
         let (m, dim) = (self.m, self.dim);
         let big = 2f64.powi(995);
         let small = 2f64.powi(-900);
-        let Scratch { v, mu, s, v2, mu2, s2 } = scratch;
+        let Scratch {
+            v,
+            mu,
+            s,
+            v2,
+            mu2,
+            s2,
+        } = scratch;
         // v: values, s: corrections Ê, mu: ν
         v.clear();
         v.extend_from_slice(&self.coords);
@@ -483,7 +503,10 @@ impl Filter {
                     for k in 0..=m {
                         let r = children[k] * dim + c;
                         let (p, pi) = two_product(lambda[k], v[r]);
-                        if p.abs() >= big || (p != 0.0 && p.abs() < small) || (p == 0.0 && lambda[k] != 0.0 && v[r] != 0.0) {
+                        if p.abs() >= big
+                            || (p != 0.0 && p.abs() < small)
+                            || (p == 0.0 && lambda[k] != 0.0 && v[r] != 0.0)
+                        {
                             bad = true;
                         }
                         let term = lambda[k] * s[r];
@@ -512,15 +535,14 @@ impl Filter {
             std::mem::swap(s, s2);
             std::mem::swap(mu, mu2);
         }
-        let mut plain = vec![Enclosure::default(); dim];
-        self.evaluate(lambda, &mut Scratch::default(), &mut plain);
         for c in 0..dim {
-            out[c] = Enclosure {
-                value: v[c],
-                corr: s[c],
-                mu: if bad || !s[c].is_finite() { f64::NAN } else { mu[c] * self.mu_inflate + self.mu_absolute },
-                s_lo: plain[c].s_lo,
-                s_hi: plain[c].s_hi,
+            // s_lo and s_hi (the condition number) stay those of the plain enclosure in `out`
+            out[c].value = v[c];
+            out[c].corr = s[c];
+            out[c].mu = if bad || !s[c].is_finite() {
+                f64::NAN
+            } else {
+                mu[c] * self.mu_inflate + self.mu_absolute
             };
         }
     }
@@ -546,15 +568,51 @@ mod tests {
         use crate::certify::measures::Tolerance;
         // y = 1: the floats below are 2^-53 apart, above 2^-52. P = 1 − 3·2^-55 rounds to
         // 1 − 2^-53, so y = 1 is not correctly rounded (but faithful).
-        let th = Thresholds::new(&Tolerance::CorrectlyRounded, Precision::F64, Algorithm::Casteljau, 2, 1);
-        let e = Enclosure { value: 1.0, corr: -3.0 * 2f64.powi(-55), mu: 2f64.powi(-70), s_lo: 1.0, s_hi: 1.0 };
+        let th = Thresholds::new(
+            &Tolerance::CorrectlyRounded,
+            Precision::F64,
+            Algorithm::Casteljau,
+            2,
+            1,
+        );
+        let e = Enclosure {
+            value: 1.0,
+            corr: -3.0 * 2f64.powi(-55),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
         assert_eq!(th.decide(1.0, &e, 1.0), Decision::Fail);
-        let e = Enclosure { value: 1.0, corr: -2f64.powi(-56), mu: 2f64.powi(-70), s_lo: 1.0, s_hi: 1.0 };
+        let e = Enclosure {
+            value: 1.0,
+            corr: -2f64.powi(-56),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
         assert_eq!(th.decide(1.0, &e, 1.0), Decision::Pass);
-        let e = Enclosure { value: 1.0, corr: 3.0 * 2f64.powi(-55), mu: 2f64.powi(-70), s_lo: 1.0, s_hi: 1.0 };
+        let e = Enclosure {
+            value: 1.0,
+            corr: 3.0 * 2f64.powi(-55),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
         assert_eq!(th.decide(1.0, &e, 1.0), Decision::Pass);
-        let thf = Thresholds::new(&Tolerance::Faithful, Precision::F64, Algorithm::Casteljau, 2, 1);
-        let e = Enclosure { value: 1.0, corr: -3.0 * 2f64.powi(-55), mu: 2f64.powi(-70), s_lo: 1.0, s_hi: 1.0 };
+        let thf = Thresholds::new(
+            &Tolerance::Faithful,
+            Precision::F64,
+            Algorithm::Casteljau,
+            2,
+            1,
+        );
+        let e = Enclosure {
+            value: 1.0,
+            corr: -3.0 * 2f64.powi(-55),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
         assert_eq!(thf.decide(1.0, &e, 1.0), Decision::Pass);
     }
 
@@ -609,12 +667,14 @@ mod tests {
                 let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
                 let p = exact.evaluate(&l, Algorithm::Casteljau);
                 let s = crate::certify::bound::condition(&net.map(|x| exact_f64(*x).unwrap()), &l);
-                let mut comp = vec![Enclosure::default(); 2];
+                let mut comp = out.clone();
                 f.evaluate_compensated(&lam, &mut sc, &mut comp);
                 for c in 0..2 {
                     let e = &comp[c];
                     if e.mu.is_finite() {
-                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap() - &p[c]).abs();
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap()
+                            - &p[c])
+                            .abs();
                         assert!(err <= exact_f64(e.mu).unwrap(), "compensated n={n} {lam:?}");
                         assert!(e.mu <= out[c].mu, "compensated is sharper n={n}");
                     }
@@ -697,7 +757,7 @@ mod tests {
                     let sabs: f64 = lam.iter().map(|x| x.abs()).sum();
                     let mut dec = th.decide(y, &out[0], sabs);
                     if dec == Decision::Undecided {
-                        let mut comp = vec![Enclosure::default(); 1];
+                        let mut comp = out.clone();
                         f.evaluate_compensated(&lam, &mut sc, &mut comp);
                         dec = th.decide(y, &comp[0], sabs);
                     }

@@ -99,7 +99,11 @@ impl<F: Float> Certifier<F> {
             .collect();
         if !decisions.iter().all(|d| *d == Decision::Pass) {
             self.filter.evaluate_compensated(&lam64, sc, enc);
-            decisions = y.iter().zip(enc.iter()).map(|(v, e)| th.decide(v.widen(), e, s)).collect();
+            decisions = y
+                .iter()
+                .zip(enc.iter())
+                .map(|(v, e)| th.decide(v.widen(), e, s))
+                .collect();
         }
         if decisions.iter().all(|d| *d == Decision::Pass) {
             return (
