@@ -23,19 +23,24 @@
 //! command line.
 
 pub mod bernstein;
+pub mod blossom;
 pub mod casteljau;
 pub mod certify;
 pub mod claims;
 pub mod cli;
 pub mod commands;
+pub mod derivative;
 pub mod domain;
+pub mod elevate;
 pub mod error;
 pub mod exact;
 pub mod float;
 pub mod io;
+pub mod join;
 pub mod number;
 pub mod patch;
 pub mod report;
 pub mod scalar;
 pub mod simplex;
+pub mod subdivide;
 pub mod symbolic;

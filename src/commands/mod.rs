@@ -4,9 +4,19 @@ pub mod baseline;
 pub mod batch;
 pub mod certify;
 pub mod check;
+pub mod blossom;
+pub mod construct;
+pub mod derivative;
+pub mod elevate;
 pub mod eval;
+pub mod halve;
+pub mod join;
+pub mod matrix;
 pub mod reproduce;
+pub mod subdivide;
+pub mod subpatch;
 pub mod symbolic;
+pub mod tangent;
 
 use std::io::Write;
 use std::path::Path;
@@ -78,6 +88,15 @@ pub fn main(cli: Cli) -> i32 {
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
+        Command::Blossom(a) => (blossom::run(a), &a.out),
+        Command::Subpatch(a) => (subpatch::run(a), &a.out),
+        Command::Subdivide(a) => (subdivide::run(a), &a.out),
+        Command::Halve(a) => (halve::run(a), &a.out),
+        Command::Elevate(a) => (elevate::run(a), &a.out),
+        Command::Matrix(a) => (matrix::run(a), &a.out),
+        Command::Derivative(a) => (derivative::run(a), &a.out),
+        Command::Tangent(a) => (tangent::run(a), &a.out),
+        Command::Join(a) => (join::run(a), &a.out),
     };
     match result.and_then(|o| emit(&o, out).map(|()| o.success)) {
         Ok(true) => 0,
