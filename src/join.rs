@@ -137,7 +137,9 @@ impl Extension {
     /// The rows for `A`'s net and the fourth vertex `μ` (barycentric w.r.t. `A`'s domain).
     pub fn new(net: &ControlNet<Q>, mu: &[Q]) -> Self {
         // Row ρ is level ρ of the de Casteljau pyramid at μ.
-        Extension { rows: casteljau::levels(net, mu) }
+        Extension {
+            rows: casteljau::levels(net, mu),
+        }
     }
 
     /// The extension's control point at `B`'s multi-index `beta`.

@@ -2,9 +2,9 @@
 
 pub mod baseline;
 pub mod batch;
+pub mod blossom;
 pub mod certify;
 pub mod check;
-pub mod blossom;
 pub mod construct;
 pub mod derivative;
 pub mod elevate;
