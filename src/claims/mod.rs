@@ -20,6 +20,12 @@
 //! erratum = "the printed x-component is wrong: 2uv + 2vw (FORMULAS.md §15)"
 //! ```
 //!
+//! Every claim may carry `tolerance` (`exact` by default; `ulps=N`, `abs=E`, `rel=E`,
+//! `correctly_rounded`, `faithful`, `cond=K`, `bound`: [`crate::certify::measures::Tolerance`])
+//! and `precision = "f64"` or `"f32"`: every number of the claim then denotes the float nearest
+//! its text, the verdict uses the exact value at the inputs as the code saw them, and the error
+//! at the intended inputs is reported beside it ([`FloatLeaf`]).
+//!
 //! A claim marked `erratum` records a value that the source prints and that is known to be
 //! wrong: its disagreement is listed as an erratum and does not fail the run; if it ever
 //! agrees, the stale erratum fails the run.

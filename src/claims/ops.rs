@@ -2,7 +2,7 @@
 //!
 //! | op | inputs | value |
 //! |---|---|---|
-//! | `eval` | `at` (barycentric, summing to 1) or `cartesian` | the point |
+//! | `eval` | `at` (barycentric, summing to 1; with `precision` any sum: the homogeneous form) or `cartesian`; optional `algorithm` (`casteljau`, `bernstein`: for `tolerance = "bound"`) | the point |
 //! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
