@@ -1,11 +1,11 @@
 //! A-priori forward error bounds of tribez's float algorithms, and the condition number.
 //!
-//! **Model** ([Higham02] §2.2): round to nearest, unit roundoff ε (2^-53 for f64, 2^-24 for
+//! **Model** (\[Higham02\] §2.2): round to nearest, unit roundoff ε (2^-53 for f64, 2^-24 for
 //! f32), `fl(x op y) = (x op y)(1 + δ)`, `|δ| ≤ ε`, without underflow or overflow;
 //! `γ_k = kε / (1 − kε)`, and a product of `k` factors `(1 + δ)^{±1}` is `1 + θ_k` with
-//! `|θ_k| ≤ γ_k` ([Higham02] Lemma 3.1).
+//! `|θ_k| ≤ γ_k` (\[Higham02\] Lemma 3.1).
 //!
-//! **de Casteljau** on the m-simplex (FORMULAS.md §14.1, derived as in [MP99] Cor. 3.2; [MP06]
+//! **de Casteljau** on the m-simplex (FORMULAS.md §14.1, derived as in \[MP99\] Cor. 3.2; \[MP06\]
 //! §3 for the simplex): every step computes `((λ_0 A_0 + λ_1 A_1) + …) + λ_m A_m` left to right,
 //! so a term collects at most `m + 1` roundings per level and at most `(m + 1) n` along its path
 //! to the apex. The computed value is `Σ_paths c_i · (product of the path's weights) · (1 + θ)`,
@@ -15,7 +15,7 @@
 //!
 //! with `P` the homogeneous form at the exact values of the float inputs (they need not sum to 1).
 //! For `λ ≥ 0` this is FORMULAS' `γ_{3n} Σ|c_i|B_i(u,v,w)` on the triangle. Underflow adds at most
-//! `η` (2^-1075 or 2^-150) per product ([Higham02] (2.8)); those absolute errors are carried to
+//! `η` (2^-1075 or 2^-150) per product (\[Higham02\] (2.8)); those absolute errors are carried to
 //! the apex by the later steps with weight at most `s = Σ|λ_k|` per level, so we add
 //! `2 (m+1) η Σ_{j<n} s^j` (the factor 2 covers the roundings of the carrying steps).
 //!
@@ -23,7 +23,7 @@
 //! below 2^53 resp. 2^24), multiplied by `λ_0^{α_0}, …, λ_m^{α_m}` (`m + 1` products; the power
 //! `λ^e` is computed by `e − 1` roundings), times `c_α` (one product), then the `N = C(n+m, m)`
 //! terms are added left to right (recursive summation: the first term sees `N − 1` roundings,
-//! [Higham02] §4.2). Every term is therefore `c_α B_α(λ)(1 + θ_K)` with
+//! \[Higham02\] §4.2). Every term is therefore `c_α B_α(λ)(1 + θ_K)` with
 //! `K = 1 + (m + 1) + n + 1 + (N − 1) = N + n + m + 2`, and
 //!
 //! `|fl(p) − P(λ)| ≤ γ_{N+n+m+2} Σ_α |c_α| B_α(|λ|)`   (no underflow or overflow).
@@ -58,7 +58,7 @@ pub fn roundings(algorithm: Algorithm, m: usize, n: usize) -> usize {
     }
 }
 
-/// The condition number of each coordinate: `Σ_i |c_i| B_i(|λ_0|, …, |λ_m|)` (exact; [FR87]).
+/// The condition number of each coordinate: `Σ_i |c_i| B_i(|λ_0|, …, |λ_m|)` (exact; \[FR87\]).
 pub fn condition(net: &ControlNet<BigRational>, lambda: &[BigRational]) -> Vec<BigRational> {
     let abs_net = net.map(Signed::abs);
     let abs_lambda: Vec<BigRational> = lambda.iter().map(Signed::abs).collect();
@@ -114,7 +114,7 @@ mod tests {
     #[test]
     fn rounding_counts() {
         assert_eq!(roundings(Algorithm::Casteljau, 2, 3), 9); // γ_{3n}, FORMULAS §14.1
-        assert_eq!(roundings(Algorithm::Casteljau, 1, 4), 8); // curves: γ_{2n} [MP99]
+        assert_eq!(roundings(Algorithm::Casteljau, 1, 4), 8); // curves: γ_{2n} \[MP99\]
         assert_eq!(roundings(Algorithm::Bernstein, 2, 3), 10 + 3 + 2 + 2);
     }
 

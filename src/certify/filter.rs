@@ -2,7 +2,7 @@
 //!
 //! [`Filter`] evaluates the patch (its control points as the claimed code saw them: floats) in
 //! f64 by de Casteljau and carries, per node, the running error bound of FORMULAS.md §14.2
-//! (after [Higham02] §3.1, "running error analysis"), extended to any sign of `λ` and any m:
+//! (after \[Higham02\] §3.1, "running error analysis"), extended to any sign of `λ` and any m:
 //!
 //! `μ = Σ_k |λ_k| μ_k + ε (Σ_k |p_k| + Σ_{k≥1} |s_k|) + (m + 1) η`,
 //!
@@ -432,7 +432,7 @@ impl Filter {
 }
 
 /// Dekker's TwoProduct without FMA: `a·b = p + π` exactly when no split overflows and the
-/// partial products do not underflow (guarded by the caller) ([Higham02] §4.3, Dekker 1971).
+/// partial products do not underflow (guarded by the caller) (\[Higham02\] §4.3, Dekker 1971).
 #[inline]
 fn two_product(a: f64, b: f64) -> (f64, f64) {
     const SPLIT: f64 = 134_217_729.0; // 2^27 + 1

@@ -11,7 +11,7 @@
 //! | `rel=E` | `|y − q| ≤ E · |q|` |
 //! | `correctly_rounded` | `y = RN_p(q)` (nearest, ties to even) |
 //! | `faithful` | `y` is one of the two floats of precision `p` bracketing `q` (`q` itself if it is one) |
-//! | `cond=K` | `|y − q| ≤ K · ε_p · Σ_i |c_i| B_i(|λ|)` (ε_p = 2^-53 or 2^-24; the condition number of [FR87]) |
+//! | `cond=K` | `|y − q| ≤ K · ε_p · Σ_i |c_i| B_i(|λ|)` (ε_p = 2^-53 or 2^-24; the condition number of \[FR87\]) |
 //! | `bound` | `|y − q| ≤` the proven a-priori bound of the named algorithm ([`super::bound`]) |
 //!
 //! `exact` is the case `abs=0`: one comparison path for every tolerance.
