@@ -28,6 +28,10 @@ pub enum Command {
     Symbolic(commands::symbolic::Args),
     /// Write the graph (x, y, f(x, y)) of a functional patch as a parametric patch file.
     Graph(commands::graph::Args),
+    /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
+    Check(commands::check::Args),
+    /// Run tribez's own float algorithms and show every error lies within its proven bound.
+    Certify(commands::certify::Args),
     /// The blossom (polar form) b[u1, ..., un] of a patch: exactly n barycentric arguments.
     Blossom(commands::blossom::Args),
     /// The same polynomial over any sub-triangle (sub-simplex), as a patch file.
