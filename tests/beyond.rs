@@ -632,3 +632,39 @@ fn subdivide_a_rational_patch() {
         .success()
         .stdout(predicate::str::contains("[pieces.patch.weights]"));
 }
+
+#[test]
+fn float_claims_on_rational_and_s_patches() {
+    tribez()
+        .arg("check")
+        .arg(fixture("float.claims.toml"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("octant-f64-python"))
+        .stdout(predicate::str::contains("2 passed"));
+    // a claimed value 1000 ulps off fails (exit 1)
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(fixture("octant_quartic.toml"), dir.path().join("o.toml")).unwrap();
+    write(
+        dir.path(),
+        "bad.claims.toml",
+        "patch = \"o.toml\"\n[[claim]]\nid = \"b\"\nop = \"eval\"\nat = [\"1/3\", \"1/4\", \"5/12\"]\nprecision = \"f64\"\ntolerance = \"ulps=8\"\nexpect = [\"0.60678167757298\", \"0.5764425936942295\", \"0.5472932778108268\"]\n",
+    );
+    tribez()
+        .arg("check")
+        .arg(dir.path().join("bad.claims.toml"))
+        .assert()
+        .code(1);
+    // no proven bound for rational patches: `bound` is refused (exit 2)
+    write(
+        dir.path(),
+        "bound.claims.toml",
+        "patch = \"o.toml\"\n[[claim]]\nid = \"b\"\nop = \"eval\"\nat = [\"1/3\", \"1/4\", \"5/12\"]\nprecision = \"f64\"\ntolerance = \"bound\"\nexpect = [\"0.6\", \"0.5\", \"0.5\"]\n",
+    );
+    tribez()
+        .arg("check")
+        .arg(dir.path().join("bound.claims.toml"))
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("needs a proven error bound"));
+}

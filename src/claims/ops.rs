@@ -340,6 +340,11 @@ pub fn eval_float(
 ) -> Result<FloatEval, InputError> {
     let table = file.doc.table(&claim.node, &claim.id)?;
     let inputs = Inputs { file, claim, table };
+    match file.any_patch_for(claim)? {
+        AnyPatch::Rational(r) => return beyond::eval_float_rational(&inputs, r, p),
+        AnyPatch::SPatch(s) => return beyond::eval_float_spatch(&inputs, s, p),
+        AnyPatch::Bezier(_) | AnyPatch::Functional(_) => {}
+    }
     let patch = inputs.patch()?;
     let algorithm = match inputs.opt_string("algorithm")?.as_deref() {
         None | Some("casteljau") => Algorithm::Casteljau,
@@ -866,6 +871,132 @@ mod beyond {
                 unreachable!("handled by the plain `eval`")
             }
         }
+    }
+
+    /// Float claims (`precision`) on rational patches and S-patches are judged against the exact
+    /// value at the inputs as the code saw them (point, control points, weights, polygon rounded
+    /// to the precision) and at the intended inputs. No a-priori bound is proven for these kinds,
+    /// so the `cond` and `bound` tolerances are refused. The condition shown is
+    /// `Σ|w c|B(|λ|) / |Σ w B(λ)|` for a rational patch and `Σ|P_α|B_α(λ)` (at the exact
+    /// Wachspress coordinates of the rounded point) for an S-patch.
+    fn refuse_bound_tolerances(inputs: &Inputs<'_>) -> Result<(), InputError> {
+        let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+        if tolerance.needs_condition() {
+            return Err(inputs.error(
+                "tolerance",
+                format!("tolerance `{tolerance}` needs a proven error bound, which tribez has for polynomial patches only"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn rounded(
+        inputs: &Inputs<'_>,
+        xs: &[BigRational],
+        p: crate::float::Precision,
+        name: &str,
+    ) -> Result<Vec<BigRational>, InputError> {
+        xs.iter()
+            .map(|q| crate::certify::measures::as_float(q, p))
+            .collect::<Option<_>>()
+            .ok_or_else(|| inputs.error(name, format!("a number overflows {}", p.name())))
+    }
+
+    /// The float view of an `eval` claim on a rational patch.
+    pub fn eval_float_rational(
+        inputs: &Inputs<'_>,
+        r: &crate::rational::RationalPatch,
+        p: crate::float::Precision,
+    ) -> Result<super::FloatEval, InputError> {
+        refuse_bound_tolerances(inputs)?;
+        let intended = inputs.point(&r.patch)?;
+        let key = if inputs.get("at").is_some() {
+            "at"
+        } else {
+            "cartesian"
+        };
+        let seen_inputs = match inputs.opt_rationals("cartesian")? {
+            Some(x) => {
+                let xr = rounded(inputs, &x, p, "cartesian")?;
+                r.patch
+                    .domain_or_reference()
+                    .barycentric(&xr)
+                    .map_err(|e| inputs.error("cartesian", e.to_string()))?
+            }
+            None => rounded(inputs, &intended, p, "at")?,
+        };
+        let h = r.homogeneous();
+        let hr = h.map(|q| crate::certify::measures::as_float(q, p));
+        if hr.coords().iter().any(Option::is_none) {
+            return Err(inputs.error(
+                "patch",
+                format!("a weighted control point overflows {}", p.name()),
+            ));
+        }
+        let hr = hr.map(|q| q.clone().unwrap_or_default());
+        let seen = crate::rational::RationalPatch::from_homogeneous(&hr, &r.patch)
+            .map_err(|e| inputs.error("patch", format!("rounded to {}: {e}", p.name())))?;
+        let exact_seen = seen
+            .evaluate(&seen_inputs)
+            .map_err(|e| inputs.error(key, format!("as the code saw it: {e}")))?;
+        let exact_intended = r
+            .evaluate(&intended)
+            .map_err(|e| inputs.error(key, e.to_string()))?;
+        let numer = crate::certify::bound::condition(&seen.numerator(), &seen_inputs);
+        let w = crate::exact::ExactEvaluator::new(&seen.denominator())
+            .evaluate(&seen_inputs, crate::exact::Algorithm::Casteljau)
+            .remove(0);
+        let condition = numer
+            .iter()
+            .map(|c| c / num_traits::Signed::abs(&w))
+            .collect();
+        let d = exact_seen.len();
+        Ok(super::FloatEval {
+            seen_inputs,
+            exact_seen,
+            exact_intended,
+            condition,
+            bound: vec![None; d],
+        })
+    }
+
+    /// The float view of an `eval` claim on an S-patch (Cartesian point).
+    pub fn eval_float_spatch(
+        inputs: &Inputs<'_>,
+        s: &crate::spatch::SPatch,
+        p: crate::float::Precision,
+    ) -> Result<super::FloatEval, InputError> {
+        refuse_bound_tolerances(inputs)?;
+        let x = inputs.rationals("cartesian")?;
+        let (_, exact_intended) = s
+            .evaluate(&x)
+            .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+        let seen_inputs = rounded(inputs, &x, p, "cartesian")?;
+        let mut verts = Vec::new();
+        for v in s.polygon.vertices() {
+            verts.push(rounded(inputs, v, p, "patch")?);
+        }
+        let polygon = crate::spatch::Polygon::new(verts).map_err(|e| {
+            inputs.error("patch", format!("the polygon rounded to {}: {e}", p.name()))
+        })?;
+        let net = s.net.map(|q| crate::certify::measures::as_float(q, p));
+        if net.coords().iter().any(Option::is_none) {
+            return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+        }
+        let seen = crate::spatch::SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
+            .map_err(|e| inputs.error("patch", e.to_string()))?;
+        let (lambda, exact_seen) = seen
+            .evaluate(&seen_inputs)
+            .map_err(|e| inputs.error("cartesian", format!("as the code saw it: {e}")))?;
+        let condition = crate::certify::bound::condition(&seen.net, &lambda);
+        let d = exact_seen.len();
+        Ok(super::FloatEval {
+            seen_inputs,
+            exact_seen,
+            exact_intended,
+            condition,
+            bound: vec![None; d],
+        })
     }
 
     /// The residual of an implicit equation on a patch of any kind.
