@@ -30,7 +30,7 @@ pub enum Command {
     Graph(commands::graph::Args),
     /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
     Check(commands::check::Args),
-    /// Run tribez's own float algorithms and show every error lies within its proven bound.
+    /// Run tribez's own float algorithms (Bézier, rational, S-patch) and judge their errors against proven bounds.
     Certify(commands::certify::Args),
     /// The blossom (polar form) b[u1, ..., un] of a patch: exactly n barycentric arguments.
     Blossom(commands::blossom::Args),

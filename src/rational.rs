@@ -193,9 +193,7 @@ impl RationalPatch {
     /// `λ`, one division at the end (what a float implementation does).
     pub fn evaluate_float<F: Float + std::ops::Div<Output = F>>(&self, lambda: &[F]) -> Vec<F> {
         let h: ControlNet<F> = self.homogeneous().map(F::round);
-        let v = casteljau::evaluate(&h, lambda);
-        let (w, x) = v.split_last().expect("d + 1 coordinates");
-        x.iter().map(|&c| c / *w).collect()
+        divide_last(&casteljau::evaluate(&h, lambda))
     }
 
     /// The homogeneous components `(X_1, …, X_d, W)` as polynomials in the barycentric
@@ -212,6 +210,12 @@ impl RationalPatch {
         let (w, x) = comps.split_last().expect("d + 1 coordinates");
         homogenised_residual(f, x, w)
     }
+}
+
+/// The final step of the float path: `(X_1, …, X_d, W) ↦ (X_1/W, …, X_d/W)`, one division each.
+pub fn divide_last<F: Float + std::ops::Div<Output = F>>(v: &[F]) -> Vec<F> {
+    let (w, x) = v.split_last().expect("d + 1 coordinates");
+    x.iter().map(|&c| c / *w).collect()
 }
 
 /// `W^k F(X/W)` for `F` of degree `k` in `X.len()` variables: each term `c X^e` becomes

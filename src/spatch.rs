@@ -237,6 +237,12 @@ fn normalise<T: Scalar + Div<Output = T>>(omega: Vec<T>) -> Vec<T> {
     omega.into_iter().map(|w| w / sum.clone()).collect()
 }
 
+/// The float Wachspress coordinates of [`SPatch::evaluate_float`]: the doubled product form
+/// [`doubled_omega`] in `F`, then one division by their sum each.
+pub fn wachspress_float<F: Float + Div<Output = F>>(vertices: &[[F; 2]], p: &[F; 2]) -> Vec<F> {
+    normalise(doubled_omega(vertices, p))
+}
+
 /// An S-patch: a convex polygon and a Bézier simplex of dimension `N − 1` (depth = degree).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SPatch {
@@ -285,7 +291,7 @@ impl SPatch {
             .iter()
             .map(|v| [F::round(&v[0]), F::round(&v[1])])
             .collect();
-        let lambda = normalise(doubled_omega(&verts, p));
+        let lambda = wachspress_float(&verts, p);
         casteljau::evaluate(&self.net.map(F::round), &lambda)
     }
 

@@ -95,6 +95,133 @@ pub fn a_priori(
     Some(b)
 }
 
+/// The double rounding threshold `η` (2^-1075 for f64, 2^-150 for f32): the largest absolute
+/// error of one rounding in the subnormal range (\[Higham02\] (2.8)).
+pub fn eta(p: Precision) -> BigRational {
+    match p {
+        Precision::F64 => pow2(-1075),
+        Precision::F32 => pow2(-150),
+    }
+}
+
+/// The unit roundoff `ε` exactly.
+pub fn epsilon(p: Precision) -> BigRational {
+    pow2(i64::from(p.unit_roundoff_log2()))
+}
+
+/// **Rational patches** (homogeneous de Casteljau, one division): the a-posteriori bound of
+/// `tribez certify`.
+///
+/// *Inputs as the code saw them.* The float code ([`crate::rational::RationalPatch::evaluate_float`])
+/// rounds the homogeneous net once: `â_i = RN(w_i c_i)` (each coordinate of the exact product
+/// rounded) and `ŵ_i = RN(w_i)`, and takes the float point `λ̂`. Everything below is about the
+/// exact values of these floats: `N(λ̂) = Σ â_i B_i(λ̂)` (per coordinate), `D(λ̂) = Σ ŵ_i B_i(λ̂)`,
+/// and `q = N/D`, the exact value the code should produce.
+///
+/// *Numerator and denominator.* The code runs de Casteljau on the `(d+1)`-dimensional net
+/// `(â_i, ŵ_i)`, so §14.1 (module documentation, [`a_priori`]) bounds each computed coordinate:
+/// `|N̂ − N| ≤ e_N = γ_K Σ|â_i| B_i(|λ̂|)` and `|D̂ − D| ≤ e_D = γ_K Σ|ŵ_i| B_i(|λ̂|)`,
+/// `K = (m+1)n` (plus the underflow term of [`a_priori`]).
+///
+/// *The quotient.* If `|D̂| > e_D`, then `D ≠ 0` and has the sign of `D̂`, and the identity
+/// `N̂/D̂ − N/D = (N̂ − N)/D̂ − q (D̂ − D)/D̂` gives
+///
+/// `|N̂/D̂ − q| ≤ (e_N + |q| e_D) / |D̂|`.
+///
+/// *The division.* `ŷ = fl(N̂/D̂)` is `x(1 + δ)` with `|δ| ≤ ε`, or (subnormal result) `x + η'`
+/// with `|η'| ≤ η`, where `x = N̂/D̂`. In the first case `x = ŷ/(1 + δ)`, so
+/// `|ŷ − x| = |δ| |ŷ| / |1 + δ| ≤ ε |ŷ| / (1 − ε)`; in the second `|ŷ − x| ≤ η`. Hence
+///
+/// `|ŷ − q| ≤ (e_N + |q| e_D)/|D̂| + ε|ŷ|/(1 − ε) + η`.
+///
+/// Returns `None` when `|D̂| ≤ e_D` (the sign of the denominator is not certain: outside the
+/// hypothesis) or when `Kε ≥ 1`. `e_num` are the bounds `e_N` per coordinate, `e_den` is `e_D`,
+/// `q` the exact values, `d_hat` the computed denominator and `y_hat` the computed quotients.
+pub fn rational_a_posteriori(
+    p: Precision,
+    e_num: &[BigRational],
+    e_den: &BigRational,
+    q: &[BigRational],
+    d_hat: &BigRational,
+    y_hat: &[BigRational],
+) -> Option<Vec<BigRational>> {
+    let dabs = d_hat.abs();
+    if dabs <= *e_den {
+        return None;
+    }
+    let eps = epsilon(p);
+    let div = &eps / (BigRational::one() - &eps);
+    let eta = eta(p);
+    Some(
+        e_num
+            .iter()
+            .zip(q)
+            .zip(y_hat)
+            .map(|((en, qc), yc)| (en + qc.abs() * e_den) / &dabs + &div * yc.abs() + &eta)
+            .collect(),
+    )
+}
+
+/// **Rational patches**: the a-priori form of the same bound, for claims (which give the
+/// quotient `ŷ` but not the computed denominator `D̂`). With `D = D(λ̂)` exact and `|D| > e_D`,
+/// `|D̂| ≥ |D| − e_D > 0`, so `E_1 = (e_N + |q| e_D)/(|D| − e_D)` bounds `|N̂/D̂ − q|`, hence
+/// `|N̂/D̂| ≤ |q| + E_1` and the division adds at most `ε(|q| + E_1) + η`:
+///
+/// `|ŷ − q| ≤ E_1 + ε(|q| + E_1) + η`.
+///
+/// `None` when `|D| ≤ e_D`.
+pub fn rational_a_priori(
+    p: Precision,
+    e_num: &[BigRational],
+    e_den: &BigRational,
+    q: &[BigRational],
+    d: &BigRational,
+) -> Option<Vec<BigRational>> {
+    let gap = d.abs() - e_den;
+    if !gap.is_positive() {
+        return None;
+    }
+    let eps = epsilon(p);
+    let eta = eta(p);
+    Some(
+        e_num
+            .iter()
+            .zip(q)
+            .map(|(en, qc)| {
+                let e1 = (en + qc.abs() * e_den) / &gap;
+                &e1 + &eps * (qc.abs() + &e1) + &eta
+            })
+            .collect(),
+    )
+}
+
+/// The condition number of a rational patch's coordinate `c` at `λ` (with respect to relative
+/// perturbations of the homogeneous net, the analogue of `Σ|c_i|B_i(|λ|)`):
+///
+/// `κ_c = (Σ|â_{i,c}| B_i(|λ|) + |q_c| Σ|ŵ_i| B_i(|λ|)) / |D(λ)|`,
+///
+/// so that the bound above is `γ_K κ_c · |D|/|D̂|` plus the division's rounding; `cond=K` on a
+/// rational claim means `|ŷ − q| ≤ K ε κ_c`. `None` when `D(λ) = 0`. `homogeneous` is the net
+/// `(â_i, ŵ_i)` (weight last).
+pub fn rational_condition(
+    homogeneous: &ControlNet<BigRational>,
+    lambda: &[BigRational],
+) -> Option<Vec<BigRational>> {
+    let h = ExactEvaluator::new(homogeneous).evaluate(lambda, Algorithm::Casteljau);
+    let (d, n) = h.split_last()?;
+    if d.is_zero() {
+        return None;
+    }
+    let cond = condition(homogeneous, lambda);
+    let (cd, cn) = cond.split_last()?;
+    Some(
+        n.iter()
+            .zip(cn)
+            .map(|(nc, cc)| (cc + (nc / d).abs() * cd) / d.abs())
+            .collect(),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -116,6 +243,75 @@ mod tests {
         assert_eq!(roundings(Algorithm::Casteljau, 2, 3), 9); // γ_{3n}, FORMULAS §14.1
         assert_eq!(roundings(Algorithm::Casteljau, 1, 4), 8); // curves: γ_{2n} \[MP99\]
         assert_eq!(roundings(Algorithm::Bernstein, 2, 3), 10 + 3 + 2 + 2);
+    }
+
+    #[test]
+    fn rational_bounds_by_hand() {
+        let r = |t: &str| q(t).unwrap();
+        // (e_N + |q| e_D)/|D̂| + ε|ŷ|/(1−ε) + η with e_N = 1/100, e_D = 1/1000, q = −2, D̂ = −1/2, ŷ = 3
+        let b = rational_a_posteriori(
+            Precision::F64,
+            &[r("1/100")],
+            &r("1/1000"),
+            &[r("-2")],
+            &r("-1/2"),
+            &[r("3")],
+        )
+        .unwrap();
+        assert_eq!(
+            b[0],
+            r("24/1000") + r("3/9007199254740991") + crate::number::pow2(-1075)
+        );
+        // |D̂| ≤ e_D: the denominator's sign is not certain, no bound
+        assert!(
+            rational_a_posteriori(
+                Precision::F64,
+                &[r("1")],
+                &r("1"),
+                &[r("0")],
+                &r("1"),
+                &[r("0")]
+            )
+            .is_none()
+        );
+        // a priori: E1 = (1/100 + 2/1000)/(1/2 − 1/1000), then + ε(2 + E1) + η
+        let e1 = r("12/1000") / r("499/1000");
+        let a = rational_a_priori(
+            Precision::F32,
+            &[r("1/100")],
+            &r("1/1000"),
+            &[r("2")],
+            &r("1/2"),
+        )
+        .unwrap();
+        assert_eq!(
+            a[0],
+            &e1 + crate::number::pow2(-24) * (r("2") + &e1) + crate::number::pow2(-150)
+        );
+        assert!(
+            rational_a_priori(Precision::F32, &[r("0")], &r("1"), &[r("0")], &r("-1")).is_none()
+        );
+    }
+
+    #[test]
+    fn rational_condition_by_hand() {
+        // m = 1, n = 1: (w c, w) = (1, 1), (−4, 2) at λ = (1/2, 1/2): N = −3/2, D = 3/2, q = −1,
+        // Σ|wc|B = 5/2, Σ|w|B = 3/2, κ = (5/2 + 3/2)/(3/2) = 8/3
+        let net = ControlNet::from_points(
+            1,
+            1,
+            &[
+                vec![q("1").unwrap(), q("1").unwrap()],
+                vec![q("-4").unwrap(), q("2").unwrap()],
+            ],
+        );
+        let half = q("1/2").unwrap();
+        assert_eq!(
+            rational_condition(&net, &[half.clone(), half]).unwrap(),
+            vec![q("8/3").unwrap()]
+        );
+        // D = 0 at λ = (2, −1): 2·1 − 1·2 = 0
+        assert!(rational_condition(&net, &[q("2").unwrap(), q("-1").unwrap()]).is_none());
     }
 
     #[test]

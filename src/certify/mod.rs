@@ -13,6 +13,7 @@
 //! * [`filter`]: the floating-point filter: an f64 de Casteljau with a rigorous running error
 //!   bound (FORMULAS.md §14.2) that decides the clear claims without big integers.
 
+pub mod beyond;
 pub mod bound;
 pub mod filter;
 pub mod measures;

@@ -875,16 +875,23 @@ mod beyond {
 
     /// Float claims (`precision`) on rational patches and S-patches are judged against the exact
     /// value at the inputs as the code saw them (point, control points, weights, polygon rounded
-    /// to the precision) and at the intended inputs. No a-priori bound is proven for these kinds,
-    /// so the `cond` and `bound` tolerances are refused. The condition shown is
-    /// `Σ|w c|B(|λ|) / |Σ w B(λ)|` for a rational patch and `Σ|P_α|B_α(λ)` (at the exact
-    /// Wachspress coordinates of the rounded point) for an S-patch.
+    /// to the precision; for a rational patch the homogeneous net `(w c, w)` is what is rounded)
+    /// and at the intended inputs.
+    ///
+    /// Rational patches: `bound` is the proven a-priori bound
+    /// [`crate::certify::bound::rational_a_priori`] of homogeneous de Casteljau plus one division,
+    /// and `cond=K` means `|y − q| ≤ K ε κ` with the rational condition number
+    /// [`crate::certify::bound::rational_condition`].
+    ///
+    /// S-patches: the float Wachspress coordinates have no proven bound, so `cond` and `bound` are
+    /// refused; the condition shown is `Σ|P_α|B_α(λ)` at the exact Wachspress coordinates of the
+    /// rounded point.
     fn refuse_bound_tolerances(inputs: &Inputs<'_>) -> Result<(), InputError> {
         let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
         if tolerance.needs_condition() {
             return Err(inputs.error(
                 "tolerance",
-                format!("tolerance `{tolerance}` needs a proven error bound, which tribez has for polynomial patches only"),
+                format!("tolerance `{tolerance}` needs a proven error bound, which tribez has for polynomial and rational patches only (no proven bound for an S-patch's float Wachspress coordinates)"),
             ));
         }
         Ok(())
@@ -908,7 +915,6 @@ mod beyond {
         r: &crate::rational::RationalPatch,
         p: crate::float::Precision,
     ) -> Result<super::FloatEval, InputError> {
-        refuse_bound_tolerances(inputs)?;
         let intended = inputs.point(&r.patch)?;
         let key = if inputs.get("at").is_some() {
             "at"
@@ -942,21 +948,36 @@ mod beyond {
         let exact_intended = r
             .evaluate(&intended)
             .map_err(|e| inputs.error(key, e.to_string()))?;
-        let numer = crate::certify::bound::condition(&seen.numerator(), &seen_inputs);
-        let w = crate::exact::ExactEvaluator::new(&seen.denominator())
+        use crate::certify::bound;
+        let condition = bound::rational_condition(&hr, &seen_inputs)
+            .ok_or_else(|| inputs.error(key, "the denominator vanishes as the code saw it"))?;
+        let (m, n) = (hr.m(), hr.degree());
+        let errs: Option<Vec<BigRational>> = bound::condition(&hr, &seen_inputs)
+            .iter()
+            .map(|s| bound::a_priori(crate::exact::Algorithm::Casteljau, p, m, n, s, &seen_inputs))
+            .collect();
+        let den = crate::exact::ExactEvaluator::new(&seen.denominator())
             .evaluate(&seen_inputs, crate::exact::Algorithm::Casteljau)
             .remove(0);
-        let condition = numer
-            .iter()
-            .map(|c| c / num_traits::Signed::abs(&w))
-            .collect();
+        let bounds = errs.and_then(|e| {
+            let (e_den, e_num) = e.split_last()?;
+            bound::rational_a_priori(p, e_num, e_den, &exact_seen, &den)
+        });
+        let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+        if tolerance == crate::certify::measures::Tolerance::Bound && bounds.is_none() {
+            return Err(inputs.error(
+                "tolerance",
+                format!("no bound at this point: the denominator's error bound e_D is not below |D| in {} (its sign is not certain)", p.name()),
+            ));
+        }
         let d = exact_seen.len();
+        let bound = bounds.map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect());
         Ok(super::FloatEval {
             seen_inputs,
             exact_seen,
             exact_intended,
             condition,
-            bound: vec![None; d],
+            bound,
         })
     }
 

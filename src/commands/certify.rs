@@ -1,6 +1,7 @@
 //! `tribez certify`: run tribez's own float algorithms (de Casteljau and the direct Bernstein
 //! form, generic code in f64 and f32) and judge them against the exact values and their proven
-//! a-priori error bounds ([`crate::certify::bound`]).
+//! a-priori error bounds ([`crate::certify::bound`]). Rational patches and S-patches:
+//! [`super::certify_beyond`].
 
 use std::path::PathBuf;
 
@@ -16,9 +17,9 @@ use crate::certify::measures::Measures;
 use crate::cli::OutputArgs;
 use crate::exact::Algorithm;
 use crate::float::{Float, Precision};
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
 use crate::io::points::read_points;
-use crate::patch::Patch;
+use crate::patch::{AnyPatch, Patch};
 use crate::report::{Exporter, JunitCase, Render, junit_xml};
 
 /// Arguments of `tribez certify`.
@@ -26,10 +27,12 @@ use crate::report::{Exporter, JunitCase, Render, junit_xml};
 pub struct Args {
     /// The patch file.
     pub patch: PathBuf,
-    /// Barycentric points (CSV or JSON, exact numbers); they are rounded to the precision.
+    /// Barycentric points (CSV or JSON, exact numbers; Cartesian x,y for an S-patch); they are
+    /// rounded to the precision.
     #[arg(long, value_name = "FILE", conflicts_with = "random")]
     pub points: Option<PathBuf>,
-    /// Certify at N random points (inside, near the edges and outside the triangle).
+    /// Certify at N random points (inside, near the edges and outside the triangle; for an
+    /// S-patch inside the polygon, near its edges and vertices).
     #[arg(long, value_name = "N")]
     pub random: Option<usize>,
     /// Seed of --random (printed, with the command that reproduces the run).
@@ -56,18 +59,22 @@ pub struct Args {
 
 /// One algorithm in one precision, over all points.
 pub struct Row {
-    algorithm: Algorithm,
-    precision: Precision,
-    cases: usize,
-    max_ulps: f64,
-    worst_point: Option<Vec<BigRational>>,
-    correctly_rounded: usize,
-    max_condition: f64,
-    max_relative_condition: f64,
-    max_bound_ratio: f64,
-    violations: Vec<String>,
-    outside_hypothesis: usize,
-    gamma_k: usize,
+    pub(super) algorithm: Algorithm,
+    pub(super) precision: Precision,
+    pub(super) cases: usize,
+    pub(super) max_ulps: f64,
+    pub(super) worst_point: Option<Vec<BigRational>>,
+    pub(super) correctly_rounded: usize,
+    pub(super) max_condition: f64,
+    pub(super) max_relative_condition: f64,
+    pub(super) max_bound_ratio: f64,
+    pub(super) violations: Vec<String>,
+    pub(super) outside_hypothesis: usize,
+    pub(super) gamma_k: usize,
+    /// The bound column's text when it is not `γ_K` (rational patches, S-patches).
+    pub(super) label: Option<String>,
+    /// Further lines printed under the table.
+    pub(super) notes: Vec<String>,
 }
 
 /// The certification report.
@@ -77,6 +84,8 @@ pub struct CertifyReport {
     random: Option<(usize, u64, String)>,
     rows: Vec<Row>,
     regressions: Vec<String>,
+    /// The bound's explanation line (the patch kind's).
+    note: String,
 }
 
 fn alg_name(a: Algorithm) -> &'static str {
@@ -218,6 +227,8 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
         violations: Vec::new(),
         outside_hypothesis: 0,
         gamma_k: roundings(algorithm, m, n),
+        label: None,
+        notes: Vec::new(),
     };
     let mut coords = 0;
     for (i, c) in cases.into_iter().enumerate() {
@@ -239,8 +250,7 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
 
 /// Run `tribez certify`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let patch = read_patch(&args.patch)?;
-    let m = patch.net.m();
+    let any = read_any_patch(&args.patch)?;
     let precisions = match args.precision.as_str() {
         "all" => vec![Precision::F64, Precision::F32],
         p => vec![
@@ -248,6 +258,30 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
         ],
     };
+    let patch = match any {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
+        AnyPatch::Rational(r) => {
+            let (rows, points, random) = super::certify_beyond::rational(args, &r, &precisions)?;
+            return finish(
+                args,
+                rows,
+                points,
+                random,
+                super::certify_beyond::RATIONAL_NOTE,
+            );
+        }
+        AnyPatch::SPatch(sp) => {
+            let (rows, points, random) = super::certify_beyond::spatch(args, &sp, &precisions)?;
+            return finish(
+                args,
+                rows,
+                points,
+                random,
+                super::certify_beyond::SPATCH_NOTE,
+            );
+        }
+    };
+    let m = patch.net.m();
     let algorithms = match args.algorithm.as_str() {
         "all" => vec![Algorithm::Casteljau, Algorithm::Bernstein],
         "casteljau" => vec![Algorithm::Casteljau],
@@ -258,7 +292,30 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             )));
         }
     };
-    let (points, random) = match (&args.points, args.random) {
+    let (points, random) = points_of(args, m)?;
+    let mut rows = Vec::new();
+    for &p in &precisions {
+        for &a in &algorithms {
+            rows.push(match p {
+                Precision::F64 => certify_one::<f64>(&patch, a, &points),
+                Precision::F32 => certify_one::<f32>(&patch, a, &points),
+            });
+        }
+    }
+    finish(args, rows, points.len(), random, POLYNOMIAL_NOTE)
+}
+
+const POLYNOMIAL_NOTE: &str = "bound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i(|λ|) (γ_K = Kε/(1−Kε)); cond = Σ|c_i|B_i(|λ|), relcond = cond/|P|; err/bound = largest observed error over its bound";
+
+/// `--random N` (with its reproducing command) or `--points FILE` (barycentric, `m + 1`
+/// coordinates).
+pub(super) type RandomInfo = Option<(usize, u64, String)>;
+
+pub(super) fn points_of(
+    args: &Args,
+    m: usize,
+) -> Result<(Vec<Vec<BigRational>>, RandomInfo), CliError> {
+    Ok(match (&args.points, args.random) {
         (Some(path), None) => (read_points(path, m + 1)?, None),
         (None, Some(n)) => {
             if n == 0 {
@@ -272,14 +329,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                         .collect()
                 })
                 .collect();
-            let command = format!(
-                "tribez certify {} --random {n} --seed {} --precision {} --algorithm {}",
-                args.patch.display(),
-                args.seed,
-                args.precision,
-                args.algorithm
-            );
-            (pts, Some((n, args.seed, command)))
+            (pts, Some((n, args.seed, reproduce(args, n))))
         }
         (None, None) => {
             return Err(CliError::Usage(
@@ -287,22 +337,35 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             ));
         }
         (Some(_), Some(_)) => unreachable!("clap rejects --points with --random"),
-    };
-    let mut rows = Vec::new();
-    for &p in &precisions {
-        for &a in &algorithms {
-            rows.push(match p {
-                Precision::F64 => certify_one::<f64>(&patch, a, &points),
-                Precision::F32 => certify_one::<f32>(&patch, a, &points),
-            });
-        }
-    }
+    })
+}
+
+/// The reproducing command of a `--random` run.
+pub(super) fn reproduce(args: &Args, n: usize) -> String {
+    format!(
+        "tribez certify {} --random {n} --seed {} --precision {} --algorithm {}",
+        args.patch.display(),
+        args.seed,
+        args.precision,
+        args.algorithm
+    )
+}
+
+/// Baselines, JUnit and the outcome, common to every kind of patch.
+fn finish(
+    args: &Args,
+    rows: Vec<Row>,
+    points: usize,
+    random: RandomInfo,
+    note: &str,
+) -> Result<Outcome, CliError> {
     let mut report = CertifyReport {
         patch: args.patch.display().to_string(),
-        points: points.len(),
+        points,
         random,
         rows,
         regressions: Vec::new(),
+        note: note.to_string(),
     };
     let worst: Vec<super::baseline::Worst> = report
         .rows
@@ -332,7 +395,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     Outcome::rendered(&report, args.out.format, success)
 }
 
-fn g(x: f64) -> String {
+pub(super) fn g(x: f64) -> String {
     if x == 0.0 {
         "0".into()
     } else if (1e-3..1e6).contains(&x.abs()) {
@@ -374,7 +437,9 @@ impl Render for CertifyReport {
                 100.0 * r.correctly_rounded as f64 / r.cases.max(1) as f64,
                 g(r.max_condition),
                 g(r.max_relative_condition),
-                format!("γ_{}", r.gamma_k),
+                r.label
+                    .clone()
+                    .unwrap_or_else(|| format!("γ_{}", r.gamma_k)),
                 g(r.max_bound_ratio),
                 if r.violations.is_empty() {
                     "within"
@@ -383,8 +448,11 @@ impl Render for CertifyReport {
                 }
             );
         }
-        out += "\nbound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i(|λ|) (γ_K = Kε/(1−Kε)); cond = Σ|c_i|B_i(|λ|), relcond = cond/|P|; err/bound = largest observed error over its bound\n";
+        out += &format!("\n{}\n", self.note);
         for r in &self.rows {
+            for line in &r.notes {
+                out += &format!("{} {}: {line}\n", alg_name(r.algorithm), r.precision.name());
+            }
             if r.outside_hypothesis > 0 {
                 out += &format!(
                     "{} {}: {} points outside the bound's hypothesis (overflow or near underflow), not judged\n",
@@ -416,11 +484,12 @@ impl Render for CertifyReport {
                 "algorithm": alg_name(r.algorithm), "precision": r.precision.name(), "coordinates": r.cases,
                 "max_ulps": r.max_ulps, "worst_point": r.worst_point.as_ref().map(|p| crate::report::json_rationals(p)),
                 "correctly_rounded": r.correctly_rounded, "max_condition": r.max_condition,
-                "max_relative_condition": r.max_relative_condition, "bound": format!("gamma_{}", r.gamma_k),
-                "max_error_over_bound": r.max_bound_ratio, "within_bound": r.violations.is_empty(),
+                "max_relative_condition": r.max_relative_condition, "bound": r.label.clone().unwrap_or_else(|| format!("gamma_{}", r.gamma_k)),
+                "max_error_over_bound": r.max_bound_ratio, "within_bound": r.violations.is_empty(), "notes": r.notes,
                 "violations": r.violations, "outside_hypothesis": r.outside_hypothesis,
             })).collect::<Vec<_>>(),
             "baseline_regressions": self.regressions,
+            "bound_note": self.note,
         })
     }
 }

@@ -4,6 +4,7 @@ pub mod baseline;
 pub mod batch;
 pub mod blossom;
 pub mod certify;
+pub mod certify_beyond;
 pub mod check;
 pub mod construct;
 pub mod derivative;

@@ -1,0 +1,225 @@
+//! Certifying the float paths of rational patches and S-patches.
+//!
+//! * [`RationalCertifier`]: homogeneous de Casteljau in float on the rounded homogeneous net and
+//!   one division, judged against the exact quotient at the inputs as the code saw them and the
+//!   proven bound [`bound::rational_a_posteriori`].
+//! * [`SPatchCertifier`]: float Wachspress coordinates `λ̂` and float de Casteljau. The total
+//!   error is measured exactly; only the de Casteljau part has a proven bound
+//!   (`γ_K Σ|P_α| B_α(|λ̂|)` at the float coordinates `λ̂`, [`bound::a_priori`]). There is **no
+//!   proven bound for the coordinate computation** here, so the total error is reported, not
+//!   judged.
+
+use std::ops::Div;
+
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+
+use super::bound;
+use crate::casteljau;
+use crate::error::CoreError;
+use crate::exact::{Algorithm, ExactEvaluator};
+use crate::float::Float;
+use crate::patch::ControlNet;
+use crate::rational::RationalPatch;
+use crate::spatch::{Polygon, SPatch};
+
+/// A rational patch prepared for certification in precision `F`.
+pub struct RationalCertifier<F: Float> {
+    /// The rounded homogeneous net `(RN(w_i c_i), RN(w_i))`, weight last.
+    pub net: ControlNet<F>,
+    /// Its exact values.
+    pub exact_net: ControlNet<BigRational>,
+    exact: ExactEvaluator,
+}
+
+/// One float evaluation of a rational patch, judged.
+#[derive(Clone, Debug)]
+pub struct RationalCase<F> {
+    /// The float result `fl(N̂/D̂)` per coordinate.
+    pub y: Vec<F>,
+    /// The exact value `q = N/D` at the inputs as seen (`None` where `D = 0`).
+    pub exact: Option<Vec<BigRational>>,
+    /// The proven bound per coordinate (`None`: outside the hypothesis).
+    pub bound: Option<Vec<BigRational>>,
+    /// The condition numbers `κ_c` ([`bound::rational_condition`]).
+    pub condition: Option<Vec<BigRational>>,
+    /// Overflow, or `|D̂| ≤ e_D` (the sign of the denominator is not certain): not judged.
+    pub outside: bool,
+}
+
+impl<F: Float + Div<Output = F>> RationalCertifier<F> {
+    /// Round the homogeneous net of `r` to `F`; an overflowing entry is an error.
+    pub fn new(r: &RationalPatch) -> Result<Self, CoreError> {
+        let net: ControlNet<F> = r.homogeneous().map(F::round);
+        if net.coords().iter().any(|x| !x.finite()) {
+            return Err(CoreError::Invalid(format!(
+                "a weighted control point w·c or a weight overflows {}",
+                F::PRECISION.name()
+            )));
+        }
+        let exact_net = net.map(|x| x.exact().unwrap_or_default());
+        Ok(RationalCertifier {
+            exact: ExactEvaluator::new(&exact_net),
+            net,
+            exact_net,
+        })
+    }
+
+    /// Evaluate in `F` at `lambda` (the code of [`RationalPatch::evaluate_float`]) and judge.
+    pub fn check(&self, lambda: &[F]) -> RationalCase<F> {
+        let v = casteljau::evaluate(&self.net, lambda);
+        let y = crate::rational::divide_last(&v);
+        let (m, n) = (self.net.m(), self.net.degree());
+        let mut case = RationalCase {
+            y,
+            exact: None,
+            bound: None,
+            condition: None,
+            outside: true,
+        };
+        if v.iter().chain(&case.y).any(|x| !x.finite()) {
+            return case;
+        }
+        let lam: Vec<BigRational> = lambda
+            .iter()
+            .map(|x| x.exact().unwrap_or_default())
+            .collect();
+        let h = self.exact.evaluate(&lam, Algorithm::Casteljau);
+        let cond = bound::condition(&self.exact_net, &lam);
+        let errs: Option<Vec<BigRational>> = cond
+            .iter()
+            .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam))
+            .collect();
+        let Some(errs) = errs else { return case };
+        let (e_den, e_num) = errs.split_last().expect("d + 1 coordinates");
+        let (d, num) = h.split_last().expect("d + 1 coordinates");
+        let d_hat = v.last().and_then(|x| x.exact()).unwrap_or_default();
+        if d_hat.abs() <= *e_den {
+            return case; // the denominator's sign is not certain
+        }
+        case.outside = false;
+        if d.is_zero() {
+            // impossible if §14.1 holds: |D̂ − 0| ≤ e_D < |D̂|; report it as a violation
+            case.bound = Some(vec![BigRational::zero(); num.len()]);
+            return case;
+        }
+        let q: Vec<BigRational> = num.iter().map(|x| x / d).collect();
+        let y_hat: Vec<BigRational> = case
+            .y
+            .iter()
+            .map(|x| x.exact().unwrap_or_default())
+            .collect();
+        case.bound = bound::rational_a_posteriori(F::PRECISION, e_num, e_den, &q, &d_hat, &y_hat);
+        let (cd, cn) = cond.split_last().expect("d + 1 coordinates");
+        case.condition = Some(
+            cn.iter()
+                .zip(&q)
+                .map(|(cc, qc)| (cc + qc.abs() * cd) / d.abs())
+                .collect(),
+        );
+        case.exact = Some(q);
+        case
+    }
+}
+
+/// An S-patch prepared for certification in precision `F`: polygon and control points rounded.
+pub struct SPatchCertifier<F: Float> {
+    /// The S-patch with rounded vertices and control points (exact values of the floats).
+    pub seen: SPatch,
+    /// The rounded control net.
+    pub net: ControlNet<F>,
+    /// The rounded vertices.
+    pub vertices: Vec<[F; 2]>,
+    exact: ExactEvaluator,
+}
+
+/// One float evaluation of an S-patch, measured.
+#[derive(Clone, Debug)]
+pub struct SPatchCase<F> {
+    /// The float result.
+    pub y: Vec<F>,
+    /// The float Wachspress coordinates `λ̂`.
+    pub lambda: Vec<F>,
+    /// The exact value `S(p̂)` of the rounded S-patch at the rounded point (`None`: the rounded
+    /// point is outside the rounded polygon).
+    pub exact: Option<Vec<BigRational>>,
+    /// The exact Wachspress coordinates `λ(p̂)`.
+    pub exact_lambda: Option<Vec<BigRational>>,
+    /// The exact de Casteljau value `P(λ̂)` at the float coordinates.
+    pub casteljau_exact: Vec<BigRational>,
+    /// The proven bound of the de Casteljau part, `|ŷ − P(λ̂)|`, per coordinate.
+    pub casteljau_bound: Option<Vec<BigRational>>,
+    /// `Σ|P_α| B_α(|λ̂|)` per coordinate.
+    pub condition: Vec<BigRational>,
+    /// Overflow or non-finite coordinates: not judged.
+    pub outside: bool,
+}
+
+impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
+    /// Round `s` to `F`; a rounded polygon that is no longer strictly convex, or an overflow, is
+    /// an error.
+    pub fn new(s: &SPatch) -> Result<Self, CoreError> {
+        let p = F::PRECISION.name();
+        let vertices: Vec<[F; 2]> = s
+            .polygon
+            .vertices()
+            .iter()
+            .map(|v| [F::round(&v[0]), F::round(&v[1])])
+            .collect();
+        let net: ControlNet<F> = s.net.map(F::round);
+        if net.coords().iter().any(|x| !x.finite())
+            || vertices.iter().flatten().any(|x| !x.finite())
+        {
+            return Err(CoreError::Invalid(format!(
+                "a vertex or control point overflows {p}"
+            )));
+        }
+        let polygon = Polygon::new(
+            vertices
+                .iter()
+                .map(|v| v.iter().map(|x| x.exact().unwrap_or_default()).collect())
+                .collect(),
+        )
+        .map_err(|e| CoreError::Invalid(format!("the polygon rounded to {p}: {e}")))?;
+        let exact_net = net.map(|x| x.exact().unwrap_or_default());
+        Ok(SPatchCertifier {
+            exact: ExactEvaluator::new(&exact_net),
+            seen: SPatch::new(polygon, exact_net)?,
+            net,
+            vertices,
+        })
+    }
+
+    /// Evaluate in `F` at the float point `p` (the code of [`SPatch::evaluate_float`]) and measure.
+    pub fn check(&self, p: &[F; 2]) -> SPatchCase<F> {
+        let lambda = crate::spatch::wachspress_float(&self.vertices, p);
+        let y = casteljau::evaluate(&self.net, &lambda);
+        let (m, n) = (self.net.m(), self.net.degree());
+        let outside = lambda.iter().chain(&y).any(|x| !x.finite());
+        let lam_q: Vec<BigRational> = lambda
+            .iter()
+            .map(|x| x.exact().unwrap_or_default())
+            .collect();
+        let casteljau_exact = self.exact.evaluate(&lam_q, Algorithm::Casteljau);
+        let condition = bound::condition(&self.seen.net, &lam_q);
+        let casteljau_bound = condition
+            .iter()
+            .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam_q))
+            .collect();
+        let point: Vec<BigRational> = p.iter().map(|x| x.exact().unwrap_or_default()).collect();
+        let (exact_lambda, exact) = match self.seen.evaluate(&point) {
+            Ok((l, v)) => (Some(l), Some(v)),
+            Err(_) => (None, None),
+        };
+        SPatchCase {
+            y,
+            lambda,
+            exact,
+            exact_lambda,
+            casteljau_exact,
+            casteljau_bound,
+            condition,
+            outside,
+        }
+    }
+}

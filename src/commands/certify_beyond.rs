@@ -1,0 +1,364 @@
+//! `tribez certify` on rational patches and S-patches ([`crate::certify::beyond`]).
+//!
+//! * Rational patch: homogeneous de Casteljau in f64/f32 on the rounded homogeneous net, one
+//!   division; judged against the proven bound [`crate::certify::bound::rational_a_posteriori`].
+//! * S-patch: float Wachspress coordinates `λ̂`, then float de Casteljau. The total error
+//!   (against the exact S-patch with rounded polygon and control points, at the rounded point) is
+//!   measured; only the de Casteljau part `|ŷ − P(λ̂)|` is judged against a proven bound. There is
+//!   no proven bound for the coordinate computation.
+
+use std::ops::Div;
+
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+use rayon::prelude::*;
+
+use super::CliError;
+use super::certify::{Args, RandomInfo, Row, SplitMix, points_of, reproduce};
+use crate::certify::beyond::{RationalCertifier, SPatchCertifier};
+use crate::certify::bound::roundings;
+use crate::certify::measures::{Measures, sci};
+use crate::exact::Algorithm;
+use crate::float::{Float, Precision};
+use crate::rational::RationalPatch;
+use crate::spatch::SPatch;
+
+/// The explanation line of a rational patch's table.
+pub const RATIONAL_NOTE: &str = "bound (rational, homogeneous de Casteljau + one division): |fl(N̂/D̂) − q| ≤ (e_N + |q| e_D)/|D̂| + ε|fl(N̂/D̂)|/(1−ε) + η, e_N = γ_K Σ|w_i c_i| B_i(|λ|), e_D = γ_K Σ|w_i| B_i(|λ|), needs |D̂| > e_D; cond = (Σ|w c|B(|λ|) + |q| Σ|w|B(|λ|))/|D|, relcond = cond/|q|";
+
+/// The explanation line of an S-patch's table.
+pub const SPATCH_NOTE: &str = "S-patch: max ulp and cr share measure the TOTAL error against the exact S-patch (rounded polygon and control points) at the rounded point; no proven bound for the coordinate computation (float Wachspress), so the total is not judged. bound, err/bound and verdict are the de Casteljau part only: |ŷ − P(λ̂)| ≤ γ_K Σ|P_α| B_α(|λ̂|) at the float coordinates λ̂ (proven); cond = Σ|P_α| B_α(|λ̂|), relcond = cond/|S|";
+
+fn algorithm_check(args: &Args, kind: &str) -> Result<(), CliError> {
+    match args.algorithm.as_str() {
+        "all" | "casteljau" => Ok(()),
+        other => Err(CliError::Usage(format!(
+            "--algorithm {other}: {kind} are certified with de Casteljau only (--algorithm casteljau or all)"
+        ))),
+    }
+}
+
+fn empty_row(precision: Precision, k: usize, label: String) -> Row {
+    Row {
+        algorithm: Algorithm::Casteljau,
+        precision,
+        cases: 0,
+        max_ulps: 0.0,
+        worst_point: None,
+        correctly_rounded: 0,
+        max_condition: 0.0,
+        max_relative_condition: 0.0,
+        max_bound_ratio: 0.0,
+        violations: Vec::new(),
+        outside_hypothesis: 0,
+        gamma_k: k,
+        label: Some(label),
+        notes: Vec::new(),
+    }
+}
+
+fn f(x: &BigRational) -> f64 {
+    x.to_f64().unwrap_or(f64::INFINITY)
+}
+
+/// Per-point results folded into a row.
+#[derive(Default)]
+struct Acc {
+    ulps: f64,
+    cr: usize,
+    coords: usize,
+    cond: f64,
+    rel_cond: f64,
+    ratio: f64,
+    violation: Option<String>,
+    outside: bool,
+    lambda_ulps: f64,
+    not_judged_total: bool,
+}
+
+fn fold(row: &mut Row, accs: Vec<Acc>, points: &[Vec<BigRational>]) -> f64 {
+    let mut lambda_ulps = 0.0f64;
+    for (i, c) in accs.into_iter().enumerate() {
+        if c.ulps > row.max_ulps {
+            row.max_ulps = c.ulps;
+            row.worst_point = Some(points[i].clone());
+        }
+        row.correctly_rounded += c.cr;
+        row.cases += c.coords;
+        row.max_condition = row.max_condition.max(c.cond);
+        row.max_relative_condition = row.max_relative_condition.max(c.rel_cond);
+        row.max_bound_ratio = row.max_bound_ratio.max(c.ratio);
+        row.outside_hypothesis += usize::from(c.outside || c.not_judged_total);
+        row.violations.extend(c.violation);
+        lambda_ulps = lambda_ulps.max(c.lambda_ulps);
+    }
+    lambda_ulps
+}
+
+/// Measure `y` against `exact` into `acc` (ULPs, correct rounding).
+fn measure<F: Float>(acc: &mut Acc, y: &[F], exact: &[BigRational]) {
+    for (v, q) in y.iter().zip(exact) {
+        let Some(yq) = v.exact() else { continue };
+        let meas = Measures::new(&yq, q, Some(F::PRECISION));
+        acc.ulps = acc.ulps.max(meas.ulps.as_ref().map_or(f64::INFINITY, f));
+        if meas.correctly_rounded == Some(true) {
+            acc.cr += 1;
+        }
+    }
+}
+
+/// Judge `|y − exact| ≤ bound` per coordinate into `acc`.
+fn judge<F: Float>(
+    acc: &mut Acc,
+    y: &[F],
+    exact: &[BigRational],
+    bound: &[BigRational],
+    at: &[BigRational],
+    what: &str,
+) {
+    for (c, ((v, q), b)) in y.iter().zip(exact).zip(bound).enumerate() {
+        let err = (v.exact().unwrap_or_default() - q).abs();
+        if !b.is_zero() {
+            acc.ratio = acc.ratio.max(f(&(&err / b)));
+        }
+        if err > *b {
+            acc.violation = Some(format!(
+                "at {} coordinate {c}: {what}error {} exceeds the bound {}",
+                crate::report::tuple(at),
+                sci(&err),
+                sci(b)
+            ));
+        }
+    }
+}
+
+fn rational_row<F: Float + Div<Output = F>>(
+    r: &RationalPatch,
+    points: &[Vec<BigRational>],
+) -> Result<Row, CliError> {
+    let cert = RationalCertifier::<F>::new(r)
+        .map_err(|e| CliError::Usage(format!("{}: {e}", F::PRECISION.name())))?;
+    let (m, n) = (r.patch.net.m(), r.patch.net.degree());
+    let k = roundings(Algorithm::Casteljau, m, n);
+    let accs: Vec<Acc> = points
+        .par_iter()
+        .map(|point| {
+            let lam: Vec<F> = point.iter().map(F::round).collect();
+            let lam_q: Vec<BigRational> =
+                lam.iter().map(|x| x.exact().unwrap_or_default()).collect();
+            let case = cert.check(&lam);
+            let mut acc = Acc {
+                coords: case.y.len(),
+                outside: case.outside,
+                ..Acc::default()
+            };
+            if let Some(q) = &case.exact {
+                measure(&mut acc, &case.y, q);
+                for (qc, kc) in q.iter().zip(case.condition.iter().flatten()) {
+                    acc.cond = acc.cond.max(f(kc));
+                    if !qc.is_zero() {
+                        acc.rel_cond = acc.rel_cond.max(f(&(kc / qc.abs())));
+                    }
+                }
+            }
+            if let (Some(q), Some(b)) = (&case.exact, &case.bound) {
+                judge(&mut acc, &case.y, q, b, &lam_q, "");
+            } else if !case.outside {
+                acc.violation = Some(format!(
+                    "at {}: the exact denominator vanishes although |D̂| > e_D",
+                    crate::report::tuple(&lam_q)
+                ));
+            }
+            acc
+        })
+        .collect();
+    let mut row = empty_row(F::PRECISION, k, format!("γ_{k},÷"));
+    fold(&mut row, accs, points);
+    if row.outside_hypothesis > 0 {
+        row.notes.push(format!(
+            "{} points not judged: overflow, or |D̂| ≤ e_D (the denominator's sign is not certain, e.g. where it vanishes outside the simplex)",
+            row.outside_hypothesis
+        ));
+    }
+    row.outside_hypothesis = 0;
+    Ok(row)
+}
+
+/// Certify a rational patch: rows per precision (de Casteljau only).
+pub fn rational(
+    args: &Args,
+    r: &RationalPatch,
+    precisions: &[Precision],
+) -> Result<(Vec<Row>, usize, RandomInfo), CliError> {
+    algorithm_check(args, "rational patches")?;
+    let (points, random) = points_of(args, r.patch.net.m())?;
+    let rows = precisions
+        .iter()
+        .map(|p| match p {
+            Precision::F64 => rational_row::<f64>(r, &points),
+            Precision::F32 => rational_row::<f32>(r, &points),
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((rows, points.len(), random))
+}
+
+/// Random Cartesian points of a convex polygon (vertices in f64): 70% random convex
+/// combinations of the vertices, 15% within about 1e-9 of an edge, 15% near a vertex.
+pub fn random_polygon_points(vertices: &[[f64; 2]], count: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut r = SplitMix(seed);
+    let nv = vertices.len();
+    let centroid = [0, 1].map(|c| vertices.iter().map(|v| v[c]).sum::<f64>() / nv as f64);
+    (0..count)
+        .map(|i| {
+            let kind = i % 20;
+            if kind < 3 {
+                let j = (r.next_u64() % nv as u64) as usize;
+                let (a, b) = (vertices[j], vertices[(j + 1) % nv]);
+                let t = r.unit();
+                let s = 1e-9 * r.unit();
+                [0, 1].map(|c| {
+                    let e = a[c] + t * (b[c] - a[c]);
+                    e + s * (centroid[c] - e)
+                })
+            } else if kind < 6 {
+                let j = (r.next_u64() % nv as u64) as usize;
+                let s = 1e-6 * r.unit();
+                [0, 1].map(|c| vertices[j][c] + s * (centroid[c] - vertices[j][c]))
+            } else {
+                let w: Vec<f64> = (0..nv).map(|_| r.unit()).collect();
+                let total: f64 = w.iter().sum();
+                [0, 1].map(|c| {
+                    vertices
+                        .iter()
+                        .zip(&w)
+                        .map(|(v, wi)| v[c] * wi)
+                        .sum::<f64>()
+                        / total
+                })
+            }
+        })
+        .collect()
+}
+
+fn spatch_row<F: Float + Div<Output = F>>(
+    s: &SPatch,
+    points: &[Vec<BigRational>],
+) -> Result<Row, CliError> {
+    let cert = SPatchCertifier::<F>::new(s)
+        .map_err(|e| CliError::Usage(format!("{}: {e}", F::PRECISION.name())))?;
+    let (m, n) = (s.net.m(), s.net.degree());
+    let k = roundings(Algorithm::Casteljau, m, n);
+    let accs: Vec<Acc> = points
+        .par_iter()
+        .map(|point| {
+            let p = [F::round(&point[0]), F::round(&point[1])];
+            let at: Vec<BigRational> = p.iter().map(|x| x.exact().unwrap_or_default()).collect();
+            let case = cert.check(&p);
+            let mut acc = Acc {
+                coords: case.y.len(),
+                outside: case.outside,
+                ..Acc::default()
+            };
+            if case.outside {
+                return acc;
+            }
+            match (&case.exact, &case.exact_lambda) {
+                (Some(v), Some(l)) => {
+                    measure(&mut acc, &case.y, v);
+                    let mut lacc = Acc::default();
+                    measure(&mut lacc, &case.lambda, l);
+                    acc.lambda_ulps = lacc.ulps;
+                    for (vc, kc) in v.iter().zip(&case.condition) {
+                        acc.cond = acc.cond.max(f(kc));
+                        if !vc.is_zero() {
+                            acc.rel_cond = acc.rel_cond.max(f(&(kc / vc.abs())));
+                        }
+                    }
+                }
+                _ => acc.not_judged_total = true,
+            }
+            if let Some(b) = &case.casteljau_bound {
+                judge(
+                    &mut acc,
+                    &case.y,
+                    &case.casteljau_exact,
+                    b,
+                    &at,
+                    "de Casteljau part: ",
+                );
+            }
+            acc
+        })
+        .collect();
+    let mut row = empty_row(F::PRECISION, k, format!("γ_{k} dC"));
+    let lambda_ulps = fold(&mut row, accs, points);
+    row.notes.push(format!(
+        "Wachspress coordinates λ̂: max error {} ulp (measured; no proven bound for the coordinate computation)",
+        super::certify::g(lambda_ulps)
+    ));
+    if row.outside_hypothesis > 0 {
+        row.notes.push(format!(
+            "{} points not measured: overflow, or the rounded point lies outside the rounded polygon",
+            row.outside_hypothesis
+        ));
+    }
+    row.outside_hypothesis = 0;
+    Ok(row)
+}
+
+/// Certify an S-patch: rows per precision (de Casteljau only). Points are Cartesian
+/// (`--points FILE` with two coordinates per point, or `--random N` inside the polygon).
+pub fn spatch(
+    args: &Args,
+    s: &SPatch,
+    precisions: &[Precision],
+) -> Result<(Vec<Row>, usize, RandomInfo), CliError> {
+    algorithm_check(args, "S-patches")?;
+    let (points, random) = match (&args.points, args.random) {
+        (Some(path), None) => (crate::io::points::read_points(path, 2)?, None),
+        (None, Some(count)) if count > 0 => {
+            let verts: Vec<[f64; 2]> = s
+                .polygon
+                .vertices()
+                .iter()
+                .map(|v| [f(&v[0]), f(&v[1])])
+                .collect();
+            let pts = random_polygon_points(&verts, count, args.seed)
+                .into_iter()
+                .map(|p| {
+                    p.iter()
+                        .map(|x| BigRational::from_float(*x).unwrap_or_default())
+                        .collect()
+                })
+                .collect();
+            (pts, Some((count, args.seed, reproduce(args, count))))
+        }
+        _ => points_of(args, 1)?, // the usage errors of the barycentric path
+    };
+    let points = if let Some(path) = &args.points {
+        for (i, p) in points.iter().enumerate() {
+            if let Err(e) = s.polygon.wachspress(p) {
+                return Err(CliError::Usage(format!(
+                    "{}: point {}: {e}",
+                    path.display(),
+                    i + 1
+                )));
+            }
+        }
+        points
+    } else {
+        // a random point rounded onto the wrong side of an edge is dropped
+        points
+            .into_iter()
+            .filter(|p| s.polygon.wachspress(p).is_ok())
+            .collect()
+    };
+    let rows = precisions
+        .iter()
+        .map(|p| match p {
+            Precision::F64 => spatch_row::<f64>(s, &points),
+            Precision::F32 => spatch_row::<f32>(s, &points),
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((rows, points.len(), random))
+}

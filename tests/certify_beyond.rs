@@ -1,0 +1,352 @@
+//! Certifying rational patches and S-patches (`src/certify/beyond.rs`):
+//!
+//! * rational patches: every error of homogeneous de Casteljau + one division lies within the
+//!   proven bound `(e_N + |q| e_D)/|D̂| + ε|ŷ|/(1−ε) + η` (src/certify/bound.rs), on more than
+//!   20,000 random cases (the octant fixture, weights of mixed magnitude, signed control points,
+//!   points near the edges and outside the triangle);
+//! * S-patches: the de Casteljau part `|ŷ − P(λ̂)|` lies within `γ_K Σ|P|B(|λ̂|)` on the pentagon
+//!   fixtures; the total error is measured only (no proven bound for the coordinates);
+//! * the command line: tables, exit codes, and every bad input (exit 2, one line).
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use num_rational::BigRational;
+use predicates::prelude::*;
+use tribez::certify::beyond::{RationalCertifier, SPatchCertifier};
+use tribez::commands::certify::{SplitMix, random_points};
+use tribez::commands::certify_beyond::random_polygon_points;
+use tribez::float::Float;
+use tribez::io::patch_file::read_any_patch;
+use tribez::patch::{AnyPatch, ControlNet, Patch};
+use tribez::rational::RationalPatch;
+use tribez::simplex::Simplex;
+
+fn tribez() -> Command {
+    Command::cargo_bin("tribez").unwrap()
+}
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fixtures/beyond")
+        .join(name)
+}
+
+fn octant() -> RationalPatch {
+    match read_any_patch(&fixture("octant_quartic.toml")).unwrap() {
+        AnyPatch::Rational(r) => r,
+        _ => panic!("the octant is a rational patch"),
+    }
+}
+
+/// A random rational patch: control points in [−1, 1] (dim 2), weights `10^k`, k in [−6, 6]
+/// (mixed magnitude, all positive).
+fn mixed(n: usize, r: &mut SplitMix) -> RationalPatch {
+    let s = Simplex::new(2, n);
+    let mut coords = Vec::new();
+    let mut weights = Vec::new();
+    for _ in s.iter() {
+        for _ in 0..2 {
+            coords.push(BigRational::from_float(r.unit() * 2.0 - 1.0).unwrap());
+        }
+        let k = (r.next_u64() % 13) as i32 - 6;
+        weights.push(BigRational::from_float(10f64.powi(k) * (0.5 + r.unit())).unwrap());
+    }
+    RationalPatch::new(Patch::new(ControlNet::new(s, 2, coords)), weights)
+}
+
+fn run_rational<F: Float + std::ops::Div<Output = F>>(
+    r: &RationalPatch,
+    pts: &[Vec<f64>],
+    name: &str,
+) -> (usize, usize) {
+    let cert = RationalCertifier::<F>::new(r).unwrap();
+    let (mut judged, mut outside) = (0, 0);
+    for p in pts {
+        let lam: Vec<F> = p
+            .iter()
+            .map(|x| F::round(&BigRational::from_float(*x).unwrap()))
+            .collect();
+        let case = cert.check(&lam);
+        // the certifier runs exactly the code of `eval --float`
+        let direct = r.evaluate_float(&lam);
+        assert!(
+            case.y
+                .iter()
+                .zip(&direct)
+                .all(|(a, b)| a.exact() == b.exact()),
+            "{name}: certifier and evaluate_float differ at {p:?}"
+        );
+        if case.outside {
+            outside += 1;
+            continue;
+        }
+        let (q, b) = (case.exact.as_ref().unwrap(), case.bound.as_ref().unwrap());
+        for ((y, qc), bc) in case.y.iter().zip(q).zip(b) {
+            let err = num_traits::Signed::abs(&(y.exact().unwrap() - qc));
+            assert!(
+                &err <= bc,
+                "{name} {:?}: error {err} beyond the bound {bc} at {p:?}",
+                F::PRECISION
+            );
+            judged += 1;
+        }
+    }
+    (judged, outside)
+}
+
+#[test]
+fn every_rational_error_lies_within_its_bound() {
+    let mut r = SplitMix(5);
+    let mut patches = vec![("octant".to_string(), octant())];
+    for n in [1, 2, 3, 5] {
+        patches.push((format!("mixed weights n={n}"), mixed(n, &mut r)));
+    }
+    let (mut judged, mut outside, mut cases) = (0, 0, 0);
+    for (i, (name, patch)) in patches.iter().enumerate() {
+        let pts = random_points(2, 2200, 100 + i as u64);
+        let (j, o) = run_rational::<f64>(patch, &pts, name);
+        let (j32, o32) = run_rational::<f32>(patch, &pts, name);
+        judged += j + j32;
+        outside += o + o32;
+        cases += 2 * pts.len();
+    }
+    assert!(cases >= 20_000, "{cases} cases");
+    // positive weights: the denominator is far from zero inside; outside the triangle a few
+    // points may have an uncertain denominator sign
+    assert!(outside * 20 < cases, "{outside} of {cases} not judged");
+    assert!(
+        judged >= 2 * (cases - outside),
+        "{judged} coordinates judged"
+    );
+}
+
+#[test]
+fn a_wrong_result_exceeds_the_rational_bound() {
+    // the bound is not vacuous: a result moved by 2^20 ulps is outside it
+    let r = octant();
+    let cert = RationalCertifier::<f64>::new(&r).unwrap();
+    let lam = [1.0 / 3.0, 0.25, 1.0 - 1.0 / 3.0 - 0.25];
+    let case = cert.check(&lam);
+    let y = case.y[0];
+    let moved = y + y * 2f64.powi(-33);
+    let err = num_traits::Signed::abs(
+        &(BigRational::from_float(moved).unwrap() - &case.exact.as_ref().unwrap()[0]),
+    );
+    assert!(err > case.bound.as_ref().unwrap()[0]);
+}
+
+#[test]
+fn s_patch_de_casteljau_part_within_its_bound() {
+    for name in ["pentagon_depth2.toml", "pentagon_plane.toml"] {
+        let AnyPatch::SPatch(s) = read_any_patch(&fixture(name)).unwrap() else {
+            panic!("{name} is an S-patch")
+        };
+        let verts: Vec<[f64; 2]> = s
+            .polygon
+            .vertices()
+            .iter()
+            .map(|v| {
+                [
+                    v[0].to_string().parse().unwrap(),
+                    v[1].to_string().parse().unwrap(),
+                ]
+            })
+            .collect();
+        let cert = SPatchCertifier::<f64>::new(&s).unwrap();
+        let cert32 = SPatchCertifier::<f32>::new(&s).unwrap();
+        let mut measured = 0;
+        for p in random_polygon_points(&verts, 1500, 7) {
+            let case = cert.check(&p);
+            assert!(!case.outside);
+            for ((y, q), b) in case
+                .y
+                .iter()
+                .zip(&case.casteljau_exact)
+                .zip(case.casteljau_bound.as_ref().unwrap())
+            {
+                assert!(&num_traits::Signed::abs(&(y.exact().unwrap() - q)) <= b);
+            }
+            measured += usize::from(case.exact.is_some());
+            let p32 = [p[0] as f32, p[1] as f32];
+            let c32 = cert32.check(&p32);
+            for ((y, q), b) in c32
+                .y
+                .iter()
+                .zip(&c32.casteljau_exact)
+                .zip(c32.casteljau_bound.as_ref().unwrap())
+            {
+                assert!(&num_traits::Signed::abs(&(y.exact().unwrap() - q)) <= b);
+            }
+            // the float path is the one of `eval --float`
+            assert_eq!(case.y, s.evaluate_float(&p));
+        }
+        assert!(measured > 1400, "{name}: {measured}");
+    }
+}
+
+#[test]
+fn certify_rational_on_the_command_line() {
+    tribez()
+        .args(["certify", "--random", "300", "--seed", "3"])
+        .arg(fixture("octant_quartic.toml"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("γ_12,÷"))
+        .stdout(predicate::str::contains("within"))
+        .stdout(predicate::str::contains("(e_N + |q| e_D)/|D̂|"))
+        .stdout(predicate::str::contains("EXCEEDED").not());
+    let out = tribez()
+        .args(["certify", "--random", "50", "--format", "json"])
+        .arg(fixture("octant_quartic.toml"))
+        .assert()
+        .success();
+    let v: serde_json::Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+    assert_eq!(v["results"].as_array().unwrap().len(), 2);
+    assert_eq!(v["results"][0]["within_bound"], true);
+    assert_eq!(v["results"][0]["coordinates"], 150);
+}
+
+#[test]
+fn certify_s_patch_on_the_command_line() {
+    tribez()
+        .args(["certify", "--random", "200"])
+        .arg(fixture("pentagon_depth2.toml"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("γ_10 dC"))
+        .stdout(predicate::str::contains(
+            "no proven bound for the coordinate computation",
+        ))
+        .stdout(predicate::str::contains(
+            "Wachspress coordinates λ̂: max error",
+        ));
+    let dir = tempfile::tempdir().unwrap();
+    let pts = dir.path().join("p.csv");
+    std::fs::write(&pts, "2,2\n1/3,1/7\n4,0\n").unwrap();
+    tribez()
+        .arg("certify")
+        .arg(fixture("pentagon_depth2.toml"))
+        .arg("--points")
+        .arg(&pts)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(": 3 points"));
+}
+
+fn bad(args: &[&str], patch: &Path, fragment: &str) {
+    let out = tribez()
+        .arg("certify")
+        .arg(patch)
+        .args(args)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(fragment));
+    let err = String::from_utf8_lossy(&out.get_output().stderr).to_string();
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(out.get_output().stdout.is_empty());
+}
+
+#[test]
+fn bad_inputs_of_certify_on_rational_and_s_patches() {
+    let dir = tempfile::tempdir().unwrap();
+    let octant = fixture("octant_quartic.toml");
+    let pentagon = fixture("pentagon_depth2.toml");
+    bad(
+        &["--random", "5", "--algorithm", "bernstein"],
+        &octant,
+        "de Casteljau only",
+    );
+    bad(
+        &["--random", "5", "--algorithm", "bernstein"],
+        &pentagon,
+        "de Casteljau only",
+    );
+    bad(&["--random", "0"], &octant, "at least one point");
+    bad(&["--random", "0"], &pentagon, "at least one point");
+    bad(&[], &pentagon, "--random N");
+    // a point outside the polygon
+    let pts = dir.path().join("out.csv");
+    std::fs::write(&pts, "2,2\n10,10\n").unwrap();
+    bad(
+        &["--points", pts.to_str().unwrap()],
+        &pentagon,
+        "point 2: the point (10, 10) is outside the polygon",
+    );
+    // three coordinates for a Cartesian point
+    let pts3 = dir.path().join("three.csv");
+    std::fs::write(&pts3, "1,1,1\n").unwrap();
+    bad(
+        &["--points", pts3.to_str().unwrap()],
+        &pentagon,
+        "three.csv",
+    );
+    // a weighted control point overflowing f32
+    let big = dir.path().join("big.toml");
+    std::fs::write(
+        &big,
+        "degree = 1\n[control_points]\n\"1,0,0\" = [\"1e30\"]\n\"0,1,0\" = [\"0\"]\n\"0,0,1\" = [\"1\"]\n[weights]\n\"1,0,0\" = \"1e10\"\n\"0,1,0\" = 1\n\"0,0,1\" = 1\n",
+    )
+    .unwrap();
+    bad(&["--random", "5"], &big, "overflows f32");
+    // f64 alone is fine
+    tribez()
+        .arg("certify")
+        .arg(&big)
+        .args(["--random", "20", "--precision", "f64"])
+        .assert()
+        .success();
+}
+
+fn claims(dir: &Path, patch: &str, body: &str) -> PathBuf {
+    std::fs::copy(fixture(patch), dir.join(patch)).unwrap();
+    let path = dir.join("c.claims.toml");
+    std::fs::write(&path, format!("patch = \"{patch}\"\n{body}")).unwrap();
+    path
+}
+
+#[test]
+fn bound_and_cond_tolerances_on_rational_claims() {
+    let dir = tempfile::tempdir().unwrap();
+    // the f64 value Python computes (fixtures/beyond/float.claims.toml, octant-f64-python)
+    let claim = |tol: &str, expect: &str| {
+        format!(
+            "[[claim]]\nid = \"b\"\nop = \"eval\"\nat = [\"1/3\", \"1/4\", \"5/12\"]\nprecision = \"f64\"\ntolerance = \"{tol}\"\nexpect = {expect}\n"
+        )
+    };
+    let good = "[\"0.6067816775728732\", \"0.5764425936942295\", \"0.5472932778108268\"]";
+    let wrong = "[\"0.60678167757298\", \"0.5764425936942295\", \"0.5472932778108268\"]";
+    for tol in ["bound", "cond=12"] {
+        tribez()
+            .arg("check")
+            .arg(claims(dir.path(), "octant_quartic.toml", &claim(tol, good)))
+            .assert()
+            .success();
+        tribez()
+            .arg("check")
+            .arg(claims(
+                dir.path(),
+                "octant_quartic.toml",
+                &claim(tol, wrong),
+            ))
+            .assert()
+            .code(1);
+    }
+    // an S-patch still has no proven bound: refused, exit 2, one line
+    let sp = "[[claim]]\nid = \"s\"\nop = \"eval\"\ncartesian = [\"2\", \"2\"]\nprecision = \"f64\"\ntolerance = \"bound\"\nexpect = [\"1\", \"1\", \"1\"]\n";
+    let out = tribez()
+        .arg("check")
+        .arg(claims(dir.path(), "pentagon_depth2.toml", sp))
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "no proven bound for an S-patch's float Wachspress coordinates",
+        ));
+    assert_eq!(
+        String::from_utf8_lossy(&out.get_output().stderr)
+            .trim_end()
+            .lines()
+            .count(),
+        1
+    );
+}
