@@ -350,3 +350,39 @@ fn bound_and_cond_tolerances_on_rational_claims() {
         1
     );
 }
+
+#[test]
+fn no_rational_bound_where_the_denominator_sign_is_uncertain() {
+    // the line through 0 and 1 with weights 1 and −1: D = λ0 − λ1 vanishes at λ0 = λ1
+    let dir = tempfile::tempdir().unwrap();
+    let curve = "degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n[weights]\n\"1,0\" = 1\n\"0,1\" = -1\n";
+    std::fs::write(dir.path().join("c.toml"), curve).unwrap();
+    // rounded λ = (1/2 + 2^-53, 1/2 − 2^-53): D = 2^-52 ≤ e_D = γ_2 (|λ0| + |λ1|) = 2^-52/(1 − 2^-52)
+    let path = dir.path().join("c.claims.toml");
+    std::fs::write(
+        &path,
+        "patch = \"c.toml\"\n[[claim]]\nid = \"d\"\nop = \"eval\"\nat = [\"0.5000000000000001\", \"0.4999999999999999\"]\nprecision = \"f64\"\ntolerance = \"bound\"\nexpect = [\"1\"]\n",
+    )
+    .unwrap();
+    let out = tribez()
+        .arg("check")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("its sign is not certain"));
+    assert_eq!(
+        String::from_utf8_lossy(&out.get_output().stderr)
+            .trim_end()
+            .lines()
+            .count(),
+        1
+    );
+    // certify skips such points (counted, not judged) and judges the rest
+    tribez()
+        .arg("certify")
+        .arg(dir.path().join("c.toml"))
+        .args(["--random", "400"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("within"));
+}
