@@ -351,6 +351,10 @@ pub fn map_point<T: Scalar>(f: &[Vec<T>], beta: &[T]) -> Vec<T> {
         .collect()
 }
 
+/// The largest subdivision matrix tribez prints or claims (rows = control points of the child):
+/// degree 43 for triangles.
+pub const MAX_MATRIX_ROWS: usize = 1000;
+
 /// The matrix of the subpatch map for degree `n` on the `m`-simplex: row `α` (child), column `β`
 /// (parent), both in canonical order; `c′_α = Σ_β M_{αβ} c_β`. Computed by running [`subpatch`]
 /// on the net whose control point `β` is the unit vector `e_β`.
@@ -372,36 +376,8 @@ pub fn subpatch_matrix(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::number::parse_rational;
+    use crate::testing::{finn, r, s};
     use proptest::prelude::*;
-
-    fn q(s: &str) -> BigRational {
-        parse_rational(s).unwrap()
-    }
-    fn r(v: &[&str]) -> Vec<BigRational> {
-        v.iter().map(|s| q(s)).collect()
-    }
-    fn s(p: &[BigRational]) -> Vec<String> {
-        p.iter().map(ToString::to_string).collect()
-    }
-    fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [
-            [0, 0, 0],
-            [1, 0, 2],
-            [0, 2, 0],
-            [0, 1, 0],
-            [1, 1, 1],
-            [0, 2, 1],
-        ]
-        .iter()
-        .map(|p| {
-            p.iter()
-                .map(|&x| BigRational::from_integer(x.into()))
-                .collect()
-        })
-        .collect();
-        ControlNet::from_points(2, 2, &pts)
-    }
 
     #[test]
     fn blossom_values_of_formulas_section_4() {

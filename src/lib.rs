@@ -47,3 +47,5 @@ pub mod simplex;
 pub mod spatch;
 pub mod subdivide;
 pub mod symbolic;
+#[cfg(test)]
+mod testing;

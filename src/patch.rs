@@ -186,6 +186,16 @@ pub enum AnyPatch {
 }
 
 impl AnyPatch {
+    /// `"a rational patch"`, `"an S-patch"`, …: the kind with its article, for messages.
+    pub fn described(&self) -> &'static str {
+        match self {
+            AnyPatch::Bezier(_) => "a Bézier patch",
+            AnyPatch::Rational(_) => "a rational patch",
+            AnyPatch::Functional(_) => "a functional patch",
+            AnyPatch::SPatch(_) => "an S-patch",
+        }
+    }
+
     /// `"Bézier"`, `"rational"`, `"functional"` or `"S-patch"`.
     pub fn kind_name(&self) -> &'static str {
         match self {

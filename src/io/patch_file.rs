@@ -100,8 +100,8 @@ pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<
                 at,
                 &key,
                 format!(
-                    "this is a {} patch; only polynomial Bézier patches are accepted here",
-                    other.kind_name()
+                    "this is {}; only polynomial Bézier patches are accepted here",
+                    other.described()
                 ),
             ))
         }
