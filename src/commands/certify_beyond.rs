@@ -180,7 +180,6 @@ fn rational_row<F: Float + Div<Output = F>>(
             row.outside_hypothesis
         ));
     }
-    row.outside_hypothesis = 0;
     Ok(row)
 }
 
@@ -302,7 +301,6 @@ fn spatch_row<F: Float + Div<Output = F>>(
             row.outside_hypothesis
         ));
     }
-    row.outside_hypothesis = 0;
     Ok(row)
 }
 
