@@ -1,7 +1,8 @@
 //! Certifying rational patches and S-patches (`src/certify/beyond.rs`):
 //!
 //! * rational patches: every error of homogeneous de Casteljau + one division lies within the
-//!   proven bound `(e_N + |q| e_D)/|D̂| + ε|ŷ|/(1−ε) + η` (src/certify/bound.rs), on more than
+//!   proven bound `(e_N + |q| e_D)/|D̂| + ε|ŷ|/(1−ε) + η` (src/certify/bound.rs), and within its
+//!   a-priori form (the one claims use), on more than
 //!   20,000 random cases (the octant fixture, weights of mixed magnitude, signed control points,
 //!   points near the edges and outside the triangle);
 //! * S-patches: the de Casteljau part `|ŷ − P(λ̂)|` lies within `γ_K Σ|P|B(|λ̂|)` on the pentagon
@@ -62,7 +63,7 @@ fn run_rational<F: Float + std::ops::Div<Output = F>>(
 ) -> (usize, usize) {
     let cert = RationalCertifier::<F>::new(r).unwrap();
     let (mut judged, mut outside) = (0, 0);
-    for p in pts {
+    for (k, p) in pts.iter().enumerate() {
         let lam: Vec<F> = p
             .iter()
             .map(|x| F::round(&BigRational::from_float(*x).unwrap()))
@@ -82,6 +83,16 @@ fn run_rational<F: Float + std::ops::Div<Output = F>>(
             continue;
         }
         let (q, b) = (case.exact.as_ref().unwrap(), case.bound.as_ref().unwrap());
+        // the a-priori form used by claims (no D̂) holds too, where |D| > e_D (every 4th point)
+        if let Some(a) = (k % 4 == 0)
+            .then(|| a_priori_form::<F>(&cert.exact_net, &lam, q))
+            .flatten()
+        {
+            for ((y, qc), ac) in case.y.iter().zip(q).zip(&a) {
+                let err = num_traits::Signed::abs(&(y.exact().unwrap() - qc));
+                assert!(&err <= ac, "{name}: a-priori form exceeded at {p:?}");
+            }
+        }
         for ((y, qc), bc) in case.y.iter().zip(q).zip(b) {
             let err = num_traits::Signed::abs(&(y.exact().unwrap() - qc));
             assert!(
@@ -95,6 +106,27 @@ fn run_rational<F: Float + std::ops::Div<Output = F>>(
     (judged, outside)
 }
 
+/// `rational_a_priori` at the float inputs: e_N, e_D from §14.1 and D exact.
+fn a_priori_form<F: Float>(
+    h: &ControlNet<BigRational>,
+    lam: &[F],
+    q: &[BigRational],
+) -> Option<Vec<BigRational>> {
+    use tribez::certify::bound;
+    use tribez::exact::{Algorithm, ExactEvaluator};
+    let lam: Vec<BigRational> = lam.iter().map(|x| x.exact().unwrap()).collect();
+    let (m, n) = (h.m(), h.degree());
+    let e: Vec<BigRational> = bound::condition(h, &lam)
+        .iter()
+        .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam))
+        .collect::<Option<_>>()?;
+    let d = ExactEvaluator::new(h)
+        .evaluate(&lam, Algorithm::Casteljau)
+        .pop()?;
+    let (e_den, e_num) = e.split_last()?;
+    bound::rational_a_priori(F::PRECISION, e_num, e_den, q, &d)
+}
+
 #[test]
 fn every_rational_error_lies_within_its_bound() {
     let mut r = SplitMix(5);
@@ -102,15 +134,20 @@ fn every_rational_error_lies_within_its_bound() {
     for n in [1, 2, 3, 5] {
         patches.push((format!("mixed weights n={n}"), mixed(n, &mut r)));
     }
-    let (mut judged, mut outside, mut cases) = (0, 0, 0);
-    for (i, (name, patch)) in patches.iter().enumerate() {
-        let pts = random_points(2, 2200, 100 + i as u64);
-        let (j, o) = run_rational::<f64>(patch, &pts, name);
-        let (j32, o32) = run_rational::<f32>(patch, &pts, name);
-        judged += j + j32;
-        outside += o + o32;
-        cases += 2 * pts.len();
-    }
+    use rayon::prelude::*;
+    let counts: Vec<(usize, usize, usize)> = patches
+        .par_iter()
+        .enumerate()
+        .flat_map(|(i, (name, patch))| {
+            let pts = random_points(2, 2200, 100 + i as u64);
+            let (j, o) = run_rational::<f64>(patch, &pts, name);
+            let (j32, o32) = run_rational::<f32>(patch, &pts, name);
+            vec![(j, o, pts.len()), (j32, o32, pts.len())]
+        })
+        .collect();
+    let judged: usize = counts.iter().map(|c| c.0).sum();
+    let outside: usize = counts.iter().map(|c| c.1).sum();
+    let cases: usize = counts.iter().map(|c| c.2).sum();
     assert!(cases >= 20_000, "{cases} cases");
     // positive weights: the denominator is far from zero inside; outside the triangle a few
     // points may have an uncertain denominator sign
