@@ -168,7 +168,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let results = points
         .into_par_iter()
         .map(|(at, cartesian)| {
-            let point = evaluator.evaluate(&at, Algorithm::Casteljau);
+            let point = evaluator.evaluate(&at, Algorithm::Horner);
             let mut floats = Vec::new();
             for p in &precisions {
                 floats.extend(match p {
