@@ -17,7 +17,10 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use tribez::casteljau;
 use tribez::exact::{Algorithm, ExactEvaluator, evaluate_rational};
-use tribez::float::{casteljau_dvec3, casteljau_vec3, dvec3_points, horner_dvec3_many, horner_points_dvec3, horner_points_vec3, horner_vec3_many, net_f32, net_f64, vec3_points};
+use tribez::float::{
+    casteljau_dvec3, casteljau_vec3, dvec3_points, horner_dvec3_many, horner_points_dvec3,
+    horner_points_vec3, horner_vec3_many, net_f32, net_f64, vec3_points,
+};
 use tribez::number::exact_f64;
 use tribez::patch::ControlNet;
 use tribez::simplex::Simplex;
@@ -25,7 +28,10 @@ use tribez::simplex::Simplex;
 struct Rng(u64);
 impl Rng {
     fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         self.0 >> 16
     }
     fn below(&mut self, k: u64) -> u64 {
@@ -39,7 +45,12 @@ impl Rng {
 fn reference_net(n: usize, rng: &mut Rng) -> ControlNet<BigRational> {
     let s = Simplex::new(2, n);
     let coords = (0..s.len() * 3)
-        .map(|_| BigRational::new(BigInt::from(rng.below(2 * 65_536 + 1) as i64 - 65_536), BigInt::from(rng.below(65_536) + 1)))
+        .map(|_| {
+            BigRational::new(
+                BigInt::from(rng.below(2 * 65_536 + 1) as i64 - 65_536),
+                BigInt::from(rng.below(65_536) + 1),
+            )
+        })
         .collect();
     ControlNet::new(s, 3, coords)
 }
@@ -50,14 +61,19 @@ fn reference_points(m: usize, rng: &mut Rng) -> Vec<Vec<BigRational>> {
             let q = rng.below(65_536) + 1;
             let a = rng.below(q + 1);
             let b = rng.below(q - a + 1);
-            [a, b, q - a - b].iter().map(|&x| BigRational::new(x.into(), q.into())).collect()
+            [a, b, q - a - b]
+                .iter()
+                .map(|&x| BigRational::new(x.into(), q.into()))
+                .collect()
         })
         .collect()
 }
 
 fn dyadic_net(n: usize, rng: &mut Rng) -> ControlNet<BigRational> {
     let s = Simplex::new(2, n);
-    let coords = (0..s.len() * 3).map(|_| exact_f64(2.0 * rng.unit() - 1.0).unwrap()).collect();
+    let coords = (0..s.len() * 3)
+        .map(|_| exact_f64(2.0 * rng.unit() - 1.0).unwrap())
+        .collect();
     ControlNet::new(s, 3, coords)
 }
 
@@ -74,7 +90,9 @@ fn float_points(m: usize, rng: &mut Rng) -> Vec<[f64; 3]> {
 }
 
 fn config(g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>) {
-    g.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(1));
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
 }
 
 fn exact(c: &mut Criterion) {
@@ -87,17 +105,38 @@ fn exact(c: &mut Criterion) {
         let pts = reference_points(m, &mut rng);
         let eval = ExactEvaluator::new(&net);
         g.throughput(Throughput::Elements(m as u64));
-        g.bench_function(BenchmarkId::new("reference_horner", n), |b| b.iter(|| pts.iter().map(|p| eval.evaluate(p, Algorithm::Horner)).count()));
+        g.bench_function(BenchmarkId::new("reference_horner", n), |b| {
+            b.iter(|| {
+                pts.iter()
+                    .map(|p| eval.evaluate(p, Algorithm::Horner))
+                    .count()
+            })
+        });
         if n <= 10 {
             let few = &pts[..5];
             g.throughput(Throughput::Elements(5));
-            g.bench_function(BenchmarkId::new("reference_rational_casteljau", n), |b| b.iter(|| few.iter().map(|p| evaluate_rational(&net, p, Algorithm::Casteljau)).count()));
+            g.bench_function(BenchmarkId::new("reference_rational_casteljau", n), |b| {
+                b.iter(|| {
+                    few.iter()
+                        .map(|p| evaluate_rational(&net, p, Algorithm::Casteljau))
+                        .count()
+                })
+            });
         }
         let dnet = dyadic_net(n, &mut rng);
-        let dpts: Vec<Vec<BigRational>> = float_points(m, &mut rng).iter().map(|p| p.iter().map(|&x| exact_f64(x).unwrap()).collect()).collect();
+        let dpts: Vec<Vec<BigRational>> = float_points(m, &mut rng)
+            .iter()
+            .map(|p| p.iter().map(|&x| exact_f64(x).unwrap()).collect())
+            .collect();
         let deval = ExactEvaluator::new(&dnet);
         g.throughput(Throughput::Elements(m as u64));
-        g.bench_function(BenchmarkId::new("dyadic_horner", n), |b| b.iter(|| dpts.iter().map(|p| deval.evaluate(p, Algorithm::Horner)).count()));
+        g.bench_function(BenchmarkId::new("dyadic_horner", n), |b| {
+            b.iter(|| {
+                dpts.iter()
+                    .map(|p| deval.evaluate(p, Algorithm::Horner))
+                    .count()
+            })
+        });
     }
     g.finish();
 }
@@ -112,14 +151,27 @@ fn float(c: &mut Criterion) {
         let pts = float_points(m, &mut rng);
         let pts32: Vec<[f32; 3]> = pts.iter().map(|p| p.map(|x| x as f32)).collect();
         let (n64, n32) = (net_f64(&net), net_f32(&net));
-        let (d64, h64, d32, h32) = (dvec3_points(&n64), horner_points_dvec3(&n64), vec3_points(&n32), horner_points_vec3(&n32));
+        let (d64, h64, d32, h32) = (
+            dvec3_points(&n64),
+            horner_points_dvec3(&n64),
+            vec3_points(&n32),
+            horner_points_vec3(&n32),
+        );
         g.throughput(Throughput::Elements(m as u64));
         let mut out64 = Vec::new();
-        g.bench_function(BenchmarkId::new("f64_horner", n), |b| b.iter(|| horner_dvec3_many(&h64, n, &pts, &mut out64)));
-        g.bench_function(BenchmarkId::new("f64_casteljau", n), |b| b.iter(|| pts.iter().map(|&u| casteljau_dvec3(&d64, n, u)).count()));
+        g.bench_function(BenchmarkId::new("f64_horner", n), |b| {
+            b.iter(|| horner_dvec3_many(&h64, n, &pts, &mut out64))
+        });
+        g.bench_function(BenchmarkId::new("f64_casteljau", n), |b| {
+            b.iter(|| pts.iter().map(|&u| casteljau_dvec3(&d64, n, u)).count())
+        });
         let mut out32 = Vec::new();
-        g.bench_function(BenchmarkId::new("f32_horner", n), |b| b.iter(|| horner_vec3_many(&h32, n, &pts32, &mut out32)));
-        g.bench_function(BenchmarkId::new("f32_casteljau", n), |b| b.iter(|| pts32.iter().map(|&u| casteljau_vec3(&d32, n, u)).count()));
+        g.bench_function(BenchmarkId::new("f32_horner", n), |b| {
+            b.iter(|| horner_vec3_many(&h32, n, &pts32, &mut out32))
+        });
+        g.bench_function(BenchmarkId::new("f32_casteljau", n), |b| {
+            b.iter(|| pts32.iter().map(|&u| casteljau_vec3(&d32, n, u)).count())
+        });
     }
     g.finish();
 }
@@ -155,10 +207,14 @@ fn structure(c: &mut Criterion) {
     let net = reference_net(30, &mut rng);
     let at = reference_points(1, &mut rng).remove(0);
     // Subdivision at a point: all de Casteljau levels (the sub-triangles' nets are faces of them).
-    g.bench_function("subdivision_levels_exact", |b| b.iter(|| casteljau::levels(&net, &at).len()));
+    g.bench_function("subdivision_levels_exact", |b| {
+        b.iter(|| casteljau::levels(&net, &at).len())
+    });
     let n64 = net_f64(&net);
     let at64: Vec<f64> = at.iter().map(tribez::number::round_f64).collect();
-    g.bench_function("subdivision_levels_f64", |b| b.iter(|| casteljau::levels(&n64, &at64).len()));
+    g.bench_function("subdivision_levels_f64", |b| {
+        b.iter(|| casteljau::levels(&n64, &at64).len())
+    });
     g.bench_function("elevation_exact", |b| b.iter(|| elevate(&net).len()));
     g.finish();
 }

@@ -32,7 +32,11 @@ use crate::simplex::Simplex;
 /// One de Casteljau step with argument `x` (length `m + 1`): degree `q` to `q − 1`.
 pub fn step<T: Scalar>(net: &ControlNet<T>, x: &[T]) -> ControlNet<T> {
     let m = net.m();
-    assert_eq!(x.len(), m + 1, "argument has the wrong number of coordinates");
+    assert_eq!(
+        x.len(),
+        m + 1,
+        "argument has the wrong number of coordinates"
+    );
     assert!(net.degree() >= 1, "cannot step below degree 0");
     let dim = net.dim();
     let stencil = net.simplex().step_stencil();
@@ -40,7 +44,9 @@ pub fn step<T: Scalar>(net: &ControlNet<T>, x: &[T]) -> ControlNet<T> {
     let mut coords = Vec::with_capacity(lower.len() * dim);
     for children in stencil.chunks_exact(m + 1) {
         for c in 0..dim {
-            coords.push(T::weighted_sum(x.iter().zip(children.iter().map(|&r| &net.point(r)[c]))));
+            coords.push(T::weighted_sum(
+                x.iter().zip(children.iter().map(|&r| &net.point(r)[c])),
+            ));
         }
     }
     ControlNet::new(lower, dim, coords)
@@ -50,7 +56,10 @@ pub fn step<T: Scalar>(net: &ControlNet<T>, x: &[T]) -> ControlNet<T> {
 ///
 /// With `r = n` the result has one point, the blossom value.
 pub fn partial_blossom<T: Scalar>(net: &ControlNet<T>, args: &[&[T]]) -> ControlNet<T> {
-    assert!(args.len() <= net.degree(), "more blossom arguments than the degree");
+    assert!(
+        args.len() <= net.degree(),
+        "more blossom arguments than the degree"
+    );
     let mut level = net.clone();
     for x in args {
         level = step(&level, x);
@@ -60,7 +69,11 @@ pub fn partial_blossom<T: Scalar>(net: &ControlNet<T>, args: &[&[T]]) -> Control
 
 /// The blossom `b[x_1, …, x_n]` (exactly `n` arguments).
 pub fn blossom<T: Scalar>(net: &ControlNet<T>, args: &[&[T]]) -> Vec<T> {
-    assert_eq!(args.len(), net.degree(), "the blossom takes exactly n arguments");
+    assert_eq!(
+        args.len(),
+        net.degree(),
+        "the blossom takes exactly n arguments"
+    );
     partial_blossom(net, args).point(0).to_vec()
 }
 

@@ -35,7 +35,9 @@ impl Domain {
     pub fn new(vertices: Vec<Vec<BigRational>>) -> Result<Self, CoreError> {
         let m = vertices.len().saturating_sub(1);
         if m == 0 {
-            return Err(CoreError::Invalid("a domain needs at least two vertices".into()));
+            return Err(CoreError::Invalid(
+                "a domain needs at least two vertices".into(),
+            ));
         }
         for (i, v) in vertices.iter().enumerate() {
             if v.len() != m {
@@ -92,7 +94,13 @@ impl Domain {
     /// The Cartesian point with barycentric coordinates `lambda`: `Σ λ_k a_k`.
     pub fn cartesian(&self, lambda: &[BigRational]) -> Vec<BigRational> {
         (0..self.m())
-            .map(|c| lambda.iter().zip(&self.vertices).map(|(l, v)| l * &v[c]).sum())
+            .map(|c| {
+                lambda
+                    .iter()
+                    .zip(&self.vertices)
+                    .map(|(l, v)| l * &v[c])
+                    .sum()
+            })
             .collect()
     }
 
@@ -100,28 +108,43 @@ impl Domain {
         let m = self.m();
         if rhs.len() != m {
             return Err(CoreError::WrongLength {
-                what: if point { "Cartesian point".into() } else { "Cartesian vector".into() },
+                what: if point {
+                    "Cartesian point".into()
+                } else {
+                    "Cartesian vector".into()
+                },
                 expected: m,
                 found: rhs.len(),
             });
         }
-        let column: Vec<BigRational> = std::iter::once(if point { BigRational::one() } else { BigRational::zero() })
-            .chain(rhs.iter().cloned())
-            .collect();
+        let column: Vec<BigRational> = std::iter::once(if point {
+            BigRational::one()
+        } else {
+            BigRational::zero()
+        })
+        .chain(rhs.iter().cloned())
+        .collect();
         Ok((0..=m)
-            .map(|k| determinant(homogeneous_matrix(&self.vertices, Some((k, &column)))) / &self.det)
+            .map(|k| {
+                determinant(homogeneous_matrix(&self.vertices, Some((k, &column)))) / &self.det
+            })
             .collect())
     }
 }
 
 /// The `(m+1)×(m+1)` matrix with columns `(1, a_k)`, column `replace.0` replaced.
-fn homogeneous_matrix(vertices: &[Vec<BigRational>], replace: Option<(usize, &[BigRational])>) -> Vec<Vec<BigRational>> {
+fn homogeneous_matrix(
+    vertices: &[Vec<BigRational>],
+    replace: Option<(usize, &[BigRational])>,
+) -> Vec<Vec<BigRational>> {
     let m = vertices.len() - 1;
     let mut rows = vec![vec![BigRational::zero(); m + 1]; m + 1];
     for (k, v) in vertices.iter().enumerate() {
         let col: Vec<BigRational> = match replace {
             Some((r, c)) if r == k => c.to_vec(),
-            _ => std::iter::once(BigRational::one()).chain(v.iter().cloned()).collect(),
+            _ => std::iter::once(BigRational::one())
+                .chain(v.iter().cloned())
+                .collect(),
         };
         for (row, x) in rows.iter_mut().zip(col) {
             row[k] = x;
@@ -149,9 +172,9 @@ pub fn determinant(mut a: Vec<Vec<BigRational>>) -> BigRational {
                 continue;
             }
             let f = &a[r][col] / &p;
-            for c in col..n {
-                let delta = &f * &a[col][c];
-                a[r][c] -= delta;
+            let (top, bottom) = a.split_at_mut(r);
+            for (x, pivot_row_x) in bottom[0][col..].iter_mut().zip(&top[col][col..]) {
+                *x -= &f * pivot_row_x;
             }
         }
     }
@@ -162,7 +185,15 @@ pub fn determinant(mut a: Vec<Vec<BigRational>>) -> BigRational {
 pub fn format_points(points: &[Vec<BigRational>]) -> String {
     points
         .iter()
-        .map(|p| format!("({})", p.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")))
+        .map(|p| {
+            format!(
+                "({})",
+                p.iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -178,8 +209,17 @@ mod tests {
 
     #[test]
     fn tetrahedron_cramer_formulas_section_11() {
-        let t = Domain::new(vec![r(&["0", "0", "0"]), r(&["2", "0", "0"]), r(&["0", "3", "0"]), r(&["1", "1", "4"])]).unwrap();
-        assert_eq!(t.barycentric(&r(&["1/2", "1/2", "1"])).unwrap(), r(&["13/24", "1/8", "1/12", "1/4"]));
+        let t = Domain::new(vec![
+            r(&["0", "0", "0"]),
+            r(&["2", "0", "0"]),
+            r(&["0", "3", "0"]),
+            r(&["1", "1", "4"]),
+        ])
+        .unwrap();
+        assert_eq!(
+            t.barycentric(&r(&["1/2", "1/2", "1"])).unwrap(),
+            r(&["13/24", "1/8", "1/12", "1/4"])
+        );
     }
 
     #[test]
@@ -199,7 +239,10 @@ mod tests {
     #[test]
     fn reference_triangle_maps_x_y_to_u_v() {
         let t = Domain::reference(2);
-        assert_eq!(t.barycentric(&r(&["1/4", "1/2"])).unwrap(), r(&["1/4", "1/2", "1/4"]));
+        assert_eq!(
+            t.barycentric(&r(&["1/4", "1/2"])).unwrap(),
+            r(&["1/4", "1/2", "1/4"])
+        );
         assert_eq!(t.cartesian(&r(&["1/4", "1/2", "1/4"])), r(&["1/4", "1/2"]));
     }
 }

@@ -16,15 +16,23 @@ pub enum CoreError {
     NotBarycentric { coords: String, sum: String },
     /// A point or direction with the wrong number of coordinates.
     #[error("{what} has {found} coordinates, expected {expected}")]
-    WrongLength { what: String, expected: usize, found: usize },
+    WrongLength {
+        what: String,
+        expected: usize,
+        found: usize,
+    },
     /// Wrong number of blossom arguments.
     #[error("the blossom of a degree-{degree} patch takes exactly {degree} arguments, got {found}")]
     BlossomArity { degree: usize, found: usize },
     /// A barycentric direction whose components do not sum to zero.
-    #[error("direction {coords} sums to {sum}, not 0 (a barycentric direction is a difference of two points)")]
+    #[error(
+        "direction {coords} sums to {sum}, not 0 (a barycentric direction is a difference of two points)"
+    )]
     DirectionSum { coords: String, sum: String },
     /// A derivative of order above the degree.
-    #[error("derivative of order {order} requested, but the patch has degree {degree} (order must be at most the degree)")]
+    #[error(
+        "derivative of order {order} requested, but the patch has degree {degree} (order must be at most the degree)"
+    )]
     OrderTooHigh { order: usize, degree: usize },
     /// Two patches that must match do not.
     #[error("{0}")]

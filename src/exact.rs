@@ -76,18 +76,26 @@ impl ExactEvaluator {
     /// Prepare `net`: one least common denominator per coordinate.
     pub fn new(net: &ControlNet<BigRational>) -> Self {
         let dim = net.dim();
-        let factored: Vec<Option<kernel::Factors>> = (0..dim).map(|c| kernel::Factors::of(net.points().map(|p| p[c].denom()))).collect();
+        let factored: Vec<Option<kernel::Factors>> = (0..dim)
+            .map(|c| kernel::Factors::of(net.points().map(|p| p[c].denom())))
+            .collect();
         let denominators: Vec<BigInt> = factored
             .iter()
             .enumerate()
             .map(|(c, f)| match f {
                 Some(f) => BigInt::from(f.product()),
-                None => net.points().fold(BigInt::one(), |acc, p| kernel::lcm_big(&acc, p[c].denom())),
+                None => net
+                    .points()
+                    .fold(BigInt::one(), |acc, p| kernel::lcm_big(&acc, p[c].denom())),
             })
             .collect();
         let coords: Vec<BigInt> = net
             .points()
-            .flat_map(|p| p.iter().zip(&denominators).map(|(x, l)| x.numer() * kernel::div_exact(l, x.denom())))
+            .flat_map(|p| {
+                p.iter()
+                    .zip(&denominators)
+                    .map(|(x, l)| x.numer() * kernel::div_exact(l, x.denom()))
+            })
             .collect();
         let integer_net = ControlNet::new(net.simplex().clone(), dim, coords);
         let scaled: Vec<BigInt> = integer_net
@@ -99,7 +107,12 @@ impl ExactEvaluator {
             .collect();
         let scaled_net = ControlNet::new(net.simplex().clone(), dim, scaled);
         let fast = kernel::FastNet::new(net, &scaled_net, &integer_net, &denominators, factored);
-        ExactEvaluator { integer_net, scaled_net, denominators, fast }
+        ExactEvaluator {
+            integer_net,
+            scaled_net,
+            denominators,
+            fast,
+        }
     }
 
     /// The homogeneous form `P(λ)` at a rational point (which need not sum to one).
@@ -148,16 +161,31 @@ fn monomial_sum(scaled: &ControlNet<BigInt>, a: &[BigInt]) -> Vec<BigInt> {
     let monomials: Vec<BigInt> = scaled
         .simplex()
         .iter()
-        .map(|alpha| alpha.iter().enumerate().fold(BigInt::one(), |acc, (k, &e)| acc * &pw[k][e as usize]))
+        .map(|alpha| {
+            alpha
+                .iter()
+                .enumerate()
+                .fold(BigInt::one(), |acc, (k, &e)| acc * &pw[k][e as usize])
+        })
         .collect();
     (0..scaled.dim())
-        .map(|c| monomials.iter().zip(scaled.points()).map(|(mono, p)| mono * &p[c]).sum())
+        .map(|c| {
+            monomials
+                .iter()
+                .zip(scaled.points())
+                .map(|(mono, p)| mono * &p[c])
+                .sum()
+        })
         .collect()
 }
 
 /// Exact evaluation of a rational net by the generic algorithms on rationals (gcd after every
 /// operation). The reference the fast paths are tested against; slow.
-pub fn evaluate_rational(net: &ControlNet<BigRational>, lambda: &[BigRational], algorithm: Algorithm) -> Vec<BigRational> {
+pub fn evaluate_rational(
+    net: &ControlNet<BigRational>,
+    lambda: &[BigRational],
+    algorithm: Algorithm,
+) -> Vec<BigRational> {
     match algorithm {
         Algorithm::Casteljau => casteljau::evaluate(net, lambda),
         Algorithm::Bernstein | Algorithm::Horner => bernstein::evaluate(net, lambda),
@@ -191,10 +219,17 @@ mod tests {
     fn net_strategy() -> impl Strategy<Value = ControlNet<BigRational>> {
         (1usize..=3, 0usize..=6, 1usize..=3, any::<u8>()).prop_flat_map(|(m, n, dim, shape)| {
             let len = crate::simplex::count(m, n) * dim;
-            proptest::collection::vec((any::<i64>(), any::<u64>(), 0u8..4), len).prop_map(move |v| {
-                let coords = v.into_iter().map(|(p, q, s)| rational(p >> (shape % 40), q, if shape < 128 { 0 } else { s })).collect();
-                ControlNet::new(Simplex::new(m, n), dim, coords)
-            })
+            proptest::collection::vec((any::<i64>(), any::<u64>(), 0u8..4), len).prop_map(
+                move |v| {
+                    let coords = v
+                        .into_iter()
+                        .map(|(p, q, s)| {
+                            rational(p >> (shape % 40), q, if shape < 128 { 0 } else { s })
+                        })
+                        .collect();
+                    ControlNet::new(Simplex::new(m, n), dim, coords)
+                },
+            )
         })
     }
 
@@ -232,12 +267,24 @@ mod tests {
         // The module doc example, plus the reduced-denominator case: at a corner the value is
         // the corner control point exactly.
         let q = |s: &str| crate::number::parse_rational(s).unwrap();
-        let pts: Vec<Vec<BigRational>> = [["1/3", "-5/6", "7"], ["2", "0", "1/9"], ["-1/4", "3/8", "0"], ["5", "1", "1"], ["0", "0", "0"], ["1/12", "-2", "4/3"]]
-            .iter()
-            .map(|p| p.iter().map(|s| q(s)).collect())
-            .collect();
+        let pts: Vec<Vec<BigRational>> = [
+            ["1/3", "-5/6", "7"],
+            ["2", "0", "1/9"],
+            ["-1/4", "3/8", "0"],
+            ["5", "1", "1"],
+            ["0", "0", "0"],
+            ["1/12", "-2", "4/3"],
+        ]
+        .iter()
+        .map(|p| p.iter().map(|s| q(s)).collect())
+        .collect();
         let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));
-        let at = |u: [&str; 3]| eval.evaluate(&u.map(q), Algorithm::Horner).iter().map(ToString::to_string).collect::<Vec<_>>();
+        let at = |u: [&str; 3]| {
+            eval.evaluate(&u.map(q), Algorithm::Horner)
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+        };
         assert_eq!(at(["1", "0", "0"]), ["1/3", "-5/6", "7"]);
         assert_eq!(at(["0", "0", "1"]), ["1/12", "-2", "4/3"]);
         // (1/2, 1/2, 0): (c200 + 2 c110 + c020)/4 = (1/3 + 4 - 1/4)/4 = 49/48, (-5/6 + 3/8)/4 = -11/96, (7 + 2/9)/4 = 65/36.

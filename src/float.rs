@@ -127,7 +127,9 @@ macro_rules! glam_horner {
             assert_eq!(net.m(), 2, "the glam kernels are for triangles");
             net.entries()
                 .map(|(alpha, p)| {
-                    let c = <$s as crate::scalar::Scalar>::from_biguint(&crate::simplex::multinomial(alpha));
+                    let c = <$s as crate::scalar::Scalar>::from_biguint(
+                        &crate::simplex::multinomial(alpha),
+                    );
                     <$vec>::new(p[0], p[1], p[2]) * c
                 })
                 .collect()
@@ -207,6 +209,8 @@ pub trait Float: crate::scalar::Scalar + Copy + PartialOrd + Send + Sync + 'stat
     fn finite(self) -> bool;
     /// As f64 (exact widening).
     fn widen(self) -> f64;
+    /// de Casteljau through the glam kernel, for a triangle with points in R³ (`None` otherwise).
+    fn casteljau_glam(net: &ControlNet<Self>, lambda: &[Self]) -> Option<Vec<Self>>;
 }
 
 impl Float for f64 {
@@ -231,6 +235,16 @@ impl Float for f64 {
     }
     fn widen(self) -> f64 {
         self
+    }
+    fn casteljau_glam(net: &ControlNet<Self>, lambda: &[Self]) -> Option<Vec<Self>> {
+        (net.m() == 2 && net.dim() == 3).then(|| {
+            let p = casteljau_dvec3(
+                &dvec3_points(net),
+                net.degree(),
+                [lambda[0], lambda[1], lambda[2]],
+            );
+            vec![p.x, p.y, p.z]
+        })
     }
 }
 
@@ -257,6 +271,22 @@ impl Float for f32 {
     fn widen(self) -> f64 {
         f64::from(self)
     }
+    fn casteljau_glam(net: &ControlNet<Self>, lambda: &[Self]) -> Option<Vec<Self>> {
+        (net.m() == 2 && net.dim() == 3).then(|| {
+            let p = casteljau_vec3(
+                &vec3_points(net),
+                net.degree(),
+                [lambda[0], lambda[1], lambda[2]],
+            );
+            vec![p.x, p.y, p.z]
+        })
+    }
+}
+
+/// de Casteljau in floating point: the glam kernel for triangles in R³ (bit-identical to the
+/// generic code, which runs otherwise).
+pub fn casteljau<F: Float>(net: &ControlNet<F>, lambda: &[F]) -> Vec<F> {
+    F::casteljau_glam(net, lambda).unwrap_or_else(|| crate::casteljau::evaluate(net, lambda))
 }
 
 /// The control net rounded to the float type `F`.
@@ -274,11 +304,15 @@ mod tests {
     fn pseudo_random_net(n: usize, seed: u64) -> ControlNet<BigRational> {
         let mut s = seed;
         let mut next = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (s >> 33) as i64 % 2001 - 1000
         };
         let simplex = Simplex::new(2, n);
-        let coords = (0..simplex.len() * 3).map(|_| BigRational::new(next().into(), (next().abs() + 1).into())).collect();
+        let coords = (0..simplex.len() * 3)
+            .map(|_| BigRational::new(next().into(), (next().abs() + 1).into()))
+            .collect();
         ControlNet::new(simplex, 3, coords)
     }
 
@@ -289,18 +323,32 @@ mod tests {
         &ku / (BigRational::from_integer(1.into()) - &ku)
     }
 
-    fn check_horner<F: Float>(net: &ControlNet<BigRational>, u: &[BigRational; 3], computed: [F; 3]) {
+    fn check_horner<F: Float>(
+        net: &ControlNet<BigRational>,
+        u: &[BigRational; 3],
+        computed: [F; 3],
+    ) {
         let fnet: ControlNet<F> = net_to(net);
         let exact_net = fnet.map(|x| x.exact().unwrap());
         let lam: Vec<BigRational> = u.iter().map(|x| F::round(x).exact().unwrap()).collect();
-        let exact = crate::exact::evaluate_rational(&exact_net, &lam, crate::exact::Algorithm::Bernstein);
+        let exact =
+            crate::exact::evaluate_rational(&exact_net, &lam, crate::exact::Algorithm::Bernstein);
         let abs_lam: Vec<BigRational> = lam.iter().map(num_traits::Signed::abs).collect();
         let basis = crate::bernstein::basis(net.simplex(), &abs_lam);
         let g = gamma(2 * net.degree() + 5, F::PRECISION);
         for c in 0..3 {
-            let bound: BigRational = basis.iter().zip(exact_net.points()).map(|(b, p)| b * num_traits::Signed::abs(&p[c])).sum::<BigRational>() * &g;
+            let bound: BigRational = basis
+                .iter()
+                .zip(exact_net.points())
+                .map(|(b, p)| b * num_traits::Signed::abs(&p[c]))
+                .sum::<BigRational>()
+                * &g;
             let err = num_traits::Signed::abs(&(computed[c].exact().unwrap() - &exact[c]));
-            assert!(err <= bound, "n = {}: error {err} above the bound {bound}", net.degree());
+            assert!(
+                err <= bound,
+                "n = {}: error {err} above the bound {bound}",
+                net.degree()
+            );
         }
     }
 
@@ -308,7 +356,12 @@ mod tests {
     fn horner_kernels_are_within_the_a_priori_bound() {
         for n in [0, 1, 2, 3, 7, 12, 20, 30] {
             let net = pseudo_random_net(n, n as u64 + 11);
-            for u in [["0.2", "0.7", "0.1"], ["1/3", "1/3", "1/3"], ["0.9", "0.0625", "0.0375"], ["0", "0", "1"]] {
+            for u in [
+                ["0.2", "0.7", "0.1"],
+                ["1/3", "1/3", "1/3"],
+                ["0.9", "0.0625", "0.0375"],
+                ["0", "0", "1"],
+            ] {
                 let u = u.map(|t| parse_rational(t).unwrap());
                 let s64 = horner_points_dvec3(&net_f64(&net));
                 let v = horner_dvec3(&s64, n, [0, 1, 2].map(|k| round_f64(&u[k])));
@@ -324,16 +377,32 @@ mod tests {
     fn batch_horner_is_bit_identical_to_the_single_point_kernel() {
         for n in [0, 1, 5, 13] {
             let net = pseudo_random_net(n, n as u64 + 3);
-            let pts: Vec<[f64; 3]> = (0..11).map(|i| { let a = i as f64 / 13.0; let b = (1.0 - a) / 3.0; [1.0 - a - b, a, b] }).collect();
+            let pts: Vec<[f64; 3]> = (0..11)
+                .map(|i| {
+                    let a = i as f64 / 13.0;
+                    let b = (1.0 - a) / 3.0;
+                    [1.0 - a - b, a, b]
+                })
+                .collect();
             let s64 = horner_points_dvec3(&net_f64(&net));
             let mut out = Vec::new();
             horner_dvec3_many(&s64, n, &pts, &mut out);
-            assert_eq!(out, pts.iter().map(|&u| horner_dvec3(&s64, n, u)).collect::<Vec<_>>());
+            assert_eq!(
+                out,
+                pts.iter()
+                    .map(|&u| horner_dvec3(&s64, n, u))
+                    .collect::<Vec<_>>()
+            );
             let p32: Vec<[f32; 3]> = pts.iter().map(|p| p.map(|x| x as f32)).collect();
             let s32 = horner_points_vec3(&net_f32(&net));
             let mut out = Vec::new();
             horner_vec3_many(&s32, n, &p32, &mut out);
-            assert_eq!(out, p32.iter().map(|&u| horner_vec3(&s32, n, u)).collect::<Vec<_>>());
+            assert_eq!(
+                out,
+                p32.iter()
+                    .map(|&u| horner_vec3(&s32, n, u))
+                    .collect::<Vec<_>>()
+            );
         }
     }
 

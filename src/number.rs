@@ -281,7 +281,11 @@ pub fn format_rational(q: &BigRational) -> String {
     }
     if d.sign() == Sign::Plus {
         debug_assert!(n.gcd(d).is_one(), "rational not in lowest terms");
-        return if d.is_one() { n.to_string() } else { format!("{n}/{d}") };
+        return if d.is_one() {
+            n.to_string()
+        } else {
+            format!("{n}/{d}")
+        };
     }
     let g = n.gcd(d);
     if d.sign() == Sign::Plus && g.is_one() {

@@ -27,8 +27,16 @@ impl<T: Clone> ControlNet<T> {
     /// A net from flat coordinates in canonical order (`len = C(n+m,m) · dim`).
     pub fn new(simplex: Simplex, dim: usize, coords: Vec<T>) -> Self {
         assert!(dim >= 1, "points need at least one coordinate");
-        assert_eq!(coords.len(), simplex.len() * dim, "wrong number of coordinates");
-        ControlNet { simplex, dim, coords }
+        assert_eq!(
+            coords.len(),
+            simplex.len() * dim,
+            "wrong number of coordinates"
+        );
+        ControlNet {
+            simplex,
+            dim,
+            coords,
+        }
     }
 
     /// A net from a list of points in canonical order.
@@ -95,7 +103,11 @@ impl<T: Clone> ControlNet<T> {
 
     /// Apply `f` to every coordinate.
     pub fn map<U: Clone>(&self, f: impl FnMut(&T) -> U) -> ControlNet<U> {
-        ControlNet { simplex: self.simplex.clone(), dim: self.dim, coords: self.coords.iter().map(f).collect() }
+        ControlNet {
+            simplex: self.simplex.clone(),
+            dim: self.dim,
+            coords: self.coords.iter().map(f).collect(),
+        }
     }
 
     /// Coordinate `c` of every point, as a scalar net (`d = 1`).
@@ -142,11 +154,17 @@ pub struct Patch {
 impl Patch {
     /// A patch over the reference domain.
     pub fn new(net: ControlNet<BigRational>) -> Self {
-        Patch { name: None, net, domain: None }
+        Patch {
+            name: None,
+            net,
+            domain: None,
+        }
     }
 
     /// The domain, or the reference simplex if none was given.
     pub fn domain_or_reference(&self) -> Domain {
-        self.domain.clone().unwrap_or_else(|| Domain::reference(self.net.m()))
+        self.domain
+            .clone()
+            .unwrap_or_else(|| Domain::reference(self.net.m()))
     }
 }

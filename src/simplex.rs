@@ -120,6 +120,7 @@ impl Simplex {
     }
 
     /// The multi-index of rank `r` (unrank by table look-up).
+    #[allow(clippy::should_implement_trait)] // returns a slice, not `&Self::Output`
     pub fn index(&self, r: usize) -> &[u32] {
         &self.indices[r * (self.m + 1)..(r + 1) * (self.m + 1)]
     }
@@ -228,10 +229,15 @@ mod tests {
 
     #[test]
     fn canonical_order_matches_formulas_section_1() {
-        assert_eq!(names(&Simplex::new(2, 2)), ["200", "110", "020", "101", "011", "002"]);
+        assert_eq!(
+            names(&Simplex::new(2, 2)),
+            ["200", "110", "020", "101", "011", "002"]
+        );
         assert_eq!(
             names(&Simplex::new(2, 3)),
-            ["300", "210", "120", "030", "201", "111", "021", "102", "012", "003"]
+            [
+                "300", "210", "120", "030", "201", "111", "021", "102", "012", "003"
+            ]
         );
         assert_eq!(names(&Simplex::new(1, 3)), ["30", "21", "12", "03"]);
     }

@@ -40,7 +40,10 @@ pub struct Polynomial {
 impl Polynomial {
     /// The zero polynomial.
     pub fn zero(nvars: usize) -> Self {
-        Polynomial { nvars, terms: BTreeMap::new() }
+        Polynomial {
+            nvars,
+            terms: BTreeMap::new(),
+        }
     }
 
     /// A constant.
@@ -173,7 +176,9 @@ impl Polynomial {
         self.terms
             .iter()
             .map(|(e, c)| {
-                e.iter().zip(x).fold(c.clone(), |acc, (&k, xi)| acc * num_traits::pow(xi.clone(), k as usize))
+                e.iter().zip(x).fold(c.clone(), |acc, (&k, xi)| {
+                    acc * num_traits::pow(xi.clone(), k as usize)
+                })
             })
             .sum()
     }
@@ -244,7 +249,12 @@ impl Polynomial {
     /// decimal coefficient and factors `x`, `x^k` (or `x²`, `x³`), separated by `*`, spaces or
     /// nothing (`2uv + v^2 + vw`). Variables are the given single-token names.
     pub fn parse(text: &str, names: &[&str]) -> Result<Polynomial, String> {
-        PolyParser { s: text.chars().collect(), pos: 0, names }.parse()
+        PolyParser {
+            s: text.chars().collect(),
+            pos: 0,
+            names,
+        }
+        .parse()
     }
 }
 
@@ -255,6 +265,19 @@ struct PolyParser<'a> {
 }
 
 impl PolyParser<'_> {
+    /// Is the character at `i` part of a number? Digits, `.`, `/`, and `e`/`E` only when an
+    /// exponent follows (so that a variable named `e` is not swallowed).
+    fn number_char_at(&self, i: usize) -> bool {
+        match self.s.get(i) {
+            Some(c) if c.is_ascii_digit() || matches!(c, '.' | '/') => true,
+            Some('e' | 'E') => self
+                .s
+                .get(i + 1)
+                .is_some_and(|c| c.is_ascii_digit() || *c == '-'),
+            _ => false,
+        }
+    }
+
     fn peek(&mut self) -> Option<char> {
         while self.s.get(self.pos).is_some_and(|c| c.is_whitespace()) {
             self.pos += 1;
@@ -277,7 +300,9 @@ impl PolyParser<'_> {
                     self.pos += 1;
                     sign = -sign;
                 }
-                _ if !first => return Err(format!("expected + or - at character {}", self.pos + 1)),
+                _ if !first => {
+                    return Err(format!("expected + or - at character {}", self.pos + 1));
+                }
                 _ => {}
             }
             first = false;
@@ -296,9 +321,7 @@ impl PolyParser<'_> {
             match self.peek() {
                 Some(c) if c.is_ascii_digit() || c == '.' => {
                     let start = self.pos;
-                    while self.s.get(self.pos).is_some_and(|c| c.is_ascii_digit() || matches!(c, '.' | '/' | 'e' | 'E'))
-                        && !(matches!(self.s[self.pos], 'e' | 'E') && !self.s.get(self.pos + 1).is_some_and(|c| c.is_ascii_digit() || *c == '-'))
-                    {
+                    while self.number_char_at(self.pos) {
                         self.pos += 1;
                     }
                     let text: String = self.s[start..self.pos].iter().collect();
@@ -309,9 +332,14 @@ impl PolyParser<'_> {
                 Some('*') if any => self.pos += 1,
                 Some('(') => {
                     // A parenthesised rational coefficient such as (1/2).
-                    let close = self.s[self.pos..].iter().position(|&c| c == ')').ok_or("unclosed parenthesis")?;
+                    let close = self.s[self.pos..]
+                        .iter()
+                        .position(|&c| c == ')')
+                        .ok_or("unclosed parenthesis")?;
                     let text: String = self.s[self.pos + 1..self.pos + close].iter().collect();
-                    let q = crate::number::parse_rational(&text).map_err(|_| format!("only a number may stand in parentheses, not `{text}`"))?;
+                    let q = crate::number::parse_rational(&text).map_err(|_| {
+                        format!("only a number may stand in parentheses, not `{text}`")
+                    })?;
                     coef *= q;
                     self.pos += close + 1;
                     any = true;
@@ -324,7 +352,13 @@ impl PolyParser<'_> {
                         .enumerate()
                         .filter(|(_, n)| rest.starts_with(**n))
                         .max_by_key(|(_, n)| n.len())
-                        .ok_or_else(|| format!("unknown variable at `{}` (expected one of {})", rest.chars().take(8).collect::<String>(), self.names.join(", ")))?;
+                        .ok_or_else(|| {
+                            format!(
+                                "unknown variable at `{}` (expected one of {})",
+                                rest.chars().take(8).collect::<String>(),
+                                self.names.join(", ")
+                            )
+                        })?;
                     self.pos += name.chars().count();
                     let mut k = 1u32;
                     match self.s.get(self.pos) {
@@ -335,7 +369,9 @@ impl PolyParser<'_> {
                                 self.pos += 1;
                             }
                             let t: String = self.s[start..self.pos].iter().collect();
-                            k = t.parse().map_err(|_| "expected an exponent after ^".to_string())?;
+                            k = t
+                                .parse()
+                                .map_err(|_| "expected an exponent after ^".to_string())?;
                         }
                         Some('²') => {
                             self.pos += 1;
@@ -400,7 +436,10 @@ pub fn barycentric_of_cartesian(domain: &Domain) -> Vec<Polynomial> {
     let m = domain.m();
     let zero = vec![BigRational::zero(); m];
     let base = domain.barycentric(&zero).expect("dimension matches");
-    let mut out: Vec<Polynomial> = base.iter().map(|b| Polynomial::constant(m, b.clone())).collect();
+    let mut out: Vec<Polynomial> = base
+        .iter()
+        .map(|b| Polynomial::constant(m, b.clone()))
+        .collect();
     for c in 0..m {
         let mut unit = zero.clone();
         unit[c] = BigRational::one();
@@ -416,7 +455,10 @@ pub fn barycentric_of_cartesian(domain: &Domain) -> Vec<Polynomial> {
 /// Each coordinate as a polynomial in the Cartesian variables of `domain`.
 pub fn cartesian_form(net: &ControlNet<BigRational>, domain: &Domain) -> Vec<Polynomial> {
     let subs = barycentric_of_cartesian(domain);
-    barycentric_form(net).iter().map(|p| p.compose(&subs)).collect()
+    barycentric_form(net)
+        .iter()
+        .map(|p| p.compose(&subs))
+        .collect()
 }
 
 #[cfg(test)]
@@ -431,9 +473,18 @@ mod tests {
     #[test]
     fn parse_print_round_trip() {
         let p = Polynomial::parse("2uv + v^2 - 1/2*w² + (3/4) u v w - 7", &names3()).unwrap();
-        assert_eq!(p.to_text(&names3()), "3/4*u*v*w + 2*u*v + v^2 - 1/2*w^2 - 7");
-        assert_eq!(Polynomial::parse(&p.to_text(&names3()), &names3()).unwrap(), p);
-        assert_eq!(p.to_latex(&names3()), "\\frac{3}{4} u v w + 2 u v + v^{2} - \\frac{1}{2} w^{2} - 7");
+        assert_eq!(
+            p.to_text(&names3()),
+            "3/4*u*v*w + 2*u*v + v^2 - 1/2*w^2 - 7"
+        );
+        assert_eq!(
+            Polynomial::parse(&p.to_text(&names3()), &names3()).unwrap(),
+            p
+        );
+        assert_eq!(
+            p.to_latex(&names3()),
+            "\\frac{3}{4} u v w + 2 u v + v^{2} - \\frac{1}{2} w^{2} - 7"
+        );
     }
 
     #[test]
@@ -447,18 +498,36 @@ mod tests {
     fn finn_monomial_form_formulas_section_9() {
         // FORMULAS.md §9: Finn's net in monomials on the reference triangle is
         // (2y − 2y², 2 − 2x − 2y + 2y², 1 − 2x + x² + 4xy − y²).
-        let pts: Vec<Vec<BigRational>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
-            .iter()
-            .map(|p| p.iter().map(|&x| BigRational::from_integer(x.into())).collect())
-            .collect();
+        let pts: Vec<Vec<BigRational>> = [
+            [0, 0, 0],
+            [1, 0, 2],
+            [0, 2, 0],
+            [0, 1, 0],
+            [1, 1, 1],
+            [0, 2, 1],
+        ]
+        .iter()
+        .map(|p| {
+            p.iter()
+                .map(|&x| BigRational::from_integer(x.into()))
+                .collect()
+        })
+        .collect();
         let net = ControlNet::from_points(2, 2, &pts);
         let xy = ["x", "y"];
         let got = cartesian_form(&net, &Domain::reference(2));
-        let want = ["2y - 2y^2", "2 - 2x - 2y + 2y^2", "1 - 2x + x^2 + 4xy - y^2"];
+        let want = [
+            "2y - 2y^2",
+            "2 - 2x - 2y + 2y^2",
+            "1 - 2x + x^2 + 4xy - y^2",
+        ];
         for (g, w) in got.iter().zip(want) {
             assert_eq!(g, &Polynomial::parse(w, &xy).unwrap());
         }
-        let at = [parse_rational("1/2").unwrap(), parse_rational("1/3").unwrap()];
+        let at = [
+            parse_rational("1/2").unwrap(),
+            parse_rational("1/3").unwrap(),
+        ];
         assert_eq!(got[2].evaluate(&at), parse_rational("29/36").unwrap());
     }
 }

@@ -38,7 +38,15 @@ use value::{Mismatch, Value, compare_exact};
 /// Keys a claim file may have at its top level.
 pub const FILE_KEYS: &[&str] = &["source", "description", "patch", "patches", "claim"];
 /// Keys every claim may have, besides its operation's own inputs.
-pub const CLAIM_KEYS: &[&str] = &["id", "op", "source", "expect", "erratum", "tolerance", "note"];
+pub const CLAIM_KEYS: &[&str] = &[
+    "id",
+    "op",
+    "source",
+    "expect",
+    "erratum",
+    "tolerance",
+    "note",
+];
 
 /// A parsed claim file.
 pub struct ClaimFile {
@@ -114,13 +122,23 @@ fn resolve_patch(doc: &Document, node: &Node, key: &str, dir: &Path) -> Result<P
             let path = dir.join(rel);
             crate::io::patch_file::read_patch(&path).map_err(|mut e| {
                 if e.line.is_none() {
-                    e.message = format!("{} (patch named at {}:{}: {key})", e.message, doc.file, node.line);
+                    e.message = format!(
+                        "{} (patch named at {}:{}: {key})",
+                        e.message, doc.file, node.line
+                    );
                 }
                 e
             })
         }
         NodeValue::Table(_) => patch_from_document(doc, node, key),
-        other => Err(doc.error(node, key, format!("expected a patch file name or an inline patch table, found {}", other.kind()))),
+        other => Err(doc.error(
+            node,
+            key,
+            format!(
+                "expected a patch file name or an inline patch table, found {}",
+                other.kind()
+            ),
+        )),
     }
 }
 
@@ -131,48 +149,88 @@ impl ClaimFile {
         let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
         let root = doc.root_table()?;
         doc.check_keys(&doc.root, root, FILE_KEYS, "")?;
-        let source = Document::get(root, "source").map(|n| doc.string(n, "source").map(str::to_string)).transpose()?;
+        let source = Document::get(root, "source")
+            .map(|n| doc.string(n, "source").map(str::to_string))
+            .transpose()?;
         let mut patches = Vec::new();
         if let Some(p) = Document::get(root, "patch") {
             patches.push((String::new(), resolve_patch(&doc, p, "patch", &dir)?));
         }
         if let Some(ps) = Document::get(root, "patches") {
             for (name, p) in doc.table(ps, "patches")? {
-                patches.push((name.clone(), resolve_patch(&doc, p, &format!("patches.{name}"), &dir)?));
+                patches.push((
+                    name.clone(),
+                    resolve_patch(&doc, p, &format!("patches.{name}"), &dir)?,
+                ));
             }
         }
         let mut claims = Vec::new();
-        let list = Document::get(root, "claim").ok_or_else(|| doc.error(&doc.root, "claim", "no claims (expected [[claim]] tables)"))?;
+        let list = Document::get(root, "claim").ok_or_else(|| {
+            doc.error(&doc.root, "claim", "no claims (expected [[claim]] tables)")
+        })?;
         for (i, c) in doc.array(list, "claim")?.iter().enumerate() {
             let key = format!("claim[{i}]");
             let t = doc.table(c, &key)?;
             let get_str = |name: &str| -> Result<Option<String>, InputError> {
-                Document::get(t, name).map(|n| doc.string(n, &format!("{key}.{name}")).map(str::to_string)).transpose()
+                Document::get(t, name)
+                    .map(|n| doc.string(n, &format!("{key}.{name}")).map(str::to_string))
+                    .transpose()
             };
             let op = get_str("op")?.ok_or_else(|| doc.error(c, &key, "missing key `op`"))?;
             let id = get_str("id")?.unwrap_or_else(|| format!("{op}-{}", i + 1));
             if claims.iter().any(|x: &Claim| x.id == id) {
-                return Err(doc.error(c, &format!("{key}.id"), format!("duplicate claim id `{id}`")));
+                return Err(doc.error(
+                    c,
+                    &format!("{key}.id"),
+                    format!("duplicate claim id `{id}`"),
+                ));
             }
-            claims.push(Claim { id, op, node: c.clone(), source: get_str("source")?, erratum: get_str("erratum")? });
+            claims.push(Claim {
+                id,
+                op,
+                node: c.clone(),
+                source: get_str("source")?,
+                erratum: get_str("erratum")?,
+            });
         }
-        Ok(ClaimFile { path: path.to_path_buf(), doc, source, patches, claims })
+        Ok(ClaimFile {
+            path: path.to_path_buf(),
+            doc,
+            source,
+            patches,
+            claims,
+        })
     }
 
     /// The patch a claim refers to (`patch = "name"` in the claim, else the file's patch).
     pub fn patch_for(&self, claim: &Claim) -> Result<&Patch, InputError> {
         let t = self.doc.table(&claim.node, &claim.id)?;
         let name = match Document::get(t, "patch") {
-            Some(n) => self.doc.string(n, &format!("{}.patch", claim.id))?.to_string(),
+            Some(n) => self
+                .doc
+                .string(n, &format!("{}.patch", claim.id))?
+                .to_string(),
             None => String::new(),
         };
-        self.patches.iter().find(|(n, _)| *n == name).map(|(_, p)| p).ok_or_else(|| {
-            if name.is_empty() {
-                self.doc.error(&claim.node, &claim.id, "this claim needs a patch: give `patch` at the top of the file")
-            } else {
-                self.doc.error(&claim.node, &format!("{}.patch", claim.id), format!("no patch named `{name}` under [patches]"))
-            }
-        })
+        self.patches
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, p)| p)
+            .ok_or_else(|| {
+                if name.is_empty() {
+                    self.doc.error(
+                        &claim.node,
+                        &claim.id,
+                        "this claim needs a patch: give `patch` at the top of the file",
+                    )
+                } else {
+                    self.doc.error(
+                        &claim.node,
+                        &format!("{}.patch", claim.id),
+                        format!("no patch named `{name}` under [patches]"),
+                    )
+                }
+            })
     }
 
     /// Judge every claim.
@@ -184,8 +242,15 @@ impl ClaimFile {
     pub fn judge(&self, claim: &Claim) -> Result<Judged, InputError> {
         let exact = ops::exact_value(self, claim)?;
         let t = self.doc.table(&claim.node, &claim.id)?;
-        let expect = Document::get(t, "expect").ok_or_else(|| self.doc.error(&claim.node, &claim.id, "missing key `expect` (the claimed value)"))?;
-        let claimed = ops::read_claimed(&self.doc, expect, &exact, &format!("{}.expect", claim.id))?;
+        let expect = Document::get(t, "expect").ok_or_else(|| {
+            self.doc.error(
+                &claim.node,
+                &claim.id,
+                "missing key `expect` (the claimed value)",
+            )
+        })?;
+        let claimed =
+            ops::read_claimed(&self.doc, expect, &exact, &format!("{}.expect", claim.id))?;
         let mut mismatches = Vec::new();
         compare_exact(&claimed, &exact, "", &mut mismatches);
         let verdict = match (mismatches.is_empty(), claim.erratum.is_some()) {
@@ -212,7 +277,12 @@ pub fn find_claim_files(dir: &Path) -> Result<Vec<PathBuf>, InputError> {
     let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
-        let entries = std::fs::read_dir(&d).map_err(|e| InputError::file(d.display().to_string(), format!("cannot read directory: {e}")))?;
+        let entries = std::fs::read_dir(&d).map_err(|e| {
+            InputError::file(
+                d.display().to_string(),
+                format!("cannot read directory: {e}"),
+            )
+        })?;
         for entry in entries.flatten() {
             let p = entry.path();
             let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");

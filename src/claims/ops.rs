@@ -3,9 +3,11 @@
 //! | op | inputs | value |
 //! |---|---|---|
 //! | `eval` | `at` (barycentric, summing to 1) or `cartesian` | the point |
-//! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names` | one polynomial per coordinate |
+//! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
+//! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
+//! | `direction` | `domain`, `vector` (Cartesian) | the directional coordinates (they sum to 0) |
 //!
 //! Each op lists the keys it reads; any other key in a claim is an error (a typo must not be
 //! silently ignored).
@@ -20,16 +22,27 @@ use crate::io::InputError;
 use crate::io::patch_file::index_key;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::simplex::{Simplex, multinomial};
-use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names};
+use crate::symbolic::{
+    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
+};
 
 /// Every operation name, for messages.
-pub const OPS: &[&str] = &["eval", "symbolic", "basis", "basis_sum"];
+pub const OPS: &[&str] = &[
+    "eval",
+    "symbolic",
+    "basis",
+    "basis_sum",
+    "barycentric",
+    "direction",
+];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
 fn op_keys(op: &str) -> Option<&'static [&'static str]> {
     Some(match op {
         "eval" => &["patch", "at", "cartesian"],
-        "symbolic" => &["patch", "variables", "names"],
+        "symbolic" => &["patch", "variables", "names", "component"],
+        "barycentric" => &["domain", "point"],
+        "direction" => &["domain", "vector"],
         "basis" | "basis_sum" => &["degree", "simplex", "names", "at", "variables"],
         _ => return None,
     })
@@ -62,7 +75,9 @@ impl<'a> Inputs<'a> {
 
     /// A required list of rationals.
     pub fn rationals(&self, name: &str) -> Result<Vec<BigRational>, InputError> {
-        let node = self.get(name).ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
+        let node = self
+            .get(name)
+            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
         self.file.doc.rationals(node, &self.key(name))
     }
 
@@ -73,19 +88,29 @@ impl<'a> Inputs<'a> {
 
     /// An optional string.
     pub fn opt_string(&self, name: &str) -> Result<Option<String>, InputError> {
-        self.get(name).map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string)).transpose()
+        self.get(name)
+            .map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string))
+            .transpose()
     }
 
     /// An optional non-negative integer.
     pub fn opt_usize(&self, name: &str) -> Result<Option<usize>, InputError> {
-        self.get(name).map(|n| self.file.doc.usize(n, &self.key(name))).transpose()
+        self.get(name)
+            .map(|n| self.file.doc.usize(n, &self.key(name)))
+            .transpose()
     }
 
     /// An optional list of strings.
     pub fn opt_strings(&self, name: &str) -> Result<Option<Vec<String>>, InputError> {
-        let Some(node) = self.get(name) else { return Ok(None) };
+        let Some(node) = self.get(name) else {
+            return Ok(None);
+        };
         let items = self.file.doc.array(node, &self.key(name))?;
-        items.iter().map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string)).collect::<Result<Vec<_>, _>>().map(Some)
+        items
+            .iter()
+            .map(|n| self.file.doc.string(n, &self.key(name)).map(str::to_string))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
     }
 
     /// The claim's patch.
@@ -98,18 +123,32 @@ impl<'a> Inputs<'a> {
         let m = patch.net.m();
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) => {
-                crate::commands::check_barycentric(&at, m, "point `at`").map_err(|e| self.error("at", e.to_string()))?;
+                crate::commands::check_barycentric(&at, m, "point `at`")
+                    .map_err(|e| self.error("at", e.to_string()))?;
                 Ok(at)
             }
-            (None, Some(x)) => patch.domain_or_reference().barycentric(&x).map_err(|e| self.error("cartesian", e.to_string())),
-            _ => Err(self.error("at", "give exactly one of `at` (barycentric) or `cartesian`")),
+            (None, Some(x)) => patch
+                .domain_or_reference()
+                .barycentric(&x)
+                .map_err(|e| self.error("cartesian", e.to_string())),
+            _ => Err(self.error(
+                "at",
+                "give exactly one of `at` (barycentric) or `cartesian`",
+            )),
         }
     }
 
     /// Variable names: `names` if given (checked against the count), else `default`.
     pub fn names(&self, default: Vec<String>) -> Result<Vec<String>, InputError> {
         match self.opt_strings("names")? {
-            Some(n) if n.len() != default.len() => Err(self.error("names", format!("{} names given, {} variables needed", n.len(), default.len()))),
+            Some(n) if n.len() != default.len() => Err(self.error(
+                "names",
+                format!(
+                    "{} names given, {} variables needed",
+                    n.len(),
+                    default.len()
+                ),
+            )),
             Some(n) => Ok(n),
             None => Ok(default),
         }
@@ -121,26 +160,79 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
     let table = file.doc.table(&claim.node, &claim.id)?;
     let keys = op_keys(&claim.op).ok_or_else(|| {
         let node = Document::get(table, "op").unwrap_or(&claim.node);
-        file.doc.error(node, &format!("{}.op", claim.id), format!("unknown operation `{}` (known: {})", claim.op, OPS.join(", ")))
+        file.doc.error(
+            node,
+            &format!("{}.op", claim.id),
+            format!(
+                "unknown operation `{}` (known: {})",
+                claim.op,
+                OPS.join(", ")
+            ),
+        )
     })?;
     let allowed: Vec<&str> = CLAIM_KEYS.iter().chain(keys).copied().collect();
-    file.doc.check_keys(&claim.node, table, &allowed, &claim.id)?;
+    file.doc
+        .check_keys(&claim.node, table, &allowed, &claim.id)?;
     let inputs = Inputs { file, claim, table };
     match claim.op.as_str() {
         "eval" => {
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
-            Ok(Value::numbers(&ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau)))
+            Ok(Value::numbers(
+                &ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau),
+            ))
         }
         "symbolic" => {
             let patch = inputs.patch()?;
             let m = patch.net.m();
             let (names, polys) = match inputs.opt_string("variables")?.as_deref() {
-                None | Some("barycentric") => (inputs.names(barycentric_names(m))?, barycentric_form(&patch.net)),
-                Some("cartesian") => (inputs.names(cartesian_names(m))?, cartesian_form(&patch.net, &patch.domain_or_reference())),
-                Some(other) => return Err(inputs.error("variables", format!("`{other}`: expected \"barycentric\" or \"cartesian\""))),
+                None | Some("barycentric") => (
+                    inputs.names(barycentric_names(m))?,
+                    barycentric_form(&patch.net),
+                ),
+                Some("cartesian") => (
+                    inputs.names(cartesian_names(m))?,
+                    cartesian_form(&patch.net, &patch.domain_or_reference()),
+                ),
+                Some(other) => {
+                    return Err(inputs.error(
+                        "variables",
+                        format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+                    ));
+                }
             };
-            Ok(Value::List(polys.into_iter().map(|p| Value::Poly(p, names.clone())).collect()))
+            match inputs.opt_usize("component")? {
+                None => Ok(Value::List(
+                    polys
+                        .into_iter()
+                        .map(|p| Value::Poly(p, names.clone()))
+                        .collect(),
+                )),
+                Some(c) => {
+                    let p = polys.get(c).cloned().ok_or_else(|| inputs.error("component", format!("component {c} does not exist: the points have {} coordinates (0-based)", polys.len())))?;
+                    Ok(Value::Poly(p, names))
+                }
+            }
+        }
+        "barycentric" | "direction" => {
+            let node = inputs
+                .get("domain")
+                .ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
+            let rows = file.doc.array(node, &inputs.key("domain"))?;
+            let domain = crate::io::patch_file::domain(
+                &file.doc,
+                node,
+                rows.len().saturating_sub(1),
+                &inputs.key("domain"),
+            )?;
+            let (name, result) = if claim.op == "barycentric" {
+                ("point", domain.barycentric(&inputs.rationals("point")?))
+            } else {
+                ("vector", domain.direction(&inputs.rationals("vector")?))
+            };
+            Ok(Value::numbers(
+                &result.map_err(|e| inputs.error(name, e.to_string()))?,
+            ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
         _ => unreachable!("op_keys covers every operation"),
@@ -149,67 +241,119 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
 
 /// The Bernstein basis of a degree (symbolic or at a point), or its sum.
 fn basis(inputs: &Inputs<'_>, sum: bool) -> Result<Value, InputError> {
-    let n = inputs.opt_usize("degree")?.ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+    let n = inputs
+        .opt_usize("degree")?
+        .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
     let m = inputs.opt_usize("simplex")?.unwrap_or(2);
-    if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m) || n > crate::io::patch_file::MAX_DEGREE {
+    if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m)
+        || n > crate::io::patch_file::MAX_DEGREE
+    {
         return Err(inputs.error("degree", "degree or simplex dimension out of range"));
     }
     let simplex = Simplex::new(m, n);
     if let Some(at) = inputs.opt_rationals("at")? {
         if at.len() != m + 1 {
-            return Err(inputs.error("at", format!("{} coordinates, expected {}", at.len(), m + 1)));
+            return Err(inputs.error(
+                "at",
+                format!("{} coordinates, expected {}", at.len(), m + 1),
+            ));
         }
         let b = bernstein::basis(&simplex, &at);
         return Ok(if sum {
             Value::Number(b.iter().sum())
         } else {
-            Value::Map(simplex.iter().map(index_key).zip(b.into_iter().map(Value::Number)).collect())
+            Value::Map(
+                simplex
+                    .iter()
+                    .map(index_key)
+                    .zip(b.into_iter().map(Value::Number))
+                    .collect(),
+            )
         });
     }
     let cartesian = match inputs.opt_string("variables")?.as_deref() {
         None | Some("barycentric") => false,
         Some("cartesian") => true,
-        Some(other) => return Err(inputs.error("variables", format!("`{other}`: expected \"barycentric\" or \"cartesian\""))),
+        Some(other) => {
+            return Err(inputs.error(
+                "variables",
+                format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+            ));
+        }
     };
     let bary_names = inputs.names(barycentric_names(m))?;
     let polys: Vec<Polynomial> = simplex
         .iter()
-        .map(|alpha| Polynomial::monomial(m + 1, alpha.to_vec(), BigRational::from_integer(multinomial(alpha).into())))
+        .map(|alpha| {
+            Polynomial::monomial(
+                m + 1,
+                alpha.to_vec(),
+                BigRational::from_integer(multinomial(alpha).into()),
+            )
+        })
         .collect();
     let (names, polys) = if cartesian {
         let subs = crate::symbolic::barycentric_of_cartesian(&crate::domain::Domain::reference(m));
-        (cartesian_names(m), polys.iter().map(|p| p.compose(&subs)).collect::<Vec<_>>())
+        (
+            cartesian_names(m),
+            polys.iter().map(|p| p.compose(&subs)).collect::<Vec<_>>(),
+        )
     } else {
         (bary_names, polys)
     };
     Ok(if sum {
-        let total = polys.iter().fold(Polynomial::zero(names.len()), |acc, p| acc.add(p));
+        let total = polys
+            .iter()
+            .fold(Polynomial::zero(names.len()), |acc, p| acc.add(p));
         Value::Poly(total, names)
     } else {
-        Value::Map(simplex.iter().map(index_key).zip(polys.into_iter().map(|p| Value::Poly(p, names.clone()))).collect())
+        Value::Map(
+            simplex
+                .iter()
+                .map(index_key)
+                .zip(polys.into_iter().map(|p| Value::Poly(p, names.clone())))
+                .collect(),
+        )
     })
 }
 
 /// Read the claimed value at `node`, guided by the shape of the exact value.
-pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Result<Value, InputError> {
+pub fn read_claimed(
+    doc: &Document,
+    node: &Node,
+    exact: &Value,
+    key: &str,
+) -> Result<Value, InputError> {
     Ok(match (exact, &node.value) {
         (Value::Number(_), _) => Value::Number(doc.rational(node, key)?),
         (Value::Poly(_, names), NodeValue::String(s) | NodeValue::Number(s)) => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
-            let p = Polynomial::parse(s, &n).map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
+            let p = Polynomial::parse(s, &n)
+                .map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
             Value::Poly(p, names.clone())
         }
         (Value::Bool(_), NodeValue::Bool(b)) => Value::Bool(*b),
-        (Value::Integer(_), NodeValue::Number(t)) => {
-            Value::Integer(t.parse().map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?)
-        }
+        (Value::Integer(_), NodeValue::Number(t)) => Value::Integer(
+            t.parse()
+                .map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?,
+        ),
         (Value::List(xs), NodeValue::Array(items)) => {
-            let fallback = xs.first().cloned().unwrap_or(Value::Number(BigRational::default()));
+            let fallback = xs
+                .first()
+                .cloned()
+                .unwrap_or(Value::Number(BigRational::default()));
             Value::List(
                 items
                     .iter()
                     .enumerate()
-                    .map(|(i, it)| read_claimed(doc, it, xs.get(i).unwrap_or(&fallback), &format!("{key}[{i}]")))
+                    .map(|(i, it)| {
+                        read_claimed(
+                            doc,
+                            it,
+                            xs.get(i).unwrap_or(&fallback),
+                            &format!("{key}[{i}]"),
+                        )
+                    })
                     .collect::<Result<_, _>>()?,
             )
         }
@@ -217,9 +361,16 @@ pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Re
             items
                 .iter()
                 .map(|(k, it)| {
-                    let like = kv.iter().find(|(ek, _)| ek == k).map(|(_, v)| v).or_else(|| kv.first().map(|(_, v)| v));
+                    let like = kv
+                        .iter()
+                        .find(|(ek, _)| ek == k)
+                        .map(|(_, v)| v)
+                        .or_else(|| kv.first().map(|(_, v)| v));
                     let like = like.ok_or_else(|| doc.error(it, key, "unexpected key"))?;
-                    Ok((k.clone(), read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?))
+                    Ok((
+                        k.clone(),
+                        read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?,
+                    ))
                 })
                 .collect::<Result<_, InputError>>()?,
         ),
@@ -232,7 +383,11 @@ pub fn read_claimed(doc: &Document, node: &Node, exact: &Value, key: &str) -> Re
                 Value::Map(_) => "a table",
                 Value::Number(_) => "a number",
             };
-            return Err(doc.error(node, key, format!("expected {kind}, found {}", node.value.kind())));
+            return Err(doc.error(
+                node,
+                key,
+                format!("expected {kind}, found {}", node.value.kind()),
+            ));
         }
     })
 }

@@ -35,11 +35,22 @@ impl Value {
     pub fn to_text(&self) -> String {
         match self {
             Value::Number(q) => q.to_string(),
-            Value::Poly(p, names) => p.to_text(&names.iter().map(String::as_str).collect::<Vec<_>>()),
+            Value::Poly(p, names) => {
+                p.to_text(&names.iter().map(String::as_str).collect::<Vec<_>>())
+            }
             Value::Bool(b) => b.to_string(),
             Value::Integer(i) => i.to_string(),
-            Value::List(xs) => format!("[{}]", xs.iter().map(Value::to_text).collect::<Vec<_>>().join(", ")),
-            Value::Map(kv) => format!("{{{}}}", kv.iter().map(|(k, v)| format!("{k}: {}", v.to_text())).collect::<Vec<_>>().join(", ")),
+            Value::List(xs) => format!(
+                "[{}]",
+                xs.iter().map(Value::to_text).collect::<Vec<_>>().join(", ")
+            ),
+            Value::Map(kv) => format!(
+                "{{{}}}",
+                kv.iter()
+                    .map(|(k, v)| format!("{k}: {}", v.to_text()))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
         }
     }
 
@@ -72,27 +83,49 @@ pub struct Mismatch {
 
 /// Compare two values exactly; collect every mismatching leaf.
 pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<Mismatch>) {
-    let mismatch = |reason: String| Mismatch { path: path.into(), claimed: claimed.to_text(), exact: exact.to_text(), reason };
+    let mismatch = |reason: String| Mismatch {
+        path: path.into(),
+        claimed: claimed.to_text(),
+        exact: exact.to_text(),
+        reason,
+    };
     match (claimed, exact) {
         (Value::List(a), Value::List(b)) if a.len() == b.len() => {
             for (i, (x, y)) in a.iter().zip(b).enumerate() {
                 compare_exact(x, y, &format!("{path}[{i}]"), out);
             }
         }
-        (Value::Map(a), Value::Map(b)) if a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.0 == y.0) => {
-            for ((k, x), (_, y)) in a.iter().zip(b) {
+        (Value::Map(a), Value::Map(b))
+            if a.len() == b.len() && b.iter().all(|(k, _)| a.iter().any(|(j, _)| j == k)) =>
+        {
+            // Keys are matched by name: a file may list them in any order.
+            for (k, y) in b {
+                let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
                 compare_exact(x, y, &format!("{path}.\"{k}\""), out);
             }
         }
-        (Value::List(a), Value::List(b)) => out.push(mismatch(format!("{} values claimed, {} exact", a.len(), b.len()))),
-        (Value::Map(_), Value::Map(_)) => out.push(mismatch("the claimed keys differ from the exact ones".into())),
-        (Value::Number(a), Value::Number(b)) if a != b => out.push(mismatch(format!("differs by {}", a - b))),
+        (Value::List(a), Value::List(b)) => out.push(mismatch(format!(
+            "{} values claimed, {} exact",
+            a.len(),
+            b.len()
+        ))),
+        (Value::Map(_), Value::Map(_)) => out.push(mismatch(
+            "the claimed keys differ from the exact ones".into(),
+        )),
+        (Value::Number(a), Value::Number(b)) if a != b => {
+            out.push(mismatch(format!("differs by {}", a - b)))
+        }
         (Value::Poly(a, names), Value::Poly(b, _)) if a != b => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
-            out.push(mismatch(format!("claimed − exact = {}", a.sub(b).to_text(&n))));
+            out.push(mismatch(format!(
+                "claimed − exact = {}",
+                a.sub(b).to_text(&n)
+            )));
         }
         (a, b) if a == b => {}
-        (Value::Bool(_), Value::Bool(_)) | (Value::Integer(_), Value::Integer(_)) => out.push(mismatch("differs".into())),
+        (Value::Bool(_), Value::Bool(_)) | (Value::Integer(_), Value::Integer(_)) => {
+            out.push(mismatch("differs".into()))
+        }
         _ => out.push(mismatch("the claimed value has a different kind".into())),
     }
 }

@@ -7,6 +7,7 @@ use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome, check_barycentric, parse_list};
+use crate::bernstein;
 use crate::cli::OutputArgs;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::{Float, Precision, net_to};
@@ -15,7 +16,6 @@ use crate::io::points::read_points;
 use crate::number::to_decimal_string;
 use crate::patch::{ControlNet, Patch};
 use crate::report::{Render, json_rationals, tuple};
-use crate::{bernstein, casteljau};
 
 /// Arguments of `tribez eval`.
 #[derive(Debug, clap::Args)]
@@ -98,7 +98,11 @@ pub struct EvalReport {
     results: Vec<PointResult>,
 }
 
-fn judge<F: Float>(value: F, exact_inputs: &BigRational, intended: &BigRational) -> FloatCoordinate {
+fn judge<F: Float>(
+    value: F,
+    exact_inputs: &BigRational,
+    intended: &BigRational,
+) -> FloatCoordinate {
     let exact = value.exact();
     FloatCoordinate {
         decimal: value.decimal(),
@@ -110,22 +114,38 @@ fn judge<F: Float>(value: F, exact_inputs: &BigRational, intended: &BigRational)
 }
 
 /// The float results of both algorithms at `lambda`, judged against exact values.
-fn float_results<F: Float>(net: &ControlNet<BigRational>, lambda: &[BigRational], intended: &[BigRational]) -> Vec<FloatResult> {
+fn float_results<F: Float>(
+    net: &ControlNet<BigRational>,
+    lambda: &[BigRational],
+    intended: &[BigRational],
+) -> Vec<FloatResult> {
     let fnet: ControlNet<F> = net_to(net);
     let lam: Vec<F> = lambda.iter().map(F::round).collect();
-    let lam_exact: Vec<BigRational> = lam.iter().map(|x| x.exact().expect("rounded coordinates are finite")).collect();
+    let lam_exact: Vec<BigRational> = lam
+        .iter()
+        .map(|x| x.exact().expect("rounded coordinates are finite"))
+        .collect();
     let exact_net = fnet.map(|x| x.exact().unwrap_or_default());
-    let exact_at_inputs = ExactEvaluator::new(&exact_net).evaluate(&lam_exact, Algorithm::Casteljau);
-    [("casteljau", casteljau::evaluate(&fnet, &lam)), ("bernstein", bernstein::evaluate(&fnet, &lam))]
-        .into_iter()
-        .map(|(algorithm, values)| FloatResult {
-            precision: F::PRECISION,
-            algorithm,
-            inputs: lam_exact.clone(),
-            exact_at_inputs: exact_at_inputs.clone(),
-            coords: values.iter().zip(&exact_at_inputs).zip(intended).map(|((&v, e), i)| judge(v, e, i)).collect(),
-        })
-        .collect()
+    let exact_at_inputs =
+        ExactEvaluator::new(&exact_net).evaluate(&lam_exact, Algorithm::Casteljau);
+    [
+        ("casteljau", crate::float::casteljau(&fnet, &lam)),
+        ("bernstein", bernstein::evaluate(&fnet, &lam)),
+    ]
+    .into_iter()
+    .map(|(algorithm, values)| FloatResult {
+        precision: F::PRECISION,
+        algorithm,
+        inputs: lam_exact.clone(),
+        exact_at_inputs: exact_at_inputs.clone(),
+        coords: values
+            .iter()
+            .zip(&exact_at_inputs)
+            .zip(intended)
+            .map(|((&v, e), i)| judge(v, e, i))
+            .collect(),
+    })
+    .collect()
 }
 
 /// Run `tribez eval`.
@@ -144,18 +164,29 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         }
     }
     if raw.is_empty() {
-        return Err(CliError::Usage("give at least one point with --at or --points".into()));
+        return Err(CliError::Usage(
+            "give at least one point with --at or --points".into(),
+        ));
     }
     let domain = patch.domain_or_reference();
     let mut points = Vec::with_capacity(raw.len());
     for (what, p) in raw {
         if args.cartesian {
-            let lambda = domain.barycentric(&p).map_err(|e| CliError::core(&what, e))?;
+            let lambda = domain
+                .barycentric(&p)
+                .map_err(|e| CliError::core(&what, e))?;
             points.push((lambda, Some(p)));
         } else {
             if args.homogeneous {
                 if p.len() != m + 1 {
-                    return Err(CliError::core(&what, crate::error::CoreError::WrongLength { what: "point".into(), expected: m + 1, found: p.len() }));
+                    return Err(CliError::core(
+                        &what,
+                        crate::error::CoreError::WrongLength {
+                            what: "point".into(),
+                            expected: m + 1,
+                            found: p.len(),
+                        },
+                    ));
                 }
             } else {
                 check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
@@ -176,10 +207,19 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                     Precision::F32 => float_results::<f32>(&patch.net, &at, &point),
                 });
             }
-            PointResult { at, cartesian, point, floats }
+            PointResult {
+                at,
+                cartesian,
+                point,
+                floats,
+            }
         })
         .collect();
-    let report = EvalReport { file, patch, results };
+    let report = EvalReport {
+        file,
+        patch,
+        results,
+    };
     Outcome::rendered(&report, args.out.format, true)
 }
 
@@ -208,13 +248,20 @@ impl Render for EvalReport {
             }
             out += &format!(": {}\n", tuple(&r.point));
             for f in &r.floats {
-                out += &format!("  {} {}: inputs as the code saw them {}\n", f.precision.name(), f.algorithm, tuple(&f.inputs));
+                out += &format!(
+                    "  {} {}: inputs as the code saw them {}\n",
+                    f.precision.name(),
+                    f.algorithm,
+                    tuple(&f.inputs)
+                );
                 for (c, fc) in f.coords.iter().enumerate() {
                     out += &format!(
                         "    [{c}] {} = {} = {}; {} ulp from the exact value at those inputs ({}), {} ulp from the exact value at the intended inputs\n",
                         fc.decimal,
                         fc.hex,
-                        fc.exact.as_ref().map_or("not finite".into(), ToString::to_string),
+                        fc.exact
+                            .as_ref()
+                            .map_or("not finite".into(), ToString::to_string),
                         ulps_text(&fc.ulps_algorithm),
                         f.exact_at_inputs[c],
                         ulps_text(&fc.ulps_total),
@@ -230,7 +277,8 @@ impl Render for EvalReport {
             .results
             .iter()
             .map(|r| {
-                let mut o = json!({ "at": json_rationals(&r.at), "point": json_rationals(&r.point) });
+                let mut o =
+                    json!({ "at": json_rationals(&r.at), "point": json_rationals(&r.point) });
                 if let Some(c) = &r.cartesian {
                     o["cartesian"] = json_rationals(c);
                 }

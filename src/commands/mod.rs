@@ -39,7 +39,10 @@ pub enum CliError {
 impl CliError {
     /// A core error about `context`.
     pub fn core(context: impl Into<String>, source: CoreError) -> Self {
-        CliError::Core { context: context.into(), source }
+        CliError::Core {
+            context: context.into(),
+            source,
+        }
     }
 }
 
@@ -54,7 +57,11 @@ pub struct Outcome {
 impl Outcome {
     /// Render a result in the requested format; formats that do not apply are a usage error.
     pub fn rendered(r: &dyn Render, format: Format, success: bool) -> Result<Self, CliError> {
-        let output = render(r, format).ok_or_else(|| CliError::Usage(format!("--format {format:?} is not available for this command").to_lowercase()))?;
+        let output = render(r, format).ok_or_else(|| {
+            CliError::Usage(
+                format!("--format {format:?} is not available for this command").to_lowercase(),
+            )
+        })?;
         Ok(Outcome { output, success })
     }
 }
@@ -94,9 +101,18 @@ pub fn emit(outcome: &Outcome, out: &OutputArgs) -> Result<(), CliError> {
 /// Write `bytes` to `path` whole or not at all (temporary file in the same directory, then rename).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let file = path.display().to_string();
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().ok_or_else(|| InputError::file(&file, "not a file name"))?;
-    let tmp = dir.join(format!(".{}.tribez-tmp-{}", name.to_string_lossy(), std::process::id()));
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .ok_or_else(|| InputError::file(&file, "not a file name"))?;
+    let tmp = dir.join(format!(
+        ".{}.tribez-tmp-{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
     let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
     if let Err(e) = result {
         let _ = std::fs::remove_file(&tmp);
@@ -125,11 +141,18 @@ pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> 
 /// Check that barycentric coordinates have `m + 1` entries summing to one.
 pub fn check_barycentric(lambda: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
     if lambda.len() != m + 1 {
-        return Err(CoreError::WrongLength { what: what.into(), expected: m + 1, found: lambda.len() });
+        return Err(CoreError::WrongLength {
+            what: what.into(),
+            expected: m + 1,
+            found: lambda.len(),
+        });
     }
     let sum: BigRational = lambda.iter().sum();
     if !sum.is_one() {
-        return Err(CoreError::NotBarycentric { coords: crate::report::tuple(lambda), sum: sum.to_string() });
+        return Err(CoreError::NotBarycentric {
+            coords: crate::report::tuple(lambda),
+            sum: sum.to_string(),
+        });
     }
     Ok(())
 }
@@ -137,11 +160,18 @@ pub fn check_barycentric(lambda: &[BigRational], m: usize, what: &str) -> Result
 /// Check that a barycentric direction has `m + 1` entries summing to zero.
 pub fn check_direction(d: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
     if d.len() != m + 1 {
-        return Err(CoreError::WrongLength { what: what.into(), expected: m + 1, found: d.len() });
+        return Err(CoreError::WrongLength {
+            what: what.into(),
+            expected: m + 1,
+            found: d.len(),
+        });
     }
     let sum: BigRational = d.iter().sum();
     if !sum.is_zero() {
-        return Err(CoreError::DirectionSum { coords: crate::report::tuple(d), sum: sum.to_string() });
+        return Err(CoreError::DirectionSum {
+            coords: crate::report::tuple(d),
+            sum: sum.to_string(),
+        });
     }
     Ok(())
 }

@@ -8,7 +8,9 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::io::patch_file::read_patch;
 use crate::report::Render;
-use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names};
+use crate::symbolic::{
+    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
+};
 
 /// Arguments of `tribez symbolic`.
 #[derive(Debug, clap::Args)]
@@ -34,11 +36,18 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let patch = read_patch(&args.patch)?;
     let m = patch.net.m();
     let (names, components) = if args.cartesian {
-        (cartesian_names(m), cartesian_form(&patch.net, &patch.domain_or_reference()))
+        (
+            cartesian_names(m),
+            cartesian_form(&patch.net, &patch.domain_or_reference()),
+        )
     } else {
         (barycentric_names(m), barycentric_form(&patch.net))
     };
-    let report = SymbolicReport { file: args.patch.display().to_string(), names, components };
+    let report = SymbolicReport {
+        file: args.patch.display().to_string(),
+        names,
+        components,
+    };
     Outcome::rendered(&report, args.out.format, true)
 }
 
@@ -51,7 +60,11 @@ impl SymbolicReport {
 impl Render for SymbolicReport {
     fn text(&self) -> String {
         let names = self.names();
-        let mut out = format!("{}: in the variables {}\n", self.file, self.names.join(", "));
+        let mut out = format!(
+            "{}: in the variables {}\n",
+            self.file,
+            self.names.join(", ")
+        );
         for (c, p) in self.components.iter().enumerate() {
             out += &format!("[{c}] {}\n", p.to_text(&names));
         }
@@ -77,6 +90,9 @@ impl Render for SymbolicReport {
     fn latex(&self) -> Option<String> {
         let names = self.names();
         let rows: Vec<String> = self.components.iter().map(|p| p.to_latex(&names)).collect();
-        Some(format!("\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}\n", rows.join(" \\\\\n")))
+        Some(format!(
+            "\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}\n",
+            rows.join(" \\\\\n")
+        ))
     }
 }

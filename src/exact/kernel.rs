@@ -33,7 +33,10 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use super::limbs::{add, add_mul, div_word_exact, gcd_u64, mul_into, mul_word, mul_word_add_mul, rem_word, shr, signed_add, trailing_zeros, trim};
+use super::limbs::{
+    add, add_mul, div_word_exact, gcd_u64, mul_into, mul_word, mul_word_add_mul, rem_word, shr,
+    signed_add, trailing_zeros, trim,
+};
 use crate::patch::ControlNet;
 use crate::simplex::count;
 
@@ -67,7 +70,11 @@ pub fn lcm_big(a: &BigInt, b: &BigInt) -> BigInt {
     if a.is_zero() || b.is_zero() {
         return BigInt::zero();
     }
-    let (big, small) = if a.magnitude().bits() >= b.magnitude().bits() { (a, b) } else { (b, a) };
+    let (big, small) = if a.magnitude().bits() >= b.magnitude().bits() {
+        (a, b)
+    } else {
+        (b, a)
+    };
     let g = (big % small).gcd(small);
     (big / &g * small).abs()
 }
@@ -137,7 +144,10 @@ impl Factors {
                 exps.entry(r).or_insert(1);
             }
         }
-        Some(Factors { e2, odd: exps.into_iter().collect() })
+        Some(Factors {
+            e2,
+            odd: exps.into_iter().collect(),
+        })
     }
 
     /// The number they factor.
@@ -188,7 +198,11 @@ impl Reducer {
             }
             *big = x as u64;
         }
-        Reducer { factors, moduli, table }
+        Reducer {
+            factors,
+            moduli,
+            table,
+        }
     }
 
     /// Divide `limbs` by `gcd(limbs, L)`; returns the primes (with multiplicity) and the power
@@ -278,10 +292,19 @@ impl Rows {
             let nn = n - k;
             let base = k * (2 * n + 3 - k) / 2;
             let vals: Vec<&BigRational> = (0..=nn).map(|j| &net.point(base + j)[c]).collect();
-            let l = vals.iter().fold(BigInt::one(), |acc, x| lcm_big(&acc, x.denom()));
-            let z: Vec<BigInt> = vals.iter().map(|x| x.numer() * div_exact(&l, x.denom())).collect();
+            let l = vals
+                .iter()
+                .fold(BigInt::one(), |acc, x| lcm_big(&acc, x.denom()));
+            let z: Vec<BigInt> = vals
+                .iter()
+                .map(|x| x.numer() * div_exact(&l, x.denom()))
+                .collect();
             let min = z.iter().min().cloned().unwrap_or_default();
-            let kk = if min.is_negative() { -min } else { BigInt::zero() };
+            let kk = if min.is_negative() {
+                -min
+            } else {
+                BigInt::zero()
+            };
             for (j, zj) in z.iter().enumerate() {
                 let t = (zj + &kk) * BigInt::from(crate::simplex::binomial(nn as u64, j as u64));
                 limbs.extend(to_limbs(t.magnitude()));
@@ -296,14 +319,30 @@ impl Rows {
         for k in (0..=n).rev() {
             let m_k = lcm_big(&m_next, &row_lcm[k]);
             e[k] = to_limbs((&m_k / &m_next).magnitude());
-            f[k] = to_limbs((&m_k / &row_lcm[k] * BigInt::from(crate::simplex::binomial(n as u64, k as u64))).magnitude());
+            f[k] = to_limbs(
+                (&m_k / &row_lcm[k] * BigInt::from(crate::simplex::binomial(n as u64, k as u64)))
+                    .magnitude(),
+            );
             m_next = m_k;
         }
-        Rows { limbs, starts, shift, e, f }
+        Rows {
+            limbs,
+            starts,
+            shift,
+            e,
+            f,
+        }
     }
 
     /// The numerator over `L_c` at `a`: `(negative?, |S_0|)`. `sp[N] = (a_0 + a_1)^N`.
-    fn evaluate(&self, n: usize, a: &[u64], pw: &[Vec<u64>], sp: &[Vec<u64>], bufs: &mut [Vec<u64>; 4]) -> (bool, Vec<u64>) {
+    fn evaluate(
+        &self,
+        n: usize,
+        a: &[u64],
+        pw: &[Vec<u64>],
+        sp: &[Vec<u64>],
+        bufs: &mut [Vec<u64>; 4],
+    ) -> (bool, Vec<u64>) {
         let [r, corr, y, z] = bufs;
         let mut s: Vec<u64> = Vec::new();
         let mut s_neg = false;
@@ -313,7 +352,12 @@ impl Rows {
             r.clear();
             r.extend_from_slice(&self.limbs[self.starts[base]..self.starts[base + 1]]);
             for (j, p) in pw.iter().enumerate().take(nn + 1).skip(1) {
-                mul_word_add_mul(r, a[0], &self.limbs[self.starts[base + j]..self.starts[base + j + 1]], p);
+                mul_word_add_mul(
+                    r,
+                    a[0],
+                    &self.limbs[self.starts[base + j]..self.starts[base + j + 1]],
+                    p,
+                );
             }
             let mut r_neg = false;
             if !self.shift[k].is_empty() {
@@ -356,12 +400,22 @@ fn to_limbs(x: &BigUint) -> Vec<u64> {
 }
 
 fn from_limbs(x: &[u64]) -> BigUint {
-    BigUint::new(x.iter().flat_map(|&l| [l as u32, (l >> 32) as u32]).collect())
+    BigUint::new(
+        x.iter()
+            .flat_map(|&l| [l as u32, (l >> 32) as u32])
+            .collect(),
+    )
 }
 
 impl FastNet {
     /// Prepare from the integer net `z` and its multinomial-scaled version `C(n;α) z_α`.
-    pub fn new(net: &ControlNet<BigRational>, scaled: &ControlNet<BigInt>, integer: &ControlNet<BigInt>, denominators: &[BigInt], factored: Vec<Option<Factors>>) -> Self {
+    pub fn new(
+        net: &ControlNet<BigRational>,
+        scaled: &ControlNet<BigInt>,
+        integer: &ControlNet<BigInt>,
+        denominators: &[BigInt],
+        factored: Vec<Option<Factors>>,
+    ) -> Self {
         let (m, n, dim) = (scaled.m(), scaled.degree(), scaled.dim());
         let mut counts = vec![0; (m + 1) * (n + 1)];
         for t in 0..=m {
@@ -372,8 +426,17 @@ impl FastNet {
         let coords = (0..dim)
             .zip(factored)
             .map(|(c, f)| {
-                let min = integer.points().map(|p| &p[c]).min().cloned().unwrap_or_default();
-                let shift = if min.is_negative() { min.magnitude().clone() } else { BigUint::zero() };
+                let min = integer
+                    .points()
+                    .map(|p| &p[c])
+                    .min()
+                    .cloned()
+                    .unwrap_or_default();
+                let shift = if min.is_negative() {
+                    min.magnitude().clone()
+                } else {
+                    BigUint::zero()
+                };
                 let mut limbs = Vec::new();
                 let mut starts = vec![0];
                 for ((alpha, s), (_, z)) in scaled.entries().zip(integer.entries()) {
@@ -389,10 +452,22 @@ impl FastNet {
                     starts.push(limbs.len());
                 }
                 let rows = (m == 2).then(|| Rows::new(n, net, c));
-                Coordinate { limbs, starts, shift, denominator: denominators[c].magnitude().clone(), reducer: f.map(Reducer::new), rows }
+                Coordinate {
+                    limbs,
+                    starts,
+                    shift,
+                    denominator: denominators[c].magnitude().clone(),
+                    reducer: f.map(Reducer::new),
+                    rows,
+                }
             })
             .collect();
-        FastNet { m, n, counts, coords }
+        FastNet {
+            m,
+            n,
+            counts,
+            coords,
+        }
     }
 
     #[inline]
@@ -402,7 +477,16 @@ impl FastNet {
 
     /// `Σ s_α a^α` over the sub-simplex of dimension `t`, degree `nn`, starting at rank `base`,
     /// into `bufs[0]`.
-    fn horner(&self, c: &Coordinate, t: usize, nn: usize, base: usize, a: &[u64], pw: &[Vec<u64>], bufs: &mut [Vec<u64>]) {
+    fn horner(
+        &self,
+        c: &Coordinate,
+        t: usize,
+        nn: usize,
+        base: usize,
+        a: &[u64],
+        pw: &[Vec<u64>],
+        bufs: &mut [Vec<u64>],
+    ) {
         let (head, rest) = bufs.split_first_mut().expect("one buffer per level");
         head.clear();
         if t == 1 {
@@ -425,7 +509,11 @@ impl FastNet {
 
     /// The homogeneous form at `λ = a / d` (`d ≥ 1`), in lowest terms.
     pub fn evaluate(&self, a: &[u64], d: u64) -> Vec<BigRational> {
-        assert_eq!(a.len(), self.m + 1, "point has the wrong number of coordinates");
+        assert_eq!(
+            a.len(),
+            self.m + 1,
+            "point has the wrong number of coordinates"
+        );
         let n = self.n;
         // Powers a_1^j, j = 0..n.
         let mut pw: Vec<Vec<u64>> = Vec::with_capacity(n + 1);
@@ -464,7 +552,9 @@ impl FastNet {
                 let (neg, mut limbs) = if c.shift.is_zero() {
                     (false, h)
                 } else {
-                    let sp = sum_pow.get_or_insert_with(|| a.iter().fold(BigUint::zero(), |s, &x| s + x).pow(n as u32));
+                    let sp = sum_pow.get_or_insert_with(|| {
+                        a.iter().fold(BigUint::zero(), |s, &x| s + x).pow(n as u32)
+                    });
                     let v = BigInt::from(from_limbs(&h)) - BigInt::from(&c.shift * &*sp);
                     (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
                 };
@@ -475,12 +565,22 @@ impl FastNet {
 }
 
 /// `±limbs / (L_c d^n)` in lowest terms.
-fn reduce(c: &Coordinate, neg: bool, limbs: &mut Vec<u64>, d: u64, n: usize, dn: &BigUint) -> BigRational {
+fn reduce(
+    c: &Coordinate,
+    neg: bool,
+    limbs: &mut Vec<u64>,
+    d: u64,
+    n: usize,
+    dn: &BigUint,
+) -> BigRational {
     if limbs.is_empty() {
         return BigRational::zero();
     }
     let Some(reducer) = &c.reducer else {
-        let v = BigInt::from_biguint(if neg { Sign::Minus } else { Sign::Plus }, from_limbs(limbs));
+        let v = BigInt::from_biguint(
+            if neg { Sign::Minus } else { Sign::Plus },
+            from_limbs(limbs),
+        );
         return BigRational::new(v, BigInt::from(&c.denominator * dn));
     };
     // gcd(N, d^n) by word gcds.
@@ -506,11 +606,22 @@ fn reduce(c: &Coordinate, neg: bool, limbs: &mut Vec<u64>, d: u64, n: usize, dn:
     // gcd(N, L) by the known primes of L.
     let mut removed = Vec::new();
     let s2 = reducer.strip(limbs, &mut removed);
-    let mut den = if s2 > 0 { &c.denominator >> s2 } else { c.denominator.clone() };
+    let mut den = if s2 > 0 {
+        &c.denominator >> s2
+    } else {
+        c.denominator.clone()
+    };
     for p in removed {
         den /= p;
     }
-    let dn_part = if g1_big.is_one() { dn.clone() } else { dn / &g1_big };
-    let numer = BigInt::from_biguint(if neg { Sign::Minus } else { Sign::Plus }, from_limbs(limbs));
+    let dn_part = if g1_big.is_one() {
+        dn.clone()
+    } else {
+        dn / &g1_big
+    };
+    let numer = BigInt::from_biguint(
+        if neg { Sign::Minus } else { Sign::Plus },
+        from_limbs(limbs),
+    );
     BigRational::new_raw(numer, BigInt::from(den * dn_part))
 }

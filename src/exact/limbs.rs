@@ -105,7 +105,9 @@ pub(super) fn mul_into(out: &mut Vec<u64>, a: &[u64], b: &[u64]) {
 
 /// Compare trimmed magnitudes.
 pub(super) fn cmp(a: &[u64], b: &[u64]) -> std::cmp::Ordering {
-    a.len().cmp(&b.len()).then_with(|| a.iter().rev().cmp(b.iter().rev()))
+    a.len()
+        .cmp(&b.len())
+        .then_with(|| a.iter().rev().cmp(b.iter().rev()))
 }
 
 /// `x ← x − y` for `x ≥ y`.
@@ -213,7 +215,11 @@ pub(super) fn shr(x: &mut Vec<u64>, s: u64) {
     if bits > 0 {
         let n = x.len();
         for i in 0..n {
-            let hi = if i + 1 < n { x[i + 1] << (64 - bits) } else { 0 };
+            let hi = if i + 1 < n {
+                x[i + 1] << (64 - bits)
+            } else {
+                0
+            };
             x[i] = (x[i] >> bits) | hi;
         }
     }
@@ -247,7 +253,10 @@ mod tests {
     use num_bigint::BigUint;
 
     fn big(x: &[u64]) -> BigUint {
-        let halves: Vec<u32> = x.iter().flat_map(|&l| [l as u32, (l >> 32) as u32]).collect();
+        let halves: Vec<u32> = x
+            .iter()
+            .flat_map(|&l| [l as u32, (l >> 32) as u32])
+            .collect();
         BigUint::new(halves)
     }
 
@@ -265,7 +274,10 @@ mod tests {
         let mut z = a.clone();
         add(&mut z, &s);
         assert_eq!(big(&z), big(&a) + big(&s));
-        assert_eq!(BigUint::from(rem_word(&a, 1_000_003)), big(&a) % 1_000_003u64);
+        assert_eq!(
+            BigUint::from(rem_word(&a, 1_000_003)),
+            big(&a) % 1_000_003u64
+        );
         let mut w = y.clone();
         div_word_exact(&mut w, u64::MAX);
         assert_eq!(big(&w), big(&a));
@@ -276,7 +288,10 @@ mod tests {
         assert_eq!(gcd_u64(12, 18), 6);
         let mut f = a.clone();
         mul_word_add_mul(&mut f, u64::MAX, &s, &[u64::MAX]);
-        assert_eq!(big(&f), big(&a) * BigUint::from(u64::MAX) + big(&s) * BigUint::from(u64::MAX));
+        assert_eq!(
+            big(&f),
+            big(&a) * BigUint::from(u64::MAX) + big(&s) * BigUint::from(u64::MAX)
+        );
         let mut p = Vec::new();
         mul_into(&mut p, &s, &a);
         assert_eq!(big(&p), big(&a) * big(&s));

@@ -27,7 +27,13 @@ pub struct InputError {
 impl InputError {
     /// An error about a whole file.
     pub fn file(file: impl Into<String>, message: impl Into<String>) -> Self {
-        InputError { file: file.into(), line: None, column: None, key: None, message: message.into() }
+        InputError {
+            file: file.into(),
+            line: None,
+            column: None,
+            key: None,
+            message: message.into(),
+        }
     }
 
     /// Attach a key, keeping an existing one as a prefix.

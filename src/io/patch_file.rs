@@ -35,7 +35,13 @@ pub const MAX_CONTROL_POINTS: usize = 250_000;
 pub const MAX_SIMPLEX_DIMENSION: usize = 16;
 
 /// The keys a patch file may have.
-pub const PATCH_KEYS: &[&str] = &["name", "degree", "domain", "control_points", "domain_in_parent"];
+pub const PATCH_KEYS: &[&str] = &[
+    "name",
+    "degree",
+    "domain",
+    "control_points",
+    "domain_in_parent",
+];
 
 /// Read a patch file.
 pub fn read_patch(path: &Path) -> Result<Patch, InputError> {
@@ -45,16 +51,35 @@ pub fn read_patch(path: &Path) -> Result<Patch, InputError> {
 
 /// Parse a patch from a table node (the whole file, or an inline `patch` table in a claim file).
 pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<Patch, InputError> {
-    let key = |k: &str| if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
+    let key = |k: &str| {
+        if prefix.is_empty() {
+            k.to_string()
+        } else {
+            format!("{prefix}.{k}")
+        }
+    };
     let table = doc.table(node, prefix)?;
     doc.check_keys(node, table, PATCH_KEYS, prefix)?;
-    let name = Document::get(table, "name").map(|n| doc.string(n, &key("name")).map(str::to_string)).transpose()?;
-    let degree_node = Document::get(table, "degree").ok_or_else(|| doc.error(node, &key("degree"), "missing key `degree`"))?;
+    let name = Document::get(table, "name")
+        .map(|n| doc.string(n, &key("name")).map(str::to_string))
+        .transpose()?;
+    let degree_node = Document::get(table, "degree")
+        .ok_or_else(|| doc.error(node, &key("degree"), "missing key `degree`"))?;
     let degree = doc.usize(degree_node, &key("degree"))?;
     if degree > MAX_DEGREE {
-        return Err(doc.error(degree_node, &key("degree"), format!("degree {degree} is above the limit of {MAX_DEGREE} (see README, Scaling)")));
+        return Err(doc.error(
+            degree_node,
+            &key("degree"),
+            format!("degree {degree} is above the limit of {MAX_DEGREE} (see README, Scaling)"),
+        ));
     }
-    let cp_node = Document::get(table, "control_points").ok_or_else(|| doc.error(node, &key("control_points"), "missing table `control_points`"))?;
+    let cp_node = Document::get(table, "control_points").ok_or_else(|| {
+        doc.error(
+            node,
+            &key("control_points"),
+            "missing table `control_points`",
+        )
+    })?;
     let net = control_points(doc, cp_node, degree, &key("control_points"))?;
     let domain = match Document::get(table, "domain") {
         None => None,
@@ -63,7 +88,12 @@ pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<
     Ok(Patch { name, net, domain })
 }
 
-fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Result<ControlNet<BigRational>, InputError> {
+fn control_points(
+    doc: &Document,
+    node: &Node,
+    degree: usize,
+    key: &str,
+) -> Result<ControlNet<BigRational>, InputError> {
     let table = doc.table(node, key)?;
     let Some((first_key, first)) = table.first() else {
         return Err(doc.error(node, key, "no control points"));
@@ -76,7 +106,14 @@ fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Resu
     };
     let m = parts(first_key, first)?.len().saturating_sub(1);
     if m == 0 || m > MAX_SIMPLEX_DIMENSION {
-        return Err(doc.error(first, &format!("{key}.\"{first_key}\""), format!("a multi-index needs 2 to {} parts", MAX_SIMPLEX_DIMENSION + 1)));
+        return Err(doc.error(
+            first,
+            &format!("{key}.\"{first_key}\""),
+            format!(
+                "a multi-index needs 2 to {} parts",
+                MAX_SIMPLEX_DIMENSION + 1
+            ),
+        ));
     }
     let total = simplex::binomial((degree + m) as u64, m as u64);
     if total > MAX_CONTROL_POINTS as u128 {
@@ -93,11 +130,19 @@ fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Resu
         }
         let sum: u64 = alpha.iter().map(|&a| u64::from(a)).sum();
         if sum != degree as u64 {
-            return Err(doc.error(v, &here, format!("multi-index sums to {sum}, but the degree is {degree}")));
+            return Err(doc.error(
+                v,
+                &here,
+                format!("multi-index sums to {sum}, but the degree is {degree}"),
+            ));
         }
         let r = simplex.rank(&alpha);
         if let Some((other, _)) = &slots[r] {
-            return Err(doc.error(v, &here, format!("duplicated multi-index: \"{other}\" names the same control point")));
+            return Err(doc.error(
+                v,
+                &here,
+                format!("duplicated multi-index: \"{other}\" names the same control point"),
+            ));
         }
         let point = doc.rationals(v, &here)?;
         if point.is_empty() {
@@ -129,7 +174,15 @@ fn control_points(doc: &Document, node: &Node, degree: usize, key: &str) -> Resu
 pub fn domain(doc: &Document, node: &Node, m: usize, key: &str) -> Result<Domain, InputError> {
     let rows = doc.array(node, key)?;
     if rows.len() != m + 1 {
-        return Err(doc.error(node, key, format!("the domain needs {} vertices for a {m}-simplex, found {}", m + 1, rows.len())));
+        return Err(doc.error(
+            node,
+            key,
+            format!(
+                "the domain needs {} vertices for a {m}-simplex, found {}",
+                m + 1,
+                rows.len()
+            ),
+        ));
     }
     let vertices = rows
         .iter()
@@ -141,7 +194,11 @@ pub fn domain(doc: &Document, node: &Node, m: usize, key: &str) -> Result<Domain
 
 /// `"1,0,2"` for a multi-index.
 pub fn index_key(alpha: &[u32]) -> String {
-    alpha.iter().map(ToString::to_string).collect::<Vec<_>>().join(",")
+    alpha
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 fn strings(xs: &[BigRational]) -> Vec<String> {
@@ -156,7 +213,10 @@ pub fn patch_to_json(patch: &Patch) -> Json {
     }
     obj.insert("degree".into(), json!(patch.net.degree()));
     if let Some(d) = &patch.domain {
-        obj.insert("domain".into(), json!(d.vertices().iter().map(|v| strings(v)).collect::<Vec<_>>()));
+        obj.insert(
+            "domain".into(),
+            json!(d.vertices().iter().map(|v| strings(v)).collect::<Vec<_>>()),
+        );
     }
     let mut cps = Map::new();
     for (alpha, p) in patch.net.entries() {
@@ -171,7 +231,13 @@ fn toml_string(s: &str) -> String {
 }
 
 fn toml_list(xs: &[BigRational]) -> String {
-    format!("[{}]", xs.iter().map(|x| toml_string(&x.to_string())).collect::<Vec<_>>().join(", "))
+    format!(
+        "[{}]",
+        xs.iter()
+            .map(|x| toml_string(&x.to_string()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
 }
 
 /// The patch as a TOML patch file.
@@ -182,7 +248,14 @@ pub fn patch_to_toml(patch: &Patch) -> String {
     }
     out += &format!("degree = {}\n", patch.net.degree());
     if let Some(d) = &patch.domain {
-        out += &format!("domain = [{}]\n", d.vertices().iter().map(|v| toml_list(v)).collect::<Vec<_>>().join(", "));
+        out += &format!(
+            "domain = [{}]\n",
+            d.vertices()
+                .iter()
+                .map(|v| toml_list(v))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
     }
     out += "\n[control_points]\n";
     for (alpha, p) in patch.net.entries() {
@@ -237,24 +310,57 @@ degree = 2
     #[test]
     fn bad_patches_name_the_place() {
         let missing = FINN.replace("\"0,1,1\" = [\"1\", \"1\", \"1\"]\n", "");
-        assert!(err(&missing).contains("missing control point \"0,1,1\""), "{}", err(&missing));
-        let dup = FINN.replace("\"0,1,1\"", "\"0, 1,1\"").replace("\"0,0,2\"", "\"0,1,1\"");
-        assert!(err(&dup).contains("duplicated multi-index"), "{}", err(&dup));
+        assert!(
+            err(&missing).contains("missing control point \"0,1,1\""),
+            "{}",
+            err(&missing)
+        );
+        let dup = FINN
+            .replace("\"0,1,1\"", "\"0, 1,1\"")
+            .replace("\"0,0,2\"", "\"0,1,1\"");
+        assert!(
+            err(&dup).contains("duplicated multi-index"),
+            "{}",
+            err(&dup)
+        );
         let sum = FINN.replace("\"0,0,2\"", "\"0,0,3\"");
-        assert!(err(&sum).starts_with("p.toml:10: control_points.\"0,0,3\": multi-index sums to 3"), "{}", err(&sum));
+        assert!(
+            err(&sum).starts_with("p.toml:10: control_points.\"0,0,3\": multi-index sums to 3"),
+            "{}",
+            err(&sum)
+        );
         let len = FINN.replace("\"0,0,2\"", "\"0,0,0,2\"");
         assert!(err(&len).contains("has 4 parts"), "{}", err(&len));
         let dim = FINN.replace("[\"0\", \"2\", \"1\"]", "[\"0\", \"2\"]");
         assert!(err(&dim).contains("different dimensions"), "{}", err(&dim));
         let num = FINN.replace("\"1\", \"1\", \"1\"", "\"1\", \"x\", \"1\"");
-        assert!(err(&num).contains("control_points.\"0,1,1\"[1]"), "{}", err(&num));
+        assert!(
+            err(&num).contains("control_points.\"0,1,1\"[1]"),
+            "{}",
+            err(&num)
+        );
         let zero = FINN.replace("\"1\", \"1\", \"1\"", "\"1\", \"1/0\", \"1\"");
         assert!(err(&zero).contains("zero denominator"), "{}", err(&zero));
         let big = FINN.replace("degree = 2", "degree = 201");
-        assert!(err(&big).contains("above the limit of 200"), "{}", err(&big));
-        let degenerate = FINN.replace("degree = 2", "degree = 2\ndomain = [[\"0\",\"0\"],[\"1\",\"1\"],[\"2\",\"2\"]]");
-        assert!(err(&degenerate).contains("degenerate domain"), "{}", err(&degenerate));
+        assert!(
+            err(&big).contains("above the limit of 200"),
+            "{}",
+            err(&big)
+        );
+        let degenerate = FINN.replace(
+            "degree = 2",
+            "degree = 2\ndomain = [[\"0\",\"0\"],[\"1\",\"1\"],[\"2\",\"2\"]]",
+        );
+        assert!(
+            err(&degenerate).contains("degenerate domain"),
+            "{}",
+            err(&degenerate)
+        );
         let unknown = FINN.replace("degree = 2", "degree = 2\ndegre = 3");
-        assert!(err(&unknown).contains("degre: unknown key"), "{}", err(&unknown));
+        assert!(
+            err(&unknown).contains("degre: unknown key"),
+            "{}",
+            err(&unknown)
+        );
     }
 }

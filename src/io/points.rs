@@ -12,7 +12,11 @@ use crate::number::parse_rational;
 /// Read the points of a `.csv` or `.json` file; every point must have `width` coordinates.
 pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, InputError> {
     let file = path.display().to_string();
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
     if ext == "json" {
         let doc = Document::read(path)?;
         let rows = doc.array(&doc.root, "")?;
@@ -21,7 +25,11 @@ pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, I
             let key = format!("[{i}]");
             let p = doc.rationals(row, &key)?;
             if p.len() != width {
-                return Err(doc.error(row, &key, format!("point has {} coordinates, expected {width}", p.len())));
+                return Err(doc.error(
+                    row,
+                    &key,
+                    format!("point has {} coordinates, expected {width}", p.len()),
+                ));
             }
             out.push(p);
         }
@@ -30,7 +38,8 @@ pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, I
         }
         return Ok(out);
     }
-    let text = std::fs::read_to_string(path).map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
     let mut out = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let t = line.trim();
@@ -46,7 +55,12 @@ pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, I
 }
 
 /// One CSV row of exactly `width` numbers; errors name the line and column (field).
-pub fn parse_csv_row(line: &str, width: usize, file: &str, line_no: usize) -> Result<Vec<BigRational>, InputError> {
+pub fn parse_csv_row(
+    line: &str,
+    width: usize,
+    file: &str,
+    line_no: usize,
+) -> Result<Vec<BigRational>, InputError> {
     let fields: Vec<&str> = line.split(',').collect();
     if fields.len() != width {
         return Err(InputError {

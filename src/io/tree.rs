@@ -76,12 +76,20 @@ impl Document {
     /// Read and parse a `.toml` or `.json` file (by extension).
     pub fn read(path: &Path) -> Result<Self, InputError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
-        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_ascii_lowercase();
         match ext.as_str() {
             "toml" => Document::parse_toml(&file, &text),
             "json" => Document::parse_json(&file, &text),
-            _ => Err(InputError::file(&file, "unknown file type (expected a .toml or .json extension)")),
+            _ => Err(InputError::file(
+                &file,
+                "unknown file type (expected a .toml or .json extension)",
+            )),
         }
     }
 
@@ -93,10 +101,19 @@ impl Document {
         let doc = toml_edit::Document::parse(text).map_err(|e| {
             let (line, column) = e.span().map(|s| line_col(text, s.start)).unzip();
             let msg = e.message().trim().to_string();
-            InputError { file: file.into(), line, column, key: None, message: format!("invalid TOML: {msg}") }
+            InputError {
+                file: file.into(),
+                line,
+                column,
+                key: None,
+                message: format!("invalid TOML: {msg}"),
+            }
         })?;
         let root = toml_table(text, doc.as_table(), 1);
-        Ok(Document { file: file.into(), root })
+        Ok(Document {
+            file: file.into(),
+            root,
+        })
     }
 
     /// Parse JSON text.
@@ -104,14 +121,21 @@ impl Document {
         if text.trim().is_empty() {
             return Err(InputError::file(file, "the file is empty"));
         }
-        let mut p = JsonParser { text: text.as_bytes(), pos: 0, file };
+        let mut p = JsonParser {
+            text: text.as_bytes(),
+            pos: 0,
+            file,
+        };
         p.skip_ws();
         let root = p.value(0)?;
         p.skip_ws();
         if p.pos != p.text.len() {
             return Err(p.err("unexpected text after the JSON value"));
         }
-        Ok(Document { file: file.into(), root })
+        Ok(Document {
+            file: file.into(),
+            root,
+        })
     }
 }
 
@@ -132,21 +156,33 @@ fn toml_table(text: &str, table: &toml_edit::Table, line: usize) -> Node {
     let entries = table
         .iter()
         .map(|(k, item)| {
-            let key_line = table.key(k).and_then(|key| key.span()).map_or(line, |s| line_col(text, s.start).0);
+            let key_line = table
+                .key(k)
+                .and_then(|key| key.span())
+                .map_or(line, |s| line_col(text, s.start).0);
             (k.to_string(), toml_item(text, item, key_line))
         })
         .collect();
-    Node { value: Value::Table(entries), line }
+    Node {
+        value: Value::Table(entries),
+        line,
+    }
 }
 
 fn toml_item(text: &str, item: &toml_edit::Item, line: usize) -> Node {
     match item {
-        toml_edit::Item::None => Node { value: Value::Null, line },
+        toml_edit::Item::None => Node {
+            value: Value::Null,
+            line,
+        },
         toml_edit::Item::Value(v) => toml_value(text, v, line),
         toml_edit::Item::Table(t) => toml_table(text, t, line),
         toml_edit::Item::ArrayOfTables(a) => {
             let items = a.iter().map(|t| toml_table(text, t, line)).collect();
-            Node { value: Value::Array(items), line }
+            Node {
+                value: Value::Array(items),
+                line,
+            }
         }
     }
 }
@@ -154,7 +190,11 @@ fn toml_item(text: &str, item: &toml_edit::Item, line: usize) -> Node {
 fn toml_value(text: &str, v: &toml_edit::Value, line: usize) -> Node {
     use toml_edit::Value as V;
     let line = span_line(text, v.span(), line);
-    let raw = || v.span().map(|s| text[s].trim().to_string()).unwrap_or_else(|| v.to_string().trim().to_string());
+    let raw = || {
+        v.span()
+            .map(|s| text[s].trim().to_string())
+            .unwrap_or_else(|| v.to_string().trim().to_string())
+    };
     let value = match v {
         V::String(s) => Value::String(s.value().clone()),
         V::Integer(_) | V::Float(_) => Value::Number(raw().replace('_', "")),
@@ -164,7 +204,10 @@ fn toml_value(text: &str, v: &toml_edit::Value, line: usize) -> Node {
         V::InlineTable(t) => Value::Table(
             t.iter()
                 .map(|(k, x)| {
-                    let key_line = t.key(k).and_then(|key| key.span()).map_or(line, |s| line_col(text, s.start).0);
+                    let key_line = t
+                        .key(k)
+                        .and_then(|key| key.span())
+                        .map_or(line, |s| line_col(text, s.start).0);
                     (k.to_string(), toml_value(text, x, key_line))
                 })
                 .collect(),
@@ -183,16 +226,28 @@ const MAX_DEPTH: usize = 128;
 
 impl JsonParser<'_> {
     fn line(&self) -> usize {
-        self.text[..self.pos].iter().filter(|&&b| b == b'\n').count() + 1
+        self.text[..self.pos]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count()
+            + 1
     }
 
     fn err(&self, message: &str) -> InputError {
         let (line, col) = line_col(std::str::from_utf8(self.text).unwrap_or(""), self.pos);
-        InputError { file: self.file.into(), line: Some(line), column: Some(col), key: None, message: format!("invalid JSON: {message}") }
+        InputError {
+            file: self.file.into(),
+            line: Some(line),
+            column: Some(col),
+            key: None,
+            message: format!("invalid JSON: {message}"),
+        }
     }
 
     fn skip_ws(&mut self) {
-        while self.pos < self.text.len() && matches!(self.text[self.pos], b' ' | b'\t' | b'\n' | b'\r') {
+        while self.pos < self.text.len()
+            && matches!(self.text[self.pos], b' ' | b'\t' | b'\n' | b'\r')
+        {
             self.pos += 1;
         }
     }
@@ -275,10 +330,17 @@ impl JsonParser<'_> {
             }
             Some(b'-' | b'0'..=b'9') => {
                 let start = self.pos;
-                while self.pos < self.text.len() && matches!(self.text[self.pos], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9') {
+                while self.pos < self.text.len()
+                    && matches!(
+                        self.text[self.pos],
+                        b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9'
+                    )
+                {
                     self.pos += 1;
                 }
-                let s = std::str::from_utf8(&self.text[start..self.pos]).unwrap_or("").to_string();
+                let s = std::str::from_utf8(&self.text[start..self.pos])
+                    .unwrap_or("")
+                    .to_string();
                 Value::Number(s)
             }
             Some(_) => return Err(self.err("expected a value")),
@@ -312,8 +374,13 @@ impl JsonParser<'_> {
                         Some(b'r') => out.push(b'\r'),
                         Some(b't') => out.push(b'\t'),
                         Some(b'u') => {
-                            let hex = self.text.get(self.pos..self.pos + 4).and_then(|h| std::str::from_utf8(h).ok());
-                            let code = hex.and_then(|h| u32::from_str_radix(h, 16).ok()).ok_or_else(|| self.err("bad \\u escape"))?;
+                            let hex = self
+                                .text
+                                .get(self.pos..self.pos + 4)
+                                .and_then(|h| std::str::from_utf8(h).ok());
+                            let code = hex
+                                .and_then(|h| u32::from_str_radix(h, 16).ok())
+                                .ok_or_else(|| self.err("bad \\u escape"))?;
                             self.pos += 4;
                             let c = char::from_u32(code).unwrap_or('\u{fffd}');
                             let mut buf = [0u8; 4];
@@ -343,7 +410,11 @@ impl Document {
     pub fn table<'a>(&self, node: &'a Node, key: &str) -> Result<&'a [(String, Node)], InputError> {
         match &node.value {
             Value::Table(t) => Ok(t),
-            other => Err(self.error(node, key, format!("expected a table, found {}", other.kind()))),
+            other => Err(self.error(
+                node,
+                key,
+                format!("expected a table, found {}", other.kind()),
+            )),
         }
     }
 
@@ -351,7 +422,11 @@ impl Document {
     pub fn array<'a>(&self, node: &'a Node, key: &str) -> Result<&'a [Node], InputError> {
         match &node.value {
             Value::Array(a) => Ok(a),
-            other => Err(self.error(node, key, format!("expected an array, found {}", other.kind()))),
+            other => Err(self.error(
+                node,
+                key,
+                format!("expected an array, found {}", other.kind()),
+            )),
         }
     }
 
@@ -359,7 +434,11 @@ impl Document {
     pub fn string<'a>(&self, node: &'a Node, key: &str) -> Result<&'a str, InputError> {
         match &node.value {
             Value::String(s) => Ok(s),
-            other => Err(self.error(node, key, format!("expected a string, found {}", other.kind()))),
+            other => Err(self.error(
+                node,
+                key,
+                format!("expected a string, found {}", other.kind()),
+            )),
         }
     }
 
@@ -367,7 +446,13 @@ impl Document {
     pub fn usize(&self, node: &Node, key: &str) -> Result<usize, InputError> {
         let text = match &node.value {
             Value::Number(t) | Value::String(t) => t.trim(),
-            other => return Err(self.error(node, key, format!("expected a non-negative integer, found {}", other.kind()))),
+            other => {
+                return Err(self.error(
+                    node,
+                    key,
+                    format!("expected a non-negative integer, found {}", other.kind()),
+                ));
+            }
         };
         text.parse::<usize>()
             .map_err(|_| self.error(node, key, format!("`{text}` is not a non-negative integer")))
@@ -377,7 +462,13 @@ impl Document {
     pub fn rational(&self, node: &Node, key: &str) -> Result<BigRational, InputError> {
         let text = match &node.value {
             Value::Number(t) | Value::String(t) => t,
-            other => return Err(self.error(node, key, format!("expected a number, found {}", other.kind()))),
+            other => {
+                return Err(self.error(
+                    node,
+                    key,
+                    format!("expected a number, found {}", other.kind()),
+                ));
+            }
         };
         parse_rational(text).map_err(|e| self.error(node, key, e.to_string()))
     }
@@ -397,12 +488,26 @@ impl Document {
     }
 
     /// Reject keys outside `known` (a typo should not be silently ignored).
-    pub fn check_keys(&self, node: &Node, table: &[(String, Node)], known: &[&str], prefix: &str) -> Result<(), InputError> {
+    pub fn check_keys(
+        &self,
+        node: &Node,
+        table: &[(String, Node)],
+        known: &[&str],
+        prefix: &str,
+    ) -> Result<(), InputError> {
         for (k, v) in table {
             if !known.contains(&k.as_str()) {
-                let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+                let key = if prefix.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{prefix}.{k}")
+                };
                 let _ = node;
-                return Err(self.error(v, &key, format!("unknown key (expected one of: {})", known.join(", "))));
+                return Err(self.error(
+                    v,
+                    &key,
+                    format!("unknown key (expected one of: {})", known.join(", ")),
+                ));
             }
         }
         Ok(())
@@ -415,9 +520,16 @@ mod tests {
 
     #[test]
     fn json_keeps_number_text_and_lines() {
-        let d = Document::parse_json("x.json", "{\n \"a\": 0.1,\n \"b\": [1e-3, \"4/9\"]\n}").unwrap();
+        let d =
+            Document::parse_json("x.json", "{\n \"a\": 0.1,\n \"b\": [1e-3, \"4/9\"]\n}").unwrap();
         let t = d.root_table().unwrap();
-        assert_eq!(t[0].1, Node { value: Value::Number("0.1".into()), line: 2 });
+        assert_eq!(
+            t[0].1,
+            Node {
+                value: Value::Number("0.1".into()),
+                line: 2
+            }
+        );
         assert_eq!(d.rational(&t[0].1, "a").unwrap().to_string(), "1/10");
         assert_eq!(t[1].1.line, 3);
     }
@@ -443,8 +555,18 @@ mod tests {
 
     #[test]
     fn empty_and_garbage_are_errors() {
-        assert!(Document::parse_json("x.json", "  ").unwrap_err().message.contains("empty"));
-        assert_eq!(Document::parse_json("x.json", "{\"a\": }").unwrap_err().line, Some(1));
+        assert!(
+            Document::parse_json("x.json", "  ")
+                .unwrap_err()
+                .message
+                .contains("empty")
+        );
+        assert_eq!(
+            Document::parse_json("x.json", "{\"a\": }")
+                .unwrap_err()
+                .line,
+            Some(1)
+        );
         let e = Document::parse_toml("x.toml", "a = 1\nb = = 2\n").unwrap_err();
         assert_eq!(e.line, Some(2));
     }

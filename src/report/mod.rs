@@ -42,5 +42,11 @@ pub fn json_rationals(xs: &[num_rational::BigRational]) -> Json {
 
 /// `(a, b, c)` for people.
 pub fn tuple(xs: &[num_rational::BigRational]) -> String {
-    format!("({})", xs.iter().map(ToString::to_string).collect::<Vec<_>>().join(", "))
+    format!(
+        "({})",
+        xs.iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
 }

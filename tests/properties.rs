@@ -1,0 +1,127 @@
+//! Property tests for the identities of the theory, on random exact data (FORMULAS.md §1, §3):
+//! de Casteljau equals the Bernstein form; partition of unity; corners interpolate; every edge
+//! is the Bézier curve of its boundary control points; affine invariance; the symbolic form
+//! evaluates to the same values; the integer evaluator equals rational de Casteljau.
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+use proptest::prelude::*;
+
+use tribez::exact::{Algorithm, ExactEvaluator, evaluate_rational};
+use tribez::patch::ControlNet;
+use tribez::simplex::Simplex;
+use tribez::symbolic::barycentric_form;
+use tribez::{bernstein, casteljau};
+
+fn q(n: i64, d: i64) -> BigRational {
+    BigRational::new(BigInt::from(n), BigInt::from(d))
+}
+
+fn rational() -> impl Strategy<Value = BigRational> {
+    (-1000i64..=1000, 1i64..=60).prop_map(|(n, d)| q(n, d))
+}
+
+/// A random net: simplex dimension m in 1..=3, degree 0..=5, points in R^1..R^3.
+fn net() -> impl Strategy<Value = ControlNet<BigRational>> {
+    (1usize..=3, 0usize..=5, 1usize..=3).prop_flat_map(|(m, n, d)| {
+        let len = Simplex::new(m, n).len() * d;
+        proptest::collection::vec(rational(), len)
+            .prop_map(move |c| ControlNet::new(Simplex::new(m, n), d, c))
+    })
+}
+
+/// A random point with m+1 coordinates summing to one (possibly outside the simplex).
+fn point(m: usize) -> impl Strategy<Value = Vec<BigRational>> {
+    proptest::collection::vec(rational(), m).prop_map(|mut v| {
+        let rest = BigRational::one() - v.iter().sum::<BigRational>();
+        v.push(rest);
+        v
+    })
+}
+
+fn net_and_point() -> impl Strategy<Value = (ControlNet<BigRational>, Vec<BigRational>)> {
+    net().prop_flat_map(|n| {
+        let m = n.m();
+        (Just(n), point(m))
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    #[test]
+    fn casteljau_equals_bernstein((net, u) in net_and_point()) {
+        let a = casteljau::evaluate(&net, &u);
+        prop_assert_eq!(&a, &bernstein::evaluate(&net, &u));
+        let fast = ExactEvaluator::new(&net);
+        prop_assert_eq!(&a, &fast.evaluate(&u, Algorithm::Casteljau));
+        prop_assert_eq!(&a, &fast.evaluate(&u, Algorithm::Bernstein));
+    }
+
+    #[test]
+    fn homogeneous_points_need_not_sum_to_one(net in net(), raw in proptest::collection::vec(rational(), 4)) {
+        // The fast integer evaluator and rational de Casteljau agree on any (m+1)-tuple.
+        let u: Vec<BigRational> = raw.into_iter().take(net.m() + 1).collect();
+        prop_assume!(u.len() == net.m() + 1);
+        prop_assert_eq!(evaluate_rational(&net, &u, Algorithm::Casteljau), ExactEvaluator::new(&net).evaluate(&u, Algorithm::Bernstein));
+    }
+
+    #[test]
+    fn partition_of_unity(m in 1usize..=4, n in 0usize..=8, u in point(4)) {
+        let u: Vec<BigRational> = {
+            // Re-balance a 5-coordinate point to m+1 coordinates summing to one.
+            let mut v: Vec<BigRational> = u.into_iter().take(m).collect();
+            v.push(BigRational::one() - v.iter().sum::<BigRational>());
+            v
+        };
+        let total: BigRational = bernstein::basis(&Simplex::new(m, n), &u).into_iter().sum();
+        prop_assert!(total.is_one());
+    }
+
+    #[test]
+    fn corners_interpolate(net in net()) {
+        let m = net.m();
+        for k in 0..=m {
+            let mut e = vec![BigRational::zero(); m + 1];
+            e[k] = BigRational::one();
+            prop_assert_eq!(casteljau::evaluate(&net, &e), net.corner(k).to_vec());
+        }
+    }
+
+    #[test]
+    fn edges_are_bezier_curves((net, t) in (net(), rational())) {
+        // On the edge from corner a to corner b, the point (1-t) e_a + t e_b maps to the Bézier
+        // curve with control points c_{(n-j) e_a + j e_b}, j = 0..n.
+        let m = net.m();
+        for a in 0..=m {
+            for b in 0..=m {
+                if a == b { continue; }
+                let mut u = vec![BigRational::zero(); m + 1];
+                u[a] = BigRational::one() - &t;
+                u[b] = t.clone();
+                let curve = net.face(&[a, b]);
+                let s = vec![BigRational::one() - &t, t.clone()];
+                prop_assert_eq!(casteljau::evaluate(&net, &u), casteljau::evaluate(&curve, &s));
+            }
+        }
+    }
+
+    #[test]
+    fn affine_invariance((net, u) in net_and_point(), a in proptest::collection::vec(rational(), 9), b in proptest::collection::vec(rational(), 3)) {
+        // x -> A x + b applied to the control points maps the surface point the same way.
+        let d = net.dim();
+        let map = |p: &[BigRational]| -> Vec<BigRational> {
+            (0..d).map(|r| (0..d).map(|c| &a[r * 3 + c] * &p[c]).sum::<BigRational>() + &b[r]).collect()
+        };
+        let pts: Vec<Vec<BigRational>> = net.points().map(map).collect();
+        let moved = ControlNet::from_points(net.m(), net.degree(), &pts);
+        prop_assert_eq!(casteljau::evaluate(&moved, &u), map(&casteljau::evaluate(&net, &u)));
+    }
+
+    #[test]
+    fn symbolic_form_evaluates_to_the_patch((net, u) in net_and_point()) {
+        let values: Vec<BigRational> = barycentric_form(&net).iter().map(|p| p.evaluate(&u)).collect();
+        prop_assert_eq!(values, casteljau::evaluate(&net, &u));
+    }
+}
