@@ -109,7 +109,7 @@ fn exact(c: &mut Criterion) {
             b.iter(|| {
                 pts.iter()
                     .map(|p| eval.evaluate(p, Algorithm::Horner))
-                    .count()
+                    .collect::<Vec<_>>()
             })
         });
         if n <= 10 {
@@ -119,7 +119,7 @@ fn exact(c: &mut Criterion) {
                 b.iter(|| {
                     few.iter()
                         .map(|p| evaluate_rational(&net, p, Algorithm::Casteljau))
-                        .count()
+                        .collect::<Vec<_>>()
                 })
             });
         }
@@ -134,7 +134,7 @@ fn exact(c: &mut Criterion) {
             b.iter(|| {
                 dpts.iter()
                     .map(|p| deval.evaluate(p, Algorithm::Horner))
-                    .count()
+                    .collect::<Vec<_>>()
             })
         });
     }
@@ -163,14 +163,23 @@ fn float(c: &mut Criterion) {
             b.iter(|| horner_dvec3_many(&h64, n, &pts, &mut out64))
         });
         g.bench_function(BenchmarkId::new("f64_casteljau", n), |b| {
-            b.iter(|| pts.iter().map(|&u| casteljau_dvec3(&d64, n, u)).count())
+            b.iter(|| {
+                pts.iter()
+                    .map(|&u| casteljau_dvec3(&d64, n, u))
+                    .collect::<Vec<_>>()
+            })
         });
         let mut out32 = Vec::new();
         g.bench_function(BenchmarkId::new("f32_horner", n), |b| {
             b.iter(|| horner_vec3_many(&h32, n, &pts32, &mut out32))
         });
         g.bench_function(BenchmarkId::new("f32_casteljau", n), |b| {
-            b.iter(|| pts32.iter().map(|&u| casteljau_vec3(&d32, n, u)).count())
+            b.iter(|| {
+                pts32
+                    .iter()
+                    .map(|&u| casteljau_vec3(&d32, n, u))
+                    .collect::<Vec<_>>()
+            })
         });
     }
     g.finish();

@@ -233,7 +233,7 @@ impl Reducer {
             }
             let r = r as u64;
             for &(p, e) in &self.factors.odd[first..end] {
-                if r % p == 0 {
+                if r.is_multiple_of(p) {
                     hits.push((p, e));
                 }
             }
@@ -344,7 +344,8 @@ impl Rows {
         bufs: &mut [Vec<u64>; 4],
     ) -> (bool, Vec<u64>) {
         let [r, corr, y, z] = bufs;
-        let mut s: Vec<u64> = Vec::new();
+        let mut s: Vec<u64> =
+            Vec::with_capacity(self.e.iter().map(Vec::len).sum::<usize>() + 2 * n + 8);
         let mut s_neg = false;
         for k in (0..=n).rev() {
             let nn = n - k;
@@ -477,6 +478,7 @@ impl FastNet {
 
     /// `Σ s_α a^α` over the sub-simplex of dimension `t`, degree `nn`, starting at rank `base`,
     /// into `bufs[0]`.
+    #[allow(clippy::too_many_arguments)] // the recursion's state; a struct would only rename it
     fn horner(
         &self,
         c: &Coordinate,

@@ -181,6 +181,15 @@ pub(super) fn add(x: &mut Vec<u64>, y: &[u64]) {
 /// `x mod d` (`d > 0`).
 #[inline]
 pub(super) fn rem_word(x: &[u64], d: u64) -> u64 {
+    if d < 1 << 32 {
+        // Native 64-by-32 divisions on half limbs instead of the 128-bit software division.
+        let mut r = 0u64;
+        for &l in x.iter().rev() {
+            r = ((r << 32) | (l >> 32)) % d;
+            r = ((r << 32) | (l & 0xffff_ffff)) % d;
+        }
+        return r;
+    }
     let mut r = 0u128;
     let d = u128::from(d);
     for &l in x.iter().rev() {
@@ -192,6 +201,20 @@ pub(super) fn rem_word(x: &[u64], d: u64) -> u64 {
 /// `x ← x / d` for a `d` known to divide `x`.
 #[inline]
 pub(super) fn div_word_exact(x: &mut Vec<u64>, d: u64) {
+    if d < 1 << 32 {
+        let mut r = 0u64;
+        for l in x.iter_mut().rev() {
+            let hi = (r << 32) | (*l >> 32);
+            let (qh, rh) = (hi / d, hi % d);
+            let lo = (rh << 32) | (*l & 0xffff_ffff);
+            let (ql, rl) = (lo / d, lo % d);
+            *l = (qh << 32) | ql;
+            r = rl;
+        }
+        debug_assert_eq!(r, 0);
+        trim(x);
+        return;
+    }
     let mut r = 0u128;
     let dd = u128::from(d);
     for l in x.iter_mut().rev() {
