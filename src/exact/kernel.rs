@@ -334,7 +334,9 @@ impl Rows {
         }
     }
 
-    /// The numerator over `L_c` at `a`: `(negative?, |S_0|)`. `sp[N] = (a_0 + a_1)^N`.
+    /// The numerator over `L_c` at `a` into `s` (its magnitude); returns whether it is negative.
+    #[allow(clippy::too_many_arguments)] // the per-point inputs and the reused buffers
+    /// `sp[N] = (a_0 + a_1)^N`.
     fn evaluate(
         &self,
         n: usize,
@@ -342,10 +344,10 @@ impl Rows {
         pw: &[Vec<u64>],
         sp: &[Vec<u64>],
         bufs: &mut [Vec<u64>; 4],
-    ) -> (bool, Vec<u64>) {
+        s: &mut Vec<u64>,
+    ) -> bool {
         let [r, corr, y, z] = bufs;
-        let mut s: Vec<u64> =
-            Vec::with_capacity(self.e.iter().map(Vec::len).sum::<usize>() + 2 * n + 8);
+        s.clear();
         let mut s_neg = false;
         for k in (0..=n).rev() {
             let nn = n - k;
@@ -366,16 +368,16 @@ impl Rows {
                 signed_add(&mut r_neg, r, true, corr);
             }
             if k < n {
-                mul_word(&mut s, a[2]);
+                mul_word(s, a[2]);
                 if self.e[k] != [1] {
-                    mul_into(y, &s, &self.e[k]);
-                    std::mem::swap(&mut s, y);
+                    mul_into(y, s, &self.e[k]);
+                    std::mem::swap(s, y);
                 }
             }
             mul_into(z, r, &self.f[k]);
-            signed_add(&mut s_neg, &mut s, r_neg, z);
+            signed_add(&mut s_neg, s, r_neg, z);
         }
-        (s_neg, s)
+        s_neg
     }
 }
 
@@ -383,6 +385,33 @@ impl Coordinate {
     #[inline]
     fn coef(&self, r: usize) -> &[u64] {
         &self.limbs[self.starts[r]..self.starts[r + 1]]
+    }
+}
+
+/// Per-thread buffers of the kernel, reused from point to point.
+#[derive(Default)]
+struct Scratch {
+    pw: Vec<Vec<u64>>,
+    sp: Vec<Vec<u64>>,
+    bufs: Vec<Vec<u64>>,
+    row_bufs: [Vec<u64>; 4],
+    acc: Vec<u64>,
+}
+
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::default());
+}
+
+/// `out[j] = x^j` for `j = 0..=n`, in place.
+fn fill_powers(out: &mut Vec<Vec<u64>>, n: usize, x: &[u64]) {
+    if out.len() < n + 1 {
+        out.resize(n + 1, Vec::new());
+    }
+    out[0].clear();
+    out[0].push(1);
+    for j in 1..=n {
+        let (lo, hi) = out.split_at_mut(j);
+        mul_into(&mut hi[0], &lo[j - 1], x);
     }
 }
 
@@ -516,39 +545,40 @@ impl FastNet {
             self.m + 1,
             "point has the wrong number of coordinates"
         );
+        SCRATCH.with_borrow_mut(|scratch| self.evaluate_with(a, d, scratch))
+    }
+
+    fn evaluate_with(&self, a: &[u64], d: u64, scratch: &mut Scratch) -> Vec<BigRational> {
         let n = self.n;
-        // Powers a_1^j, j = 0..n.
-        let mut pw: Vec<Vec<u64>> = Vec::with_capacity(n + 1);
-        pw.push(vec![1]);
-        for j in 1..=n {
-            let mut next = pw[j - 1].clone();
-            mul_word(&mut next, a[1]);
-            pw.push(next);
+        let Scratch {
+            pw,
+            sp,
+            bufs,
+            row_bufs,
+            acc,
+        } = scratch;
+        // Powers a_1^j, j = 0..n (reusing the thread's buffers: no allocation per point).
+        fill_powers(pw, n, &[a[1]]);
+        if bufs.len() < self.m {
+            bufs.resize(self.m, Vec::new());
         }
-        let mut bufs = vec![Vec::new(); self.m];
-        let mut row_bufs: [Vec<u64>; 4] = Default::default();
-        let mut sums: Option<Vec<Vec<u64>>> = None;
+        let mut sums_ready = false;
         let dn = BigUint::from(d).pow(n as u32);
         let mut sum_pow: Option<BigUint> = None;
         self.coords
             .iter()
             .map(|c| {
                 if let Some(rows) = &c.rows {
-                    let sp = sums.get_or_insert_with(|| {
+                    if !sums_ready {
                         let mut sum01 = vec![a[0]];
                         add(&mut sum01, &[a[1]]);
-                        let mut v = vec![vec![1u64]];
-                        for j in 1..=n {
-                            let mut next = Vec::new();
-                            mul_into(&mut next, &v[j - 1], &sum01);
-                            v.push(next);
-                        }
-                        v
-                    });
-                    let (neg, mut limbs) = rows.evaluate(n, a, &pw, sp, &mut row_bufs);
-                    return reduce(c, neg, &mut limbs, d, n, &dn);
+                        fill_powers(sp, n, &sum01);
+                        sums_ready = true;
+                    }
+                    let neg = rows.evaluate(n, a, pw, sp, row_bufs, acc);
+                    return reduce(c, neg, acc, d, n, &dn);
                 }
-                self.horner(c, self.m, n, 0, a, &pw, &mut bufs);
+                self.horner(c, self.m, n, 0, a, pw, bufs);
                 let mut h = std::mem::take(&mut bufs[0]);
                 trim(&mut h);
                 let (neg, mut limbs) = if c.shift.is_zero() {
