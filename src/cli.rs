@@ -26,6 +26,12 @@ pub enum Command {
     Eval(commands::eval::Args),
     /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
     Symbolic(commands::symbolic::Args),
+    /// Directional derivative of any order r <= n at a point (barycentric --dir or Cartesian --vector directions).
+    Derivative(commands::derivative::Args),
+    /// Tangent plane at a point: the de Casteljau intermediate points, the partial derivatives and the normal.
+    Tangent(commands::tangent::Args),
+    /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, seed 002's coplanarity), or build a C1 neighbour.
+    Join(commands::join::Args),
 }
 
 /// Output options shared by every command.

@@ -6,6 +6,10 @@
 //! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
+//! | `derivative` | `at` or `cartesian`; `dirs` (barycentric directions) and/or `vectors` (Cartesian) | the derivative of order `len(dirs) + len(vectors)` |
+//! | `tangent` | `at` or `cartesian`; optional `part` | `{point, intermediate, partials, normal, spans_tangent_plane}` (or that part) |
+//! | `edge_curve` | `from`, `to` (corners, 1-based) | control points of `t ↦ p((1−t) e_from + t e_to)` |
+//! | `join` | `patches = ["a", "b"]` (names under `[patches]`); optional `part` | `{c0, c1, g1, coplanarity, max_smoothness, mu, violations, g1_determinant}` (or that part) |
 //! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
 //! | `direction` | `domain`, `vector` (Cartesian) | the directional coordinates (they sum to 0) |
 //!
@@ -13,6 +17,7 @@
 //! silently ignored).
 
 use num_rational::BigRational;
+use num_traits::Zero;
 
 use super::value::Value;
 use super::{CLAIM_KEYS, Claim, ClaimFile};
@@ -34,6 +39,10 @@ pub const OPS: &[&str] = &[
     "basis_sum",
     "barycentric",
     "direction",
+    "derivative",
+    "tangent",
+    "edge_curve",
+    "join",
 ];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
@@ -44,6 +53,10 @@ fn op_keys(op: &str) -> Option<&'static [&'static str]> {
         "barycentric" => &["domain", "point"],
         "direction" => &["domain", "vector"],
         "basis" | "basis_sum" => &["degree", "simplex", "names", "at", "variables"],
+        "derivative" => &["patch", "at", "cartesian", "dirs", "vectors"],
+        "tangent" => &["patch", "at", "cartesian", "part"],
+        "edge_curve" => &["patch", "from", "to"],
+        "join" => &["patches", "part"],
         _ => return None,
     })
 }
@@ -235,8 +248,223 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
             ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
+        "derivative" => derivative(&inputs),
+        "tangent" => tangent(&inputs),
+        "edge_curve" => edge_curve(&inputs),
+        "join" => join(&inputs),
         _ => unreachable!("op_keys covers every operation"),
     }
+}
+
+/// A list of lists of rationals (`dirs = [["1", "0", "-1"], …]`), possibly absent.
+fn opt_rational_rows(inputs: &Inputs<'_>, name: &str) -> Result<Vec<Vec<BigRational>>, InputError> {
+    let Some(node) = inputs.get(name) else {
+        return Ok(Vec::new());
+    };
+    let key = format!("{}.{name}", inputs.claim.id);
+    let items = inputs.file.doc.array(node, &key)?;
+    items
+        .iter()
+        .enumerate()
+        .map(|(i, n)| inputs.file.doc.rationals(n, &format!("{key}[{i}]")))
+        .collect()
+}
+
+fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+    let patch = inputs.patch()?;
+    let at = inputs.point(patch)?;
+    let m = patch.net.m();
+    let mut dirs = Vec::new();
+    for (i, d) in opt_rational_rows(inputs, "dirs")?.into_iter().enumerate() {
+        crate::commands::check_direction(&d, m, "direction")
+            .map_err(|e| inputs.error("dirs", format!("direction {}: {e}", i + 1)))?;
+        dirs.push(d);
+    }
+    let domain = patch.domain_or_reference();
+    for (i, v) in opt_rational_rows(inputs, "vectors")?
+        .into_iter()
+        .enumerate()
+    {
+        dirs.push(
+            domain
+                .direction(&v)
+                .map_err(|e| inputs.error("vectors", format!("vector {}: {e}", i + 1)))?,
+        );
+    }
+    if dirs.is_empty() {
+        return Err(inputs.error(
+            "dirs",
+            "give at least one direction in `dirs` (barycentric) or `vectors` (Cartesian)",
+        ));
+    }
+    crate::derivative::check_order(dirs.len(), patch.net.degree())
+        .map_err(|e| inputs.error("dirs", e.to_string()))?;
+    let refs: Vec<&[BigRational]> = dirs.iter().map(Vec::as_slice).collect();
+    Ok(Value::numbers(&crate::derivative::directional_derivative(
+        &patch.net, &refs, &at,
+    )))
+}
+
+/// Select `part` of a map value, if the claim names one.
+fn select_part(inputs: &Inputs<'_>, value: Value) -> Result<Value, InputError> {
+    let Some(part) = inputs.opt_string("part")? else {
+        return Ok(value);
+    };
+    let Value::Map(kv) = value else {
+        unreachable!("parts are of maps")
+    };
+    let known: Vec<String> = kv.iter().map(|(k, _)| k.clone()).collect();
+    kv.into_iter()
+        .find(|(k, _)| *k == part)
+        .map(|(_, v)| v)
+        .ok_or_else(|| {
+            inputs.error(
+                "part",
+                format!(
+                    "`{part}` is not available here (available: {})",
+                    known.join(", ")
+                ),
+            )
+        })
+}
+
+fn tangent(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+    let patch = inputs.patch()?;
+    let at = inputs.point(patch)?;
+    let f = crate::derivative::tangent_frame(&patch.net, &patch.domain_or_reference(), &at)
+        .map_err(|e| inputs.error("at", e.to_string()))?;
+    let rows = |v: &[Vec<BigRational>]| Value::List(v.iter().map(|p| Value::numbers(p)).collect());
+    let mut kv = vec![
+        ("point".to_string(), Value::numbers(&f.point)),
+        ("intermediate".to_string(), rows(&f.intermediate)),
+        ("partials".to_string(), rows(&f.partials)),
+    ];
+    if let Some(nrm) = &f.normal {
+        kv.push(("normal".into(), Value::numbers(nrm)));
+        // the plane through the intermediate points contains the point and has normal ∥ p_x × p_y
+        let c = &f.intermediate;
+        let d = |a: &[BigRational], b: &[BigRational]| {
+            a.iter().zip(b).map(|(x, y)| x - y).collect::<Vec<_>>()
+        };
+        let plane = crate::derivative::cross(&d(&c[1], &c[0]), &d(&c[2], &c[0]));
+        let parallel = crate::derivative::cross(&plane, nrm)
+            .iter()
+            .all(Zero::is_zero)
+            && plane.iter().any(|x| !x.is_zero());
+        let on: BigRational = d(&f.point, &c[0])
+            .iter()
+            .zip(&plane)
+            .map(|(a, b)| a * b)
+            .sum();
+        kv.push((
+            "spans_tangent_plane".into(),
+            Value::Bool(parallel && on.is_zero()),
+        ));
+    }
+    select_part(inputs, Value::Map(kv))
+}
+
+fn edge_curve(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+    let patch = inputs.patch()?;
+    let m = patch.net.m();
+    let corner = |name: &str| -> Result<usize, InputError> {
+        let k = inputs.opt_usize(name)?.ok_or_else(|| {
+            inputs.error(
+                name,
+                format!("missing input `{name}` (a corner, 1 to {})", m + 1),
+            )
+        })?;
+        if !(1..=m + 1).contains(&k) {
+            return Err(inputs.error(
+                name,
+                format!(
+                    "corner {k} does not exist: corners are numbered 1 to {}",
+                    m + 1
+                ),
+            ));
+        }
+        Ok(k - 1)
+    };
+    let (from, to) = (corner("from")?, corner("to")?);
+    if from == to {
+        return Err(inputs.error("to", "`from` and `to` must be different corners"));
+    }
+    let face = patch.net.face(&[from, to]);
+    Ok(Value::List(face.points().map(Value::numbers).collect()))
+}
+
+fn join(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+    let names = inputs.opt_strings("patches")?.ok_or_else(|| {
+        inputs.error(
+            "patches",
+            "missing input `patches` (two names under [patches])",
+        )
+    })?;
+    if names.len() != 2 {
+        return Err(inputs.error(
+            "patches",
+            format!("a join needs two patches, {} named", names.len()),
+        ));
+    }
+    let find = |name: &str| {
+        inputs
+            .file
+            .patches
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p)
+            .ok_or_else(|| {
+                inputs.error(
+                    "patches",
+                    format!("no patch named `{name}` under [patches]"),
+                )
+            })
+    };
+    let (a, b) = (find(&names[0])?, find(&names[1])?);
+    let j = crate::join::analyse(a, b).map_err(|e| inputs.error("patches", e.to_string()))?;
+    let mut kv = vec![
+        ("c0".to_string(), Value::Bool(j.c0)),
+        ("c1".to_string(), Value::Bool(j.c1)),
+        (
+            "max_smoothness".to_string(),
+            Value::Integer(j.max_smoothness),
+        ),
+        ("mu".to_string(), Value::numbers(&j.mu)),
+    ];
+    if let Some(g) = j.g1 {
+        kv.push(("g1".into(), Value::Bool(g)));
+    }
+    if let Some(c) = j.coplanarity {
+        kv.push(("coplanarity".into(), Value::Bool(c)));
+    }
+    if j.g1_minors.len() == 1 {
+        kv.push((
+            "g1_determinant".into(),
+            Value::Poly(j.g1_minors[0].clone(), vec!["t".into()]),
+        ));
+    }
+    // row and coplanarity violations, keyed "C1 1,0,1" / "coplanarity 0,1,1"
+    let mut viol = Vec::new();
+    for v in &j.violations {
+        match v {
+            crate::join::Violation::Row {
+                rho,
+                index,
+                difference,
+                ..
+            } => viol.push((
+                format!("C{rho} {}", index_key(index)),
+                Value::numbers(difference),
+            )),
+            crate::join::Violation::Coplanarity { index, volume, .. } => viol.push((
+                format!("coplanarity {}", index_key(index)),
+                Value::Number(volume.clone()),
+            )),
+            crate::join::Violation::G1 { .. } => {}
+        }
+    }
+    kv.push(("violations".into(), Value::Map(viol)));
+    select_part(inputs, Value::Map(kv))
 }
 
 /// The Bernstein basis of a degree (symbolic or at a point), or its sum.

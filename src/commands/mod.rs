@@ -1,8 +1,11 @@
 //! One module per command; [`main`] dispatches and maps outcomes to exit statuses.
 
+pub mod derivative;
 pub mod eval;
+pub mod join;
 pub mod reproduce;
 pub mod symbolic;
+pub mod tangent;
 
 use std::io::Write;
 use std::path::Path;
@@ -72,6 +75,9 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Derivative(a) => (derivative::run(a), &a.out),
+        Command::Tangent(a) => (tangent::run(a), &a.out),
+        Command::Join(a) => (join::run(a), &a.out),
     };
     match result.and_then(|o| emit(&o, out).map(|()| o.success)) {
         Ok(true) => 0,
