@@ -7,7 +7,10 @@
 //!
 //! an integer computation followed by one division (one gcd) per coordinate. Both de Casteljau
 //! and the Bernstein form run on the integers through the same generic code as everything else
-//! ([`crate::casteljau`], [`crate::bernstein`]), and agree exactly.
+//! ([`crate::casteljau`], [`crate::bernstein`]), and agree exactly. [`Algorithm::Horner`] is the
+//! fast kernel (nested homogeneous Horner on machine-word limbs, row-scaled for triangles, a
+//! gcd-free reduction; see `src/exact/kernel.rs`), property-tested equal to
+//! [`evaluate_rational`]; it is what `tribez eval` and the claims use.
 //!
 //! ```
 //! use tribez::exact::{Algorithm, ExactEvaluator};
@@ -17,7 +20,7 @@
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));
 //! let u = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
-//! for alg in [Algorithm::Casteljau, Algorithm::Bernstein] {
+//! for alg in [Algorithm::Casteljau, Algorithm::Bernstein, Algorithm::Horner] {
 //!     let p: Vec<String> = eval.evaluate(&u, alg).iter().map(|x| x.to_string()).collect();
 //!     assert_eq!(p, ["4/9", "5/9", "29/36"]);
 //! }
