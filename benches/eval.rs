@@ -12,9 +12,7 @@
 //!
 //! Not here yet: `check` of 1,000,000 f64 claims at n = 3 against plain f64 evaluation (the
 //! `check` command had not landed on main when these benches were written; add it beside
-//! `float/f64_horner/3`). Subdivision is measured as the core `casteljau::levels` (every
-//! sub-triangle's net is a face of the levels) and elevation by a local implementation of the
-//! elevation formula, for the same reason.
+//! `float/f64_horner/3`).
 
 use std::time::Duration;
 
@@ -191,46 +189,30 @@ fn float(c: &mut Criterion) {
     g.finish();
 }
 
-/// Degree elevation `n → n + 1` (FORMULAS §1): `c'_α = Σ_k (α_k / (n+1)) c_{α − e_k}`.
-fn elevate(net: &ControlNet<BigRational>) -> ControlNet<BigRational> {
-    let (m, n, dim) = (net.m(), net.degree(), net.dim());
-    let up = Simplex::new(m, n + 1);
-    let mut coords = Vec::with_capacity(up.len() * dim);
-    let mut beta = vec![0u32; m + 1];
-    for alpha in up.iter() {
-        let mut p = vec![BigRational::default(); dim];
-        for k in 0..=m {
-            if alpha[k] == 0 {
-                continue;
-            }
-            beta.copy_from_slice(alpha);
-            beta[k] -= 1;
-            let w = BigRational::new(alpha[k].into(), (n as u32 + 1).into());
-            for (x, c) in p.iter_mut().zip(net.at(&beta)) {
-                *x += &w * c;
-            }
-        }
-        coords.extend(p);
-    }
-    ControlNet::new(up, dim, coords)
-}
-
 fn structure(c: &mut Criterion) {
     let mut g = c.benchmark_group("n30");
     config(&mut g);
     let mut rng = Rng(30);
     let net = reference_net(30, &mut rng);
     let at = reference_points(1, &mut rng).remove(0);
-    // Subdivision at a point: all de Casteljau levels (the sub-triangles' nets are faces of them).
-    g.bench_function("subdivision_levels_exact", |b| {
-        b.iter(|| casteljau::levels(&net, &at).len())
+    // Subdivision at a point into three sub-triangles and elevation n → n + 1, exactly, on the
+    // reference workload (tribez::subdivide / tribez::elevate; `cargo bench --bench
+    // constructions` measures more constructions on small rationals).
+    g.bench_function("split_at_point_exact", |b| {
+        b.iter(|| {
+            tribez::subdivide::split_at_pieces_exact(&net, &at)
+                .unwrap()
+                .len()
+        })
+    });
+    g.bench_function("elevate_by_1_exact", |b| {
+        b.iter(|| tribez::elevate::elevate_exact(&net, 1).len())
     });
     let n64 = net_f64(&net);
     let at64: Vec<f64> = at.iter().map(tribez::number::round_f64).collect();
     g.bench_function("subdivision_levels_f64", |b| {
         b.iter(|| casteljau::levels(&n64, &at64).len())
     });
-    g.bench_function("elevation_exact", |b| b.iter(|| elevate(&net).len()));
     g.finish();
 }
 

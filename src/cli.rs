@@ -26,6 +26,18 @@ pub enum Command {
     Eval(commands::eval::Args),
     /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
     Symbolic(commands::symbolic::Args),
+    /// The blossom (polar form) b[u1, ..., un] of a patch: exactly n barycentric arguments.
+    Blossom(commands::blossom::Args),
+    /// The same polynomial over any sub-triangle (sub-simplex), as a patch file.
+    Subpatch(commands::subpatch::Args),
+    /// Split a patch at a point (m+1 pieces) or at the edge midpoints (four pieces).
+    Subdivide(commands::subdivide::Args),
+    /// Cut a patch in two from the midpoint of an edge to the opposite corner.
+    Halve(commands::halve::Args),
+    /// Raise the degree of a patch (the same surface), as a patch file.
+    Elevate(commands::elevate::Args),
+    /// The exact matrix mapping parent control points to a half's or a subpatch's.
+    Matrix(commands::matrix::Args),
     /// Directional derivative of any order r <= n at a point (barycentric --dir or Cartesian --vector directions).
     Derivative(commands::derivative::Args),
     /// Tangent plane at a point: the de Casteljau intermediate points, the partial derivatives and the normal.

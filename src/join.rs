@@ -136,12 +136,10 @@ pub struct Extension {
 impl Extension {
     /// The rows for `A`'s net and the fourth vertex `μ` (barycentric w.r.t. `A`'s domain).
     pub fn new(net: &ControlNet<Q>, mu: &[Q]) -> Self {
-        let mut rows = vec![net.clone()];
-        for _ in 0..net.degree() {
-            let next = casteljau::step(rows.last().expect("non-empty"), mu);
-            rows.push(next);
+        // Row ρ is level ρ of the de Casteljau pyramid at μ.
+        Extension {
+            rows: casteljau::levels(net, mu),
         }
-        Extension { rows }
     }
 
     /// The extension's control point at `B`'s multi-index `beta`.

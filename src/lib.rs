@@ -23,12 +23,14 @@
 //! command line.
 
 pub mod bernstein;
+pub mod blossom;
 pub mod casteljau;
 pub mod claims;
 pub mod cli;
 pub mod commands;
 pub mod derivative;
 pub mod domain;
+pub mod elevate;
 pub mod error;
 pub mod exact;
 pub mod float;
@@ -39,4 +41,5 @@ pub mod patch;
 pub mod report;
 pub mod scalar;
 pub mod simplex;
+pub mod subdivide;
 pub mod symbolic;

@@ -6,6 +6,12 @@
 //! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
+//! | `blossom` | `args`: exactly n barycentric points | the point `b[args]` |
+//! | `subpatch` | `vertices`: m+1 barycentric points | control points keyed like a patch file (`"2,0,0" = [...]`) |
+//! | `subdivide` | `at` (a barycentric point) or `midpoints = true` | a list of such tables, one per piece |
+//! | `halve` | `edge = [I, J]`; optional `method` = `"blossom"` (default), `"add-and-halve"`, `"add-and-halve-bottom-first"` | the two halves, a list of tables |
+//! | `elevate` | optional `by` (default 1) | control points keyed like a patch file |
+//! | `matrix` | `kind` = `"halve"` (`degree`, optional `simplex`, `edge`, `piece`) or `"subpatch"` (`degree`, `vertices`) | the rows, a list of lists |
 //! | `derivative` | `at` or `cartesian`; `dirs` (barycentric directions) and/or `vectors` (Cartesian) | the derivative of order `len(dirs) + len(vectors)` |
 //! | `tangent` | `at` or `cartesian`; optional `part` | `{point, intermediate, partials, normal, spans_tangent_plane}` (or that part) |
 //! | `edge_curve` | `from`, `to` (corners, 1-based) | control points of `t ↦ p((1−t) e_from + t e_to)` |
@@ -37,6 +43,12 @@ pub const OPS: &[&str] = &[
     "symbolic",
     "basis",
     "basis_sum",
+    "blossom",
+    "subpatch",
+    "subdivide",
+    "halve",
+    "elevate",
+    "matrix",
     "barycentric",
     "direction",
     "derivative",
@@ -53,6 +65,12 @@ fn op_keys(op: &str) -> Option<&'static [&'static str]> {
         "barycentric" => &["domain", "point"],
         "direction" => &["domain", "vector"],
         "basis" | "basis_sum" => &["degree", "simplex", "names", "at", "variables"],
+        "blossom" => &["patch", "args"],
+        "subpatch" => &["patch", "vertices"],
+        "subdivide" => &["patch", "at", "midpoints"],
+        "halve" => &["patch", "edge", "method"],
+        "elevate" => &["patch", "by"],
+        "matrix" => &["kind", "degree", "simplex", "edge", "piece", "vertices"],
         "derivative" => &["patch", "at", "cartesian", "dirs", "vectors"],
         "tangent" => &["patch", "at", "cartesian", "part"],
         "edge_curve" => &["patch", "from", "to"],
@@ -248,12 +266,198 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
             ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
+        "blossom" | "subpatch" | "subdivide" | "halve" | "elevate" | "matrix" => {
+            construction(&inputs, &claim.op)
+        }
         "derivative" => derivative(&inputs),
         "tangent" => tangent(&inputs),
         "edge_curve" => edge_curve(&inputs),
         "join" => join(&inputs),
         _ => unreachable!("op_keys covers every operation"),
     }
+}
+
+/// Control points keyed like a patch file: `{"2,0,0": [...], ...}`.
+pub fn net_value(net: &crate::patch::ControlNet<BigRational>) -> Value {
+    Value::Map(
+        net.entries()
+            .map(|(alpha, p)| (index_key(alpha), Value::numbers(p)))
+            .collect(),
+    )
+}
+
+impl Inputs<'_> {
+    /// A required list of barycentric points (each with `m + 1` coordinates summing to one).
+    fn bary_points(&self, name: &str, m: usize) -> Result<Vec<Vec<BigRational>>, InputError> {
+        let node = self
+            .get(name)
+            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))?;
+        let items = self.file.doc.array(node, &self.key(name))?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, n)| {
+                let key = format!("{}[{i}]", self.key(name));
+                let p = self.file.doc.rationals(n, &key)?;
+                crate::commands::check_barycentric(&p, m, "point")
+                    .map_err(|e| self.file.doc.error(n, &key, e.to_string()))?;
+                Ok(p)
+            })
+            .collect()
+    }
+
+    /// An edge `[I, J]` (corners numbered from 1), returned 0-based.
+    fn edge(&self, m: usize) -> Result<(usize, usize), InputError> {
+        let node = self.get("edge").ok_or_else(|| {
+            self.error(
+                "edge",
+                "missing input `edge` (two corner numbers, like [1, 2])",
+            )
+        })?;
+        let items = self.file.doc.array(node, &self.key("edge"))?;
+        let nums = items
+            .iter()
+            .map(|n| self.file.doc.usize(n, &self.key("edge")))
+            .collect::<Result<Vec<_>, _>>()?;
+        match nums.as_slice() {
+            [i, j] => crate::subdivide::check_edge(m, *i, *j)
+                .map_err(|e| self.error("edge", e.to_string())),
+            _ => Err(self.error("edge", "an edge is two corner numbers, like [1, 2]")),
+        }
+    }
+}
+
+/// The construction operations: blossom, subpatch, subdivide, halve, elevate, matrix.
+fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
+    use crate::subdivide::{
+        HalvingOrder, add_and_halve, halve_exact, midpoint_split_exact, split_at_pieces_exact,
+    };
+    if op == "matrix" {
+        return matrix(inputs);
+    }
+    let patch = inputs.patch()?;
+    let net = &patch.net;
+    let m = net.m();
+    let pieces = |ps: Vec<crate::subdivide::Piece<BigRational>>| {
+        Value::List(ps.iter().map(|p| net_value(&p.net)).collect())
+    };
+    Ok(match op {
+        "blossom" => {
+            let args = inputs.bary_points("args", m)?;
+            Value::numbers(
+                &crate::blossom::blossom(net, &args)
+                    .map_err(|e| inputs.error("args", e.to_string()))?,
+            )
+        }
+        "subpatch" => {
+            let f = inputs.bary_points("vertices", m)?;
+            net_value(
+                &crate::blossom::subpatch_exact(net, &f)
+                    .map_err(|e| inputs.error("vertices", e.to_string()))?,
+            )
+        }
+        "subdivide" => {
+            let midpoints = match inputs.get("midpoints") {
+                None => false,
+                Some(n) => match &n.value {
+                    NodeValue::Bool(b) => *b,
+                    _ => return Err(inputs.error("midpoints", "expected true or false")),
+                },
+            };
+            match (inputs.opt_rationals("at")?, midpoints) {
+                (Some(t), false) => {
+                    crate::commands::check_barycentric(&t, m, "point `at`")
+                        .map_err(|e| inputs.error("at", e.to_string()))?;
+                    pieces(
+                        split_at_pieces_exact(net, &t)
+                            .map_err(|e| inputs.error("at", e.to_string()))?,
+                    )
+                }
+                (None, true) => pieces(
+                    midpoint_split_exact(net)
+                        .map_err(|e| inputs.error("midpoints", e.to_string()))?,
+                ),
+                _ => {
+                    return Err(inputs.error(
+                        "at",
+                        "give exactly one of `at` (a barycentric point) or `midpoints = true`",
+                    ));
+                }
+            }
+        }
+        "halve" => {
+            let (i, j) = inputs.edge(m)?;
+            match inputs.opt_string("method")?.as_deref() {
+                None | Some("blossom") => pieces(halve_exact(net, i, j).to_vec()),
+                Some(method @ ("add-and-halve" | "add-and-halve-bottom-first")) => {
+                    let order = if method == "add-and-halve" { HalvingOrder::TopDown } else { HalvingOrder::BottomFirst };
+                    Value::List(vec![net_value(&add_and_halve(net, i, j, order)), net_value(&add_and_halve(net, j, i, order))])
+                }
+                Some(other) => return Err(inputs.error("method", format!("`{other}`: expected \"blossom\", \"add-and-halve\" or \"add-and-halve-bottom-first\""))),
+            }
+        }
+        "elevate" => {
+            let r = inputs.opt_usize("by")?.unwrap_or(1);
+            if r == 0 || net.degree() + r > crate::io::patch_file::MAX_DEGREE {
+                return Err(inputs.error(
+                    "by",
+                    format!(
+                        "elevate by 1 to {}",
+                        crate::io::patch_file::MAX_DEGREE - net.degree()
+                    ),
+                ));
+            }
+            net_value(&crate::elevate::elevate_exact(net, r))
+        }
+        _ => unreachable!("construction ops only"),
+    })
+}
+
+/// The matrix of a halving or a subpatch, as a list of rows.
+fn matrix(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+    let n = inputs
+        .opt_usize("degree")?
+        .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+    let (m, f) = match inputs.opt_string("kind")?.as_deref() {
+        Some("halve") => {
+            let m = inputs.opt_usize("simplex")?.unwrap_or(2);
+            if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m) {
+                return Err(inputs.error("simplex", "the simplex dimension must be 1 to 16"));
+            }
+            let (i, j) = if inputs.get("edge").is_some() {
+                inputs.edge(m)?
+            } else {
+                (0, 1)
+            };
+            let [a, b] = crate::subdivide::halve_domains(m, i, j);
+            match inputs.opt_usize("piece")?.unwrap_or(1) {
+                1 => (m, a),
+                2 => (m, b),
+                _ => return Err(inputs.error("piece", "the piece is 1 or 2")),
+            }
+        }
+        Some("subpatch") => {
+            let node = inputs
+                .get("vertices")
+                .ok_or_else(|| inputs.error("vertices", "missing input `vertices`"))?;
+            let count = inputs.file.doc.array(node, &inputs.key("vertices"))?.len();
+            if count < 2 {
+                return Err(inputs.error("vertices", "give m+1 vertices (3 for a triangle)"));
+            }
+            (count - 1, inputs.bary_points("vertices", count - 1)?)
+        }
+        _ => return Err(inputs.error("kind", "`kind` must be \"halve\" or \"subpatch\"")),
+    };
+    if crate::simplex::binomial((n + m) as u64, m as u64)
+        > crate::commands::matrix::MAX_ROWS as u128
+    {
+        return Err(inputs.error("degree", "the matrix would be too large"));
+    }
+    let rows = crate::blossom::subpatch_matrix(m, n, &f)
+        .map_err(|e| inputs.error("vertices", e.to_string()))?;
+    Ok(Value::List(
+        rows.iter().map(|r| Value::numbers(r)).collect(),
+    ))
 }
 
 /// A list of lists of rationals (`dirs = [["1", "0", "-1"], …]`), possibly absent.

@@ -1,9 +1,16 @@
 //! One module per command; [`main`] dispatches and maps outcomes to exit statuses.
 
+pub mod blossom;
+pub mod construct;
 pub mod derivative;
+pub mod elevate;
 pub mod eval;
+pub mod halve;
 pub mod join;
+pub mod matrix;
 pub mod reproduce;
+pub mod subdivide;
+pub mod subpatch;
 pub mod symbolic;
 pub mod tangent;
 
@@ -75,6 +82,12 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Blossom(a) => (blossom::run(a), &a.out),
+        Command::Subpatch(a) => (subpatch::run(a), &a.out),
+        Command::Subdivide(a) => (subdivide::run(a), &a.out),
+        Command::Halve(a) => (halve::run(a), &a.out),
+        Command::Elevate(a) => (elevate::run(a), &a.out),
+        Command::Matrix(a) => (matrix::run(a), &a.out),
         Command::Derivative(a) => (derivative::run(a), &a.out),
         Command::Tangent(a) => (tangent::run(a), &a.out),
         Command::Join(a) => (join::run(a), &a.out),

@@ -1,0 +1,49 @@
+//! `tribez elevate`: degree elevation by R steps (FORMULAS.md §6): the same surface, degree n + R.
+
+use std::path::PathBuf;
+
+use super::construct::{PatchReport, check_size, child_patch};
+use super::{CliError, Outcome};
+use crate::cli::OutputArgs;
+use crate::error::CoreError;
+use crate::io::patch_file::read_patch;
+
+/// Arguments of `tribez elevate`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The patch file (.toml or .json).
+    pub patch: PathBuf,
+    /// Raise the degree by R (at least 1).
+    #[arg(long = "by", value_name = "R", default_value_t = 1)]
+    pub by: usize,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// Run `tribez elevate`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let parent = read_patch(&args.patch)?;
+    if args.by == 0 {
+        return Err(CliError::core(
+            "--by 0",
+            CoreError::Invalid("elevate by at least 1".into()),
+        ));
+    }
+    let (m, n) = (parent.net.m(), parent.net.degree());
+    check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
+    let net = crate::elevate::elevate_exact(&parent.net, args.by);
+    let patch = child_patch(
+        &parent,
+        net,
+        None,
+        &format!("elevated to degree {}", n + args.by),
+    )?;
+    Outcome::rendered(
+        &PatchReport {
+            patch,
+            domain_in_parent: None,
+        },
+        args.out.format,
+        true,
+    )
+}
