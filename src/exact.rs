@@ -220,7 +220,7 @@ mod tests {
     }
 
     fn net_strategy() -> impl Strategy<Value = ControlNet<BigRational>> {
-        (1usize..=3, 0usize..=6, 1usize..=3, any::<u8>()).prop_flat_map(|(m, n, dim, shape)| {
+        (1usize..=3, 0usize..=8, 1usize..=3, any::<u8>()).prop_flat_map(|(m, n, dim, shape)| {
             let len = crate::simplex::count(m, n) * dim;
             proptest::collection::vec((any::<i64>(), any::<u64>(), 0u8..4), len).prop_map(
                 move |v| {
@@ -237,7 +237,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(96))]
+        #![proptest_config(ProptestConfig::with_cases(256))]
         /// The fast kernel equals the rational de Casteljau (gcd after every operation), at
         /// barycentric points, homogeneous points, points with zeros, negative and huge coordinates.
         #[test]

@@ -369,13 +369,23 @@ impl Rows {
             }
             if k < n {
                 mul_word(s, a[2]);
-                if self.e[k] != [1] {
-                    mul_into(y, s, &self.e[k]);
-                    std::mem::swap(s, y);
+                match self.e[k].as_slice() {
+                    [1] => {}
+                    &[w] => mul_word(s, w),
+                    e => {
+                        mul_into(y, s, e);
+                        std::mem::swap(s, y);
+                    }
                 }
             }
-            mul_into(z, r, &self.f[k]);
-            signed_add(&mut s_neg, s, r_neg, z);
+            if s.is_empty() || s_neg == r_neg {
+                // Same sign: accumulate R_k f_k in place.
+                add_mul(s, &self.f[k], r);
+                s_neg = r_neg && !s.is_empty();
+            } else {
+                mul_into(z, r, &self.f[k]);
+                signed_add(&mut s_neg, s, r_neg, z);
+            }
         }
         s_neg
     }
