@@ -26,6 +26,10 @@ pub enum Command {
     Eval(commands::eval::Args),
     /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
     Symbolic(commands::symbolic::Args),
+    /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
+    Check(commands::check::Args),
+    /// Run tribez's own float algorithms and show every error lies within its proven bound.
+    Certify(commands::certify::Args),
     /// The blossom (polar form) b[u1, ..., un] of a patch: exactly n barycentric arguments.
     Blossom(commands::blossom::Args),
     /// The same polynomial over any sub-triangle (sub-simplex), as a patch file.

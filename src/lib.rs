@@ -25,6 +25,7 @@
 pub mod bernstein;
 pub mod blossom;
 pub mod casteljau;
+pub mod certify;
 pub mod claims;
 pub mod cli;
 pub mod commands;

@@ -20,6 +20,12 @@
 //! erratum = "the printed x-component is wrong: 2uv + 2vw (FORMULAS.md §15)"
 //! ```
 //!
+//! Every claim may carry `tolerance` (`exact` by default; `ulps=N`, `abs=E`, `rel=E`,
+//! `correctly_rounded`, `faithful`, `cond=K`, `bound`: [`crate::certify::measures::Tolerance`])
+//! and `precision = "f64"` or `"f32"`: every number of the claim then denotes the float nearest
+//! its text, the verdict uses the exact value at the inputs as the code saw them, and the error
+//! at the intended inputs is reported beside it ([`FloatLeaf`]).
+//!
 //! A claim marked `erratum` records a value that the source prints and that is known to be
 //! wrong: its disagreement is listed as an erratum and does not fail the run; if it ever
 //! agrees, the stale erratum fails the run.
@@ -29,11 +35,13 @@ pub mod value;
 
 use std::path::{Path, PathBuf};
 
+use crate::certify::measures::{Leaf, Measures, Tolerance};
+use crate::float::Precision;
 use crate::io::InputError;
 use crate::io::patch_file::patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::patch::Patch;
-use value::{Mismatch, Value, compare_exact};
+use value::{Mismatch, Value, compare};
 
 /// Keys a claim file may have at its top level.
 pub const FILE_KEYS: &[&str] = &["source", "description", "patch", "patches", "claim"];
@@ -45,6 +53,7 @@ pub const CLAIM_KEYS: &[&str] = &[
     "expect",
     "erratum",
     "tolerance",
+    "precision",
     "note",
 ];
 
@@ -114,6 +123,36 @@ pub struct Judged {
     pub claimed: Value,
     /// The verdict.
     pub verdict: Verdict,
+    /// The tolerance the claim was judged with.
+    pub tolerance: Tolerance,
+    /// The claim's precision (float claims).
+    pub precision: Option<Precision>,
+    /// Float evaluation claims: per coordinate, both errors (at the inputs as the code saw them,
+    /// and at the intended inputs).
+    pub floats: Vec<FloatLeaf>,
+}
+
+/// One coordinate of a float evaluation claim, judged both ways.
+#[derive(Clone, Debug)]
+pub struct FloatLeaf {
+    /// The claimed float, shortest decimal.
+    pub decimal: String,
+    /// The claimed float, hex.
+    pub hex: String,
+    /// Its exact value.
+    pub claimed: num_rational::BigRational,
+    /// The exact value at the inputs (and control points) as the code saw them: rounded to the precision.
+    pub exact_seen: num_rational::BigRational,
+    /// The error against it (the algorithm's own error; the verdict uses this one).
+    pub seen: Measures,
+    /// The exact value at the intended inputs (the exact text, the exact patch).
+    pub exact_intended: num_rational::BigRational,
+    /// The error against it (including what input rounding adds).
+    pub intended: Measures,
+    /// `Σ|c_i| B_i(|λ|)` at the inputs as seen.
+    pub condition: num_rational::BigRational,
+    /// The a-priori bound of the claim's algorithm (if `Kε < 1`).
+    pub bound: Option<num_rational::BigRational>,
 }
 
 fn resolve_patch(doc: &Document, node: &Node, key: &str, dir: &Path) -> Result<Patch, InputError> {
@@ -238,9 +277,48 @@ impl ClaimFile {
         self.claims.iter().map(|c| self.judge(c)).collect()
     }
 
+    /// The claim's tolerance and precision (located errors for unknown ones).
+    pub fn tolerance_of(
+        &self,
+        claim: &Claim,
+    ) -> Result<(Tolerance, Option<Precision>), InputError> {
+        let t = self.doc.table(&claim.node, &claim.id)?;
+        let tolerance = match Document::get(t, "tolerance") {
+            Some(n) => Tolerance::parse(self.doc.string(n, &format!("{}.tolerance", claim.id))?)
+                .map_err(|e| self.doc.error(n, &format!("{}.tolerance", claim.id), e))?,
+            None => Tolerance::Exact,
+        };
+        let precision = match Document::get(t, "precision") {
+            Some(n) => Some(
+                self.doc
+                    .string(n, &format!("{}.precision", claim.id))?
+                    .parse::<Precision>()
+                    .map_err(|e| self.doc.error(n, &format!("{}.precision", claim.id), e))?,
+            ),
+            None => None,
+        };
+        let at = |name: &str| Document::get(t, name).unwrap_or(&claim.node);
+        if tolerance.needs_precision() && precision.is_none() {
+            return Err(self.doc.error(
+                at("tolerance"),
+                &format!("{}.tolerance", claim.id),
+                format!("tolerance `{tolerance}` needs `precision = \"f64\"` or `\"f32\"`"),
+            ));
+        }
+        if tolerance.needs_condition() && claim.op != "eval" {
+            return Err(self.doc.error(
+                at("tolerance"),
+                &format!("{}.tolerance", claim.id),
+                format!("tolerance `{tolerance}` applies to `eval` claims only (it needs the condition number Σ|c_i|B_i)"),
+            ));
+        }
+        Ok((tolerance, precision))
+    }
+
     /// Judge one claim.
     pub fn judge(&self, claim: &Claim) -> Result<Judged, InputError> {
         let exact = ops::exact_value(self, claim)?;
+        let (tolerance, precision) = self.tolerance_of(claim)?;
         let t = self.doc.table(&claim.node, &claim.id)?;
         let expect = Document::get(t, "expect").ok_or_else(|| {
             self.doc.error(
@@ -249,10 +327,78 @@ impl ClaimFile {
                 "missing key `expect` (the claimed value)",
             )
         })?;
-        let claimed =
-            ops::read_claimed(&self.doc, expect, &exact, &format!("{}.expect", claim.id))?;
+        let key = format!("{}.expect", claim.id);
+        let mut claimed = ops::read_claimed(&self.doc, expect, &exact, &key)?;
+        if let Some(p) = precision {
+            claimed = value::round_numbers(&claimed, p).ok_or_else(|| {
+                self.doc.error(
+                    expect,
+                    &key,
+                    format!("a claimed number overflows {}", p.name()),
+                )
+            })?;
+        }
+        let float_eval = match (precision, claim.op.as_str()) {
+            (Some(p), "eval") => Some(ops::eval_float(self, claim, p)?),
+            _ => None,
+        };
+        let judged_against = float_eval
+            .as_ref()
+            .map_or_else(|| exact.clone(), |f| Value::numbers(&f.exact_seen));
+        let leaf = |k: usize| Leaf {
+            precision,
+            condition: float_eval
+                .as_ref()
+                .and_then(|f| f.condition.get(k).cloned()),
+            bound: float_eval
+                .as_ref()
+                .and_then(|f| f.bound.get(k).cloned().flatten()),
+        };
         let mut mismatches = Vec::new();
-        compare_exact(&claimed, &exact, "", &mut mismatches);
+        compare(
+            &claimed,
+            &judged_against,
+            &tolerance,
+            &leaf,
+            &mut 0,
+            "",
+            &mut mismatches,
+        )
+        .map_err(|e| {
+            self.doc
+                .error(&claim.node, &format!("{}.tolerance", claim.id), e)
+        })?;
+        let mut floats = Vec::new();
+        if let (Some(f), Value::List(items), Some(p)) = (&float_eval, &claimed, precision) {
+            for (k, item) in items.iter().enumerate() {
+                let (Value::Number(y), Some(es), Some(ei)) =
+                    (item, f.exact_seen.get(k), f.exact_intended.get(k))
+                else {
+                    continue;
+                };
+                let (decimal, hex) = match p {
+                    Precision::F64 => {
+                        let x = crate::number::round_f64(y);
+                        (crate::number::display_f64(x), crate::number::hex_f64(x))
+                    }
+                    Precision::F32 => {
+                        let x = crate::number::round_f32(y);
+                        (crate::number::display_f32(x), crate::number::hex_f32(x))
+                    }
+                };
+                floats.push(FloatLeaf {
+                    decimal,
+                    hex,
+                    claimed: y.clone(),
+                    exact_seen: es.clone(),
+                    seen: Measures::new(y, es, Some(p)),
+                    exact_intended: ei.clone(),
+                    intended: Measures::new(y, ei, Some(p)),
+                    condition: f.condition[k].clone(),
+                    bound: f.bound[k].clone(),
+                });
+            }
+        }
         let verdict = match (mismatches.is_empty(), claim.erratum.is_some()) {
             (true, false) => Verdict::Holds,
             (true, true) => Verdict::StaleErratum,
@@ -265,9 +411,12 @@ impl ClaimFile {
             op: claim.op.clone(),
             source: claim.source.clone().or_else(|| self.source.clone()),
             erratum: claim.erratum.clone(),
-            exact,
+            exact: judged_against,
             claimed,
             verdict,
+            tolerance,
+            precision,
+            floats,
         })
     }
 }

@@ -2,7 +2,7 @@
 //!
 //! | op | inputs | value |
 //! |---|---|---|
-//! | `eval` | `at` (barycentric, summing to 1) or `cartesian` | the point |
+//! | `eval` | `at` (barycentric, summing to 1; with `precision` any sum: the homogeneous form) or `cartesian`; optional `algorithm` (`casteljau`, `bernstein`: for `tolerance = "bound"`) | the point |
 //! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
@@ -60,7 +60,7 @@ pub const OPS: &[&str] = &[
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
 fn op_keys(op: &str) -> Option<&'static [&'static str]> {
     Some(match op {
-        "eval" => &["patch", "at", "cartesian"],
+        "eval" => &["patch", "at", "cartesian", "algorithm"],
         "symbolic" => &["patch", "variables", "names", "component"],
         "barycentric" => &["domain", "point"],
         "direction" => &["domain", "vector"],
@@ -149,10 +149,20 @@ impl<'a> Inputs<'a> {
         self.file.patch_for(self.claim)
     }
 
-    /// A barycentric point from `at` (checked to sum to one), or a Cartesian one from `cartesian`.
+    /// A barycentric point from `at` (checked to sum to one, except for float claims: what a
+    /// float program uses need not), or a Cartesian one from `cartesian`.
     pub fn point(&self, patch: &crate::patch::Patch) -> Result<Vec<BigRational>, InputError> {
         let m = patch.net.m();
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
+            (Some(at), None) if self.get("precision").is_some() => {
+                if at.len() != m + 1 {
+                    return Err(self.error(
+                        "at",
+                        format!("{} coordinates, expected {}", at.len(), m + 1),
+                    ));
+                }
+                Ok(at)
+            }
             (Some(at), None) => {
                 crate::commands::check_barycentric(&at, m, "point `at`")
                     .map_err(|e| self.error("at", e.to_string()))?;
@@ -275,6 +285,82 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
         "join" => join(&inputs),
         _ => unreachable!("op_keys covers every operation"),
     }
+}
+
+/// A float evaluation claim's exact values both ways, its condition numbers and bounds.
+pub struct FloatEval {
+    /// The exact values of the inputs as the code saw them (rounded to the precision).
+    pub seen_inputs: Vec<BigRational>,
+    /// `P` at those inputs, with the control points rounded to the precision too (homogeneous form).
+    pub exact_seen: Vec<BigRational>,
+    /// `P` at the intended inputs (the exact text, the exact patch).
+    pub exact_intended: Vec<BigRational>,
+    /// `Σ|c_i| B_i(|λ|)` per coordinate, at the inputs as seen.
+    pub condition: Vec<BigRational>,
+    /// The a-priori bound of the claim's `algorithm` per coordinate.
+    pub bound: Vec<Option<BigRational>>,
+}
+
+/// The float view of an `eval` claim in precision `p`. A Cartesian point is rounded to `p` and
+/// converted to barycentric coordinates exactly.
+pub fn eval_float(
+    file: &ClaimFile,
+    claim: &Claim,
+    p: crate::float::Precision,
+) -> Result<FloatEval, InputError> {
+    let table = file.doc.table(&claim.node, &claim.id)?;
+    let inputs = Inputs { file, claim, table };
+    let patch = inputs.patch()?;
+    let algorithm = match inputs.opt_string("algorithm")?.as_deref() {
+        None | Some("casteljau") => Algorithm::Casteljau,
+        Some("bernstein") => Algorithm::Bernstein,
+        Some(other) => {
+            return Err(inputs.error(
+                "algorithm",
+                format!("unknown algorithm `{other}` (known: casteljau, bernstein)"),
+            ));
+        }
+    };
+    let round = |q: &BigRational| crate::certify::measures::as_float(q, p);
+    let overflow = |name: &str| inputs.error(name, format!("an input overflows {}", p.name()));
+    let intended = inputs.point(patch)?;
+    let seen_inputs: Vec<BigRational> = match inputs.opt_rationals("cartesian")? {
+        Some(x) => {
+            let xr: Vec<BigRational> = x
+                .iter()
+                .map(round)
+                .collect::<Option<_>>()
+                .ok_or_else(|| overflow("cartesian"))?;
+            patch
+                .domain_or_reference()
+                .barycentric(&xr)
+                .map_err(|e| inputs.error("cartesian", e.to_string()))?
+        }
+        None => intended
+            .iter()
+            .map(round)
+            .collect::<Option<_>>()
+            .ok_or_else(|| overflow("at"))?,
+    };
+    if patch.net.coords().iter().any(|q| round(q).is_none()) {
+        return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+    }
+    let seen_net = patch.net.map(|q| round(q).unwrap_or_default());
+    let exact_seen = ExactEvaluator::new(&seen_net).evaluate(&seen_inputs, Algorithm::Casteljau);
+    let exact_intended = ExactEvaluator::new(&patch.net).evaluate(&intended, Algorithm::Casteljau);
+    let condition = crate::certify::bound::condition(&seen_net, &seen_inputs);
+    let (m, n) = (patch.net.m(), patch.net.degree());
+    let bound = condition
+        .iter()
+        .map(|s| crate::certify::bound::a_priori(algorithm, p, m, n, s, &seen_inputs))
+        .collect();
+    Ok(FloatEval {
+        seen_inputs,
+        exact_seen,
+        exact_intended,
+        condition,
+        bound,
+    })
 }
 
 /// Control points keyed like a patch file: `{"2,0,0": [...], ...}`.

@@ -6,6 +6,7 @@
 
 use num_rational::BigRational;
 
+use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::symbolic::Polynomial;
 
 /// An exact (or claimed) value.
@@ -83,6 +84,33 @@ pub struct Mismatch {
 
 /// Compare two values exactly; collect every mismatching leaf.
 pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<Mismatch>) {
+    compare(
+        claimed,
+        exact,
+        &Tolerance::Exact,
+        &|_| Leaf::default(),
+        &mut 0,
+        path,
+        out,
+    )
+    .expect("the exact tolerance needs nothing");
+}
+
+/// Compare two values leaf by leaf under a tolerance; collect every leaf it rejects.
+///
+/// Numbers are judged by [`Tolerance::accepts`] (`exact` is simply the tolerance that accepts
+/// no difference); `leaf(k)` gives what the tolerance may need at the `k`-th number (in
+/// traversal order: the precision, the condition number, the algorithm's bound). Polynomials,
+/// booleans and integers are always compared exactly. `Err` when the tolerance cannot apply.
+pub fn compare(
+    claimed: &Value,
+    exact: &Value,
+    tolerance: &Tolerance,
+    leaf: &dyn Fn(usize) -> Leaf,
+    counter: &mut usize,
+    path: &str,
+    out: &mut Vec<Mismatch>,
+) -> Result<(), String> {
     let mismatch = |reason: String| Mismatch {
         path: path.into(),
         claimed: claimed.to_text(),
@@ -92,7 +120,7 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
     match (claimed, exact) {
         (Value::List(a), Value::List(b)) if a.len() == b.len() => {
             for (i, (x, y)) in a.iter().zip(b).enumerate() {
-                compare_exact(x, y, &format!("{path}[{i}]"), out);
+                compare(x, y, tolerance, leaf, counter, &format!("{path}[{i}]"), out)?;
             }
         }
         (Value::Map(a), Value::Map(b))
@@ -101,7 +129,15 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
             // Keys are matched by name: a file may list them in any order.
             for (k, y) in b {
                 let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
-                compare_exact(x, y, &format!("{path}.\"{k}\""), out);
+                compare(
+                    x,
+                    y,
+                    tolerance,
+                    leaf,
+                    counter,
+                    &format!("{path}.\"{k}\""),
+                    out,
+                )?;
             }
         }
         (Value::List(a), Value::List(b)) => out.push(mismatch(format!(
@@ -112,8 +148,18 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
         (Value::Map(_), Value::Map(_)) => out.push(mismatch(
             "the claimed keys differ from the exact ones".into(),
         )),
-        (Value::Number(a), Value::Number(b)) if a != b => {
-            out.push(mismatch(format!("differs by {}", a - b)))
+        (Value::Number(a), Value::Number(b)) => {
+            let l = leaf(*counter);
+            *counter += 1;
+            if !tolerance.accepts(a, b, &l)? {
+                out.push(mismatch(match tolerance {
+                    Tolerance::Exact => format!("differs by {}", a - b),
+                    t => format!(
+                        "breaks tolerance `{t}`: {}",
+                        Measures::new(a, b, l.precision).text()
+                    ),
+                }));
+            }
         }
         (Value::Poly(a, names), Value::Poly(b, _)) if a != b => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
@@ -128,4 +174,24 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
         }
         _ => out.push(mismatch("the claimed value has a different kind".into())),
     }
+    Ok(())
+}
+
+/// Replace every number of `v` by the exact value of the float of precision `p` nearest it
+/// (`None` if some number overflows).
+pub fn round_numbers(v: &Value, p: crate::float::Precision) -> Option<Value> {
+    Some(match v {
+        Value::Number(q) => Value::Number(crate::certify::measures::as_float(q, p)?),
+        Value::List(xs) => Value::List(
+            xs.iter()
+                .map(|x| round_numbers(x, p))
+                .collect::<Option<_>>()?,
+        ),
+        Value::Map(kv) => Value::Map(
+            kv.iter()
+                .map(|(k, x)| round_numbers(x, p).map(|y| (k.clone(), y)))
+                .collect::<Option<_>>()?,
+        ),
+        other => other.clone(),
+    })
 }

@@ -1,6 +1,10 @@
 //! One module per command; [`main`] dispatches and maps outcomes to exit statuses.
 
+pub mod baseline;
+pub mod batch;
 pub mod blossom;
+pub mod certify;
+pub mod check;
 pub mod construct;
 pub mod derivative;
 pub mod elevate;
@@ -82,6 +86,8 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Check(a) => (check::run(a), &a.out),
+        Command::Certify(a) => (certify::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),
         Command::Subpatch(a) => (subpatch::run(a), &a.out),
         Command::Subdivide(a) => (subdivide::run(a), &a.out),

@@ -1,0 +1,782 @@
+//! The floating-point filter: decide most claims about `p(λ)` without big integers.
+//!
+//! [`Filter`] evaluates the patch (its control points as the claimed code saw them: floats) in
+//! f64 by de Casteljau and carries, per node, the running error bound of FORMULAS.md §14.2
+//! (after \[Higham02\] §3.1, "running error analysis"), extended to any sign of `λ` and any m:
+//!
+//! `μ = Σ_k |λ_k| μ_k + ε (Σ_k |p_k| + Σ_{k≥1} |s_k|) + (m + 1) η`,
+//!
+//! with `p_k = fl(λ_k A_k)` the products, `s_k` the partial sums, `ε = 2^-53` and `η = 2^-1075`
+//! (underflowing products; additions are exact in the subnormal range), `μ = 0` on the control
+//! points. Then `|ŷ − P(λ)| ≤ μ_final`. We compute μ itself in f64: every term is non-negative,
+//! so the computed `μ̂` satisfies `μ ≤ μ̂ (1 + γ_K)` with `K ≤ (3m + 5) n` roundings per path, and
+//! we inflate by `1 + 4Kε` and add an absolute `2^-1074` per operation (underflow in computing
+//! `μ̂`). The same pass computes `Σ|c_i| B_i(|λ|)` with a relative enclosure `1 ± 4(m+1)nε`.
+//!
+//! Given the claimed float `y`, the true error `|y − P|` lies in `[|y − ŷ| − μ, |y − ŷ| + μ]`
+//! (widened by tiny margins for the roundings of these very comparisons); a tolerance is
+//! [`Decision::Pass`] when every value in the enclosure passes, [`Decision::Fail`] when every one
+//! fails, and [`Decision::Undecided`] otherwise (the caller then computes exactly). Non-finite
+//! intermediates are undecided.
+
+use crate::certify::bound::roundings;
+use crate::exact::Algorithm;
+use crate::float::Precision;
+use crate::number::round_f64;
+use crate::patch::ControlNet;
+use crate::simplex::Simplex;
+
+use super::measures::Tolerance;
+
+/// Safety margin of the comparisons (relative).
+const R: f64 = 1.0 / (1u64 << 45) as f64;
+/// f64 unit roundoff.
+const EPS: f64 = 1.0 / (1u64 << 53) as f64;
+/// Half the smallest subnormal, as an upper bound `2^-1074`.
+const TINY: f64 = f64::from_bits(1);
+
+/// What the filter concluded about one claimed coordinate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Decision {
+    /// Every value the exact result can take passes.
+    Pass,
+    /// Every value fails.
+    Fail,
+    /// The enclosure is too wide: compute exactly.
+    Undecided,
+}
+
+/// One coordinate of `p(λ)` enclosed: `|ŷ − P| ≤ mu`, and `Σ|c_i|B_i(|λ|) ∈ [s_lo, s_hi]`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Enclosure {
+    /// The f64 de Casteljau value.
+    pub value: f64,
+    /// A correction (compensated evaluation; 0 otherwise): `value + corr` approximates `P`.
+    pub corr: f64,
+    /// A rigorous bound on `|value + corr − P(λ)|` (exact sum).
+    pub mu: f64,
+    /// Lower bound of the condition number.
+    pub s_lo: f64,
+    /// Upper bound of the condition number.
+    pub s_hi: f64,
+}
+
+/// A tolerance prepared as f64 thresholds (each exact threshold enclosed by two floats).
+#[derive(Clone, Debug)]
+pub struct Thresholds {
+    tolerance: Tolerance,
+    precision: Precision,
+    /// `[lo, hi]` enclosing the tolerance's number (N, E or K·ε, or γ_K for `bound`).
+    k_lo: f64,
+    k_hi: f64,
+    /// The bound's absolute underflow allowance factor (for `bound`): `2(m+1)η`.
+    underflow: f64,
+    sum_abs_powers: bool,
+    n: usize,
+}
+
+fn enclose(q: &num_rational::BigRational) -> (f64, f64) {
+    let x = round_f64(q);
+    if !x.is_finite() {
+        return (f64::MAX, f64::INFINITY);
+    }
+    (
+        (x * (1.0 - 4.0 * EPS)).max(0.0),
+        x * (1.0 + 4.0 * EPS) + TINY,
+    )
+}
+
+impl Thresholds {
+    /// Prepare `tolerance` for claims of precision `precision` about a degree-`n` patch on the
+    /// m-simplex evaluated by `algorithm` (used by `bound`).
+    pub fn new(
+        tolerance: &Tolerance,
+        precision: Precision,
+        algorithm: Algorithm,
+        m: usize,
+        n: usize,
+    ) -> Self {
+        let (k_lo, k_hi) = match tolerance {
+            Tolerance::Exact | Tolerance::CorrectlyRounded | Tolerance::Faithful => (0.0, 0.0),
+            Tolerance::Ulps(x) | Tolerance::Abs(x) | Tolerance::Rel(x) => enclose(x),
+            Tolerance::Cond(k) => enclose(&(k * super::measures::unit_roundoff(precision))),
+            Tolerance::Bound => match super::bound::gamma(roundings(algorithm, m, n), precision) {
+                Some(g) => enclose(&g),
+                None => (f64::INFINITY, f64::INFINITY),
+            },
+        };
+        let underflow = match precision {
+            Precision::F64 => 2.0 * (m + 1) as f64 * TINY,
+            Precision::F32 => 2.0 * (m + 1) as f64 * 2f64.powi(-150),
+        };
+        Thresholds {
+            tolerance: tolerance.clone(),
+            precision,
+            k_lo,
+            k_hi,
+            underflow,
+            sum_abs_powers: algorithm == Algorithm::Casteljau,
+            n,
+        }
+    }
+
+    /// An upper bound on the error of `y` in ULPs of the claim's precision (at the smallest
+    /// `|P|` the enclosure allows).
+    pub fn ulps_upper(&self, y: f64, e: &Enclosure) -> f64 {
+        if !(e.value.is_finite() && e.mu.is_finite()) {
+            return f64::INFINITY;
+        }
+        let e_hi = ((y - e.value).abs() * (1.0 + R) + e.mu * (1.0 + R)) * (1.0 + R);
+        let w = e.mu * (1.0 + R) + e.value.abs() * 2.0 * EPS + TINY;
+        let lo = if e.value.abs() > w {
+            e.value.abs() - w
+        } else {
+            0.0
+        };
+        e_hi / ulp_of(lo * (1.0 - R), self.precision)
+    }
+
+    /// Decide one claimed coordinate `y` (finite) against the enclosure `e`; `s` is
+    /// `Σ|λ_k|` (for the underflow allowance of `bound`).
+    pub fn decide(&self, y: f64, e: &Enclosure, s: f64) -> Decision {
+        if !(e.value.is_finite() && e.mu.is_finite() && e.s_hi.is_finite()) {
+            return Decision::Undecided;
+        }
+        let d1 = y - e.value;
+        let d = d1 - e.corr;
+        let dabs = d.abs();
+        // the two subtractions round by at most ε|d1| and ε|d|
+        let mu_eff = e.mu + 2.0 * EPS * (d1.abs() + e.corr.abs()) + TINY;
+        // enclosure of the error |y − P|
+        let e_hi = (dabs * (1.0 + R) + mu_eff * (1.0 + R)) * (1.0 + R);
+        let e_lo = ((dabs * (1.0 - R) - mu_eff * (1.0 + R)) * (1.0 - R)).max(0.0);
+        // enclosure of P
+        let center = e.value + e.corr;
+        let w = mu_eff * (1.0 + R) + center.abs() * 2.0 * EPS + TINY;
+        let p_lo = center - w;
+        let p_hi = center + w;
+        let (pabs_lo, pabs_hi) = if p_lo > 0.0 {
+            (p_lo * (1.0 - R), p_hi.abs() * (1.0 + R))
+        } else if p_hi < 0.0 {
+            (p_hi.abs() * (1.0 - R), p_lo.abs() * (1.0 + R))
+        } else {
+            (0.0, p_lo.abs().max(p_hi.abs()) * (1.0 + R))
+        };
+        let by_threshold = |lo: f64, hi: f64| {
+            if e_hi <= lo * (1.0 - R) {
+                Decision::Pass
+            } else if e_lo > hi * (1.0 + R) {
+                Decision::Fail
+            } else {
+                Decision::Undecided
+            }
+        };
+        match &self.tolerance {
+            Tolerance::Exact => {
+                if e_hi == 0.0 {
+                    Decision::Pass
+                } else if e_lo > 0.0 {
+                    Decision::Fail
+                } else {
+                    Decision::Undecided
+                }
+            }
+            Tolerance::Abs(_) => by_threshold(self.k_lo, self.k_hi),
+            Tolerance::Rel(_) => by_threshold(self.k_lo * pabs_lo, self.k_hi * pabs_hi),
+            Tolerance::Ulps(_) => by_threshold(
+                self.k_lo * ulp_of(pabs_lo, self.precision),
+                self.k_hi * ulp_of(pabs_hi, self.precision),
+            ),
+            Tolerance::Cond(_) => by_threshold(self.k_lo * e.s_lo, self.k_hi * e.s_hi),
+            Tolerance::Bound => {
+                let extra = if self.sum_abs_powers {
+                    let mut g = 0.0;
+                    let mut p = 1.0;
+                    for _ in 0..self.n {
+                        g += p;
+                        p *= s;
+                    }
+                    self.underflow * g * (1.0 + R)
+                } else {
+                    0.0
+                };
+                by_threshold(self.k_lo * e.s_lo, self.k_hi * e.s_hi + extra)
+            }
+            Tolerance::CorrectlyRounded | Tolerance::Faithful => {
+                let (prev, next) = neighbours(y, self.precision);
+                let (fail_lo, fail_hi) = match self.precision {
+                    Precision::F64 => (p_lo, p_hi),
+                    Precision::F32 => (
+                        neighbours(p_lo as f32 as f64, Precision::F32).0,
+                        neighbours(p_hi as f32 as f64, Precision::F32).1,
+                    ),
+                };
+                if y < fail_lo || y > fail_hi {
+                    return Decision::Fail;
+                }
+                let faithful = matches!(self.tolerance, Tolerance::Faithful);
+                // distances from y to the edges of the set of P for which y is acceptable
+                let (g_lo, g_hi) = if faithful {
+                    (y - prev, next - y)
+                } else {
+                    ((y - prev) * 0.5, (next - y) * 0.5)
+                };
+                let d_hi = d + dabs * 4.0 * EPS;
+                let d_lo = d - dabs * 4.0 * EPS;
+                let mu = mu_eff * (1.0 + R) + TINY;
+                // d ≈ y − P: y is acceptable iff P lies in (y − g_lo, y + g_hi), i.e.
+                // −g_hi < y − P < g_lo (ties at the ends are left to the exact path).
+                if d_hi + mu < g_lo * (1.0 - R) && d_lo - mu > -g_hi * (1.0 - R) {
+                    Decision::Pass
+                } else if d_lo - mu > g_lo * (1.0 + R) || d_hi + mu < -g_hi * (1.0 + R) {
+                    Decision::Fail
+                } else {
+                    Decision::Undecided
+                }
+            }
+        }
+    }
+}
+
+/// The floats of precision `p` just below and above `y` (a float of that precision).
+fn neighbours(y: f64, p: Precision) -> (f64, f64) {
+    match p {
+        Precision::F64 => (y.next_down(), y.next_up()),
+        Precision::F32 => {
+            let f = y as f32;
+            (f64::from(f.next_down()), f64::from(f.next_up()))
+        }
+    }
+}
+
+/// Binade ulp of `|x|` in precision `p` (monotone in `|x|`), as an f64 (exact power of two;
+/// FORMULAS §14.4), by bit manipulation only.
+fn ulp_of(x: f64, p: Precision) -> f64 {
+    if !x.is_finite() {
+        return f64::INFINITY;
+    }
+    let (emin, digits) = match p {
+        Precision::F64 => (-1022, 52),
+        Precision::F32 => (-126, 23),
+    };
+    let e = if x == 0.0 {
+        emin
+    } else {
+        floor_log2(x.abs()).max(emin)
+    };
+    pow2f(e - digits)
+}
+
+/// `floor(log2 x)` of a finite positive f64.
+fn floor_log2(x: f64) -> i32 {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        let mant = bits & ((1u64 << 52) - 1);
+        63 - mant.leading_zeros() as i32 - 1074
+    } else {
+        biased - 1023
+    }
+}
+
+/// `2^k` as an f64 for `−1074 ≤ k ≤ 1023`.
+fn pow2f(k: i32) -> f64 {
+    if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else {
+        f64::from_bits(1u64 << (k + 1074))
+    }
+}
+
+/// A control net prepared for fast enclosed evaluation.
+#[derive(Clone, Debug)]
+pub struct Filter {
+    m: usize,
+    n: usize,
+    dim: usize,
+    coords: Vec<f64>,
+    /// per level q = n..1: the m+1 child ranks of each node of degree q − 1.
+    stencils: Vec<Vec<usize>>,
+    mu_inflate: f64,
+    mu_absolute: f64,
+    s_rel: f64,
+    /// `γ_{(m+1)n}` for f64, rounded up.
+    gamma: f64,
+}
+
+/// Reusable buffers for [`Filter::evaluate`] (one per thread).
+#[derive(Clone, Debug, Default)]
+pub struct Scratch {
+    v: Vec<f64>,
+    mu: Vec<f64>,
+    s: Vec<f64>,
+    v2: Vec<f64>,
+    mu2: Vec<f64>,
+    s2: Vec<f64>,
+}
+
+impl Filter {
+    /// Prepare a net of floats (its values are exact: the control points as the code saw them).
+    pub fn new(net: &ControlNet<f64>) -> Self {
+        let (m, n, dim) = (net.m(), net.degree(), net.dim());
+        let stencils = (1..=n)
+            .rev()
+            .map(|q| Simplex::new(m, q).step_stencil())
+            .collect();
+        let k = ((3 * m + 5) * n.max(1)) as f64;
+        let nodes = crate::simplex::count(m, n) as f64 * (n as f64 + 1.0);
+        Filter {
+            m,
+            n,
+            dim,
+            coords: net.coords().to_vec(),
+            stencils,
+            mu_inflate: 1.0 + 4.0 * k * EPS,
+            mu_absolute: nodes * (4 * m + 8) as f64 * TINY,
+            s_rel: 4.0 * ((m + 1) * n.max(1)) as f64 * EPS,
+            gamma: {
+                // γ_{(m+1)n} in f64, rounded up generously
+                let ke = ((m + 1) * n) as f64 * EPS;
+                if ke < 0.5 {
+                    ke / (1.0 - ke) * (1.0 + 8.0 * EPS)
+                } else {
+                    f64::INFINITY
+                }
+            },
+        }
+    }
+
+    /// The net's dimension (coordinates per point).
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// Enclose every coordinate of `P(λ)` (`λ` has `m + 1` float coordinates, any sum).
+    pub fn evaluate(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+        let (m, dim) = (self.m, self.dim);
+        debug_assert_eq!(lambda.len(), m + 1);
+        let Scratch {
+            v,
+            mu,
+            s,
+            v2,
+            mu2,
+            s2,
+        } = scratch;
+        v.clear();
+        v.extend_from_slice(&self.coords);
+        mu.clear();
+        mu.resize(v.len(), 0.0);
+        s.clear();
+        s.extend(self.coords.iter().map(|x| x.abs()));
+        for stencil in &self.stencils {
+            let nodes = stencil.len() / (m + 1);
+            v2.clear();
+            mu2.clear();
+            s2.clear();
+            for children in stencil.chunks_exact(m + 1) {
+                for c in 0..dim {
+                    let r0 = children[0] * dim + c;
+                    let p0 = lambda[0] * v[r0];
+                    let mut acc = p0;
+                    let mut rounding = p0.abs();
+                    let mut carried = lambda[0].abs() * mu[r0];
+                    let mut cond = lambda[0].abs() * s[r0];
+                    for k in 1..=m {
+                        let r = children[k] * dim + c;
+                        let p = lambda[k] * v[r];
+                        acc += p;
+                        rounding += p.abs() + acc.abs();
+                        carried += lambda[k].abs() * mu[r];
+                        cond += lambda[k].abs() * s[r];
+                    }
+                    v2.push(acc);
+                    mu2.push(carried + EPS * rounding + (m + 1) as f64 * TINY);
+                    s2.push(cond);
+                }
+            }
+            debug_assert_eq!(v2.len(), nodes * dim);
+            std::mem::swap(v, v2);
+            std::mem::swap(mu, mu2);
+            std::mem::swap(s, s2);
+        }
+        // The filter's own evaluation is de Casteljau in f64, so its a-priori bound applies too
+        // (bound.rs): |ŷ − P| ≤ γ_{(m+1)n} Σ|c_i|B_i(|λ|) + 2(m+1)η Σ_{j<n} s^j, s = Σ|λ_k|.
+        // The running bound is sharper near cancellation, the a-priori one on well-conditioned
+        // data; both hold, so we take the smaller.
+        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
+        let mut geometric = 0.0;
+        let mut power = 1.0;
+        for _ in 0..self.n {
+            geometric += power;
+            power *= sum_abs;
+        }
+        let underflow = 2.0 * (m + 1) as f64 * TINY * geometric * (1.0 + R) + TINY;
+        for c in 0..dim {
+            let s_hi = s[c] * (1.0 + self.s_rel) + self.mu_absolute;
+            let running = mu[c] * self.mu_inflate + self.mu_absolute;
+            let a_priori = self.gamma * s_hi * (1.0 + R) + underflow;
+            out[c] = Enclosure {
+                value: v[c],
+                corr: 0.0,
+                mu: if a_priori.is_finite() {
+                    running.min(a_priori)
+                } else {
+                    running
+                },
+                s_lo: (s[c] * (1.0 - self.s_rel) - self.mu_absolute).max(0.0),
+                s_hi,
+            };
+        }
+    }
+}
+
+/// Dekker's TwoProduct without FMA: `a·b = p + π` exactly when no split overflows and the
+/// partial products do not underflow (guarded by the caller) (\[Higham02\] §4.3, Dekker 1971).
+#[inline]
+fn two_product(a: f64, b: f64) -> (f64, f64) {
+    const SPLIT: f64 = 134_217_729.0; // 2^27 + 1
+    let p = a * b;
+    let ca = SPLIT * a;
+    let ah = ca - (ca - a);
+    let al = a - ah;
+    let cb = SPLIT * b;
+    let bh = cb - (cb - b);
+    let bl = b - bh;
+    (p, al * bl - (((p - ah * bh) - al * bh) - ah * bl))
+}
+
+/// Knuth's TwoSum: `a + b = s + σ` exactly (barring overflow).
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+impl Filter {
+    /// A compensated enclosure (the second stage, for claims the plain one leaves undecided).
+    ///
+    /// Every product `λ_k V_k = p_k + π_k` (TwoProduct) and partial sum `s + p = s' + σ` (TwoSum)
+    /// is split exactly into the computed value and its error, so with the children's exact
+    /// errors `E_k` the node's exact error is `E = Σ_k π_k + Σ σ + Σ_k λ_k E_k`. We compute it in
+    /// f64 (`Ê`) with a running bound `ν ≥ |E − Ê|`: `ν = Σ|λ_k| ν_k + ε Σ|partials| + (m+1)η`
+    /// (the same model as the plain running bound). Then `|V + Ê − P| ≤ ν`, of order `ε² Σ|c|B`.
+    /// `out` must hold the plain enclosures of [`Filter::evaluate`] at the same `λ`: their
+    /// condition-number bounds are kept. Guards: a factor of magnitude `≥ 2^995` (the split could overflow) or a non-zero product
+    /// below `2^-900` (TwoProduct could be inexact) makes the enclosure undecided (NaN).
+    pub fn evaluate_compensated(
+        &self,
+        lambda: &[f64],
+        scratch: &mut Scratch,
+        out: &mut [Enclosure],
+    ) {
+        let (m, dim) = (self.m, self.dim);
+        let big = 2f64.powi(995);
+        let small = 2f64.powi(-900);
+        let Scratch {
+            v,
+            mu,
+            s,
+            v2,
+            mu2,
+            s2,
+        } = scratch;
+        // v: values, s: corrections Ê, mu: ν
+        v.clear();
+        v.extend_from_slice(&self.coords);
+        s.clear();
+        s.resize(v.len(), 0.0);
+        mu.clear();
+        mu.resize(v.len(), 0.0);
+        let mut bad = lambda.iter().any(|x| x.abs() >= big) || v.iter().any(|x| x.abs() >= big);
+        for stencil in &self.stencils {
+            v2.clear();
+            s2.clear();
+            mu2.clear();
+            for children in stencil.chunks_exact(m + 1) {
+                for c in 0..dim {
+                    let mut acc = 0.0;
+                    let mut corr = 0.0;
+                    let mut partial = 0.0;
+                    let mut carried = 0.0;
+                    for k in 0..=m {
+                        let r = children[k] * dim + c;
+                        let (p, pi) = two_product(lambda[k], v[r]);
+                        if p.abs() >= big
+                            || (p != 0.0 && p.abs() < small)
+                            || (p == 0.0 && lambda[k] != 0.0 && v[r] != 0.0)
+                        {
+                            bad = true;
+                        }
+                        let term = lambda[k] * s[r];
+                        if k == 0 {
+                            acc = p;
+                            corr = pi + term;
+                            partial = term.abs() + corr.abs();
+                        } else {
+                            let (sum, sigma) = two_sum(acc, p);
+                            acc = sum;
+                            corr += pi;
+                            partial += corr.abs();
+                            corr += sigma;
+                            partial += corr.abs();
+                            corr += term;
+                            partial += term.abs() + corr.abs();
+                        }
+                        carried += lambda[k].abs() * mu[r];
+                    }
+                    v2.push(acc);
+                    s2.push(corr);
+                    mu2.push(carried + EPS * partial + (m + 1) as f64 * TINY);
+                }
+            }
+            std::mem::swap(v, v2);
+            std::mem::swap(s, s2);
+            std::mem::swap(mu, mu2);
+        }
+        for c in 0..dim {
+            // s_lo and s_hi (the condition number) stay those of the plain enclosure in `out`
+            out[c].value = v[c];
+            out[c].corr = s[c];
+            out[c].mu = if bad || !s[c].is_finite() {
+                f64::NAN
+            } else {
+                mu[c] * self.mu_inflate + self.mu_absolute
+            };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::ExactEvaluator;
+    use crate::number::{exact_f64, parse_rational as q};
+    use num_rational::BigRational;
+    use num_traits::Signed;
+
+    fn lcg(state: &mut u64) -> f64 {
+        *state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((*state >> 11) as f64) / (1u64 << 53) as f64
+    }
+
+    #[test]
+    fn correct_rounding_at_a_power_of_two_uses_the_smaller_gap_below() {
+        use crate::certify::measures::Tolerance;
+        // y = 1: the floats below are 2^-53 apart, above 2^-52. P = 1 − 3·2^-55 rounds to
+        // 1 − 2^-53, so y = 1 is not correctly rounded (but faithful).
+        let th = Thresholds::new(
+            &Tolerance::CorrectlyRounded,
+            Precision::F64,
+            Algorithm::Casteljau,
+            2,
+            1,
+        );
+        let e = Enclosure {
+            value: 1.0,
+            corr: -3.0 * 2f64.powi(-55),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
+        assert_eq!(th.decide(1.0, &e, 1.0), Decision::Fail);
+        let e = Enclosure {
+            value: 1.0,
+            corr: -2f64.powi(-56),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
+        assert_eq!(th.decide(1.0, &e, 1.0), Decision::Pass);
+        let e = Enclosure {
+            value: 1.0,
+            corr: 3.0 * 2f64.powi(-55),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
+        assert_eq!(th.decide(1.0, &e, 1.0), Decision::Pass);
+        let thf = Thresholds::new(
+            &Tolerance::Faithful,
+            Precision::F64,
+            Algorithm::Casteljau,
+            2,
+            1,
+        );
+        let e = Enclosure {
+            value: 1.0,
+            corr: -3.0 * 2f64.powi(-55),
+            mu: 2f64.powi(-70),
+            s_lo: 1.0,
+            s_hi: 1.0,
+        };
+        assert_eq!(thf.decide(1.0, &e, 1.0), Decision::Pass);
+    }
+
+    #[test]
+    fn ulp_by_bits_matches_the_exact_ulp() {
+        for x in [
+            0.0,
+            5e-324,
+            1e-310,
+            2.2250738585072014e-308,
+            1e-40,
+            1.1754943508222875e-38,
+            0.1,
+            1.0,
+            3.0,
+            1e300,
+        ] {
+            let q = exact_f64(x).unwrap();
+            assert_eq!(
+                exact_f64(ulp_of(x, Precision::F64)).unwrap(),
+                crate::number::ulp_f64(&q),
+                "{x}"
+            );
+            assert_eq!(
+                exact_f64(ulp_of(x, Precision::F32)).unwrap(),
+                crate::number::ulp_f32(&q),
+                "{x}"
+            );
+        }
+    }
+
+    #[test]
+    fn enclosures_contain_the_exact_value() {
+        let mut st = 7u64;
+        for n in [1usize, 2, 3, 5] {
+            let simplex = Simplex::new(2, n);
+            let coords: Vec<f64> = (0..simplex.len() * 2)
+                .map(|i| (lcg(&mut st) - 0.5) * 10f64.powi((i % 7) as i32 * 40 - 120))
+                .collect();
+            let net = ControlNet::new(simplex, 2, coords);
+            let f = Filter::new(&net);
+            let exact = ExactEvaluator::new(&net.map(|x| exact_f64(*x).unwrap()));
+            let mut sc = Scratch::default();
+            let mut out = vec![Enclosure::default(); 2];
+            for _ in 0..200 {
+                let lam = [
+                    lcg(&mut st) * 3.0 - 1.0,
+                    lcg(&mut st) * 3.0 - 1.0,
+                    lcg(&mut st) * 3.0 - 1.0,
+                ];
+                f.evaluate(&lam, &mut sc, &mut out);
+                let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+                let p = exact.evaluate(&l, Algorithm::Casteljau);
+                let s = crate::certify::bound::condition(&net.map(|x| exact_f64(*x).unwrap()), &l);
+                let mut comp = out.clone();
+                f.evaluate_compensated(&lam, &mut sc, &mut comp);
+                for c in 0..2 {
+                    let e = &comp[c];
+                    if e.mu.is_finite() {
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap()
+                            - &p[c])
+                            .abs();
+                        assert!(err <= exact_f64(e.mu).unwrap(), "compensated n={n} {lam:?}");
+                        assert!(e.mu <= out[c].mu, "compensated is sharper n={n}");
+                    }
+                }
+                for c in 0..2 {
+                    let e = &out[c];
+                    let err = (exact_f64(e.value).unwrap() - &p[c]).abs();
+                    assert!(err <= exact_f64(e.mu).unwrap(), "n={n} {lam:?}");
+                    assert!(
+                        exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap()
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn decisions_agree_with_the_exact_judgement() {
+        use crate::certify::measures::{Leaf, Tolerance};
+        let net = ControlNet::new(
+            Simplex::new(2, 3),
+            1,
+            (0..10).map(|i| 1.0 / (i as f64 + 1.0)).collect(),
+        );
+        let f = Filter::new(&net);
+        let exact = ExactEvaluator::new(&net.map(|x| exact_f64(*x).unwrap()));
+        let mut sc = Scratch::default();
+        let mut out = vec![Enclosure::default(); 1];
+        let mut st = 3u64;
+        let tols = [
+            "exact",
+            "ulps=64",
+            "cond=64",
+            "ulps=1",
+            "ulps=3",
+            "abs=1e-16",
+            "rel=1e-16",
+            "correctly_rounded",
+            "faithful",
+            "cond=2",
+            "bound",
+        ];
+        for p in [Precision::F64, Precision::F32] {
+            for t in tols {
+                let tol = Tolerance::parse(t).unwrap();
+                let th = Thresholds::new(&tol, p, Algorithm::Casteljau, 2, 3);
+                let mut decided = 0;
+                for _ in 0..300 {
+                    let lam = [lcg(&mut st), lcg(&mut st), lcg(&mut st)];
+                    f.evaluate(&lam, &mut sc, &mut out);
+                    let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+                    let pe = &exact.evaluate(&l, Algorithm::Casteljau)[0];
+                    let base = match p {
+                        Precision::F64 => round_f64(pe),
+                        Precision::F32 => f64::from(crate::number::round_f32(pe)),
+                    };
+                    let steps = (lcg(&mut st) * 5.0) as i32 - 2;
+                    let mut y = base;
+                    for _ in 0..steps.abs() {
+                        y = match (p, steps > 0) {
+                            (Precision::F64, true) => y.next_up(),
+                            (Precision::F64, false) => y.next_down(),
+                            (Precision::F32, true) => f64::from((y as f32).next_up()),
+                            (Precision::F32, false) => f64::from((y as f32).next_down()),
+                        };
+                    }
+                    let yq = exact_f64(y).unwrap();
+                    let s =
+                        crate::certify::bound::condition(&net.map(|x| exact_f64(*x).unwrap()), &l)
+                            [0]
+                        .clone();
+                    let bound =
+                        crate::certify::bound::a_priori(Algorithm::Casteljau, p, 2, 3, &s, &l);
+                    let leaf = Leaf {
+                        precision: Some(p),
+                        condition: Some(s),
+                        bound,
+                    };
+                    let truth = tol.accepts(&yq, pe, &leaf).unwrap();
+                    let sabs: f64 = lam.iter().map(|x| x.abs()).sum();
+                    let mut dec = th.decide(y, &out[0], sabs);
+                    if dec == Decision::Undecided {
+                        let mut comp = out.clone();
+                        f.evaluate_compensated(&lam, &mut sc, &mut comp);
+                        dec = th.decide(y, &comp[0], sabs);
+                    }
+                    match dec {
+                        Decision::Pass => {
+                            assert!(truth, "{t} {p:?} {lam:?} {y}");
+                            decided += 1
+                        }
+                        Decision::Fail => {
+                            assert!(!truth, "{t} {p:?} {lam:?} {y}");
+                            decided += 1
+                        }
+                        Decision::Undecided => {}
+                    }
+                }
+                // with the compensated second stage every tolerance but `exact` decides some claims
+                assert!(decided > 0 || t == "exact", "{t} {p:?} never decided");
+            }
+        }
+        let _ = q("1");
+    }
+}

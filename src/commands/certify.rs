@@ -1,0 +1,441 @@
+//! `tribez certify`: run tribez's own float algorithms (de Casteljau and the direct Bernstein
+//! form, generic code in f64 and f32) and judge them against the exact values and their proven
+//! a-priori error bounds ([`crate::certify::bound`]).
+
+use std::path::PathBuf;
+
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+use rayon::prelude::*;
+use serde_json::{Value as Json, json};
+
+use super::{CliError, Outcome};
+use crate::certify::Certifier;
+use crate::certify::bound::{a_priori, condition, roundings};
+use crate::certify::measures::Measures;
+use crate::cli::OutputArgs;
+use crate::exact::Algorithm;
+use crate::float::{Float, Precision};
+use crate::io::patch_file::read_patch;
+use crate::io::points::read_points;
+use crate::patch::Patch;
+use crate::report::{Exporter, JunitCase, Render, junit_xml};
+
+/// Arguments of `tribez certify`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The patch file.
+    pub patch: PathBuf,
+    /// Barycentric points (CSV or JSON, exact numbers); they are rounded to the precision.
+    #[arg(long, value_name = "FILE", conflicts_with = "random")]
+    pub points: Option<PathBuf>,
+    /// Certify at N random points (inside, near the edges and outside the triangle).
+    #[arg(long, value_name = "N")]
+    pub random: Option<usize>,
+    /// Seed of --random (printed, with the command that reproduces the run).
+    #[arg(long, value_name = "S", default_value_t = 1)]
+    pub seed: u64,
+    /// Precision: f64, f32 or all.
+    #[arg(long, value_name = "f64|f32|all", default_value = "all")]
+    pub precision: String,
+    /// Algorithm: casteljau, bernstein or all.
+    #[arg(long, value_name = "casteljau|bernstein|all", default_value = "all")]
+    pub algorithm: String,
+    /// Write the worst error per algorithm and precision to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub record_baseline: Option<PathBuf>,
+    /// Fail when a worst error is larger than recorded in FILE.
+    #[arg(long, value_name = "FILE")]
+    pub baseline: Option<PathBuf>,
+    /// Also write a JUnit XML report (one test case per algorithm and precision).
+    #[arg(long, value_name = "FILE")]
+    pub junit: Option<PathBuf>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// One algorithm in one precision, over all points.
+pub struct Row {
+    algorithm: Algorithm,
+    precision: Precision,
+    cases: usize,
+    max_ulps: f64,
+    worst_point: Option<Vec<BigRational>>,
+    correctly_rounded: usize,
+    max_condition: f64,
+    max_relative_condition: f64,
+    max_bound_ratio: f64,
+    violations: Vec<String>,
+    outside_hypothesis: usize,
+    gamma_k: usize,
+}
+
+/// The certification report.
+pub struct CertifyReport {
+    patch: String,
+    points: usize,
+    random: Option<(usize, u64, String)>,
+    rows: Vec<Row>,
+    regressions: Vec<String>,
+}
+
+fn alg_name(a: Algorithm) -> &'static str {
+    match a {
+        Algorithm::Casteljau => "casteljau",
+        Algorithm::Bernstein => "bernstein",
+    }
+}
+
+/// A small deterministic generator (SplitMix64): the same seed gives the same points everywhere.
+pub struct SplitMix(pub u64);
+
+impl SplitMix {
+    /// Next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Random barycentric points (m+1 coordinates): 70% inside, 15% within 1e-9 of an edge,
+/// 15% outside the simplex (coordinates down to −1/2); `w = 1 − u − v` computed in f64 (so the
+/// coordinates need not sum to 1 exactly; the exact value is the homogeneous form there).
+pub fn random_points(m: usize, count: usize, seed: u64) -> Vec<Vec<f64>> {
+    let mut r = SplitMix(seed);
+    (0..count)
+        .map(|i| {
+            let kind = i % 20;
+            let mut lam: Vec<f64> = (0..m).map(|_| r.unit()).collect();
+            let total: f64 = lam.iter().sum::<f64>() + r.unit();
+            lam.iter_mut().for_each(|x| *x /= total);
+            if kind < 3 {
+                let k = (r.next_u64() % m as u64) as usize;
+                lam[k] = r.unit() * 1e-9;
+            } else if kind < 6 {
+                let k = (r.next_u64() % m as u64) as usize;
+                lam[k] = -0.5 * r.unit();
+            }
+            let last = lam.iter().fold(1.0, |acc, x| acc - x);
+            lam.push(last);
+            lam
+        })
+        .collect()
+}
+
+fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigRational>]) -> Row {
+    let cert = Certifier::<F>::new(&patch.net);
+    let (m, n) = (patch.net.m(), patch.net.degree());
+    struct Case {
+        ulps: f64,
+        cr: usize,
+        coords: usize,
+        cond: f64,
+        rel_cond: f64,
+        ratio: f64,
+        violation: Option<String>,
+        outside: bool,
+    }
+    let cases: Vec<Case> = points
+        .par_iter()
+        .map(|point| {
+            let lam: Vec<F> = point.iter().map(F::round).collect();
+            let y = crate::certify::run(algorithm, &cert.net, &lam);
+            let lam_q: Vec<BigRational> =
+                lam.iter().map(|x| x.exact().unwrap_or_default()).collect();
+            let outside = y.iter().any(|v| !v.finite())
+                || (algorithm == Algorithm::Bernstein
+                    && crate::certify::bernstein_may_underflow(&cert.net, &lam));
+            let p = cert.exact.evaluate(&lam_q, Algorithm::Casteljau);
+            let cond = condition(&cert.exact_net, &lam_q);
+            let mut case = Case {
+                ulps: 0.0,
+                cr: 0,
+                coords: y.len(),
+                cond: 0.0,
+                rel_cond: 0.0,
+                ratio: 0.0,
+                violation: None,
+                outside,
+            };
+            for (c, v) in y.iter().enumerate() {
+                case.cond = case.cond.max(cond[c].to_f64().unwrap_or(f64::INFINITY));
+                if !p[c].is_zero() {
+                    case.rel_cond = case
+                        .rel_cond
+                        .max((&cond[c] / p[c].abs()).to_f64().unwrap_or(f64::INFINITY));
+                }
+                let Some(yq) = v.exact() else { continue };
+                let meas = Measures::new(&yq, &p[c], Some(F::PRECISION));
+                case.ulps = case.ulps.max(
+                    meas.ulps
+                        .as_ref()
+                        .and_then(ToPrimitive::to_f64)
+                        .unwrap_or(f64::INFINITY),
+                );
+                if meas.correctly_rounded == Some(true) {
+                    case.cr += 1;
+                }
+                if outside {
+                    continue;
+                }
+                if let Some(b) = a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam_q) {
+                    if !b.is_zero() {
+                        case.ratio = case
+                            .ratio
+                            .max((&meas.abs / &b).to_f64().unwrap_or(f64::INFINITY));
+                    }
+                    if meas.abs > b {
+                        case.violation = Some(format!(
+                            "at {} coordinate {c}: error {} exceeds the bound {}",
+                            crate::report::tuple(&lam_q),
+                            crate::certify::measures::sci(&meas.abs),
+                            crate::certify::measures::sci(&b)
+                        ));
+                    }
+                }
+            }
+            case
+        })
+        .collect();
+    let mut row = Row {
+        algorithm,
+        precision: F::PRECISION,
+        cases: cases.len(),
+        max_ulps: 0.0,
+        worst_point: None,
+        correctly_rounded: 0,
+        max_condition: 0.0,
+        max_relative_condition: 0.0,
+        max_bound_ratio: 0.0,
+        violations: Vec::new(),
+        outside_hypothesis: 0,
+        gamma_k: roundings(algorithm, m, n),
+    };
+    let mut coords = 0;
+    for (i, c) in cases.into_iter().enumerate() {
+        if c.ulps > row.max_ulps {
+            row.max_ulps = c.ulps;
+            row.worst_point = Some(points[i].clone());
+        }
+        row.correctly_rounded += c.cr;
+        coords += c.coords;
+        row.max_condition = row.max_condition.max(c.cond);
+        row.max_relative_condition = row.max_relative_condition.max(c.rel_cond);
+        row.max_bound_ratio = row.max_bound_ratio.max(c.ratio);
+        row.outside_hypothesis += usize::from(c.outside);
+        row.violations.extend(c.violation);
+    }
+    row.cases = coords;
+    row
+}
+
+/// Run `tribez certify`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let patch = read_patch(&args.patch)?;
+    let m = patch.net.m();
+    let precisions = match args.precision.as_str() {
+        "all" => vec![Precision::F64, Precision::F32],
+        p => vec![
+            p.parse::<Precision>()
+                .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+        ],
+    };
+    let algorithms = match args.algorithm.as_str() {
+        "all" => vec![Algorithm::Casteljau, Algorithm::Bernstein],
+        "casteljau" => vec![Algorithm::Casteljau],
+        "bernstein" => vec![Algorithm::Bernstein],
+        other => {
+            return Err(CliError::Usage(format!(
+                "--algorithm: unknown algorithm `{other}` (known: casteljau, bernstein, all)"
+            )));
+        }
+    };
+    let (points, random) = match (&args.points, args.random) {
+        (Some(path), None) => (read_points(path, m + 1)?, None),
+        (None, Some(n)) => {
+            if n == 0 {
+                return Err(CliError::Usage("--random needs at least one point".into()));
+            }
+            let pts: Vec<Vec<BigRational>> = random_points(m, n, args.seed)
+                .into_iter()
+                .map(|p| {
+                    p.into_iter()
+                        .map(|x| BigRational::from_float(x).expect("finite"))
+                        .collect()
+                })
+                .collect();
+            let command = format!(
+                "tribez certify {} --random {n} --seed {} --precision {} --algorithm {}",
+                args.patch.display(),
+                args.seed,
+                args.precision,
+                args.algorithm
+            );
+            (pts, Some((n, args.seed, command)))
+        }
+        (None, None) => {
+            return Err(CliError::Usage(
+                "give --points FILE or --random N [--seed S]".into(),
+            ));
+        }
+        (Some(_), Some(_)) => unreachable!("clap rejects --points with --random"),
+    };
+    let mut rows = Vec::new();
+    for &p in &precisions {
+        for &a in &algorithms {
+            rows.push(match p {
+                Precision::F64 => certify_one::<f64>(&patch, a, &points),
+                Precision::F32 => certify_one::<f32>(&patch, a, &points),
+            });
+        }
+    }
+    let mut report = CertifyReport {
+        patch: args.patch.display().to_string(),
+        points: points.len(),
+        random,
+        rows,
+        regressions: Vec::new(),
+    };
+    let worst: Vec<super::baseline::Worst> = report
+        .rows
+        .iter()
+        .map(|r| super::baseline::Worst {
+            op: "eval".into(),
+            algorithm: alg_name(r.algorithm).into(),
+            precision: r.precision.name().into(),
+            ulps: r.max_ulps,
+            at: r
+                .worst_point
+                .as_ref()
+                .map_or(String::new(), |p| crate::report::tuple(p)),
+        })
+        .collect();
+    if let Some(path) = &args.record_baseline {
+        super::baseline::record(path, &worst)?;
+    }
+    if let Some(path) = &args.baseline {
+        report.regressions = super::baseline::compare(path, &worst)?;
+    }
+    let success =
+        report.rows.iter().all(|r| r.violations.is_empty()) && report.regressions.is_empty();
+    if let Some(path) = &args.junit {
+        super::write_atomically(path, report.junit().as_bytes())?;
+    }
+    Outcome::rendered(&report, args.out.format, success)
+}
+
+fn g(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else if (1e-3..1e6).contains(&x.abs()) {
+        format!("{x:.4}")
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .to_string()
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
+impl Render for CertifyReport {
+    fn text(&self) -> String {
+        let mut out = format!("{}: {} points\n", self.patch, self.points);
+        if let Some((n, seed, cmd)) = &self.random {
+            out += &format!("random points: {n}, seed {seed}; reproduce with:\n  {cmd}\n");
+        }
+        out += &format!(
+            "\n{:<10} {:<5} {:>9} {:>10} {:>9} {:>11} {:>11} {:>8} {:>9} {:>8}\n",
+            "algorithm",
+            "prec",
+            "coords",
+            "max ulp",
+            "cr share",
+            "max cond",
+            "max relcond",
+            "bound",
+            "err/bound",
+            "verdict"
+        );
+        for r in &self.rows {
+            out += &format!(
+                "{:<10} {:<5} {:>9} {:>10} {:>8.2}% {:>11} {:>11} {:>8} {:>9} {:>8}\n",
+                alg_name(r.algorithm),
+                r.precision.name(),
+                r.cases,
+                g(r.max_ulps),
+                100.0 * r.correctly_rounded as f64 / r.cases.max(1) as f64,
+                g(r.max_condition),
+                g(r.max_relative_condition),
+                format!("γ_{}", r.gamma_k),
+                g(r.max_bound_ratio),
+                if r.violations.is_empty() {
+                    "within"
+                } else {
+                    "EXCEEDED"
+                }
+            );
+        }
+        out += "\nbound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i(|λ|) (γ_K = Kε/(1−Kε)); cond = Σ|c_i|B_i(|λ|), relcond = cond/|P|; err/bound = largest observed error over its bound\n";
+        for r in &self.rows {
+            if r.outside_hypothesis > 0 {
+                out += &format!(
+                    "{} {}: {} points outside the bound's hypothesis (overflow or near underflow), not judged\n",
+                    alg_name(r.algorithm),
+                    r.precision.name(),
+                    r.outside_hypothesis
+                );
+            }
+            for v in r.violations.iter().take(20) {
+                out += &format!(
+                    "BOUND EXCEEDED: {} {}: {v}\n",
+                    alg_name(r.algorithm),
+                    r.precision.name()
+                );
+            }
+        }
+        for reg in &self.regressions {
+            out += &format!("baseline regression: {reg}\n");
+        }
+        out
+    }
+
+    fn json(&self) -> Json {
+        json!({
+            "patch": self.patch,
+            "points": self.points,
+            "random": self.random.as_ref().map(|(n, s, c)| json!({"count": n, "seed": s, "reproduce": c})),
+            "results": self.rows.iter().map(|r| json!({
+                "algorithm": alg_name(r.algorithm), "precision": r.precision.name(), "coordinates": r.cases,
+                "max_ulps": r.max_ulps, "worst_point": r.worst_point.as_ref().map(|p| crate::report::json_rationals(p)),
+                "correctly_rounded": r.correctly_rounded, "max_condition": r.max_condition,
+                "max_relative_condition": r.max_relative_condition, "bound": format!("gamma_{}", r.gamma_k),
+                "max_error_over_bound": r.max_bound_ratio, "within_bound": r.violations.is_empty(),
+                "violations": r.violations, "outside_hypothesis": r.outside_hypothesis,
+            })).collect::<Vec<_>>(),
+            "baseline_regressions": self.regressions,
+        })
+    }
+}
+
+impl Exporter for CertifyReport {
+    fn junit(&self) -> String {
+        let cases: Vec<JunitCase> = self
+            .rows
+            .iter()
+            .map(|r| JunitCase {
+                name: format!("{} {}", alg_name(r.algorithm), r.precision.name()),
+                checks: r.cases,
+                failures: r.violations.clone(),
+            })
+            .collect();
+        junit_xml("certify", &cases)
+    }
+}
