@@ -70,7 +70,7 @@ fn main() {
             let (secs, results) = best_of(repeat, || {
                 points
                     .iter()
-                    .map(|p| eval.evaluate(p, Algorithm::Horner))
+                    .map(|p| eval.evaluate_fast(p))
                     .collect::<Vec<_>>()
             });
             let bits: Vec<u64> = results
@@ -196,6 +196,41 @@ fn main() {
                     .sum::<f64>()
             });
             report("f32_casteljau", t, v);
+        }
+        "csv" => {
+            // M random float points and their f64 Horner values, as rows for
+            // `tribez check --results FILE --precision f64` (f64 Display is the shortest round trip).
+            let m: usize = args[2].parse().expect("number of points");
+            let mut s = 0x2545_F491_4F6C_DD1Du64;
+            let mut next = || {
+                s = s
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (s >> 11) as f64 / (1u64 << 53) as f64
+            };
+            let pts: Vec<[f64; 3]> = (0..m)
+                .map(|_| {
+                    let (mut a, mut b) = (next(), next());
+                    if a + b > 1.0 {
+                        (a, b) = (1.0 - a, 1.0 - b);
+                    }
+                    [1.0 - a - b, a, b]
+                })
+                .collect();
+            let h64 = horner_points_dvec3(&net_f64(&net));
+            let mut out = Vec::new();
+            let t0 = Instant::now();
+            horner_dvec3_many(&h64, n, &pts, &mut out);
+            let secs = t0.elapsed().as_secs_f64();
+            let mut text = String::with_capacity(m * 120);
+            for (p, v) in pts.iter().zip(&out) {
+                text += &format!("{},{},{},{},{},{}\n", p[0], p[1], p[2], v.x, v.y, v.z);
+            }
+            std::fs::write(&args[3], text).expect("write csv");
+            eprintln!(
+                "{}",
+                json!({"tool": "tribez", "what": "f64_horner_for_csv", "degree": n, "points": m, "seconds": secs})
+            );
         }
         other => panic!("unknown mode {other}"),
     }

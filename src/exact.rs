@@ -7,7 +7,7 @@
 //!
 //! an integer computation followed by one division (one gcd) per coordinate. Both de Casteljau
 //! and the Bernstein form run on the integers through the same generic code as everything else
-//! ([`crate::casteljau`], [`crate::bernstein`]), and agree exactly. [`Algorithm::Horner`] is the
+//! ([`crate::casteljau`], [`crate::bernstein`]), and agree exactly. [`ExactEvaluator::evaluate_fast`] is the
 //! fast kernel (nested homogeneous Horner on machine-word limbs, row-scaled for triangles, a
 //! gcd-free reduction; see `src/exact/kernel.rs`), property-tested equal to
 //! [`evaluate_rational`]; it is what `tribez eval` and the claims use.
@@ -20,7 +20,8 @@
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));
 //! let u = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
-//! for alg in [Algorithm::Casteljau, Algorithm::Bernstein, Algorithm::Horner] {
+//! assert_eq!(eval.evaluate_fast(&u).iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["4/9", "5/9", "29/36"]);
+//! for alg in [Algorithm::Casteljau, Algorithm::Bernstein] {
 //!     let p: Vec<String> = eval.evaluate(&u, alg).iter().map(|x| x.to_string()).collect();
 //!     assert_eq!(p, ["4/9", "5/9", "29/36"]);
 //! }
@@ -47,12 +48,6 @@ pub enum Algorithm {
     Casteljau,
     /// The direct Bernstein form `Σ C(n;α) z_α a^α` on integers.
     Bernstein,
-    /// The fast kernel: nested homogeneous Horner on machine-word limbs with multinomial-scaled
-    /// integer control points precomputed once per patch, and a reduction to lowest terms that
-    /// uses the known prime factors of the denominators (see [`ExactEvaluator`]). Points whose
-    /// homogeneous coordinates are negative or do not fit a machine word fall back to
-    /// [`Algorithm::Bernstein`].
-    Horner,
 }
 
 /// Bring rationals to a common (least) denominator: `(numerators, D)` with `x_k = a_k / D`.
@@ -118,19 +113,26 @@ impl ExactEvaluator {
         }
     }
 
+    /// The homogeneous form `P(λ)` at a rational point (which need not sum to one), by the fast
+    /// kernel: nested homogeneous Horner on machine-word limbs with the multinomial-scaled integer
+    /// control points precomputed once per patch (row by row for triangles), and a reduction to
+    /// lowest terms that uses the known prime factors of the denominators (src/exact/kernel.rs).
+    /// Points whose homogeneous coordinates are negative or do not fit a machine word fall back
+    /// to [`Algorithm::Bernstein`]. Equal to [`evaluate_rational`] (property-tested).
+    pub fn evaluate_fast(&self, lambda: &[BigRational]) -> Vec<BigRational> {
+        match word_point(lambda) {
+            Some((a, d)) => self.fast.evaluate(&a, d),
+            None => self.evaluate(lambda, Algorithm::Bernstein),
+        }
+    }
+
     /// The homogeneous form `P(λ)` at a rational point (which need not sum to one).
     pub fn evaluate(&self, lambda: &[BigRational], algorithm: Algorithm) -> Vec<BigRational> {
-        if algorithm == Algorithm::Horner {
-            if let Some((a, d)) = word_point(lambda) {
-                return self.fast.evaluate(&a, d);
-            }
-            return self.evaluate(lambda, Algorithm::Bernstein);
-        }
         let (a, d) = common_denominator(lambda);
         let n = self.integer_net.degree();
         let numer = match algorithm {
             Algorithm::Casteljau => casteljau::evaluate(&self.integer_net, &a),
-            Algorithm::Bernstein | Algorithm::Horner => monomial_sum(&self.scaled_net, &a),
+            Algorithm::Bernstein => monomial_sum(&self.scaled_net, &a),
         };
         let dn = num_traits::pow(d, n);
         numer
@@ -191,7 +193,7 @@ pub fn evaluate_rational(
 ) -> Vec<BigRational> {
     match algorithm {
         Algorithm::Casteljau => casteljau::evaluate(net, lambda),
-        Algorithm::Bernstein | Algorithm::Horner => bernstein::evaluate(net, lambda),
+        Algorithm::Bernstein => bernstein::evaluate(net, lambda),
     }
 }
 
@@ -260,7 +262,7 @@ mod tests {
             }).collect();
             let eval = ExactEvaluator::new(&net);
             let expected = evaluate_rational(&net, &lambda, Algorithm::Casteljau);
-            prop_assert_eq!(eval.evaluate(&lambda, Algorithm::Horner), expected.clone());
+            prop_assert_eq!(eval.evaluate_fast(&lambda), expected.clone());
             prop_assert_eq!(eval.evaluate(&lambda, Algorithm::Casteljau), expected);
         }
     }
@@ -283,7 +285,7 @@ mod tests {
         .collect();
         let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));
         let at = |u: [&str; 3]| {
-            eval.evaluate(&u.map(q), Algorithm::Horner)
+            eval.evaluate_fast(&u.map(q))
                 .iter()
                 .map(ToString::to_string)
                 .collect::<Vec<_>>()

@@ -220,7 +220,7 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
             Ok(Value::numbers(
-                &ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Horner),
+                &ExactEvaluator::new(&patch.net).evaluate_fast(&at),
             ))
         }
         "symbolic" => {

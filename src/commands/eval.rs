@@ -9,7 +9,7 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome, check_barycentric, parse_list};
 use crate::bernstein;
 use crate::cli::OutputArgs;
-use crate::exact::{Algorithm, ExactEvaluator};
+use crate::exact::ExactEvaluator;
 use crate::float::{Float, Precision, net_to};
 use crate::io::patch_file::read_patch;
 use crate::io::points::read_points;
@@ -140,7 +140,7 @@ fn float_results<F: Float>(
         .iter()
         .map(|x| x.exact().expect("rounded coordinates are finite"))
         .collect();
-    let exact_at_inputs = path.exact.evaluate(&lam_exact, Algorithm::Horner);
+    let exact_at_inputs = path.exact.evaluate_fast(&lam_exact);
     [
         ("casteljau", crate::float::casteljau(fnet, &lam)),
         ("bernstein", bernstein::evaluate(fnet, &lam)),
@@ -218,7 +218,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let results = points
         .into_par_iter()
         .map(|(at, cartesian)| {
-            let point = evaluator.evaluate(&at, Algorithm::Horner);
+            let point = evaluator.evaluate_fast(&at);
             let mut floats = Vec::new();
             for p in &precisions {
                 floats.extend(match p {

@@ -1,4 +1,4 @@
-//! The fast exact kernel behind [`super::Algorithm::Horner`].
+//! The fast exact kernel behind [`super::ExactEvaluator::evaluate_fast`].
 //!
 //! **Per patch** (once): for each coordinate `c` the integer Bernstein coefficients
 //! `s_α = C(n;α)(z_α + K_c)` as machine-word limbs, where `z_α = c_α L_c` are the control points
