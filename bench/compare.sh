@@ -17,7 +17,7 @@ DEGREES="${1:-3 10 20}"
 WORK="$(mktemp -d)"
 trap 'rm -rf "$WORK"' EXIT
 
-cargo build --release --example speed --manifest-path "$ROOT/Cargo.toml" >&2
+cargo build --release --bin tribez --example speed --manifest-path "$ROOT/Cargo.toml" >&2
 TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 SPEED="$TARGET/release/examples/speed"
 
@@ -48,4 +48,24 @@ for n in $DEGREES; do
     printf '%-4s %-34s %12.4f %12.4f %8.2f\n' "$n" "$what (bezier f64)" "$ours" "$peer" "$(echo "$peer / $ours" | bc -l)"
   done < "$WORK/float_$n.jsonl"
 done
+# check of CHECK_CLAIMS f64 claims at n = 3 against plain f64 evaluation of the same points
+CHECK_CLAIMS="${CHECK_CLAIMS:-1000000}"
+case3="$WORK/case_check_n3.json"
+(cd "$PEERS" && "$PY" -c "import json,common; json.dump(common.random_case(3, 3, 0, seed=1003), open('$case3', 'w'))")
+"$PY" - "$case3" "$WORK/p3.toml" <<'PYEOF'
+import json, sys
+c = json.load(open(sys.argv[1])); n = c["degree"]
+idx = [(n - j - k, j, k) for k in range(n + 1) for j in range(n - k + 1)]
+rows = [f'"{i},{j},{k}" = [' + ", ".join(f'"{x}"' for x in p) + "]" for (i, j, k), p in zip(idx, c["nodes"])]
+open(sys.argv[2], "w").write(f"degree = {n}\n[control_points]\n" + "\n".join(rows) + "\n")
+PYEOF
+eval_line=$("$SPEED" csv "$case3" "$CHECK_CLAIMS" "$WORK/claims3.csv" 2>&1 >/dev/null)
+eval_s=$(echo "$eval_line" | field seconds)
+cast_s=$("$SPEED" float "$case3" "$CHECK_CLAIMS" | grep f64_casteljau | field seconds)
+t0=$(date +%s.%N)
+"$TARGET/release/tribez" check --patch "$WORK/p3.toml" --results "$WORK/claims3.csv" --precision f64 --tolerance cond=9 > "$WORK/check.txt"
+t1=$(date +%s.%N)
+check_s=$(echo "$t1 - $t0" | bc -l)
+printf '%-4s %-34s %12.3f %12.3f %8.1f %s\n' 3 "check $CHECK_CLAIMS f64 claims (s)" "$check_s" "$eval_s" "$(echo "$check_s / $eval_s" | bc -l)" "= check / f64 Horner eval; vs f64 de Casteljau ($cast_s s): $(echo "$check_s / $cast_s" | bc -l | cut -c1-5); target <= 10"
+grep -E "decided by the float filter" "$WORK/check.txt" >&2 || true
 echo "ratio = peer time / tribez time (higher is better for tribez); targets: exact >= 5, f64 Horner >= 2" 
