@@ -372,36 +372,8 @@ pub fn subpatch_matrix(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::number::parse_rational;
+    use crate::testing::{finn, r, s};
     use proptest::prelude::*;
-
-    fn q(s: &str) -> BigRational {
-        parse_rational(s).unwrap()
-    }
-    fn r(v: &[&str]) -> Vec<BigRational> {
-        v.iter().map(|s| q(s)).collect()
-    }
-    fn s(p: &[BigRational]) -> Vec<String> {
-        p.iter().map(ToString::to_string).collect()
-    }
-    fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [
-            [0, 0, 0],
-            [1, 0, 2],
-            [0, 2, 0],
-            [0, 1, 0],
-            [1, 1, 1],
-            [0, 2, 1],
-        ]
-        .iter()
-        .map(|p| {
-            p.iter()
-                .map(|&x| BigRational::from_integer(x.into()))
-                .collect()
-        })
-        .collect();
-        ControlNet::from_points(2, 2, &pts)
-    }
 
     #[test]
     fn blossom_values_of_formulas_section_4() {

@@ -26,6 +26,8 @@ pub enum Command {
     Eval(commands::eval::Args),
     /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
     Symbolic(commands::symbolic::Args),
+    /// Write the graph (x, y, f(x, y)) of a functional patch as a parametric patch file.
+    Graph(commands::graph::Args),
     /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
     Check(commands::check::Args),
     /// Run tribez's own float algorithms and show every error lies within its proven bound.

@@ -166,32 +166,9 @@ pub fn tangent_frame(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::number::parse_rational;
     use crate::symbolic::{barycentric_form, cartesian_form};
+    use crate::testing::{finn, r};
     use proptest::prelude::*;
-
-    fn r(v: &[&str]) -> Vec<BigRational> {
-        v.iter().map(|s| parse_rational(s).unwrap()).collect()
-    }
-
-    fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [
-            [0, 0, 0],
-            [1, 0, 2],
-            [0, 2, 0],
-            [0, 1, 0],
-            [1, 1, 1],
-            [0, 2, 1],
-        ]
-        .iter()
-        .map(|p| {
-            p.iter()
-                .map(|&x| BigRational::from_integer(x.into()))
-                .collect()
-        })
-        .collect();
-        ControlNet::from_points(2, 2, &pts)
-    }
 
     #[test]
     fn finn_tangent_frame_formulas_section_3() {

@@ -202,10 +202,7 @@ pub fn format_points(points: &[Vec<BigRational>]) -> String {
 mod tests {
     use super::*;
     use crate::number::parse_rational;
-
-    fn r(v: &[&str]) -> Vec<BigRational> {
-        v.iter().map(|s| parse_rational(s).unwrap()).collect()
-    }
+    use crate::testing::r;
 
     #[test]
     fn tetrahedron_cramer_formulas_section_11() {

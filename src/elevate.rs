@@ -157,26 +157,8 @@ mod tests {
     use crate::domain::Domain;
     use crate::simplex;
     use crate::symbolic::cartesian_form;
+    use crate::testing::finn;
     use proptest::prelude::*;
-
-    fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [
-            [0, 0, 0],
-            [1, 0, 2],
-            [0, 2, 0],
-            [0, 1, 0],
-            [1, 1, 1],
-            [0, 2, 1],
-        ]
-        .iter()
-        .map(|p| {
-            p.iter()
-                .map(|&x| BigRational::from_integer(x.into()))
-                .collect()
-        })
-        .collect();
-        ControlNet::from_points(2, 2, &pts)
-    }
 
     #[test]
     fn finn_elevated_to_degree_three() {

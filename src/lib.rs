@@ -35,12 +35,17 @@ pub mod elevate;
 pub mod error;
 pub mod exact;
 pub mod float;
+pub mod functional;
 pub mod io;
 pub mod join;
 pub mod number;
 pub mod patch;
+pub mod rational;
 pub mod report;
 pub mod scalar;
 pub mod simplex;
+pub mod spatch;
 pub mod subdivide;
 pub mod symbolic;
+#[cfg(test)]
+mod testing;

@@ -168,3 +168,49 @@ impl Patch {
             .unwrap_or_else(|| Domain::reference(self.net.m()))
     }
 }
+
+/// Any kind of patch a patch file can describe (README, "Patch files": `[weights]`, `polygon`,
+/// `kind = "functional"`). Plain Bézier simplices stay [`Patch`], so code that takes a `Patch`
+/// keeps working; the other kinds wrap one or carry their own net.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AnyPatch {
+    /// A polynomial Bézier simplex.
+    Bezier(Patch),
+    /// A rational Bézier simplex (`[weights]`).
+    Rational(crate::rational::RationalPatch),
+    /// A functional (nonparametric) patch: one ordinate per control point (`d = 1`) over a
+    /// domain simplex (`kind = "functional"`).
+    Functional(Patch),
+    /// An S-patch over a convex polygon (`polygon = [...]`).
+    SPatch(crate::spatch::SPatch),
+}
+
+impl AnyPatch {
+    /// `"a rational patch"`, `"an S-patch"`, …: the kind with its article, for messages.
+    pub fn described(&self) -> &'static str {
+        match self {
+            AnyPatch::Bezier(_) => "a Bézier patch",
+            AnyPatch::Rational(_) => "a rational patch",
+            AnyPatch::Functional(_) => "a functional patch",
+            AnyPatch::SPatch(_) => "an S-patch",
+        }
+    }
+
+    /// `"Bézier"`, `"rational"`, `"functional"` or `"S-patch"`.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            AnyPatch::Bezier(_) => "Bézier",
+            AnyPatch::Rational(_) => "rational",
+            AnyPatch::Functional(_) => "functional",
+            AnyPatch::SPatch(_) => "S-patch",
+        }
+    }
+
+    /// The polynomial patch, for the kinds that are one (Bézier and functional).
+    pub fn polynomial(&self) -> Option<&Patch> {
+        match self {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Some(p),
+            _ => None,
+        }
+    }
+}

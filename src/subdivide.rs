@@ -285,34 +285,9 @@ mod tests {
     use super::*;
     use crate::blossom::map_point;
     use crate::casteljau::evaluate;
-    use crate::number::parse_rational;
+    use crate::testing::{finn, r, s};
     use num_traits::One;
     use proptest::prelude::*;
-
-    fn r(v: &[&str]) -> Vec<BigRational> {
-        v.iter().map(|s| parse_rational(s).unwrap()).collect()
-    }
-    fn s(p: &[BigRational]) -> Vec<String> {
-        p.iter().map(ToString::to_string).collect()
-    }
-    fn finn() -> ControlNet<BigRational> {
-        let pts: Vec<Vec<BigRational>> = [
-            [0, 0, 0],
-            [1, 0, 2],
-            [0, 2, 0],
-            [0, 1, 0],
-            [1, 1, 1],
-            [0, 2, 1],
-        ]
-        .iter()
-        .map(|p| {
-            p.iter()
-                .map(|&x| BigRational::from_integer(x.into()))
-                .collect()
-        })
-        .collect();
-        ControlNet::from_points(2, 2, &pts)
-    }
 
     #[test]
     fn split_of_formulas_section_5_1() {

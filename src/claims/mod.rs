@@ -38,9 +38,9 @@ use std::path::{Path, PathBuf};
 use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::float::Precision;
 use crate::io::InputError;
-use crate::io::patch_file::patch_from_document;
+use crate::io::patch_file::any_patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::patch::Patch;
+use crate::patch::{AnyPatch, Patch};
 use value::{Mismatch, Value, compare};
 
 /// Keys a claim file may have at its top level.
@@ -65,8 +65,9 @@ pub struct ClaimFile {
     pub doc: Document,
     /// Where the claims come from.
     pub source: Option<String>,
-    /// Named patches: `""` for the file's `patch`, else the names under `[patches]`.
-    pub patches: Vec<(String, Patch)>,
+    /// Named patches: `""` for the file's `patch`, else the names under `[patches]` (any kind:
+    /// [`ClaimFile::patch_for`] gives the polynomial ones, [`ClaimFile::any_patch_for`] all).
+    pub patches: Vec<(String, AnyPatch)>,
     /// The claims in file order.
     pub claims: Vec<Claim>,
 }
@@ -155,11 +156,16 @@ pub struct FloatLeaf {
     pub bound: Option<num_rational::BigRational>,
 }
 
-fn resolve_patch(doc: &Document, node: &Node, key: &str, dir: &Path) -> Result<Patch, InputError> {
+fn resolve_patch(
+    doc: &Document,
+    node: &Node,
+    key: &str,
+    dir: &Path,
+) -> Result<AnyPatch, InputError> {
     match &node.value {
         NodeValue::String(rel) => {
             let path = dir.join(rel);
-            crate::io::patch_file::read_patch(&path).map_err(|mut e| {
+            crate::io::patch_file::read_any_patch(&path).map_err(|mut e| {
                 if e.line.is_none() {
                     e.message = format!(
                         "{} (patch named at {}:{}: {key})",
@@ -169,7 +175,7 @@ fn resolve_patch(doc: &Document, node: &Node, key: &str, dir: &Path) -> Result<P
                 e
             })
         }
-        NodeValue::Table(_) => patch_from_document(doc, node, key),
+        NodeValue::Table(_) => any_patch_from_document(doc, node, key),
         other => Err(doc.error(
             node,
             key,
@@ -241,8 +247,25 @@ impl ClaimFile {
         })
     }
 
-    /// The patch a claim refers to (`patch = "name"` in the claim, else the file's patch).
+    /// The polynomial patch a claim refers to (`patch = "name"` in the claim, else the file's
+    /// patch); a rational patch or an S-patch is an error for the claim's operation.
     pub fn patch_for(&self, claim: &Claim) -> Result<&Patch, InputError> {
+        let any = self.any_patch_for(claim)?;
+        any.polynomial().ok_or_else(|| {
+            self.doc.error(
+                &claim.node,
+                &claim.id,
+                format!(
+                    "operation `{}` does not take a {} patch",
+                    claim.op,
+                    any.kind_name()
+                ),
+            )
+        })
+    }
+
+    /// The patch (of any kind) a claim refers to.
+    pub fn any_patch_for(&self, claim: &Claim) -> Result<&AnyPatch, InputError> {
         let t = self.doc.table(&claim.node, &claim.id)?;
         let name = match Document::get(t, "patch") {
             Some(n) => self

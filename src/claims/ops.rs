@@ -18,6 +18,13 @@
 //! | `join` | `patches = ["a", "b"]` (names under `[patches]`); optional `part` | `{c0, c1, g1, coplanarity, max_smoothness, mu, violations, g1_determinant}` (or that part) |
 //! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
 //! | `direction` | `domain`, `vector` (Cartesian) | the directional coordinates (they sum to 0) |
+//! | `implicit` | `equation` (a polynomial in the coordinates), optional `coordinates` (their names, default `x, y, z`), `names` | the residual `W^k F(X/W)` as a polynomial in the patch's variables (barycentric; `x, y` for an S-patch); `"0"` proves the whole patch lies on `F = 0` |
+//! | `wachspress` | `cartesian` (a point of an S-patch's polygon) | `{ A = [A_j], C = [C_i], lambda = [λ_i] }` (FORMULAS.md §12) |
+//! | `abscissae` | (a functional or Bézier patch) | the Bézier abscissae `ξ_α` keyed by multi-index |
+//! | `ordinates` | `domain`, `degree`, `function` (polynomial in `x, y`, or `names`) | the control ordinates `b_α` keyed by multi-index |
+//! | `graph` | (a functional patch) | the control points `(ξ_α, b_α)` of its graph, keyed by multi-index |
+//!
+//! `eval` also takes rational patches (`at` or `cartesian`) and S-patches (`cartesian` only).
 //!
 //! Each op lists the keys it reads; any other key in a claim is an error (a typo must not be
 //! silently ignored).
@@ -32,6 +39,7 @@ use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
 use crate::io::patch_file::index_key;
 use crate::io::tree::{Document, Node, Value as NodeValue};
+use crate::patch::AnyPatch;
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
@@ -55,6 +63,11 @@ pub const OPS: &[&str] = &[
     "tangent",
     "edge_curve",
     "join",
+    "implicit",
+    "wachspress",
+    "abscissae",
+    "ordinates",
+    "graph",
 ];
 
 /// The input keys of an operation (besides [`CLAIM_KEYS`]).
@@ -75,6 +88,10 @@ fn op_keys(op: &str) -> Option<&'static [&'static str]> {
         "tangent" => &["patch", "at", "cartesian", "part"],
         "edge_curve" => &["patch", "from", "to"],
         "join" => &["patches", "part"],
+        "implicit" => &["patch", "equation", "coordinates", "names"],
+        "wachspress" => &["patch", "cartesian"],
+        "abscissae" | "graph" => &["patch"],
+        "ordinates" => &["domain", "degree", "function", "names"],
         _ => return None,
     })
 }
@@ -216,6 +233,19 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
         .check_keys(&claim.node, table, &allowed, &claim.id)?;
     let inputs = Inputs { file, claim, table };
     match claim.op.as_str() {
+        "eval"
+            if !matches!(
+                file.any_patch_for(claim)?,
+                AnyPatch::Bezier(_) | AnyPatch::Functional(_)
+            ) =>
+        {
+            beyond::eval(&inputs)
+        }
+        "implicit" => beyond::implicit(&inputs),
+        "wachspress" => beyond::wachspress(&inputs),
+        "abscissae" => beyond::abscissae(&inputs),
+        "ordinates" => beyond::ordinates(&inputs),
+        "graph" => beyond::graph(&inputs),
         "eval" => {
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
@@ -310,6 +340,11 @@ pub fn eval_float(
 ) -> Result<FloatEval, InputError> {
     let table = file.doc.table(&claim.node, &claim.id)?;
     let inputs = Inputs { file, claim, table };
+    match file.any_patch_for(claim)? {
+        AnyPatch::Rational(r) => return beyond::eval_float_rational(&inputs, r, p),
+        AnyPatch::SPatch(s) => return beyond::eval_float_spatch(&inputs, s, p),
+        AnyPatch::Bezier(_) | AnyPatch::Functional(_) => {}
+    }
     let patch = inputs.patch()?;
     let algorithm = match inputs.opt_string("algorithm")?.as_deref() {
         None | Some("casteljau") => Algorithm::Casteljau,
@@ -561,7 +596,15 @@ fn opt_rational_rows(inputs: &Inputs<'_>, name: &str) -> Result<Vec<Vec<BigRatio
 }
 
 fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
-    let patch = inputs.patch()?;
+    let any = inputs.file.any_patch_for(inputs.claim)?;
+    let rational = match any {
+        AnyPatch::Rational(r) => Some(r),
+        _ => None,
+    };
+    let patch = match rational {
+        Some(r) => &r.patch,
+        None => inputs.patch()?,
+    };
     let at = inputs.point(patch)?;
     let m = patch.net.m();
     let mut dirs = Vec::new();
@@ -590,6 +633,24 @@ fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     crate::derivative::check_order(dirs.len(), patch.net.degree())
         .map_err(|e| inputs.error("dirs", e.to_string()))?;
     let refs: Vec<&[BigRational]> = dirs.iter().map(Vec::as_slice).collect();
+    if let Some(r) = rational {
+        // rational patches: first order, by the quotient rule on the homogeneous net
+        if refs.len() != 1 {
+            return Err(inputs.error(
+                "dirs",
+                "a rational patch takes exactly one direction (first-order derivatives only)",
+            ));
+        }
+        let key = if inputs.get("at").is_some() {
+            "at"
+        } else {
+            "cartesian"
+        };
+        return r
+            .derivative(&at, refs[0])
+            .map(|v| Value::numbers(&v))
+            .map_err(|e| inputs.error(key, e.to_string()));
+    }
     Ok(Value::numbers(&crate::derivative::directional_derivative(
         &patch.net, &refs, &at,
     )))
@@ -709,6 +770,14 @@ fn join(inputs: &Inputs<'_>) -> Result<Value, InputError> {
                     format!("no patch named `{name}` under [patches]"),
                 )
             })
+            .and_then(|p| {
+                p.polynomial().ok_or_else(|| {
+                    inputs.error(
+                        "patches",
+                        format!("`join` does not take a {} patch (`{name}`)", p.kind_name()),
+                    )
+                })
+            })
     };
     let (a, b) = (find(&names[0])?, find(&names[1])?);
     let j = crate::join::analyse(a, b).map_err(|e| inputs.error("patches", e.to_string()))?;
@@ -755,6 +824,293 @@ fn join(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     }
     kv.push(("violations".into(), Value::Map(viol)));
     select_part(inputs, Value::Map(kv))
+}
+
+/// The operations of issue 5 (rational patches, S-patches, functional patches).
+mod beyond {
+    use num_rational::BigRational;
+
+    use super::{Inputs, Value};
+    use crate::functional;
+    use crate::io::InputError;
+    use crate::io::patch_file::index_key;
+    use crate::patch::AnyPatch;
+    use crate::rational::homogenised_residual;
+    use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_names};
+
+    fn map(simplex: &crate::simplex::Simplex, values: impl Iterator<Item = Value>) -> Value {
+        Value::Map(simplex.iter().map(index_key).zip(values).collect())
+    }
+
+    /// `eval` on a rational patch or an S-patch.
+    pub fn eval(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        match inputs.file.any_patch_for(inputs.claim)? {
+            AnyPatch::Rational(r) => {
+                let at = inputs.point(&r.patch)?;
+                let key = if inputs.get("at").is_some() {
+                    "at"
+                } else {
+                    "cartesian"
+                };
+                r.evaluate(&at)
+                    .map(|v| Value::numbers(&v))
+                    .map_err(|e| inputs.error(key, e.to_string()))
+            }
+            AnyPatch::SPatch(s) => {
+                if inputs.get("at").is_some() {
+                    return Err(
+                        inputs.error("at", "an S-patch takes Cartesian points: use `cartesian`")
+                    );
+                }
+                let x = inputs.rationals("cartesian")?;
+                s.evaluate(&x)
+                    .map(|(_, v)| Value::numbers(&v))
+                    .map_err(|e| inputs.error("cartesian", e.to_string()))
+            }
+            AnyPatch::Bezier(_) | AnyPatch::Functional(_) => {
+                unreachable!("handled by the plain `eval`")
+            }
+        }
+    }
+
+    /// Float claims (`precision`) on rational patches and S-patches are judged against the exact
+    /// value at the inputs as the code saw them (point, control points, weights, polygon rounded
+    /// to the precision) and at the intended inputs. No a-priori bound is proven for these kinds,
+    /// so the `cond` and `bound` tolerances are refused. The condition shown is
+    /// `Σ|w c|B(|λ|) / |Σ w B(λ)|` for a rational patch and `Σ|P_α|B_α(λ)` (at the exact
+    /// Wachspress coordinates of the rounded point) for an S-patch.
+    fn refuse_bound_tolerances(inputs: &Inputs<'_>) -> Result<(), InputError> {
+        let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+        if tolerance.needs_condition() {
+            return Err(inputs.error(
+                "tolerance",
+                format!("tolerance `{tolerance}` needs a proven error bound, which tribez has for polynomial patches only"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn rounded(
+        inputs: &Inputs<'_>,
+        xs: &[BigRational],
+        p: crate::float::Precision,
+        name: &str,
+    ) -> Result<Vec<BigRational>, InputError> {
+        xs.iter()
+            .map(|q| crate::certify::measures::as_float(q, p))
+            .collect::<Option<_>>()
+            .ok_or_else(|| inputs.error(name, format!("a number overflows {}", p.name())))
+    }
+
+    /// The float view of an `eval` claim on a rational patch.
+    pub fn eval_float_rational(
+        inputs: &Inputs<'_>,
+        r: &crate::rational::RationalPatch,
+        p: crate::float::Precision,
+    ) -> Result<super::FloatEval, InputError> {
+        refuse_bound_tolerances(inputs)?;
+        let intended = inputs.point(&r.patch)?;
+        let key = if inputs.get("at").is_some() {
+            "at"
+        } else {
+            "cartesian"
+        };
+        let seen_inputs = match inputs.opt_rationals("cartesian")? {
+            Some(x) => {
+                let xr = rounded(inputs, &x, p, "cartesian")?;
+                r.patch
+                    .domain_or_reference()
+                    .barycentric(&xr)
+                    .map_err(|e| inputs.error("cartesian", e.to_string()))?
+            }
+            None => rounded(inputs, &intended, p, "at")?,
+        };
+        let h = r.homogeneous();
+        let hr = h.map(|q| crate::certify::measures::as_float(q, p));
+        if hr.coords().iter().any(Option::is_none) {
+            return Err(inputs.error(
+                "patch",
+                format!("a weighted control point overflows {}", p.name()),
+            ));
+        }
+        let hr = hr.map(|q| q.clone().unwrap_or_default());
+        let seen = crate::rational::RationalPatch::from_homogeneous(&hr, &r.patch)
+            .map_err(|e| inputs.error("patch", format!("rounded to {}: {e}", p.name())))?;
+        let exact_seen = seen
+            .evaluate(&seen_inputs)
+            .map_err(|e| inputs.error(key, format!("as the code saw it: {e}")))?;
+        let exact_intended = r
+            .evaluate(&intended)
+            .map_err(|e| inputs.error(key, e.to_string()))?;
+        let numer = crate::certify::bound::condition(&seen.numerator(), &seen_inputs);
+        let w = crate::exact::ExactEvaluator::new(&seen.denominator())
+            .evaluate(&seen_inputs, crate::exact::Algorithm::Casteljau)
+            .remove(0);
+        let condition = numer
+            .iter()
+            .map(|c| c / num_traits::Signed::abs(&w))
+            .collect();
+        let d = exact_seen.len();
+        Ok(super::FloatEval {
+            seen_inputs,
+            exact_seen,
+            exact_intended,
+            condition,
+            bound: vec![None; d],
+        })
+    }
+
+    /// The float view of an `eval` claim on an S-patch (Cartesian point).
+    pub fn eval_float_spatch(
+        inputs: &Inputs<'_>,
+        s: &crate::spatch::SPatch,
+        p: crate::float::Precision,
+    ) -> Result<super::FloatEval, InputError> {
+        refuse_bound_tolerances(inputs)?;
+        let x = inputs.rationals("cartesian")?;
+        let (_, exact_intended) = s
+            .evaluate(&x)
+            .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+        let seen_inputs = rounded(inputs, &x, p, "cartesian")?;
+        let mut verts = Vec::new();
+        for v in s.polygon.vertices() {
+            verts.push(rounded(inputs, v, p, "patch")?);
+        }
+        let polygon = crate::spatch::Polygon::new(verts).map_err(|e| {
+            inputs.error("patch", format!("the polygon rounded to {}: {e}", p.name()))
+        })?;
+        let net = s.net.map(|q| crate::certify::measures::as_float(q, p));
+        if net.coords().iter().any(Option::is_none) {
+            return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+        }
+        let seen = crate::spatch::SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
+            .map_err(|e| inputs.error("patch", e.to_string()))?;
+        let (lambda, exact_seen) = seen
+            .evaluate(&seen_inputs)
+            .map_err(|e| inputs.error("cartesian", format!("as the code saw it: {e}")))?;
+        let condition = crate::certify::bound::condition(&seen.net, &lambda);
+        let d = exact_seen.len();
+        Ok(super::FloatEval {
+            seen_inputs,
+            exact_seen,
+            exact_intended,
+            condition,
+            bound: vec![None; d],
+        })
+    }
+
+    /// The residual of an implicit equation on a patch of any kind.
+    pub fn implicit(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let any = inputs.file.any_patch_for(inputs.claim)?;
+        let (x, w, default_names) = match any {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+                let m = p.net.m();
+                (
+                    barycentric_form(&p.net),
+                    Polynomial::constant(m + 1, num_traits::One::one()),
+                    barycentric_names(m),
+                )
+            }
+            AnyPatch::Rational(r) => {
+                let mut h = r.homogeneous_form();
+                let w = h.pop().expect("weight component");
+                (h, w, barycentric_names(r.patch.net.m()))
+            }
+            AnyPatch::SPatch(s) => {
+                let (nums, den) = s.rational_form();
+                (nums, den, cartesian_names(2))
+            }
+        };
+        let d = x.len();
+        let coords: Vec<String> = match inputs.opt_strings("coordinates")? {
+            Some(c) if c.len() != d => {
+                return Err(inputs.error(
+                    "coordinates",
+                    format!("{} names given, the points have {d} coordinates", c.len()),
+                ));
+            }
+            Some(c) => c,
+            None => cartesian_names(d),
+        };
+        let text = inputs
+            .opt_string("equation")?
+            .ok_or_else(|| inputs.error("equation", "missing input `equation`"))?;
+        let refs: Vec<&str> = coords.iter().map(String::as_str).collect();
+        let f = Polynomial::parse(&text, &refs)
+            .map_err(|e| inputs.error("equation", format!("`{text}`: {e}")))?;
+        let names = inputs.names(default_names)?;
+        Ok(Value::Poly(homogenised_residual(&f, &x, &w), names))
+    }
+
+    /// Wachspress data of an S-patch's polygon at a point.
+    pub fn wachspress(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let AnyPatch::SPatch(s) = inputs.file.any_patch_for(inputs.claim)? else {
+            return Err(inputs.error(
+                "patch",
+                "`wachspress` needs an S-patch (a patch file with `polygon`)",
+            ));
+        };
+        let x = inputs.rationals("cartesian")?;
+        let lambda = s
+            .polygon
+            .wachspress(&x)
+            .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+        let p = [x[0].clone(), x[1].clone()];
+        Ok(Value::Map(vec![
+            ("A".into(), Value::numbers(&s.polygon.areas(&p))),
+            ("C".into(), Value::numbers(&s.polygon.corner_areas())),
+            ("lambda".into(), Value::numbers(&lambda)),
+        ]))
+    }
+
+    /// The Bézier abscissae of a patch's domain and degree.
+    pub fn abscissae(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let p = inputs.patch()?;
+        let xi = functional::abscissae(&p.domain_or_reference(), p.net.degree());
+        Ok(map(p.net.simplex(), xi.iter().map(|x| Value::numbers(x))))
+    }
+
+    /// The graph of a functional patch.
+    pub fn graph(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let AnyPatch::Functional(p) = inputs.file.any_patch_for(inputs.claim)? else {
+            return Err(inputs.error(
+                "patch",
+                "`graph` needs a functional patch (kind = \"functional\")",
+            ));
+        };
+        let g = functional::graph(p).map_err(|e| inputs.error("patch", e.to_string()))?;
+        Ok(map(g.net.simplex(), g.net.points().map(Value::numbers)))
+    }
+
+    /// Control ordinates of a polynomial over a domain.
+    pub fn ordinates(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let node = inputs
+            .get("domain")
+            .ok_or_else(|| inputs.error("domain", "missing input `domain`"))?;
+        let doc = &inputs.file.doc;
+        let m = doc.array(node, "domain")?.len().saturating_sub(1);
+        let domain =
+            crate::io::patch_file::domain(doc, node, m, &format!("{}.domain", inputs.claim.id))?;
+        let n = inputs
+            .opt_usize("degree")?
+            .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
+        if n > crate::io::patch_file::MAX_DEGREE {
+            return Err(inputs.error("degree", "degree out of range"));
+        }
+        let names = inputs.names(cartesian_names(m))?;
+        let text = inputs
+            .opt_string("function")?
+            .ok_or_else(|| inputs.error("function", "missing input `function`"))?;
+        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let f = Polynomial::parse(&text, &refs)
+            .map_err(|e| inputs.error("function", format!("`{text}`: {e}")))?;
+        let b: Vec<BigRational> = functional::ordinates(&domain, n, &f)
+            .map_err(|e| inputs.error("function", e.to_string()))?;
+        Ok(map(
+            &crate::simplex::Simplex::new(m, n),
+            b.into_iter().map(Value::Number),
+        ))
+    }
 }
 
 /// The Bernstein basis of a degree (symbolic or at a point), or its sum.

@@ -8,7 +8,8 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome, check_barycentric, check_direction, parse_list};
 use crate::cli::OutputArgs;
 use crate::derivative::{check_order, directional_derivative};
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
+use crate::patch::AnyPatch;
 use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez derivative`.
@@ -43,7 +44,15 @@ pub struct DerivativeReport {
 /// Run `tribez derivative`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = read_patch(&args.patch)?;
+    let (patch, rational) = match read_any_patch(&args.patch)? {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (p, None),
+        AnyPatch::Rational(r) => (r.patch.clone(), Some(r)),
+        AnyPatch::SPatch(_) => {
+            return Err(CliError::Usage(format!(
+                "{file}: `tribez derivative` does not take S-patches"
+            )));
+        }
+    };
     let (m, n) = (patch.net.m(), patch.net.degree());
     let domain = patch.domain_or_reference();
     let p = parse_list(&args.at, "--at")?;
@@ -77,7 +86,19 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
     let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
-    let value = directional_derivative(&patch.net, &refs, &at);
+    let value = match &rational {
+        None => directional_derivative(&patch.net, &refs, &at),
+        // rational patches: first order, by the quotient rule on the homogeneous net
+        Some(r) if refs.len() == 1 => r
+            .derivative(&at, refs[0])
+            .map_err(|e| CliError::core(&what, e))?,
+        Some(_) => {
+            return Err(CliError::Usage(
+                "a rational patch takes exactly one direction (first-order derivatives only)"
+                    .into(),
+            ));
+        }
+    };
     Outcome::rendered(
         &DerivativeReport {
             file,

@@ -3,10 +3,12 @@
 use std::path::PathBuf;
 
 use super::construct::{PatchReport, check_size, child_patch};
+use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::error::CoreError;
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
+use crate::patch::AnyPatch;
 
 /// Arguments of `tribez elevate`.
 #[derive(Debug, clap::Args)]
@@ -22,13 +24,36 @@ pub struct Args {
 
 /// Run `tribez elevate`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let parent = read_patch(&args.patch)?;
     if args.by == 0 {
         return Err(CliError::core(
             "--by 0",
             CoreError::Invalid("elevate by at least 1".into()),
         ));
     }
+    let parent = match read_any_patch(&args.patch)? {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
+        AnyPatch::Rational(r) => {
+            // a rational patch: elevate the homogeneous net (w c, w)
+            let (m, n) = (r.patch.net.m(), r.patch.net.degree());
+            check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
+            let mut up = r
+                .elevate(args.by)
+                .map_err(|e| CliError::core(args.patch.display().to_string(), e))?;
+            let label = format!("elevated to degree {}", n + args.by);
+            up.patch = child_patch(&r.patch, up.patch.net, None, &label)?;
+            return Outcome::rendered(
+                &AnyPatchReport(AnyPatch::Rational(up)),
+                args.out.format,
+                true,
+            );
+        }
+        AnyPatch::SPatch(_) => {
+            return Err(CliError::Usage(format!(
+                "{}: `tribez elevate` does not take S-patches",
+                args.patch.display()
+            )));
+        }
+    };
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
     let net = crate::elevate::elevate_exact(&parent.net, args.by);

@@ -11,10 +11,10 @@ use crate::bernstein;
 use crate::cli::OutputArgs;
 use crate::exact::ExactEvaluator;
 use crate::float::{Float, Precision, net_to};
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
 use crate::io::points::read_points;
 use crate::number::to_decimal_string;
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{AnyPatch, ControlNet, Patch};
 use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez eval`.
@@ -164,7 +164,11 @@ fn float_results<F: Float>(
 /// Run `tribez eval`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = read_patch(&args.patch)?;
+    let patch = match read_any_patch(&args.patch)? {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
+        AnyPatch::Rational(r) => return super::eval_beyond::rational(args, file, r),
+        AnyPatch::SPatch(s) => return super::eval_beyond::spatch(args, file, s),
+    };
     let m = patch.net.m();
     let width = if args.cartesian { m } else { m + 1 };
     let mut raw: Vec<(String, Vec<BigRational>)> = Vec::new();

@@ -9,6 +9,8 @@ pub mod construct;
 pub mod derivative;
 pub mod elevate;
 pub mod eval;
+pub mod eval_beyond;
+pub mod graph;
 pub mod halve;
 pub mod join;
 pub mod matrix;
@@ -86,6 +88,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
+        Command::Graph(a) => (graph::run(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),

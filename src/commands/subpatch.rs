@@ -4,10 +4,12 @@
 use std::path::PathBuf;
 
 use super::construct::{PatchReport, barycentric_points, child_patch};
+use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::error::CoreError;
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
+use crate::patch::AnyPatch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]
@@ -23,7 +25,17 @@ pub struct Args {
 
 /// Run `tribez subpatch`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let parent = read_patch(&args.patch)?;
+    let any = read_any_patch(&args.patch)?;
+    let (parent, rational) = match any {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (p, None),
+        AnyPatch::Rational(r) => (r.patch.clone(), Some(r)),
+        AnyPatch::SPatch(_) => {
+            return Err(CliError::Usage(format!(
+                "{}: `tribez subpatch` does not take S-patches",
+                args.patch.display()
+            )));
+        }
+    };
     let m = parent.net.m();
     if args.vertices.len() != m + 1 {
         return Err(CliError::core(
@@ -42,6 +54,16 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         .map(|v| format!("--vertex {v}"))
         .collect::<Vec<_>>()
         .join(" ");
+    if let Some(r) = rational {
+        // a rational patch: the subpatch of the homogeneous net (w c, w)
+        let mut sub = r.subpatch(&f).map_err(|e| CliError::core(context, e))?;
+        sub.patch = child_patch(&parent, sub.patch.net, Some(&f), "subpatch")?;
+        return Outcome::rendered(
+            &AnyPatchReport(AnyPatch::Rational(sub)),
+            args.out.format,
+            true,
+        );
+    }
     let net =
         crate::blossom::subpatch_exact(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
     let patch = child_patch(&parent, net, Some(&f), "subpatch")?;

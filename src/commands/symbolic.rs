@@ -1,4 +1,8 @@
 //! `tribez symbolic`: the patch as polynomials with exact coefficients.
+//!
+//! A rational patch prints its numerators `Σ w_α c_α B_α` and the common denominator
+//! `Σ w_α B_α`; an S-patch prints its rational form in `x, y` (FORMULAS.md §12): numerators
+//! `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
 
 use std::path::PathBuf;
 
@@ -6,7 +10,8 @@ use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
+use crate::patch::AnyPatch;
 use crate::report::Render;
 use crate::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
@@ -29,11 +34,45 @@ pub struct SymbolicReport {
     file: String,
     names: Vec<String>,
     components: Vec<Polynomial>,
+    /// The common denominator of a rational patch or an S-patch.
+    denominator: Option<Polynomial>,
 }
 
 /// Run `tribez symbolic`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let patch = read_patch(&args.patch)?;
+    let patch = match read_any_patch(&args.patch)? {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
+        AnyPatch::Rational(r) => {
+            let m = r.patch.net.m();
+            let mut h = r.homogeneous_form();
+            let names = if args.cartesian {
+                let subs =
+                    crate::symbolic::barycentric_of_cartesian(&r.patch.domain_or_reference());
+                h = h.iter().map(|p| p.compose(&subs)).collect();
+                cartesian_names(m)
+            } else {
+                barycentric_names(m)
+            };
+            let denominator = h.pop();
+            let report = SymbolicReport {
+                file: args.patch.display().to_string(),
+                names,
+                components: h,
+                denominator,
+            };
+            return Outcome::rendered(&report, args.out.format, true);
+        }
+        AnyPatch::SPatch(s) => {
+            let (components, den) = s.rational_form();
+            let report = SymbolicReport {
+                file: args.patch.display().to_string(),
+                names: cartesian_names(2),
+                components,
+                denominator: Some(den),
+            };
+            return Outcome::rendered(&report, args.out.format, true);
+        }
+    };
     let m = patch.net.m();
     let (names, components) = if args.cartesian {
         (
@@ -47,6 +86,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         file: args.patch.display().to_string(),
         names,
         components,
+        denominator: None,
     };
     Outcome::rendered(&report, args.out.format, true)
 }
@@ -68,6 +108,9 @@ impl Render for SymbolicReport {
         for (c, p) in self.components.iter().enumerate() {
             out += &format!("[{c}] {}\n", p.to_text(&names));
         }
+        if let Some(d) = &self.denominator {
+            out += &format!("denominator {}\n", d.to_text(&names));
+        }
         out
     }
 
@@ -84,15 +127,23 @@ impl Render for SymbolicReport {
                 )
             })
             .collect();
-        json!({ "variables": self.names, "components": components })
+        let mut out = json!({ "variables": self.names, "components": components });
+        if let Some(d) = &self.denominator {
+            out["denominator"] = json!(d.to_text(&self.names()));
+        }
+        out
     }
 
     fn latex(&self) -> Option<String> {
         let names = self.names();
         let rows: Vec<String> = self.components.iter().map(|p| p.to_latex(&names)).collect();
-        Some(format!(
-            "\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}\n",
+        let matrix = format!(
+            "\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}",
             rows.join(" \\\\\n")
-        ))
+        );
+        Some(match &self.denominator {
+            Some(d) => format!("\\frac{{1}}{{{}}}\n{matrix}\n", d.to_latex(&names)),
+            None => format!("{matrix}\n"),
+        })
     }
 }

@@ -14,6 +14,22 @@
 //! `3` tetrahedra, …), summing to `degree`; values are arrays of `d >= 1` numbers, written as
 //! strings in the number syntax of [`crate::number::parse_rational`] or as plain numbers (taken
 //! from their text, exactly).
+//!
+//! Three optional additions make the other kinds of [`AnyPatch`] (README, "Beyond the
+//! triangle"):
+//!
+//! * `[weights]`, keyed like `control_points`, one number per control point: a **rational**
+//!   patch. Every control point needs exactly one weight; zero and negative weights are
+//!   accepted (evaluating where the denominator vanishes is an error).
+//! * `polygon = [["x", "y"], …]`: an **S-patch** over that convex polygon (counter-clockwise);
+//!   the control-point keys then have one part per polygon vertex, summing to `degree` (the
+//!   depth). No `domain` and no `weights` with a polygon.
+//! * `kind = "functional"`: a **functional** (nonparametric) patch: one control ordinate per
+//!   control point (`d = 1`) over `domain` (default: the reference simplex).
+//!
+//! `kind` may also be written `"bezier"`, `"rational"` or `"s-patch"`; it must then agree with
+//! the keys present. [`read_patch`] returns plain and functional patches as a [`Patch`] and
+//! rejects the other kinds with a located error; [`read_any_patch`] returns every kind.
 
 use std::path::Path;
 
@@ -23,8 +39,10 @@ use serde_json::{Map, Value as Json, json};
 use super::InputError;
 use super::tree::{Document, Node};
 use crate::domain::Domain;
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{AnyPatch, ControlNet, Patch};
+use crate::rational::RationalPatch;
 use crate::simplex::{self, Simplex};
+use crate::spatch::{Polygon, SPatch};
 
 /// The largest degree a patch file may have. Exact evaluation at degree 200 costs tens of
 /// milliseconds per point (README, "Scaling"); beyond that, results run to many kilobits.
@@ -41,16 +59,61 @@ pub const PATCH_KEYS: &[&str] = &[
     "domain",
     "control_points",
     "domain_in_parent",
+    "weights",
+    "polygon",
+    "kind",
 ];
 
-/// Read a patch file.
+/// Read a patch file: a polynomial Bézier simplex (or a functional patch, as its scalar net).
+/// Rational patches and S-patches are rejected with a located error.
 pub fn read_patch(path: &Path) -> Result<Patch, InputError> {
     let doc = Document::read(path)?;
     patch_from_document(&doc, &doc.root, "")
 }
 
-/// Parse a patch from a table node (the whole file, or an inline `patch` table in a claim file).
+/// Read a patch file of any kind.
+pub fn read_any_patch(path: &Path) -> Result<AnyPatch, InputError> {
+    let doc = Document::read(path)?;
+    any_patch_from_document(&doc, &doc.root, "")
+}
+
+/// Parse a polynomial patch from a table node (the whole file, or an inline `patch` table in a
+/// claim file); other kinds are an error naming the key that makes them so.
 pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<Patch, InputError> {
+    let any = any_patch_from_document(doc, node, prefix)?;
+    match any {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok(p),
+        other => {
+            let table = doc.table(node, prefix)?;
+            let k = if matches!(other, AnyPatch::Rational(_)) {
+                "weights"
+            } else {
+                "polygon"
+            };
+            let at = Document::get(table, k).unwrap_or(node);
+            let key = if prefix.is_empty() {
+                k.to_string()
+            } else {
+                format!("{prefix}.{k}")
+            };
+            Err(doc.error(
+                at,
+                &key,
+                format!(
+                    "this is {}; only polynomial Bézier patches are accepted here",
+                    other.described()
+                ),
+            ))
+        }
+    }
+}
+
+/// Parse a patch of any kind from a table node.
+pub fn any_patch_from_document(
+    doc: &Document,
+    node: &Node,
+    prefix: &str,
+) -> Result<AnyPatch, InputError> {
     let key = |k: &str| {
         if prefix.is_empty() {
             k.to_string()
@@ -81,11 +144,129 @@ pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<
         )
     })?;
     let net = control_points(doc, cp_node, degree, &key("control_points"))?;
+    let kind_node = Document::get(table, "kind");
+    let kind = kind_node.map(|n| doc.string(n, &key("kind"))).transpose()?;
+    let kind_error = |message: String| doc.error(kind_node.unwrap_or(node), &key("kind"), message);
+    if let Some(k) = kind
+        && !["bezier", "rational", "functional", "s-patch"].contains(&k)
+    {
+        return Err(kind_error(format!(
+            "unknown kind `{k}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")"
+        )));
+    }
+    let weights_node = Document::get(table, "weights");
+    if let Some(poly_node) = Document::get(table, "polygon") {
+        for other in ["domain", "weights"] {
+            if let Some(n) = Document::get(table, other) {
+                return Err(doc.error(
+                    n,
+                    &key(other),
+                    format!("an S-patch (with `polygon`) cannot have `{other}`"),
+                ));
+            }
+        }
+        if kind.is_some_and(|k| k != "s-patch") {
+            return Err(kind_error(format!(
+                "kind `{}` contradicts `polygon` (an S-patch)",
+                kind.unwrap_or_default()
+            )));
+        }
+        let rows = doc.array(poly_node, &key("polygon"))?;
+        let vertices = rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| doc.rationals(r, &format!("{}[{i}]", key("polygon"))))
+            .collect::<Result<Vec<_>, _>>()?;
+        let polygon = Polygon::new(vertices)
+            .map_err(|e| doc.error(poly_node, &key("polygon"), e.to_string()))?;
+        let mut s = SPatch::new(polygon, net)
+            .map_err(|e| doc.error(cp_node, &key("control_points"), e.to_string()))?;
+        s.name = name;
+        return Ok(AnyPatch::SPatch(s));
+    }
     let domain = match Document::get(table, "domain") {
         None => None,
         Some(d) => Some(domain(doc, d, net.m(), &key("domain"))?),
     };
-    Ok(Patch { name, net, domain })
+    let patch = Patch { name, net, domain };
+    match (kind, weights_node) {
+        (Some("s-patch"), _) => Err(kind_error("an S-patch needs `polygon`".into())),
+        (Some("bezier" | "functional"), Some(w)) => Err(doc.error(
+            w,
+            &key("weights"),
+            format!("a {} patch has no weights", kind.unwrap_or_default()),
+        )),
+        (Some("rational"), None) => Err(kind_error(
+            "a rational patch needs a [weights] table".into(),
+        )),
+        (_, Some(w)) => {
+            let weights = weights(doc, w, &patch.net, &key("weights"))?;
+            Ok(AnyPatch::Rational(RationalPatch::new(patch, weights)))
+        }
+        (Some("functional"), None) => {
+            if patch.net.dim() != 1 {
+                return Err(doc.error(
+                    cp_node,
+                    &key("control_points"),
+                    format!("a functional patch has one control ordinate per control point (d = 1), but its points have {} coordinates", patch.net.dim()),
+                ));
+            }
+            Ok(AnyPatch::Functional(patch))
+        }
+        _ => Ok(AnyPatch::Bezier(patch)),
+    }
+}
+
+/// Parse `[weights]`: one number per control point, keyed like `control_points`.
+fn weights(
+    doc: &Document,
+    node: &Node,
+    net: &ControlNet<BigRational>,
+    key: &str,
+) -> Result<Vec<BigRational>, InputError> {
+    let table = doc.table(node, key)?;
+    let simplex = net.simplex();
+    let mut slots: Vec<Option<(String, BigRational)>> = vec![None; simplex.len()];
+    for (k, v) in table {
+        let here = format!("{key}.\"{k}\"");
+        let alpha: Option<Vec<u32>> = k.split(',').map(|p| p.trim().parse::<u32>().ok()).collect();
+        let r = alpha
+            .filter(|a| a.len() == net.m() + 1 && a.iter().map(|&x| u64::from(x)).sum::<u64>() == net.degree() as u64)
+            .map(|a| simplex.rank(&a))
+            .ok_or_else(|| doc.error(v, &here, format!("no control point \"{k}\" (weights are keyed by the multi-indices of the control points)")))?;
+        if let Some((other, _)) = &slots[r] {
+            return Err(doc.error(
+                v,
+                &here,
+                format!("duplicated weight: \"{other}\" names the same control point"),
+            ));
+        }
+        slots[r] = Some((k.clone(), doc.rational(v, &here)?));
+    }
+    let mut out = Vec::with_capacity(slots.len());
+    for (r, slot) in slots.into_iter().enumerate() {
+        match slot {
+            Some((_, w)) => out.push(w),
+            None => {
+                return Err(doc.error(
+                    node,
+                    key,
+                    format!(
+                        "missing weight \"{}\" (every control point needs one)",
+                        index_key(simplex.index(r))
+                    ),
+                ));
+            }
+        }
+    }
+    if out.iter().all(num_traits::Zero::is_zero) {
+        return Err(doc.error(
+            node,
+            key,
+            "every weight is zero: the rational patch is undefined everywhere",
+        ));
+    }
+    Ok(out)
 }
 
 fn control_points(
@@ -264,6 +445,89 @@ pub fn patch_to_toml(patch: &Patch) -> String {
     out
 }
 
+/// A patch of any kind as a TOML patch file (`kind` for functional patches, `polygon` for
+/// S-patches, `[weights]` for rational patches).
+pub fn any_patch_to_toml(patch: &AnyPatch) -> String {
+    match patch {
+        AnyPatch::Bezier(p) => patch_to_toml(p),
+        AnyPatch::Functional(p) => format!("kind = \"functional\"\n{}", patch_to_toml(p)),
+        AnyPatch::Rational(r) => {
+            let mut out = patch_to_toml(&r.patch);
+            out += "\n[weights]\n";
+            for (alpha, w) in r.patch.net.simplex().iter().zip(&r.weights) {
+                out += &format!(
+                    "\"{}\" = {}\n",
+                    index_key(alpha),
+                    toml_string(&w.to_string())
+                );
+            }
+            out
+        }
+        AnyPatch::SPatch(s) => {
+            let mut out = String::new();
+            if let Some(name) = &s.name {
+                out += &format!("name = {}\n", toml_string(name));
+            }
+            out += &format!("degree = {}\n", s.net.degree());
+            let vs: Vec<String> = s.polygon.vertices().iter().map(|v| toml_list(v)).collect();
+            out += &format!("polygon = [{}]\n\n[control_points]\n", vs.join(", "));
+            for (alpha, p) in s.net.entries() {
+                out += &format!("\"{}\" = {}\n", index_key(alpha), toml_list(p));
+            }
+            out
+        }
+    }
+}
+
+/// A patch of any kind as JSON, in the patch-file layout.
+pub fn any_patch_to_json(patch: &AnyPatch) -> Json {
+    match patch {
+        AnyPatch::Bezier(p) => patch_to_json(p),
+        AnyPatch::Functional(p) => {
+            let mut j = patch_to_json(p);
+            j["kind"] = json!("functional");
+            j
+        }
+        AnyPatch::Rational(r) => {
+            let mut j = patch_to_json(&r.patch);
+            let w: Map<String, Json> = r
+                .patch
+                .net
+                .simplex()
+                .iter()
+                .zip(&r.weights)
+                .map(|(a, w)| (index_key(a), json!(w.to_string())))
+                .collect();
+            j["weights"] = Json::Object(w);
+            j
+        }
+        AnyPatch::SPatch(s) => {
+            let mut obj = Map::new();
+            if let Some(name) = &s.name {
+                obj.insert("name".into(), json!(name));
+            }
+            obj.insert("degree".into(), json!(s.net.degree()));
+            obj.insert(
+                "polygon".into(),
+                json!(
+                    s.polygon
+                        .vertices()
+                        .iter()
+                        .map(|v| strings(v))
+                        .collect::<Vec<_>>()
+                ),
+            );
+            let cps: Map<String, Json> = s
+                .net
+                .entries()
+                .map(|(a, p)| (index_key(a), json!(strings(p))))
+                .collect();
+            obj.insert("control_points".into(), Json::Object(cps));
+            Json::Object(obj)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -362,5 +626,30 @@ degree = 2
             "{}",
             err(&unknown)
         );
+    }
+
+    #[test]
+    fn every_kind_round_trips_through_toml_and_json() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/beyond");
+        for f in [
+            "octant_quartic.toml",
+            "pentagon_depth2.toml",
+            "functional_linear.toml",
+            "tetra_quadratic.toml",
+        ] {
+            let p = read_any_patch(&dir.join(f)).unwrap();
+            let doc = Document::parse_toml("p.toml", &any_patch_to_toml(&p)).unwrap();
+            assert_eq!(
+                any_patch_from_document(&doc, &doc.root, "").unwrap(),
+                p,
+                "{f}"
+            );
+            let doc = Document::parse_json("p.json", &any_patch_to_json(&p).to_string()).unwrap();
+            assert_eq!(
+                any_patch_from_document(&doc, &doc.root, "").unwrap(),
+                p,
+                "{f}"
+            );
+        }
     }
 }
