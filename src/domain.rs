@@ -181,6 +181,55 @@ pub fn determinant(mut a: Vec<Vec<BigRational>>) -> BigRational {
     det
 }
 
+/// `(1/2, 1/3, 1/6)`: a tuple of exact numbers as text, for messages and reports.
+pub fn format_tuple(xs: &[BigRational]) -> String {
+    format!(
+        "({})",
+        xs.iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+/// Check that barycentric coordinates have `m + 1` entries summing to one.
+pub fn check_barycentric(lambda: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
+    if lambda.len() != m + 1 {
+        return Err(CoreError::WrongLength {
+            what: what.into(),
+            expected: m + 1,
+            found: lambda.len(),
+        });
+    }
+    let sum: BigRational = lambda.iter().sum();
+    if !sum.is_one() {
+        return Err(CoreError::NotBarycentric {
+            coords: format_tuple(lambda),
+            sum: sum.to_string(),
+        });
+    }
+    Ok(())
+}
+
+/// Check that a barycentric direction has `m + 1` entries summing to zero.
+pub fn check_direction(d: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
+    if d.len() != m + 1 {
+        return Err(CoreError::WrongLength {
+            what: what.into(),
+            expected: m + 1,
+            found: d.len(),
+        });
+    }
+    let sum: BigRational = d.iter().sum();
+    if !sum.is_zero() {
+        return Err(CoreError::DirectionSum {
+            coords: format_tuple(d),
+            sum: sum.to_string(),
+        });
+    }
+    Ok(())
+}
+
 /// `(1, 2), (7, 3)` style text for messages.
 pub fn format_points(points: &[Vec<BigRational>]) -> String {
     points

@@ -626,7 +626,7 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
                 .join(", "),
             facet_word(m),
             a_opposite + 1,
-            crate::report::tuple(&mu)
+            crate::domain::format_tuple(&mu)
         )));
     }
     let sf = SharedFacet {

@@ -33,10 +33,10 @@
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
+use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::patch::{ControlNet, Patch};
-use crate::report::tuple;
 use crate::symbolic::{Polynomial, barycentric_form};
 use crate::{casteljau, float::Float};
 

@@ -32,11 +32,11 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use crate::casteljau;
+use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Float;
 use crate::patch::ControlNet;
-use crate::report::tuple;
 use crate::scalar::Scalar;
 use crate::symbolic::{Polynomial, barycentric_form};
 

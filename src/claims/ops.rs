@@ -181,7 +181,7 @@ impl<'a> Inputs<'a> {
                 Ok(at)
             }
             (Some(at), None) => {
-                crate::commands::check_barycentric(&at, m, "point `at`")
+                crate::domain::check_barycentric(&at, m, "point `at`")
                     .map_err(|e| self.error("at", e.to_string()))?;
                 Ok(at)
             }
@@ -420,7 +420,7 @@ impl Inputs<'_> {
             .map(|(i, n)| {
                 let key = format!("{}[{i}]", self.key(name));
                 let p = self.file.doc.rationals(n, &key)?;
-                crate::commands::check_barycentric(&p, m, "point")
+                crate::domain::check_barycentric(&p, m, "point")
                     .map_err(|e| self.file.doc.error(n, &key, e.to_string()))?;
                 Ok(p)
             })
@@ -487,7 +487,7 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
             };
             match (inputs.opt_rationals("at")?, midpoints) {
                 (Some(t), false) => {
-                    crate::commands::check_barycentric(&t, m, "point `at`")
+                    crate::domain::check_barycentric(&t, m, "point `at`")
                         .map_err(|e| inputs.error("at", e.to_string()))?;
                     pieces(
                         split_at_pieces_exact(net, &t)
@@ -569,8 +569,7 @@ fn matrix(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         }
         _ => return Err(inputs.error("kind", "`kind` must be \"halve\" or \"subpatch\"")),
     };
-    if crate::simplex::binomial((n + m) as u64, m as u64)
-        > crate::commands::matrix::MAX_ROWS as u128
+    if crate::simplex::binomial((n + m) as u64, m as u64) > crate::blossom::MAX_MATRIX_ROWS as u128
     {
         return Err(inputs.error("degree", "the matrix would be too large"));
     }
@@ -609,7 +608,7 @@ fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
     let m = patch.net.m();
     let mut dirs = Vec::new();
     for (i, d) in opt_rational_rows(inputs, "dirs")?.into_iter().enumerate() {
-        crate::commands::check_direction(&d, m, "direction")
+        crate::domain::check_direction(&d, m, "direction")
             .map_err(|e| inputs.error("dirs", format!("direction {}: {e}", i + 1)))?;
         dirs.push(d);
     }

@@ -15,7 +15,7 @@ use crate::simplex::{self, Simplex};
 use crate::subdivide::halve_domains;
 
 /// The largest matrix `tribez matrix` prints: this many rows (degree 43 on a triangle).
-pub const MAX_ROWS: usize = 1000;
+pub const MAX_ROWS: usize = crate::blossom::MAX_MATRIX_ROWS;
 
 /// Which matrix.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

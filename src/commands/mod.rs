@@ -24,7 +24,6 @@ use std::io::Write;
 use std::path::Path;
 
 use num_rational::BigRational;
-use num_traits::{One, Zero};
 
 use crate::cli::{Cli, Command, OutputArgs};
 use crate::error::CoreError;
@@ -166,40 +165,4 @@ pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> 
         .map_err(CliError::from)
 }
 
-/// Check that barycentric coordinates have `m + 1` entries summing to one.
-pub fn check_barycentric(lambda: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
-    if lambda.len() != m + 1 {
-        return Err(CoreError::WrongLength {
-            what: what.into(),
-            expected: m + 1,
-            found: lambda.len(),
-        });
-    }
-    let sum: BigRational = lambda.iter().sum();
-    if !sum.is_one() {
-        return Err(CoreError::NotBarycentric {
-            coords: crate::report::tuple(lambda),
-            sum: sum.to_string(),
-        });
-    }
-    Ok(())
-}
-
-/// Check that a barycentric direction has `m + 1` entries summing to zero.
-pub fn check_direction(d: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
-    if d.len() != m + 1 {
-        return Err(CoreError::WrongLength {
-            what: what.into(),
-            expected: m + 1,
-            found: d.len(),
-        });
-    }
-    let sum: BigRational = d.iter().sum();
-    if !sum.is_zero() {
-        return Err(CoreError::DirectionSum {
-            coords: crate::report::tuple(d),
-            sum: sum.to_string(),
-        });
-    }
-    Ok(())
-}
+pub use crate::domain::{check_barycentric, check_direction};
