@@ -7,7 +7,10 @@
 //!
 //! an integer computation followed by one division (one gcd) per coordinate. Both de Casteljau
 //! and the Bernstein form run on the integers through the same generic code as everything else
-//! ([`crate::casteljau`], [`crate::bernstein`]), and agree exactly.
+//! ([`crate::casteljau`], [`crate::bernstein`]), and agree exactly. [`ExactEvaluator::evaluate_fast`] is the
+//! fast kernel (nested homogeneous Horner on machine-word limbs, row-scaled for triangles, a
+//! gcd-free reduction; see `src/exact/kernel.rs`), property-tested equal to
+//! [`evaluate_rational`]; it is what `tribez eval` and the claims use.
 //!
 //! ```
 //! use tribez::exact::{Algorithm, ExactEvaluator};
@@ -17,6 +20,7 @@
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));
 //! let u = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
+//! assert_eq!(eval.evaluate_fast(&u).iter().map(|x| x.to_string()).collect::<Vec<_>>(), ["4/9", "5/9", "29/36"]);
 //! for alg in [Algorithm::Casteljau, Algorithm::Bernstein] {
 //!     let p: Vec<String> = eval.evaluate(&u, alg).iter().map(|x| x.to_string()).collect();
 //!     assert_eq!(p, ["4/9", "5/9", "29/36"]);
@@ -31,6 +35,11 @@ use num_traits::{One, Signed};
 use crate::patch::ControlNet;
 use crate::simplex::multinomial;
 use crate::{bernstein, casteljau};
+
+mod kernel;
+mod limbs;
+
+pub use kernel::word_point;
 
 /// Which exact algorithm to run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,16 +66,25 @@ pub struct ExactEvaluator {
     scaled_net: ControlNet<BigInt>,
     /// `L_c`, the least common denominator of coordinate `c`.
     denominators: Vec<BigInt>,
+    /// The per-patch data of the fast Horner kernel.
+    fast: kernel::FastNet,
 }
 
 impl ExactEvaluator {
     /// Prepare `net`: one least common denominator per coordinate.
     pub fn new(net: &ControlNet<BigRational>) -> Self {
         let dim = net.dim();
-        let denominators: Vec<BigInt> = (0..dim)
-            .map(|c| {
-                net.points()
-                    .fold(BigInt::one(), |acc, p| acc.lcm(p[c].denom()))
+        let factored: Vec<Option<kernel::Factors>> = (0..dim)
+            .map(|c| kernel::Factors::of(net.points().map(|p| p[c].denom())))
+            .collect();
+        let denominators: Vec<BigInt> = factored
+            .iter()
+            .enumerate()
+            .map(|(c, f)| match f {
+                Some(f) => BigInt::from(f.product()),
+                None => net
+                    .points()
+                    .fold(BigInt::one(), |acc, p| kernel::lcm_big(&acc, p[c].denom())),
             })
             .collect();
         let coords: Vec<BigInt> = net
@@ -74,7 +92,7 @@ impl ExactEvaluator {
             .flat_map(|p| {
                 p.iter()
                     .zip(&denominators)
-                    .map(|(x, l)| x.numer() * (l / x.denom()))
+                    .map(|(x, l)| x.numer() * kernel::div_exact(l, x.denom()))
             })
             .collect();
         let integer_net = ControlNet::new(net.simplex().clone(), dim, coords);
@@ -86,10 +104,25 @@ impl ExactEvaluator {
             })
             .collect();
         let scaled_net = ControlNet::new(net.simplex().clone(), dim, scaled);
+        let fast = kernel::FastNet::new(net, &scaled_net, &integer_net, &denominators, factored);
         ExactEvaluator {
             integer_net,
             scaled_net,
             denominators,
+            fast,
+        }
+    }
+
+    /// The homogeneous form `P(λ)` at a rational point (which need not sum to one), by the fast
+    /// kernel: nested homogeneous Horner on machine-word limbs with the multinomial-scaled integer
+    /// control points precomputed once per patch (row by row for triangles), and a reduction to
+    /// lowest terms that uses the known prime factors of the denominators (src/exact/kernel.rs).
+    /// Points whose homogeneous coordinates are negative or do not fit a machine word fall back
+    /// to [`Algorithm::Bernstein`]. Equal to [`evaluate_rational`] (property-tested).
+    pub fn evaluate_fast(&self, lambda: &[BigRational]) -> Vec<BigRational> {
+        match word_point(lambda) {
+            Some((a, d)) => self.fast.evaluate(&a, d),
+            None => self.evaluate(lambda, Algorithm::Bernstein),
         }
     }
 
@@ -167,4 +200,99 @@ pub fn evaluate_rational(
 /// Sum of |x| over a slice (used for condition numbers).
 pub fn abs_sum(xs: &[BigRational]) -> BigRational {
     xs.iter().map(Signed::abs).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::simplex::Simplex;
+    use proptest::prelude::*;
+
+    /// A rational from a numerator and one of several denominator shapes: 16-bit, powers of
+    /// two (dyadic), a prime above 2^32, a product with a large odd part (unfactorable: the
+    /// fallback gcd path).
+    fn rational(p: i64, q: u64, shape: u8) -> BigRational {
+        let q = match shape % 4 {
+            0 => BigInt::from(q % 65_536 + 1),
+            1 => BigInt::from(1u8) << (q % 90),
+            2 => BigInt::from(4_294_967_311u64) * BigInt::from(q % 7 + 1),
+            _ => BigInt::from(q | 1) * BigInt::from(u64::MAX),
+        };
+        BigRational::new(BigInt::from(p), q)
+    }
+
+    fn net_strategy() -> impl Strategy<Value = ControlNet<BigRational>> {
+        (1usize..=3, 0usize..=8, 1usize..=3, any::<u8>()).prop_flat_map(|(m, n, dim, shape)| {
+            let len = crate::simplex::count(m, n) * dim;
+            proptest::collection::vec((any::<i64>(), any::<u64>(), 0u8..4), len).prop_map(
+                move |v| {
+                    let coords = v
+                        .into_iter()
+                        .map(|(p, q, s)| {
+                            rational(p >> (shape % 40), q, if shape < 128 { 0 } else { s })
+                        })
+                        .collect();
+                    ControlNet::new(Simplex::new(m, n), dim, coords)
+                },
+            )
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The fast kernel equals the rational de Casteljau (gcd after every operation), at
+        /// barycentric points, homogeneous points, points with zeros, negative and huge coordinates.
+        #[test]
+        fn horner_kernel_equals_rational_de_casteljau(
+            net in net_strategy(),
+            raw in proptest::collection::vec((0u64..70_000, 1u64..70_000, any::<bool>()), 4),
+            kind in 0u8..5,
+        ) {
+            let m = net.m();
+            let lambda: Vec<BigRational> = raw.iter().take(m + 1).map(|&(a, q, neg)| {
+                let (a, q) = match kind {
+                    0 => (a, q),
+                    1 => (a * u64::from(a % 3 != 0), 1),
+                    2 => (a << 40, 1u64 << 50),
+                    3 => (a, (q % 8192 + 1) << 50), // lcm may overflow a word: fallback
+                    _ => (a, q),
+                };
+                let x = BigRational::new(BigInt::from(a), BigInt::from(q));
+                if kind == 4 && neg { -x } else { x }
+            }).collect();
+            let eval = ExactEvaluator::new(&net);
+            let expected = evaluate_rational(&net, &lambda, Algorithm::Casteljau);
+            prop_assert_eq!(eval.evaluate_fast(&lambda), expected.clone());
+            prop_assert_eq!(eval.evaluate(&lambda, Algorithm::Casteljau), expected);
+        }
+    }
+
+    #[test]
+    fn horner_kernel_on_a_known_quadratic() {
+        // The module doc example, plus the reduced-denominator case: at a corner the value is
+        // the corner control point exactly.
+        let q = |s: &str| crate::number::parse_rational(s).unwrap();
+        let pts: Vec<Vec<BigRational>> = [
+            ["1/3", "-5/6", "7"],
+            ["2", "0", "1/9"],
+            ["-1/4", "3/8", "0"],
+            ["5", "1", "1"],
+            ["0", "0", "0"],
+            ["1/12", "-2", "4/3"],
+        ]
+        .iter()
+        .map(|p| p.iter().map(|s| q(s)).collect())
+        .collect();
+        let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));
+        let at = |u: [&str; 3]| {
+            eval.evaluate_fast(&u.map(q))
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(at(["1", "0", "0"]), ["1/3", "-5/6", "7"]);
+        assert_eq!(at(["0", "0", "1"]), ["1/12", "-2", "4/3"]);
+        // (1/2, 1/2, 0): (c200 + 2 c110 + c020)/4 = (1/3 + 4 - 1/4)/4 = 49/48, (-5/6 + 3/8)/4 = -11/96, (7 + 2/9)/4 = 65/36.
+        assert_eq!(at(["1/2", "1/2", "0"]), ["49/48", "-11/96", "65/36"]);
+    }
 }

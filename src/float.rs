@@ -92,6 +92,95 @@ macro_rules! glam_casteljau {
 glam_casteljau!(casteljau_dvec3, DVec3, f64);
 glam_casteljau!(casteljau_vec3, Vec3, f32);
 
+macro_rules! glam_horner {
+    ($name:ident, $prep:ident, $vec:ty, $s:ty) => {
+        /// The Bernstein form `Σ_α s_α u^i v^j w^k` of a triangle by nested Horner, the scheme of
+        /// the exact kernel (and of `bezier`'s `evaluate_barycentric_multi`): per row `k`,
+        /// `t ← t·u + s_{(i,j,k)} v^j` for `j = 1..n−k`, and across rows `acc ← acc·w + t_k`
+        /// for `k = n−1..0`. `scaled` are the multinomial-scaled points of the prepare function,
+        /// in canonical order.
+        ///
+        /// Error: every term `s_α u^i v^j w^k` passes through at most `2n + 5` roundings (two for
+        /// `C(n;α)·c_α` when the multinomial is not representable, `j − 1` for `v^j`, one for the
+        /// product, `1 + 2(n−k−j)` in its row, `1 + 2k` across rows), so
+        /// `|computed − p(λ)| ≤ γ_{2n+5} Σ_α |c_α| B_α(|λ|)` (FORMULAS §14), with `p` evaluated
+        /// exactly at the float inputs; a test checks it.
+        pub fn $name(scaled: &[$vec], n: usize, u: [$s; 3]) -> $vec {
+            debug_assert_eq!(scaled.len(), (n + 1) * (n + 2) / 2);
+            let mut acc = scaled[scaled.len() - 1];
+            for k in (0..n).rev() {
+                let base = k * (2 * n + 3 - k) / 2;
+                let mut t = scaled[base];
+                let mut vp: $s = 1.0;
+                for j in 1..=n - k {
+                    vp *= u[1];
+                    t = t * u[0] + scaled[base + j] * vp;
+                }
+                acc = acc * u[2] + t;
+            }
+            acc
+        }
+
+        /// The points `C(n;α) c_α` (rounded once, the multinomial rounded first if it is not
+        /// representable) for the Horner kernel, from a `d = 3` triangle net.
+        pub fn $prep(net: &ControlNet<$s>) -> Vec<$vec> {
+            assert_eq!(net.m(), 2, "the glam kernels are for triangles");
+            net.entries()
+                .map(|(alpha, p)| {
+                    let c = <$s as crate::scalar::Scalar>::from_biguint(
+                        &crate::simplex::multinomial(alpha),
+                    );
+                    <$vec>::new(p[0], p[1], p[2]) * c
+                })
+                .collect()
+        }
+    };
+}
+
+glam_horner!(horner_dvec3, horner_points_dvec3, DVec3, f64);
+glam_horner!(horner_vec3, horner_points_vec3, Vec3, f32);
+
+macro_rules! glam_horner_many {
+    ($name:ident, $single:ident, $vec:ty, $s:ty) => {
+        /// [`
+        #[doc = stringify!($single)]
+        /// `] at many points (the batch form, like `bezier`'s `evaluate_barycentric_multi`): four
+        /// points run interleaved to hide the latency of the Horner chains; each point performs
+        /// exactly the operations of the single-point kernel, so the results are bit-identical.
+        pub fn $name(scaled: &[$vec], n: usize, points: &[[$s; 3]], out: &mut Vec<$vec>) {
+            const W: usize = 4;
+            out.clear();
+            out.reserve(points.len());
+            let mut chunks = points.chunks_exact(W);
+            for u in &mut chunks {
+                let mut acc = [scaled[scaled.len() - 1]; W];
+                for k in (0..n).rev() {
+                    let base = k * (2 * n + 3 - k) / 2;
+                    let mut t = [scaled[base]; W];
+                    let mut vp: [$s; W] = [1.0; W];
+                    for j in 1..=n - k {
+                        let c = scaled[base + j];
+                        for l in 0..W {
+                            vp[l] *= u[l][1];
+                            t[l] = t[l] * u[l][0] + c * vp[l];
+                        }
+                    }
+                    for l in 0..W {
+                        acc[l] = acc[l] * u[l][2] + t[l];
+                    }
+                }
+                out.extend_from_slice(&acc);
+            }
+            for &u in chunks.remainder() {
+                out.push($single(scaled, n, u));
+            }
+        }
+    };
+}
+
+glam_horner_many!(horner_dvec3_many, horner_dvec3, DVec3, f64);
+glam_horner_many!(horner_vec3_many, horner_vec3, Vec3, f32);
+
 /// Points of a `d = 3` net as glam `DVec3`.
 pub fn dvec3_points(net: &ControlNet<f64>) -> Vec<DVec3> {
     net.points().map(|p| DVec3::new(p[0], p[1], p[2])).collect()
@@ -225,6 +314,96 @@ mod tests {
             .map(|_| BigRational::new(next().into(), (next().abs() + 1).into()))
             .collect();
         ControlNet::new(simplex, 3, coords)
+    }
+
+    /// `γ_k = k u / (1 − k u)` exactly.
+    fn gamma(k: usize, p: Precision) -> BigRational {
+        let u = crate::number::pow2(i64::from(p.unit_roundoff_log2()));
+        let ku = &u * BigRational::from_integer(k.into());
+        &ku / (BigRational::from_integer(1.into()) - &ku)
+    }
+
+    fn check_horner<F: Float>(
+        net: &ControlNet<BigRational>,
+        u: &[BigRational; 3],
+        computed: [F; 3],
+    ) {
+        let fnet: ControlNet<F> = net_to(net);
+        let exact_net = fnet.map(|x| x.exact().unwrap());
+        let lam: Vec<BigRational> = u.iter().map(|x| F::round(x).exact().unwrap()).collect();
+        let exact =
+            crate::exact::evaluate_rational(&exact_net, &lam, crate::exact::Algorithm::Bernstein);
+        let abs_lam: Vec<BigRational> = lam.iter().map(num_traits::Signed::abs).collect();
+        let basis = crate::bernstein::basis(net.simplex(), &abs_lam);
+        let g = gamma(2 * net.degree() + 5, F::PRECISION);
+        for c in 0..3 {
+            let bound: BigRational = basis
+                .iter()
+                .zip(exact_net.points())
+                .map(|(b, p)| b * num_traits::Signed::abs(&p[c]))
+                .sum::<BigRational>()
+                * &g;
+            let err = num_traits::Signed::abs(&(computed[c].exact().unwrap() - &exact[c]));
+            assert!(
+                err <= bound,
+                "n = {}: error {err} above the bound {bound}",
+                net.degree()
+            );
+        }
+    }
+
+    #[test]
+    fn horner_kernels_are_within_the_a_priori_bound() {
+        for n in [0, 1, 2, 3, 7, 12, 20, 30] {
+            let net = pseudo_random_net(n, n as u64 + 11);
+            for u in [
+                ["0.2", "0.7", "0.1"],
+                ["1/3", "1/3", "1/3"],
+                ["0.9", "0.0625", "0.0375"],
+                ["0", "0", "1"],
+            ] {
+                let u = u.map(|t| parse_rational(t).unwrap());
+                let s64 = horner_points_dvec3(&net_f64(&net));
+                let v = horner_dvec3(&s64, n, [0, 1, 2].map(|k| round_f64(&u[k])));
+                check_horner::<f64>(&net, &u, [v.x, v.y, v.z]);
+                let s32 = horner_points_vec3(&net_f32(&net));
+                let v = horner_vec3(&s32, n, [0, 1, 2].map(|k| round_f32(&u[k])));
+                check_horner::<f32>(&net, &u, [v.x, v.y, v.z]);
+            }
+        }
+    }
+
+    #[test]
+    fn batch_horner_is_bit_identical_to_the_single_point_kernel() {
+        for n in [0, 1, 5, 13] {
+            let net = pseudo_random_net(n, n as u64 + 3);
+            let pts: Vec<[f64; 3]> = (0..11)
+                .map(|i| {
+                    let a = i as f64 / 13.0;
+                    let b = (1.0 - a) / 3.0;
+                    [1.0 - a - b, a, b]
+                })
+                .collect();
+            let s64 = horner_points_dvec3(&net_f64(&net));
+            let mut out = Vec::new();
+            horner_dvec3_many(&s64, n, &pts, &mut out);
+            assert_eq!(
+                out,
+                pts.iter()
+                    .map(|&u| horner_dvec3(&s64, n, u))
+                    .collect::<Vec<_>>()
+            );
+            let p32: Vec<[f32; 3]> = pts.iter().map(|p| p.map(|x| x as f32)).collect();
+            let s32 = horner_points_vec3(&net_f32(&net));
+            let mut out = Vec::new();
+            horner_vec3_many(&s32, n, &p32, &mut out);
+            assert_eq!(
+                out,
+                p32.iter()
+                    .map(|&u| horner_vec3(&s32, n, u))
+                    .collect::<Vec<_>>()
+            );
+        }
     }
 
     #[test]

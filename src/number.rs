@@ -269,10 +269,23 @@ pub fn pow2(k: i64) -> BigRational {
 /// `p/q` in lowest terms with `q > 0`, or `p` when `q = 1`; the sign is on `p`
 /// and `-0` never appears. (A rational with zero denominator, which only
 /// `Ratio::new_raw` can build, prints as `p/0`.)
+///
+/// Not quadratic: a `BigRational` with a positive denominator is in lowest terms (num-rational
+/// keeps that invariant, and tribez builds `new_raw` values only in lowest terms), so no gcd is
+/// taken (num-bigint's binary gcd is quadratic in the length); the digits come from
+/// num-bigint's divide-and-conquer radix conversion.
 pub fn format_rational(q: &BigRational) -> String {
     let (n, d) = (q.numer(), q.denom());
     if d.is_zero() {
         return format!("{n}/0");
+    }
+    if d.sign() == Sign::Plus {
+        debug_assert!(n.gcd(d).is_one(), "rational not in lowest terms");
+        return if d.is_one() {
+            n.to_string()
+        } else {
+            format!("{n}/{d}")
+        };
     }
     let g = n.gcd(d);
     if d.sign() == Sign::Plus && g.is_one() {

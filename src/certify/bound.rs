@@ -62,7 +62,7 @@ pub fn roundings(algorithm: Algorithm, m: usize, n: usize) -> usize {
 pub fn condition(net: &ControlNet<BigRational>, lambda: &[BigRational]) -> Vec<BigRational> {
     let abs_net = net.map(Signed::abs);
     let abs_lambda: Vec<BigRational> = lambda.iter().map(Signed::abs).collect();
-    ExactEvaluator::new(&abs_net).evaluate(&abs_lambda, Algorithm::Casteljau)
+    ExactEvaluator::new(&abs_net).evaluate_fast(&abs_lambda)
 }
 
 /// The a-priori absolute error bound of `algorithm` in precision `p` at one coordinate with

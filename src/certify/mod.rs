@@ -133,7 +133,7 @@ impl<F: Float> Certifier<F> {
             .iter()
             .map(|x| x.exact().unwrap_or_default())
             .collect();
-        let p = self.exact.evaluate(&lam, Algorithm::Casteljau);
+        let p = self.exact.evaluate_fast(&lam);
         let cond = bound::condition(&self.exact_net, &lam);
         let (m, n) = (self.net.m(), self.net.degree());
         y.iter().enumerate().all(|(c, v)| {

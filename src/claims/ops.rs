@@ -250,7 +250,7 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
             let patch = inputs.patch()?;
             let at = inputs.point(patch)?;
             Ok(Value::numbers(
-                &ExactEvaluator::new(&patch.net).evaluate(&at, Algorithm::Casteljau),
+                &ExactEvaluator::new(&patch.net).evaluate_fast(&at),
             ))
         }
         "symbolic" => {

@@ -362,7 +362,7 @@ impl Prepared {
         let Some(lambda) = seen_in.and_then(|x| self.barycentric(x)) else {
             return (false, f64::INFINITY, Some("an input is not a finite number (or the Cartesian point has no barycentric coordinates)".into()), Vec::new());
         };
-        let exact = self.seen.evaluate(&lambda, Algorithm::Casteljau);
+        let exact = self.seen.evaluate_fast(&lambda);
         let cond = if self.tolerance.needs_condition() {
             Some(condition(&self.seen_net, &lambda))
         } else {
@@ -379,7 +379,7 @@ impl Prepared {
                         .collect::<Option<Vec<_>>>()
                 })
                 .and_then(|x| self.barycentric(x))
-                .map(|l| self.intended.evaluate(&l, Algorithm::Casteljau))
+                .map(|l| self.intended.evaluate_fast(&l))
         } else {
             None
         };

@@ -162,7 +162,7 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
             let outside = y.iter().any(|v| !v.finite())
                 || (algorithm == Algorithm::Bernstein
                     && crate::certify::bernstein_may_underflow(&cert.net, &lam));
-            let p = cert.exact.evaluate(&lam_q, Algorithm::Casteljau);
+            let p = cert.exact.evaluate_fast(&lam_q);
             let cond = condition(&cert.exact_net, &lam_q);
             let mut case = Case {
                 ulps: 0.0,

@@ -9,7 +9,7 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome, check_barycentric, parse_list};
 use crate::bernstein;
 use crate::cli::OutputArgs;
-use crate::exact::{Algorithm, ExactEvaluator};
+use crate::exact::ExactEvaluator;
 use crate::float::{Float, Precision, net_to};
 use crate::io::patch_file::read_any_patch;
 use crate::io::points::read_points;
@@ -114,23 +114,36 @@ fn judge<F: Float>(
 }
 
 /// The float results of both algorithms at `lambda`, judged against exact values.
+/// A float path prepared once per patch: the rounded net, and the exact evaluator of its exact
+/// values (shared by every point, so the per-patch precomputation is not repeated per point).
+struct FloatPath<F> {
+    fnet: ControlNet<F>,
+    exact: ExactEvaluator,
+}
+
+impl<F: Float> FloatPath<F> {
+    fn new(net: &ControlNet<BigRational>) -> Self {
+        let fnet: ControlNet<F> = net_to(net);
+        let exact = ExactEvaluator::new(&fnet.map(|x| x.exact().unwrap_or_default()));
+        FloatPath { fnet, exact }
+    }
+}
+
 fn float_results<F: Float>(
-    net: &ControlNet<BigRational>,
+    path: &FloatPath<F>,
     lambda: &[BigRational],
     intended: &[BigRational],
 ) -> Vec<FloatResult> {
-    let fnet: ControlNet<F> = net_to(net);
+    let fnet = &path.fnet;
     let lam: Vec<F> = lambda.iter().map(F::round).collect();
     let lam_exact: Vec<BigRational> = lam
         .iter()
         .map(|x| x.exact().expect("rounded coordinates are finite"))
         .collect();
-    let exact_net = fnet.map(|x| x.exact().unwrap_or_default());
-    let exact_at_inputs =
-        ExactEvaluator::new(&exact_net).evaluate(&lam_exact, Algorithm::Casteljau);
+    let exact_at_inputs = path.exact.evaluate_fast(&lam_exact);
     [
-        ("casteljau", crate::float::casteljau(&fnet, &lam)),
-        ("bernstein", bernstein::evaluate(&fnet, &lam)),
+        ("casteljau", crate::float::casteljau(fnet, &lam)),
+        ("bernstein", bernstein::evaluate(fnet, &lam)),
     ]
     .into_iter()
     .map(|(algorithm, values)| FloatResult {
@@ -200,15 +213,25 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     let evaluator = ExactEvaluator::new(&patch.net);
     let precisions = args.float.map(FloatChoice::precisions).unwrap_or_default();
+    let path64 = precisions
+        .contains(&Precision::F64)
+        .then(|| FloatPath::<f64>::new(&patch.net));
+    let path32 = precisions
+        .contains(&Precision::F32)
+        .then(|| FloatPath::<f32>::new(&patch.net));
     let results = points
         .into_par_iter()
         .map(|(at, cartesian)| {
-            let point = evaluator.evaluate(&at, Algorithm::Casteljau);
+            let point = evaluator.evaluate_fast(&at);
             let mut floats = Vec::new();
             for p in &precisions {
                 floats.extend(match p {
-                    Precision::F64 => float_results::<f64>(&patch.net, &at, &point),
-                    Precision::F32 => float_results::<f32>(&patch.net, &at, &point),
+                    Precision::F64 => {
+                        float_results(path64.as_ref().expect("prepared"), &at, &point)
+                    }
+                    Precision::F32 => {
+                        float_results(path32.as_ref().expect("prepared"), &at, &point)
+                    }
                 });
             }
             PointResult {
