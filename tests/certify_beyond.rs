@@ -369,6 +369,14 @@ fn bound_and_cond_tolerances_on_rational_claims() {
             .assert()
             .code(1);
     }
+    // a rational patch has no Bernstein float path: exit 2
+    let alg = claim("bound", good).replace("tolerance", "algorithm = \"bernstein\"\ntolerance");
+    tribez()
+        .arg("check")
+        .arg(claims(dir.path(), "octant_quartic.toml", &alg))
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("homogeneous de Casteljau"));
     // an S-patch still has no proven bound: refused, exit 2, one line
     let sp = "[[claim]]\nid = \"s\"\nop = \"eval\"\ncartesian = [\"2\", \"2\"]\nprecision = \"f64\"\ntolerance = \"bound\"\nexpect = [\"1\", \"1\", \"1\"]\n";
     let out = tribez()

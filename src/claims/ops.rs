@@ -914,6 +914,15 @@ mod beyond {
         r: &crate::rational::RationalPatch,
         p: crate::float::Precision,
     ) -> Result<super::FloatEval, InputError> {
+        match inputs.opt_string("algorithm")?.as_deref() {
+            None | Some("casteljau") => {}
+            Some(other) => {
+                return Err(inputs.error(
+                    "algorithm",
+                    format!("`{other}`: a rational patch's float path is homogeneous de Casteljau (algorithm `casteljau`) only"),
+                ));
+            }
+        }
         let intended = inputs.point(&r.patch)?;
         let key = if inputs.get("at").is_some() {
             "at"
