@@ -73,7 +73,7 @@ fn check(c: &mut Criterion) {
         );
         let mut scratch = Scratch::default();
         let mut enc = vec![Enclosure::default(); 3];
-        let mut judge = |scratch: &mut Scratch, enc: &mut [Enclosure]| -> usize {
+        let judge = |scratch: &mut Scratch, enc: &mut [Enclosure]| -> usize {
             let mut open = 0;
             for (p, y) in pts.iter().zip(&claimed) {
                 let s: f64 = p.iter().map(|x| x.abs()).sum();
