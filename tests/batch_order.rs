@@ -43,3 +43,44 @@ fn eval_points_keeps_input_order() {
         );
     }
 }
+
+/// Line numbers stay right across chunk boundaries (chunks are 65,536 lines): a wrong value and
+/// a malformed number far into the file are reported at their own lines.
+#[test]
+fn line_numbers_across_chunks() {
+    let dir = tempfile::tempdir().unwrap();
+    let patch = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/finn_day30.toml");
+    // At the corner (1, 0, 0) the patch is c200 = (0, 0, 0) exactly (corner interpolation).
+    let good = "1,0,0,0,0,0\n";
+    let mut text = good.repeat(69_999);
+    text.push_str("1,0,0,0,0,0.5\n"); // line 70,000: wrong
+    text.push_str(good);
+    let results = dir.path().join("r.csv");
+    std::fs::write(&results, &text).unwrap();
+    let out = assert_cmd::Command::cargo_bin("tribez")
+        .unwrap()
+        .args(["check", "--precision", "f64", "--patch"])
+        .arg(&patch)
+        .arg("--results")
+        .arg(&results)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(stdout.contains("70001 rows"), "{stdout}");
+    assert!(stdout.contains("line 70000"), "{stdout}");
+
+    text.push_str("1,0,0,0,zz,0\n"); // line 70,002: malformed, field 5 at column 9
+    std::fs::write(&results, &text).unwrap();
+    let out = assert_cmd::Command::cargo_bin("tribez")
+        .unwrap()
+        .args(["check", "--precision", "f64", "--patch"])
+        .arg(&patch)
+        .arg("--results")
+        .arg(&results)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(stderr.contains("r.csv:70002:9"), "{stderr}");
+}

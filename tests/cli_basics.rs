@@ -386,7 +386,7 @@ fn bad_points_file_names_line_and_column() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
-    assert!(err.contains("pts.csv:3:2"), "{err}");
+    assert!(err.contains("pts.csv:3:3: field 2"), "{err}");
     let pts = write(dir.path(), "pts2.csv", "1/2,1/3\n");
     let out = tribez()
         .args(["eval", "--points"])

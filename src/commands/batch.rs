@@ -573,6 +573,61 @@ impl Prepared {
 /// A parsed row: its input numbers and its claimed numbers.
 type Row = (Vec<Num>, Vec<Num>);
 
+/// Up to [`CHUNK`] lines of a results file, read into one buffer (no allocation per line).
+#[derive(Default)]
+struct Chunk {
+    /// The lines' text, one after another (each with its line ending, as read).
+    text: String,
+    /// Byte offset of each line's start in `text`.
+    starts: Vec<usize>,
+    /// 1-based number of the first line.
+    first_line: usize,
+}
+
+impl Chunk {
+    /// Read the next lines, numbering them from `first_line`; true at the end of the file.
+    fn read(
+        &mut self,
+        reader: &mut impl BufRead,
+        first_line: usize,
+        file: &str,
+    ) -> Result<bool, InputError> {
+        self.text.clear();
+        self.starts.clear();
+        self.first_line = first_line;
+        while self.starts.len() < CHUNK {
+            let start = self.text.len();
+            let n = reader.read_line(&mut self.text).map_err(|e| {
+                InputError::file(
+                    file,
+                    format!("cannot read line {}: {e}", first_line + self.starts.len()),
+                )
+            })?;
+            if n == 0 {
+                return Ok(true);
+            }
+            self.starts.push(start);
+        }
+        Ok(false)
+    }
+
+    fn len(&self) -> usize {
+        self.starts.len()
+    }
+
+    /// The text of line number `no` (which must be in this chunk).
+    fn line(&self, no: usize) -> &str {
+        let i = no - self.first_line;
+        let end = self.starts.get(i + 1).copied().unwrap_or(self.text.len());
+        &self.text[self.starts[i]..end]
+    }
+
+    /// `(line number, text)` for every line.
+    fn lines(&self) -> impl Iterator<Item = (usize, &str)> + '_ {
+        (0..self.len()).map(|i| (self.first_line + i, self.line(self.first_line + i)))
+    }
+}
+
 /// Read one data line into numbers; `None` for blank and comment lines.
 fn parse_line(
     line: &str,
@@ -609,8 +664,9 @@ fn parse_line(
         .iter()
         .map(|f| parse_num(f, precision, file, line_no))
         .collect::<Result<Vec<_>, _>>()?;
-    let (a, b) = nums.split_at(width);
-    Ok(Some((a.to_vec(), b.to_vec())))
+    let mut inputs = nums;
+    let claimed = inputs.split_off(width);
+    Ok(Some((inputs, claimed)))
 }
 
 fn texts_of(line: &str, json_lines: bool, file: &str, line_no: usize) -> Vec<String> {
@@ -683,37 +739,41 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
         failures: Vec::new(),
     };
     let mut worst_row: Option<(f64, usize, Vec<Num>, Vec<Num>)> = None;
-    let mut line_no = 0usize;
-    let mut lines: Vec<(usize, String)> = Vec::with_capacity(CHUNK);
+    // Chunks of CHUNK lines: the next one is read (one thread) while the current one is judged
+    // (the others), so reading overlaps the work and memory stays bounded.
+    let mut chunk = Chunk::default();
+    let mut next = Chunk::default();
+    let mut eof = chunk.read(&mut reader, 1, &file)?;
     loop {
-        lines.clear();
-        let mut eof = false;
-        while lines.len() < CHUNK {
-            let mut buf = String::new();
-            let n = reader.read_line(&mut buf).map_err(|e| {
-                InputError::file(&file, format!("cannot read line {}: {e}", line_no + 1))
-            })?;
-            if n == 0 {
-                eof = true;
-                break;
-            }
-            line_no += 1;
-            lines.push((line_no, buf));
-        }
-        let outcomes: Vec<Option<RowOutcome>> = lines
-            .par_iter()
-            .map_init(
-                || (Scratch::default(), Vec::new()),
-                |scratch, (no, text)| -> Result<Option<RowOutcome>, InputError> {
-                    let Some((inputs, claimed)) =
-                        parse_line(text, json_lines, width, dim, p.precision, &file, *no)?
-                    else {
-                        return Ok(None);
-                    };
-                    Ok(Some(p.row(*no, inputs, claimed, scratch)))
-                },
-            )
-            .collect::<Result<_, _>>()?;
+        let (read, outcomes) = rayon::join(
+            || {
+                if eof {
+                    Ok(true)
+                } else {
+                    next.read(&mut reader, chunk.first_line + chunk.len(), &file)
+                }
+            },
+            || -> Result<Vec<Option<RowOutcome>>, InputError> {
+                chunk
+                    .lines()
+                    .collect::<Vec<_>>()
+                    .par_iter()
+                    .map_init(
+                        || (Scratch::default(), Vec::new()),
+                        |scratch, (no, text)| -> Result<Option<RowOutcome>, InputError> {
+                            let Some((inputs, claimed)) =
+                                parse_line(text, json_lines, width, dim, p.precision, &file, *no)?
+                            else {
+                                return Ok(None);
+                            };
+                            Ok(Some(p.row(*no, inputs, claimed, scratch)))
+                        },
+                    )
+                    .collect()
+            },
+        );
+        let outcomes = outcomes?;
+        let next_eof = read?;
         for o in outcomes.into_iter().flatten() {
             report.rows += 1;
             report.histogram.add(o.ulps);
@@ -728,11 +788,7 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
             } else {
                 report.failed += 1;
                 if report.failures.len() < MAX_LISTED {
-                    let text = &lines
-                        .iter()
-                        .find(|(n, _)| *n == o.line)
-                        .expect("the line is in this chunk")
-                        .1;
+                    let text = chunk.line(o.line);
                     let texts = texts_of(text, json_lines, &file, o.line);
                     let refs: Vec<&str> = texts.iter().map(String::as_str).collect();
                     let (_, _, reason, coords) =
@@ -760,6 +816,8 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
         if eof {
             break;
         }
+        std::mem::swap(&mut chunk, &mut next);
+        eof = next_eof;
     }
     if progress {
         eprintln!();

@@ -71,17 +71,17 @@ pub fn parse_csv_row(
             message: format!("{} fields, expected {width}", fields.len()),
         });
     }
-    fields
-        .iter()
-        .enumerate()
-        .map(|(c, f)| {
-            parse_rational(f).map_err(|e| InputError {
-                file: file.into(),
-                line: Some(line_no),
-                column: Some(c + 1),
-                key: Some(format!("field {}", c + 1)),
-                message: e.to_string(),
-            })
-        })
-        .collect()
+    let mut column = 1; // character column where the field starts
+    let mut out = Vec::with_capacity(fields.len());
+    for (c, f) in fields.iter().enumerate() {
+        out.push(parse_rational(f).map_err(|e| InputError {
+            file: file.into(),
+            line: Some(line_no),
+            column: Some(column),
+            key: Some(format!("field {}", c + 1)),
+            message: e.to_string(),
+        })?);
+        column += f.chars().count() + 1;
+    }
+    Ok(out)
 }

@@ -1,0 +1,109 @@
+//! Judging float evaluation claims against plain float evaluation (issue 4's target: checking
+//! 1,000,000 f64 claims of a degree-3 patch costs at most 10× evaluating them in f64).
+//!
+//! Both sides run on one thread over the same 1,000,000 points, with the numbers already in
+//! memory: `f64 de Casteljau` is the glam kernel writing into a preallocated buffer; `judge/TOL`
+//! is the float filter (plain stage, then the compensated stage for rows it leaves open) deciding
+//! every claim at tolerance TOL. Rows left open by both stages would go to exact arithmetic; the
+//! bench asserts there are none, so it measures the filter alone. `cargo bench --bench check`.
+
+use std::time::Duration;
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use num_rational::BigRational;
+use tribez::certify::filter::{Decision, Enclosure, Filter, Scratch, Thresholds};
+use tribez::certify::measures::Tolerance;
+use tribez::exact::Algorithm;
+use tribez::float::{Precision, casteljau_dvec3, dvec3_points, net_f64};
+use tribez::patch::ControlNet;
+use tribez::simplex::Simplex;
+
+const N: usize = 3;
+const CLAIMS: usize = 1_000_000;
+
+fn workload() -> (ControlNet<f64>, Vec<[f64; 3]>) {
+    let simplex = Simplex::new(2, N);
+    let coords: Vec<BigRational> = (0..simplex.len() * 3)
+        .map(|i| BigRational::new(((i * 37 % 23) as i64 - 11).into(), 7.into()))
+        .collect();
+    let net = net_f64(&ControlNet::new(simplex, 3, coords));
+    let mut s = 1u64;
+    let mut unit = || {
+        s = s
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let pts = (0..CLAIMS)
+        .map(|_| {
+            let u = unit();
+            let v = unit() * (1.0 - u);
+            [u, v, 1.0 - u - v]
+        })
+        .collect();
+    (net, pts)
+}
+
+fn check(c: &mut Criterion) {
+    let (net, pts) = workload();
+    let dpts = dvec3_points(&net);
+    let mut out = vec![[0.0f64; 3]; CLAIMS];
+    let mut g = c.benchmark_group("check_1M_f64_claims_n3");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(3));
+    g.throughput(Throughput::Elements(CLAIMS as u64));
+    g.bench_function("f64 de Casteljau (plain evaluation)", |b| {
+        b.iter(|| {
+            for (p, o) in pts.iter().zip(out.iter_mut()) {
+                let v = casteljau_dvec3(&dpts, N, *p);
+                *o = [v.x, v.y, v.z];
+            }
+        })
+    });
+    let claimed = out.clone();
+    let filter = Filter::new(&net);
+    for tol in ["cond=9", "bound", "ulps=4", "correctly_rounded"] {
+        let th = Thresholds::new(
+            &Tolerance::parse(tol).expect("known tolerance"),
+            Precision::F64,
+            Algorithm::Casteljau,
+            2,
+            N,
+        );
+        let mut scratch = Scratch::default();
+        let mut enc = vec![Enclosure::default(); 3];
+        let judge = |scratch: &mut Scratch, enc: &mut [Enclosure]| -> usize {
+            let mut open = 0;
+            for (p, y) in pts.iter().zip(&claimed) {
+                let s: f64 = p.iter().map(|x| x.abs()).sum();
+                filter.evaluate(p, scratch, enc);
+                if y.iter()
+                    .zip(enc.iter())
+                    .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
+                {
+                    filter.evaluate_compensated(p, scratch, enc);
+                    if y.iter()
+                        .zip(enc.iter())
+                        .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
+                    {
+                        open += 1;
+                    }
+                }
+            }
+            open
+        };
+        assert_eq!(
+            judge(&mut scratch, &mut enc),
+            0,
+            "{tol}: some claims would need exact arithmetic"
+        );
+        g.bench_function(format!("judge/{tol}"), |b| {
+            b.iter(|| judge(&mut scratch, &mut enc))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, check);
+criterion_main!(benches);
