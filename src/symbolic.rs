@@ -498,22 +498,7 @@ mod tests {
     fn finn_monomial_form_formulas_section_9() {
         // FORMULAS.md §9: Finn's net in monomials on the reference triangle is
         // (2y − 2y², 2 − 2x − 2y + 2y², 1 − 2x + x² + 4xy − y²).
-        let pts: Vec<Vec<BigRational>> = [
-            [0, 0, 0],
-            [1, 0, 2],
-            [0, 2, 0],
-            [0, 1, 0],
-            [1, 1, 1],
-            [0, 2, 1],
-        ]
-        .iter()
-        .map(|p| {
-            p.iter()
-                .map(|&x| BigRational::from_integer(x.into()))
-                .collect()
-        })
-        .collect();
-        let net = ControlNet::from_points(2, 2, &pts);
+        let net = crate::testing::finn();
         let xy = ["x", "y"];
         let got = cartesian_form(&net, &Domain::reference(2));
         let want = [

@@ -6,13 +6,12 @@ use num_rational::BigRational;
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
-use super::{CliError, Outcome, check_barycentric, parse_list};
+use super::{CliError, Outcome, check_barycentric};
 use crate::bernstein;
 use crate::cli::OutputArgs;
 use crate::exact::ExactEvaluator;
 use crate::float::{Float, Precision, net_to};
 use crate::io::patch_file::read_any_patch;
-use crate::io::points::read_points;
 use crate::number::to_decimal_string;
 use crate::patch::{AnyPatch, ControlNet, Patch};
 use crate::report::{Render, json_rationals, tuple};
@@ -171,20 +170,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     };
     let m = patch.net.m();
     let width = if args.cartesian { m } else { m + 1 };
-    let mut raw: Vec<(String, Vec<BigRational>)> = Vec::new();
-    for a in &args.at {
-        raw.push((format!("--at {a}"), parse_list(a, "--at")?));
-    }
-    if let Some(path) = &args.points {
-        for (i, p) in read_points(path, width)?.into_iter().enumerate() {
-            raw.push((format!("{}: point {}", path.display(), i + 1), p));
-        }
-    }
-    if raw.is_empty() {
-        return Err(CliError::Usage(
-            "give at least one point with --at or --points".into(),
-        ));
-    }
+    let raw = super::eval_beyond::raw_points(args, width)?;
     let domain = patch.domain_or_reference();
     let mut points = Vec::with_capacity(raw.len());
     for (what, p) in raw {

@@ -22,8 +22,11 @@ use crate::rational::RationalPatch;
 use crate::report::{Render, json_rationals, tuple};
 use crate::spatch::{Polygon, SPatch};
 
-/// The points of `--at` and `--points`, with a description each.
-fn raw_points(args: &Args, width: usize) -> Result<Vec<(String, Vec<BigRational>)>, CliError> {
+/// The points of `--at` and `--points`, with a description each (for every kind of patch).
+pub(super) fn raw_points(
+    args: &Args,
+    width: usize,
+) -> Result<Vec<(String, Vec<BigRational>)>, CliError> {
     let mut raw = Vec::new();
     for a in &args.at {
         raw.push((format!("--at {a}"), parse_list(a, "--at")?));
