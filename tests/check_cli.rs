@@ -40,7 +40,7 @@ fn float_claims_of_an_independent_computation_pass() {
         .assert()
         .success()
         .stdout(
-            predicate::str::contains("21 claims in 1 files: 21 passed")
+            predicate::str::contains("21 claims in 1 file: 21 passed")
                 .and(predicate::str::contains("Errors of float claims in ULPs")),
         );
 }
@@ -58,7 +58,7 @@ fn exact_and_tolerance_claims() {
         .arg(d.path())
         .assert()
         .success()
-        .stdout(predicate::str::contains("3 claims in 1 files: 3 passed"));
+        .stdout(predicate::str::contains("3 claims in 1 file: 3 passed"));
 }
 
 #[test]

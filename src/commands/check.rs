@@ -349,9 +349,11 @@ impl Render for CheckReport {
         }
         let count = |f: fn(&Verdict) -> bool| self.judged().filter(|j| f(&j.verdict)).count();
         out += &format!(
-            "\n{} claims in {} files: {} {}, {} known errata, {} failed\n",
+            "\n{} claim{} in {} file{}: {} {}, {} known errata, {} failed\n",
             self.judged().count(),
+            if self.judged().count() == 1 { "" } else { "s" },
             self.files.len(),
+            if self.files.len() == 1 { "" } else { "s" },
             count(|v| matches!(v, Verdict::Holds)),
             self.ok_word,
             count(|v| matches!(v, Verdict::KnownErratum(_))),
