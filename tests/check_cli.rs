@@ -488,7 +488,7 @@ fn one_ulp_change_fails_correctly_rounded() {
         .code(1)
         .stdout(
             predicate::str::contains("breaks tolerance `correctly_rounded`")
-                .and(predicate::str::contains("1 claims: 0 passed, 1 failed")),
+                .and(predicate::str::contains("1 claim: 0 passed, 1 failed")),
         );
         found = true;
         break;

@@ -953,8 +953,11 @@ impl Render for BatchReport {
             }
         }
         out += &format!(
-            "\n{} claims: {} passed, {} failed\n",
-            self.rows, self.passed, self.failed
+            "\n{} claim{}: {} passed, {} failed\n",
+            self.rows,
+            if self.rows == 1 { "" } else { "s" },
+            self.passed,
+            self.failed
         );
         out
     }
