@@ -5,8 +5,9 @@
 
 use std::path::PathBuf;
 
+use crate::number::round_f64;
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
@@ -175,20 +176,15 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
                 outside,
             };
             for (c, v) in y.iter().enumerate() {
-                case.cond = case.cond.max(cond[c].to_f64().unwrap_or(f64::INFINITY));
+                case.cond = case.cond.max(round_f64(&cond[c]));
                 if !p[c].is_zero() {
-                    case.rel_cond = case
-                        .rel_cond
-                        .max((&cond[c] / p[c].abs()).to_f64().unwrap_or(f64::INFINITY));
+                    case.rel_cond = case.rel_cond.max(round_f64(&(&cond[c] / p[c].abs())));
                 }
                 let Some(yq) = v.exact() else { continue };
                 let meas = Measures::new(&yq, &p[c], Some(F::PRECISION));
-                case.ulps = case.ulps.max(
-                    meas.ulps
-                        .as_ref()
-                        .and_then(ToPrimitive::to_f64)
-                        .unwrap_or(f64::INFINITY),
-                );
+                case.ulps = case
+                    .ulps
+                    .max(meas.ulps.as_ref().map_or(f64::INFINITY, round_f64));
                 if meas.correctly_rounded == Some(true) {
                     case.cr += 1;
                 }
@@ -197,9 +193,7 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
                 }
                 if let Some(b) = a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam_q) {
                     if !b.is_zero() {
-                        case.ratio = case
-                            .ratio
-                            .max((&meas.abs / &b).to_f64().unwrap_or(f64::INFINITY));
+                        case.ratio = case.ratio.max(round_f64(&(&meas.abs / &b)));
                     }
                     if meas.abs > b {
                         case.violation = Some(format!(

@@ -10,7 +10,7 @@
 use std::ops::Div;
 
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 
 use super::CliError;
@@ -58,7 +58,7 @@ fn empty_row(precision: Precision, k: usize, label: String) -> Row {
 }
 
 fn f(x: &BigRational) -> f64 {
-    x.to_f64().unwrap_or(f64::INFINITY)
+    crate::number::round_f64(x)
 }
 
 /// Per-point results folded into a row.
