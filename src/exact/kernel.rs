@@ -255,7 +255,7 @@ impl Reducer {
         for (p, e) in hits {
             let inv = inverse_odd(p);
             for _ in 0..e {
-                if rem_hensel(limbs, p, inv) % p != 0 {
+                if !rem_hensel(limbs, p, inv).is_multiple_of(p) {
                     break;
                 }
                 div_exact_odd(limbs, p, inv);
