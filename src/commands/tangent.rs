@@ -101,6 +101,13 @@ impl Render for TangentReport {
                 if nrm == via { "equal" } else { "DIFFERENT" }
             );
         }
+        if !f.regular {
+            out += &format!(
+                "SINGULAR point: the first partials are linearly dependent, so they span no tangent {}
+",
+                if m == 1 { "line" } else { "plane" }
+            );
+        }
         out
     }
 
@@ -125,6 +132,7 @@ impl Render for TangentReport {
             "partials": partials,
             "normal": opt(&f.normal),
             "normal_from_intermediate": opt(&f.normal_from_intermediate),
+            "regular": f.regular,
         })
     }
 }
