@@ -634,6 +634,65 @@ fn subdivide_a_rational_patch() {
 }
 
 #[test]
+fn halve_a_rational_patch() {
+    // The octant halved on edge 1,2. The new corner is the parent at (1/2, 1/2, 0), by hand on
+    // the edge w = 0 (weights 12, 12, 16, 24, 48; B_i = C(4,i)/16):
+    // x = (12 + 12·4 + 16·(3/4)·6 + 24·(1/2)·4)/(12 + 12·4 + 16·6 + 24·4 + 48) = 180/300 = 3/5,
+    // y = (12·(1/2)·4 + 16·(3/4)·6 + 24·4 + 48)/300 = 240/300 = 4/5.
+    let out = tribez()
+        .args(["halve", "--format", "json", "--edge", "1,2"])
+        .arg(fixture("octant_quartic.toml"))
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let pieces = j["pieces"].as_array().unwrap();
+    assert_eq!(pieces.len(), 2);
+    let dir = tempfile::tempdir().unwrap();
+    for (s, (piece, corner)) in pieces.iter().zip(["0,1,0", "1,0,0"]).enumerate() {
+        assert!(piece["patch"]["weights"].is_object(), "a rational half");
+        let p = write(
+            dir.path(),
+            &format!("half{s}.json"),
+            &piece["patch"].to_string(),
+        );
+        tribez()
+            .arg("eval")
+            .arg(&p)
+            .args(["--at", corner])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("(3/5, 4/5, 0)"));
+        // each half still lies on the unit sphere, as a polynomial identity
+        write(
+            dir.path(),
+            &format!("half{s}.claims.toml"),
+            &format!(
+                "patch = \"half{s}.json\"\n[[claim]]\nid = \"s\"\nop = \"implicit\"\nequation = \"x^2 + y^2 + z^2 - 1\"\nexpect = \"0\"\n"
+            ),
+        );
+    }
+    tribez().arg("reproduce").arg(dir.path()).assert().success();
+    // seed 003's add-and-halve gives the same halves
+    let again = tribez()
+        .args(["halve", "--format", "json", "--edge", "1,2", "--add-and-halve"])
+        .arg(fixture("octant_quartic.toml"))
+        .output()
+        .unwrap();
+    let k: serde_json::Value = serde_json::from_slice(&again.stdout).unwrap();
+    assert_eq!(k["pieces"], j["pieces"]);
+    // S-patches are refused with a one-line usage error
+    tribez()
+        .args(["halve", "--edge", "1,2"])
+        .arg(fixture("pentagon_depth2.toml"))
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("does not take S-patches"));
+}
+
+#[test]
 fn float_claims_on_rational_and_s_patches() {
     tribez()
         .arg("check")
