@@ -148,39 +148,55 @@ pub fn tangent_frame(
             .collect();
         partials.push(v);
     }
-    let (normal, normal_from_intermediate) = if m == 2 && net.dim() == 3 {
-        let k = &nq * &nq / domain.determinant();
-        let c = &intermediate;
-        let via = cross(&sub(&c[1], &c[0]), &sub(&c[2], &c[0]))
-            .into_iter()
-            .map(|x| x * &k)
+    let scale = (m == 2 && net.dim() == 3).then(|| &nq * &nq / domain.determinant());
+    Ok(TangentFrame::assemble(point, intermediate, partials, scale))
+}
+
+impl TangentFrame {
+    /// The frame from its point, level-`(n−1)` points and partials; for triangles in `ℝ³`
+    /// (`scale` given) the normal `p_x × p_y` and `scale · (c_1 − c_0) × (c_2 − c_0)` (`n²/D` for
+    /// a polynomial patch); and whether the point is regular.
+    pub fn assemble(
+        point: Vec<BigRational>,
+        intermediate: Vec<Vec<BigRational>>,
+        partials: Vec<Vec<BigRational>>,
+        scale: Option<BigRational>,
+    ) -> TangentFrame {
+        let (normal, normal_from_intermediate) = match scale {
+            Some(k) => {
+                let c = &intermediate;
+                let via = cross(&sub(&c[1], &c[0]), &sub(&c[2], &c[0]))
+                    .into_iter()
+                    .map(|x| x * &k)
+                    .collect();
+                (Some(cross(&partials[0], &partials[1])), Some(via))
+            }
+            None => (None, None),
+        };
+        let m = partials.len();
+        let gram = (0..m)
+            .map(|a| {
+                (0..m)
+                    .map(|b| {
+                        partials[a]
+                            .iter()
+                            .zip(&partials[b])
+                            .map(|(x, y)| x * y)
+                            .sum()
+                    })
+                    .collect()
+            })
             .collect();
-        (Some(cross(&partials[0], &partials[1])), Some(via))
-    } else {
-        (None, None)
-    };
-    let gram = (0..m)
-        .map(|a| {
-            (0..m)
-                .map(|b| {
-                    partials[a]
-                        .iter()
-                        .zip(&partials[b])
-                        .map(|(x, y)| x * y)
-                        .sum()
-                })
-                .collect()
-        })
-        .collect();
-    let regular = !crate::domain::determinant(gram).is_zero();
-    Ok(TangentFrame {
-        point,
-        intermediate,
-        partials,
-        normal,
-        normal_from_intermediate,
-        regular,
-    })
+        let regular = !crate::domain::determinant(gram).is_zero();
+        TangentFrame {
+            point,
+            intermediate,
+            partials,
+            normal,
+            normal_from_intermediate,
+            regular,
+        }
+    }
 }
 
 #[cfg(test)]

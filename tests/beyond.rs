@@ -494,13 +494,40 @@ fn derivative_of_a_rational_patch() {
         .assert()
         .success()
         .stdout(predicate::str::contains("at (1, 0, 0): (0, 2, 0)"));
+    // second order: fixtures/beyond/derive.py, the closed-form second quotient rule
     tribez()
         .args(["derivative"])
         .arg(fixture("octant_quartic.toml"))
-        .args(["--at", "1,0,0", "--dir", "-1,1,0", "--dir", "-1,0,1"])
+        .args(["--at", "1/3,1/4,5/12", "--dir", "-1,1,0", "--dir", "-1,1,0"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "(-16565330304/4750104241, -22730325024/4750104241, -16409296800/4750104241)",
+        ));
+    // orders above 12 are refused (the work grows as 3^order)
+    let mut many = vec!["derivative", "--at", "1/3,1/4,5/12"];
+    for _ in 0..13 {
+        many.extend(["--dir", "-1,1,0"]);
+    }
+    tribez()
+        .args(&many[..1])
+        .arg(fixture("octant_quartic.toml"))
+        .args(&many[1..])
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("first-order derivatives only"));
+        .stderr(predicate::str::contains("at most 12 directions"));
+    // the tangent frame: the normal is radial (each component 12132288/2825761 times p's) and
+    // equals the one from the projected intermediate points
+    tribez()
+        .args(["tangent"])
+        .arg(fixture("octant_quartic.toml"))
+        .args(["--at", "1/3,1/4,5/12"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "normal p_x × p_y = (12374933760/4750104241, 11756187072/4750104241, 11161704960/4750104241)",
+        ))
+        .stdout(predicate::str::contains("(equal)"));
     let zero_corner = RATIONAL.replace("\"1,0,0\" = 1", "\"1,0,0\" = 0");
     fails(
         &zero_corner,
@@ -677,7 +704,14 @@ fn halve_a_rational_patch() {
     tribez().arg("reproduce").arg(dir.path()).assert().success();
     // seed 003's add-and-halve gives the same halves
     let again = tribez()
-        .args(["halve", "--format", "json", "--edge", "1,2", "--add-and-halve"])
+        .args([
+            "halve",
+            "--format",
+            "json",
+            "--edge",
+            "1,2",
+            "--add-and-halve",
+        ])
         .arg(fixture("octant_quartic.toml"))
         .output()
         .unwrap();

@@ -84,20 +84,16 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             "give at least one direction with --dir (barycentric) or --vector (Cartesian)".into(),
         ));
     }
-    check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
     let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
     let value = match &rational {
-        None => directional_derivative(&patch.net, &refs, &at),
-        // rational patches: first order, by the quotient rule on the homogeneous net
-        Some(r) if refs.len() == 1 => r
-            .derivative(&at, refs[0])
-            .map_err(|e| CliError::core(&what, e))?,
-        Some(_) => {
-            return Err(CliError::Usage(
-                "a rational patch takes exactly one direction (first-order derivatives only)"
-                    .into(),
-            ));
+        None => {
+            check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
+            directional_derivative(&patch.net, &refs, &at)
         }
+        // rational patches: any order, by Leibniz's rule on the homogeneous net
+        Some(r) => r
+            .derivative_of_order(&at, &refs)
+            .map_err(|e| CliError::core(&what, e))?,
     };
     Outcome::rendered(
         &DerivativeReport {
