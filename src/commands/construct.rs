@@ -93,18 +93,11 @@ pub fn construction_net(
     command: &str,
     patch: crate::patch::AnyPatch,
 ) -> Result<(Patch, Option<crate::rational::RationalPatch>), CliError> {
-    use crate::patch::AnyPatch;
-    match patch {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),
-        AnyPatch::Rational(r) => {
-            let mut h = r.patch.clone();
-            h.net = r.homogeneous();
-            Ok((h, Some(r)))
-        }
-        AnyPatch::SPatch(_) => Err(CliError::Usage(format!(
-            "{file}: `tribez {command}` does not take S-patches"
-        ))),
+    let (mut p, rational) = super::points_patch(file, command, patch)?;
+    if let Some(r) = &rational {
+        p.net = r.homogeneous();
     }
+    Ok((p, rational))
 }
 
 /// Pieces of the homogeneous net of `parent` back to rational patches (points and weights),

@@ -5,11 +5,10 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::{Map, Value as Json, json};
 
-use super::{CliError, Outcome, check_barycentric, parse_list};
+use super::{CliError, Outcome, at_point, points_patch};
 use crate::cli::OutputArgs;
 use crate::derivative::{TangentFrame, tangent_frame};
 use crate::io::patch_file::{index_key, read_any_patch};
-use crate::patch::AnyPatch;
 use crate::report::{Render, json_rationals, tuple};
 use crate::symbolic::cartesian_names;
 
@@ -40,27 +39,10 @@ pub struct TangentReport {
 /// Run `tribez tangent`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (p, None),
-        AnyPatch::Rational(r) => (r.patch.clone(), Some(r)),
-        AnyPatch::SPatch(_) => {
-            return Err(CliError::Usage(format!(
-                "{file}: `tribez tangent` does not take S-patches"
-            )));
-        }
-    };
+    let (patch, rational) = points_patch(&file, "tangent", read_any_patch(&args.patch)?)?;
     let m = patch.net.m();
     let domain = patch.domain_or_reference();
-    let p = parse_list(&args.at, "--at")?;
-    let what = format!("--at {}", args.at);
-    let at = if args.cartesian {
-        domain
-            .barycentric(&p)
-            .map_err(|e| CliError::core(&what, e))?
-    } else {
-        check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
-        p
-    };
+    let at = at_point(&args.at, args.cartesian, &domain, m)?;
     let frame = match &rational {
         None => tangent_frame(&patch.net, &domain, &at),
         Some(r) => r.tangent_frame(&domain, &at),
