@@ -151,6 +151,13 @@ pub struct SPatchCase<F> {
     pub casteljau_bound: Option<Vec<BigRational>>,
     /// `Σ|P_α| B_α(|λ̂|)` per coordinate.
     pub condition: Vec<BigRational>,
+    /// The proven relative bound `θ` of the float coordinates, `|λ̂_i − λ_i| ≤ θ λ_i`
+    /// ([`bound::wachspress_relative`]; `None` outside its hypotheses: a point on or very near
+    /// an edge, underflow).
+    pub theta: Option<BigRational>,
+    /// The proven bound of the total error `|ŷ − S(p̂)|` per coordinate: the de Casteljau part
+    /// plus `((1 + θ)^n − 1)/(1 − θ)^n Σ|P_α| B_α(λ̂)` ([`bound::coordinate_factor`]).
+    pub total_bound: Option<Vec<BigRational>>,
     /// Overflow or non-finite coordinates: not judged.
     pub outside: bool,
 }
@@ -202,7 +209,7 @@ impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
             .collect();
         let casteljau_exact = self.exact.evaluate(&lam_q, Algorithm::Casteljau);
         let condition = bound::condition(&self.seen.net, &lam_q);
-        let casteljau_bound = condition
+        let casteljau_bound: Option<Vec<BigRational>> = condition
             .iter()
             .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam_q))
             .collect();
@@ -210,6 +217,23 @@ impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
         let (exact_lambda, exact) = match self.seen.evaluate(&point) {
             Ok((l, v)) => (Some(l), Some(v)),
             Err(_) => (None, None),
+        };
+        let theta = bound::wachspress_relative(
+            F::PRECISION,
+            self.seen.polygon.vertices(),
+            &[point[0].clone(), point[1].clone()],
+        );
+        let total_bound = match (&theta, &casteljau_bound) {
+            (Some(t), Some(b)) => {
+                let factor = bound::coordinate_factor(t, n);
+                Some(
+                    b.iter()
+                        .zip(&condition)
+                        .map(|(bc, kc)| bc + &factor * kc)
+                        .collect(),
+                )
+            }
+            _ => None,
         };
         SPatchCase {
             y,
@@ -219,6 +243,8 @@ impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
             casteljau_exact,
             casteljau_bound,
             condition,
+            theta,
+            total_bound,
             outside,
         }
     }

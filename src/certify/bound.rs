@@ -222,6 +222,107 @@ pub fn rational_condition(
     )
 }
 
+/// **S-patches, the float Wachspress coordinates** ([`crate::spatch::wachspress_float`]): a
+/// relative bound `θ` with `|λ̂_i − λ_i| ≤ θ λ_i` for every `i`, where `λ_i` are the exact
+/// Wachspress coordinates of the float point `p̂` in the float polygon (the inputs as the code saw
+/// them), and the term it adds to a polynomial evaluated at `λ̂` instead of `λ`.
+///
+/// *Areas.* `cross(a, b, c) = (b_0 − a_0)(c_1 − a_1) − (b_1 − a_1)(c_0 − a_0)` passes each of its
+/// two products `t_1, t_2` through four roundings (two differences, the product, the final
+/// subtraction), so `|x̂ − x| ≤ γ_4 (|t_1| + |t_2|)` and the relative error is `ρ = γ_4(|t_1| + |t_2|)/x`
+/// for `x > 0`: the areas `A_j = cross(p̂, v_j, v_{j+1})` (positive strictly inside) and
+/// `C_i = cross(v_{i−1}, v_i, v_{i+1})` (positive for a strictly convex counter-clockwise polygon).
+///
+/// *Weights.* `ω̂_i = C_i Π_{j ∉ {i−1, i}} A_j` by `N − 2` more products: `ω̂_i = ω_i (1 + r_i)` with
+/// `|r_i| ≤ R_i = (1 + ρ_{C_i}) Π_j (1 + ρ_{A_j}) (1 + ε)^{N−2} − 1`.
+///
+/// *Sum and quotients.* The sum of the `N` positive weights, left to right, is
+/// `Ŝ = S (1 + r_S)` with `|r_S| ≤ R_S = (1 + max R_i)(1 + γ_{N−1}) − 1`, and
+/// `λ̂_i = fl(ω̂_i / Ŝ) = λ_i (1 + r_i)(1 + δ)/(1 + r_S)`, so `λ̂_i/λ_i` lies in
+/// `[(1 − R_i)(1 − ε)/(1 + R_S), (1 + R_i)(1 + ε)/(1 − R_S)]`; `θ` is the largest distance of these
+/// ends from 1.
+///
+/// *Hypotheses, checked here.* `p̂` strictly inside (every `A_j > 0`), no underflow: every exact
+/// product, partial product, weight and coordinate is 0 or at least `4 · 2^{e_min}` (the smallest
+/// normal), which with every `R < 1/2` keeps each rounded operation's exact result normal.
+/// `None` otherwise, or when `θ ≥ 1/2`.
+pub fn wachspress_relative(
+    p: Precision,
+    vertices: &[[BigRational; 2]],
+    point: &[BigRational; 2],
+) -> Option<BigRational> {
+    let eps = epsilon(p);
+    let one = BigRational::one();
+    let half = BigRational::new(1.into(), 2.into());
+    let tiny = pow2(match p {
+        Precision::F64 => -1020,
+        Precision::F32 => -124,
+    });
+    let normal = |x: &BigRational| x.is_zero() || x.abs() >= tiny;
+    let g4 = gamma(4, p)?;
+    // (value, relative bound) of cross(a, b, c), None if not positive or underflowing
+    let cross = |a: &[BigRational; 2], b: &[BigRational; 2], c: &[BigRational; 2]| {
+        let t1 = (&b[0] - &a[0]) * (&c[1] - &a[1]);
+        let t2 = (&b[1] - &a[1]) * (&c[0] - &a[0]);
+        let x = &t1 - &t2;
+        (x.is_positive() && normal(&t1) && normal(&t2))
+            .then(|| (g4.clone() * (t1.abs() + t2.abs()) / &x, x))
+    };
+    let n = vertices.len();
+    let areas: Vec<(BigRational, BigRational)> = (0..n)
+        .map(|j| cross(point, &vertices[j], &vertices[(j + 1) % n]).map(|(r, x)| (x, r)))
+        .collect::<Option<_>>()?;
+    let mut weights = Vec::with_capacity(n);
+    let mut rel = Vec::with_capacity(n);
+    for i in 0..n {
+        let prev = (i + n - 1) % n;
+        let (rc, c) = cross(&vertices[prev], &vertices[i], &vertices[(i + 1) % n])?;
+        let mut w = c;
+        let mut factor = &one + rc;
+        for j in (0..n).filter(|&j| j != prev && j != i) {
+            w *= &areas[j].0;
+            if !normal(&w) {
+                return None;
+            }
+            factor *= &one + &areas[j].1;
+            factor *= &one + &eps;
+        }
+        let r = factor - &one;
+        if r >= half {
+            return None;
+        }
+        weights.push(w);
+        rel.push(r);
+    }
+    let sum: BigRational = weights.iter().sum();
+    let r_max = rel.iter().max()?.clone();
+    let r_sum = (&one + &r_max) * (&one + gamma(n - 1, p)?) - &one;
+    if r_sum >= half {
+        return None;
+    }
+    let mut theta = BigRational::zero();
+    for (w, r) in weights.iter().zip(&rel) {
+        if !normal(&(w / &sum)) {
+            return None;
+        }
+        let hi = (&one + r) * (&one + &eps) / (&one - &r_sum) - &one;
+        let lo = &one - (&one - r) * (&one - &eps) / (&one + &r_sum);
+        theta = theta.max(hi).max(lo);
+    }
+    (theta < half).then_some(theta)
+}
+
+/// The extra error of a degree-`n` polynomial evaluated at coordinates `λ̂` with
+/// `|λ̂_i − λ_i| ≤ θ λ_i` (`λ ≥ 0`), as a multiple of `Σ|P_α| B_α(λ̂)`:
+/// `|P(λ̂) − P(λ)| ≤ Σ|P_α| C(n;α) λ^α |Π(1 + θ_i)^{α_i} − 1| ≤ ((1 + θ)^n − 1) Σ|P_α|B_α(λ)`, and
+/// `B_α(λ) ≤ B_α(λ̂)/(1 − θ)^n`, so the factor is `((1 + θ)^n − 1)/(1 − θ)^n`.
+pub fn coordinate_factor(theta: &BigRational, n: usize) -> BigRational {
+    let one = BigRational::one();
+    let up = num_traits::pow(&one + theta, n);
+    let down = num_traits::pow(&one - theta, n);
+    (up - &one) / down
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -243,6 +344,42 @@ mod tests {
         assert_eq!(roundings(Algorithm::Casteljau, 2, 3), 9); // γ_{3n}, FORMULAS §14.1
         assert_eq!(roundings(Algorithm::Casteljau, 1, 4), 8); // curves: γ_{2n} \[MP99\]
         assert_eq!(roundings(Algorithm::Bernstein, 2, 3), 10 + 3 + 2 + 2);
+    }
+
+    #[test]
+    fn wachspress_bound_holds_and_needs_the_interior() {
+        // The unit triangle (N = 3): Wachspress coordinates are the barycentric ones
+        // (1 − x − y, x, y). At float points the float coordinates lie within θ of the exact ones.
+        let r = |t: &str| q(t).unwrap();
+        let tri = [[r("0"), r("0")], [r("1"), r("0")], [r("0"), r("1")]];
+        let tri_f = [[0.0f64, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        for (x, y) in [
+            (0.1f64, 0.2f64),
+            (1e-3, 0.7),
+            (0.333, 0.333),
+            (1e-12, 1e-12),
+        ] {
+            let p = [
+                crate::number::exact_f64(x).unwrap(),
+                crate::number::exact_f64(y).unwrap(),
+            ];
+            let theta = wachspress_relative(Precision::F64, &tri, &p).unwrap();
+            let got = crate::spatch::wachspress_float(&tri_f, &[x, y]);
+            let exact = [
+                BigRational::one() - &p[0] - &p[1],
+                p[0].clone(),
+                p[1].clone(),
+            ];
+            for (g, e) in got.iter().zip(&exact) {
+                let err = (crate::number::exact_f64(*g).unwrap() - e).abs();
+                assert!(err <= &theta * e, "at ({x}, {y}): {err} > θ {theta} · {e}");
+            }
+        }
+        // on an edge a coordinate is 0 and no relative bound exists; outside the polygon neither
+        assert!(wachspress_relative(Precision::F64, &tri, &[r("1/2"), r("0")]).is_none());
+        assert!(wachspress_relative(Precision::F64, &tri, &[r("1"), r("1")]).is_none());
+        // the polynomial factor: ((1+θ)^n − 1)/(1−θ)^n, e.g. θ = 1/10, n = 2: (21/100)/(81/100)
+        assert_eq!(coordinate_factor(&r("1/10"), 2), r("7/27"));
     }
 
     #[test]

@@ -885,15 +885,17 @@ mod beyond {
     /// and `cond=K` means `|y − q| ≤ K ε κ` with the rational condition number
     /// [`crate::certify::bound::rational_condition`].
     ///
-    /// S-patches: the float Wachspress coordinates have no proven bound, so `cond` and `bound` are
-    /// refused; the condition shown is `Σ|P_α|B_α(λ)` at the exact Wachspress coordinates of the
-    /// rounded point.
-    fn refuse_bound_tolerances(inputs: &Inputs<'_>) -> Result<(), InputError> {
+    /// S-patches: `bound` is the proven bound of the whole float path (float Wachspress
+    /// coordinates, then de Casteljau: [`crate::certify::beyond::SPatchCase::total_bound`]);
+    /// `cond=K` is refused (the coordinates have a condition of their own that `Σ|P_α|B_α` does
+    /// not measure). The condition shown is `Σ|P_α|B_α(λ)` at the exact Wachspress coordinates of
+    /// the rounded point.
+    fn refuse_cond_tolerance(inputs: &Inputs<'_>) -> Result<(), InputError> {
         let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
-        if tolerance.needs_condition() {
+        if matches!(tolerance, crate::certify::measures::Tolerance::Cond(_)) {
             return Err(inputs.error(
                 "tolerance",
-                format!("tolerance `{tolerance}` needs a proven error bound, which tribez has for polynomial and rational patches only (no proven bound for an S-patch's float Wachspress coordinates)"),
+                format!("tolerance `{tolerance}` is not defined for S-patches (the float Wachspress coordinates add an error Σ|P_α|B_α does not measure): use `bound`, the proven bound of the whole float path"),
             ));
         }
         Ok(())
@@ -998,7 +1000,7 @@ mod beyond {
         s: &crate::spatch::SPatch,
         p: crate::float::Precision,
     ) -> Result<super::FloatEval, InputError> {
-        refuse_bound_tolerances(inputs)?;
+        refuse_cond_tolerance(inputs)?;
         let x = inputs.rationals("cartesian")?;
         let (_, exact_intended) = s
             .evaluate(&x)
@@ -1022,12 +1024,34 @@ mod beyond {
             .map_err(|e| inputs.error("cartesian", format!("as the code saw it: {e}")))?;
         let condition = crate::certify::bound::condition(&seen.net, &lambda);
         let d = exact_seen.len();
+        // the proven bound of the float path, run as the code runs it
+        use crate::certify::beyond::SPatchCertifier;
+        use crate::float::Precision;
+        use crate::number::{round_f32, round_f64};
+        let total = match p {
+            Precision::F64 => SPatchCertifier::<f64>::new(s).ok().and_then(|c| {
+                c.check(&[round_f64(&seen_inputs[0]), round_f64(&seen_inputs[1])])
+                    .total_bound
+            }),
+            Precision::F32 => SPatchCertifier::<f32>::new(s).ok().and_then(|c| {
+                c.check(&[round_f32(&seen_inputs[0]), round_f32(&seen_inputs[1])])
+                    .total_bound
+            }),
+        };
+        let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+        if tolerance == crate::certify::measures::Tolerance::Bound && total.is_none() {
+            return Err(inputs.error(
+                "tolerance",
+                format!("no bound at this point in {}: it is on or too near an edge of the polygon (or its numbers too small) for the float Wachspress coordinates' bound", p.name()),
+            ));
+        }
+        let bound = total.map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect());
         Ok(super::FloatEval {
             seen_inputs,
             exact_seen,
             exact_intended,
             condition,
-            bound: vec![None; d],
+            bound,
         })
     }
 

@@ -4,8 +4,8 @@
 //!   division; judged against the proven bound [`crate::certify::bound::rational_a_posteriori`].
 //! * S-patch: float Wachspress coordinates `λ̂`, then float de Casteljau. The total error
 //!   (against the exact S-patch with rounded polygon and control points, at the rounded point) is
-//!   measured; only the de Casteljau part `|ŷ − P(λ̂)|` is judged against a proven bound. There is
-//!   no proven bound for the coordinate computation.
+//!   judged against the proven bound of [`crate::certify::beyond::SPatchCase::total_bound`]:
+//!   de Casteljau at `λ̂` plus the coordinates' relative error `θ`.
 
 use std::ops::Div;
 
@@ -27,7 +27,7 @@ use crate::spatch::SPatch;
 pub const RATIONAL_NOTE: &str = "bound (rational, homogeneous de Casteljau + one division): |fl(N̂/D̂) − q| ≤ (e_N + |q| e_D)/|D̂| + ε|fl(N̂/D̂)|/(1−ε) + η, e_N = γ_K Σ|w_i c_i| B_i(|λ|), e_D = γ_K Σ|w_i| B_i(|λ|), needs |D̂| > e_D; cond = (Σ|w c|B(|λ|) + |q| Σ|w|B(|λ|))/|D|, relcond = cond/|q|";
 
 /// The explanation line of an S-patch's table.
-pub const SPATCH_NOTE: &str = "S-patch: max ulp and cr share measure the TOTAL error against the exact S-patch (rounded polygon and control points) at the rounded point; no proven bound for the coordinate computation (float Wachspress), so the total is not judged. bound, err/bound and verdict are the de Casteljau part only: |ŷ − P(λ̂)| ≤ γ_K Σ|P_α| B_α(|λ̂|) at the float coordinates λ̂ (proven); cond = Σ|P_α| B_α(|λ̂|), relcond = cond/|S|";
+pub const SPATCH_NOTE: &str = "S-patch: the TOTAL error against the exact S-patch (rounded polygon and control points) at the rounded point, judged against the proven bound |ŷ − S(p̂)| ≤ (γ_K + ((1+θ)^n − 1)/(1−θ)^n) Σ|P_α| B_α(|λ̂|): de Casteljau at the float coordinates λ̂ plus their relative error θ (float Wachspress, bound.rs wachspress_relative); cond = Σ|P_α| B_α(|λ̂|), relcond = cond/|S|";
 
 fn algorithm_check(args: &Args, kind: &str) -> Result<(), CliError> {
     match args.algorithm.as_str() {
@@ -213,19 +213,27 @@ fn spatch_row<F: Float + Div<Output = F>>(
                             acc.rel_cond = acc.rel_cond.max(f(&(kc / vc.abs())));
                         }
                     }
+                    match &case.total_bound {
+                        Some(b) => {
+                            judge(&mut acc, &case.y, v, b, &at, "");
+                            // the coordinates themselves, against θ (relative)
+                            let theta = case.theta.as_ref().expect("a total bound has θ");
+                            let bounds: Vec<BigRational> = l.iter().map(|e| theta * e).collect();
+                            judge(
+                                &mut acc,
+                                &case.lambda,
+                                l,
+                                &bounds,
+                                &at,
+                                "Wachspress coordinate ",
+                            );
+                        }
+                        // near an edge or underflow: outside the coordinates' bound
+                        None => acc.outside = true,
+                    }
                 }
-                // the total error is not judged (counted with the points outside the hypotheses)
+                // the rounded point is outside the rounded polygon: not measured
                 _ => acc.outside = true,
-            }
-            if let Some(b) = &case.casteljau_bound {
-                judge(
-                    &mut acc,
-                    &case.y,
-                    &case.casteljau_exact,
-                    b,
-                    &at,
-                    "de Casteljau part: ",
-                );
             }
             acc
         })
@@ -234,16 +242,16 @@ fn spatch_row<F: Float + Div<Output = F>>(
         Algorithm::Casteljau,
         F::PRECISION,
         k,
-        Some(format!("γ_{k} dC")),
+        Some(format!("γ_{k}+θ")),
     );
     let lambda_ulps = row.fold(accs, points);
     row.notes.push(format!(
-        "Wachspress coordinates λ̂: max error {} ulp (measured; no proven bound for the coordinate computation)",
+        "Wachspress coordinates λ̂: max error {} ulp (within the relative bound θ wherever judged)",
         super::certify::g(lambda_ulps)
     ));
     if row.outside_hypothesis > 0 {
         row.notes.push(format!(
-            "{} points not measured: overflow, or the rounded point lies outside the rounded polygon",
+            "{} points not judged: overflow, the rounded point outside the rounded polygon, or so near an edge (or so small) that the coordinates' bound does not apply",
             row.outside_hypothesis
         ));
     }
