@@ -28,6 +28,8 @@ use crate::simplex::Simplex;
 
 use super::measures::Tolerance;
 
+mod kernel;
+
 /// Safety margin of the comparisons (relative).
 const R: f64 = 1.0 / (1u64 << 45) as f64;
 /// f64 unit roundoff.
@@ -302,6 +304,10 @@ pub struct Filter {
     s_rel: f64,
     /// `γ_{(m+1)n}` for f64, rounded up.
     gamma: f64,
+    /// The lean compensated kernel, when one is compiled for this `(m, dim)`.
+    lean: Option<kernel::Lean>,
+    /// The largest control coordinate in magnitude (the scale of `abs=E` tolerances).
+    scale: f64,
 }
 
 /// Reusable buffers for [`Filter::evaluate`] (one per thread).
@@ -313,6 +319,7 @@ pub struct Scratch {
     v2: Vec<f64>,
     mu2: Vec<f64>,
     s2: Vec<f64>,
+    lean: kernel::LeanScratch,
 }
 
 impl Filter {
@@ -343,6 +350,8 @@ impl Filter {
                     f64::INFINITY
                 }
             },
+            lean: kernel::Lean::new(m, n, dim, net.coords()),
+            scale: net.coords().iter().fold(0.0, |a: f64, x| a.max(x.abs())),
         }
     }
 
@@ -362,6 +371,7 @@ impl Filter {
             v2,
             mu2,
             s2,
+            ..
         } = scratch;
         v.clear();
         v.extend_from_slice(&self.coords);
@@ -431,6 +441,96 @@ impl Filter {
     }
 }
 
+/// The filter's conclusion about one row of claimed coordinates ([`Filter::judge`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowJudgement {
+    /// [`Decision::Fail`] when some coordinate surely fails, [`Decision::Pass`] when every one
+    /// surely passes, [`Decision::Undecided`] otherwise (compute exactly).
+    pub decision: Decision,
+    /// An upper bound on the largest error in ULPs over the coordinates (from the enclosure
+    /// that decided; infinite when nothing could be bounded).
+    pub ulps: f64,
+}
+
+/// The row's conclusion from one set of enclosures.
+fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJudgement {
+    let mut all_pass = true;
+    let mut any_fail = false;
+    let mut ulps = 0f64;
+    for (y, e) in claimed.iter().zip(enc) {
+        match th.decide(*y, e, s) {
+            Decision::Pass => {}
+            Decision::Fail => any_fail = true,
+            Decision::Undecided => all_pass = false,
+        }
+        ulps = ulps.max(th.ulps_upper(*y, e));
+    }
+    RowJudgement {
+        decision: if any_fail {
+            Decision::Fail
+        } else if all_pass {
+            Decision::Pass
+        } else {
+            Decision::Undecided
+        },
+        ulps,
+    }
+}
+
+impl Filter {
+    /// Whether rows at `th` should go straight to the compensated stage: the plain stage's
+    /// running bound is typically a few `(m+1)n ε Σ|c|B` (FORMULAS §14.2), so a tolerance
+    /// narrower than about that (`exact`, `correctly_rounded`, `faithful`, a few ulps, a small
+    /// `rel`/`abs`/`cond`) is rarely decided by it, and running it first only adds its cost. The
+    /// choice affects speed only: [`Filter::judge`] tries both stages before giving up.
+    pub fn compensated_first(&self, th: &Thresholds) -> bool {
+        let unit = ((self.m + 1) * self.n.max(1)) as f64;
+        match (th.precision, &th.tolerance) {
+            (_, Tolerance::Exact) => true,
+            (Precision::F32, _) => false,
+            (Precision::F64, Tolerance::CorrectlyRounded | Tolerance::Faithful) => true,
+            (Precision::F64, Tolerance::Ulps(_)) => th.k_hi < 1.5 * unit,
+            (Precision::F64, Tolerance::Rel(_)) => th.k_hi < 2.5 * unit * EPS,
+            (Precision::F64, Tolerance::Abs(_)) => th.k_hi < 0.3 * unit * EPS * self.scale,
+            (Precision::F64, Tolerance::Cond(_)) => th.k_hi < 0.7 * unit * EPS,
+            (Precision::F64, Tolerance::Bound) => false,
+        }
+    }
+
+    /// Judge one row: the claimed coordinates `claimed` (finite floats) of `P(λ)` against `th`,
+    /// by the plain and the compensated enclosures, in the order [`Filter::compensated_first`]
+    /// picks; the second stage runs only when the first leaves the row undecided. `enc` needs
+    /// [`Filter::dim`] entries and holds the deciding enclosures afterwards. This is the path of
+    /// `tribez check --results` (and of the `check` bench).
+    pub fn judge(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        let s: f64 = lambda.iter().map(|x| x.abs()).sum();
+        // the generic compensated stage needs the plain stage's condition numbers
+        let first = self.lean.is_some() && self.compensated_first(th);
+        if first {
+            self.evaluate_compensated(lambda, scratch, enc);
+        } else {
+            self.evaluate(lambda, scratch, enc);
+        }
+        let r = conclude(th, claimed, enc, s);
+        if r.decision != Decision::Undecided {
+            return r;
+        }
+        if first {
+            self.evaluate(lambda, scratch, enc);
+        } else {
+            self.evaluate_compensated(lambda, scratch, enc);
+        }
+        conclude(th, claimed, enc, s)
+    }
+}
+
 /// Dekker's TwoProduct without FMA: `a·b = p + π` exactly when no split overflows and the
 /// partial products do not underflow (guarded by the caller) (\[Higham02\] §4.3, Dekker 1971).
 #[inline]
@@ -462,17 +562,71 @@ impl Filter {
     /// errors `E_k` the node's exact error is `E = Σ_k π_k + Σ σ + Σ_k λ_k E_k`. We compute it in
     /// f64 (`Ê`) with a running bound `ν ≥ |E − Ê|`: `ν = Σ|λ_k| ν_k + ε Σ|partials| + (m+1)η`
     /// (the same model as the plain running bound). Then `|V + Ê − P| ≤ ν`, of order `ε² Σ|c|B`.
-    /// `out` must hold the plain enclosures of [`Filter::evaluate`] at the same `λ`: their
-    /// condition-number bounds are kept. Guards: a factor of magnitude `≥ 2^995` (the split could overflow) or a non-zero product
-    /// below `2^-900` (TwoProduct could be inexact) makes the enclosure undecided (NaN).
+    /// For `(m, dim)` with a lean kernel ([`Filter::has_lean_kernel`]: `m ≤ 3`, `dim ≤ 4`) the
+    /// condition-number bounds are computed in the same pass; otherwise `out` must hold the
+    /// plain enclosures of [`Filter::evaluate`] at the same `λ` and their condition-number
+    /// bounds are kept. Guards: a factor of magnitude `≥ 2^990` (the split could overflow) or a
+    /// non-zero product of non-zero factors below `2^-900` (TwoProduct could be inexact) makes
+    /// the enclosure undecided (NaN).
     pub fn evaluate_compensated(
         &self,
         lambda: &[f64],
         scratch: &mut Scratch,
         out: &mut [Enclosure],
     ) {
+        match &self.lean {
+            Some(lean) => self.evaluate_lean(lean, lambda, scratch, out),
+            None => self.evaluate_compensated_generic(lambda, scratch, out),
+        }
+    }
+
+    /// Whether the lean compensated kernel serves this net (`m ≤ 3`, `dim ≤ 4`, `n ≥ 1`).
+    pub fn has_lean_kernel(&self) -> bool {
+        self.lean.is_some()
+    }
+
+    /// The lean kernel ([`kernel`]): the compensated enclosure and the condition-number bounds
+    /// in one pass (`out` need not hold anything).
+    ///
+    /// The absolute allowance for underflow in computing `ν` and `s` themselves
+    /// (`mu_absolute`, per operation) is carried to the apex by the later steps with weight at
+    /// most `Σ|λ_k|` per step, so it is scaled by `Σ_{j≤n} (Σ|λ_k|)^j ≥ 1`.
+    fn evaluate_lean(
+        &self,
+        lean: &kernel::Lean,
+        lambda: &[f64],
+        scratch: &mut Scratch,
+        out: &mut [Enclosure],
+    ) {
+        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
+        let mut geometric = 0.0;
+        let mut power = 1.0;
+        for _ in 0..=self.n {
+            geometric += power;
+            power *= sum_abs;
+        }
+        let absolute = self.mu_absolute * geometric * (1.0 + R);
+        let (ok, apex) = lean.run(lambda, &mut scratch.lean);
+        kernel::enclosures(
+            ok && absolute.is_finite(),
+            &apex,
+            self.mu_inflate,
+            absolute,
+            self.s_rel,
+            out,
+        );
+    }
+
+    /// The generic compensated stage (any m and dim), as documented at
+    /// [`Filter::evaluate_compensated`].
+    fn evaluate_compensated_generic(
+        &self,
+        lambda: &[f64],
+        scratch: &mut Scratch,
+        out: &mut [Enclosure],
+    ) {
         let (m, dim) = (self.m, self.dim);
-        let big = 2f64.powi(995);
+        let big = 2f64.powi(990);
         let small = 2f64.powi(-900);
         let Scratch {
             v,
@@ -481,6 +635,7 @@ impl Filter {
             v2,
             mu2,
             s2,
+            ..
         } = scratch;
         // v: values, s: corrections Ê, mu: ν
         v.clear();

@@ -24,7 +24,7 @@ use serde_json::{Value as Json, json};
 use super::check::Args;
 use super::{CliError, Outcome};
 use crate::certify::bound::{a_priori, condition};
-use crate::certify::filter::{Decision, Enclosure, Filter, Scratch, Thresholds};
+use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
 use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Precision;
@@ -473,7 +473,7 @@ impl Prepared {
         line: usize,
         inputs: Vec<Num>,
         claimed: Vec<Num>,
-        scratch: &mut (Scratch, Vec<Enclosure>),
+        scratch: &mut RowScratch,
     ) -> RowOutcome {
         let finite = |xs: &[Num]| xs.iter().all(|x| matches!(x, Num::Value { .. }));
         if !finite(&inputs) || !finite(&claimed) {
@@ -489,72 +489,41 @@ impl Prepared {
             };
         }
         if let Some((filter, th)) = &self.filter {
-            let lambda: Vec<f64> = inputs
-                .iter()
-                .map(|x| {
-                    if let Num::Value { float, .. } = x {
-                        *float
-                    } else {
-                        0.0
-                    }
-                })
-                .collect();
-            let (sc, enc) = scratch;
+            let float = |x: &Num| match x {
+                Num::Value { float, .. } => *float,
+                Num::NotFinite(_) => f64::NAN,
+            };
+            let (sc, enc, lambda, ys) = scratch;
+            lambda.clear();
+            lambda.extend(inputs.iter().map(float));
+            ys.clear();
+            ys.extend(claimed.iter().map(float));
             enc.resize(filter.dim(), Enclosure::default());
-            filter.evaluate(&lambda, sc, enc);
-            let s: f64 = lambda.iter().map(|x| x.abs()).sum();
-            let mut all_pass = true;
-            let mut any_fail = false;
-            let mut ulps = 0f64;
-            for (c, y) in claimed.iter().enumerate() {
-                let Num::Value { float, .. } = y else {
-                    unreachable!()
-                };
-                match th.decide(*float, &enc[c], s) {
-                    Decision::Pass => {}
-                    Decision::Fail => any_fail = true,
-                    Decision::Undecided => all_pass = false,
-                }
-                ulps = ulps.max(th.ulps_upper(*float, &enc[c]));
-            }
-            if !all_pass && !any_fail {
-                // second stage: the compensated enclosure (error of order ε² Σ|c|B)
-                filter.evaluate_compensated(&lambda, sc, enc);
-                all_pass = true;
-                ulps = 0.0;
-                for (c, y) in claimed.iter().enumerate() {
-                    let Num::Value { float, .. } = y else {
-                        unreachable!()
+            let RowJudgement { decision, ulps } = filter.judge(th, lambda, ys, sc, enc);
+            match decision {
+                Decision::Pass => {
+                    return RowOutcome {
+                        line,
+                        pass: true,
+                        fell_back: false,
+                        ulps,
+                        failure: None,
+                        inputs,
+                        claimed,
                     };
-                    match th.decide(*float, &enc[c], s) {
-                        Decision::Pass => {}
-                        Decision::Fail => any_fail = true,
-                        Decision::Undecided => all_pass = false,
-                    }
-                    ulps = ulps.max(th.ulps_upper(*float, &enc[c]));
                 }
-            }
-            if all_pass && !any_fail {
-                return RowOutcome {
-                    line,
-                    pass: true,
-                    fell_back: false,
-                    ulps,
-                    failure: None,
-                    inputs,
-                    claimed,
-                };
-            }
-            if any_fail {
-                return RowOutcome {
-                    line,
-                    pass: false,
-                    fell_back: false,
-                    ulps,
-                    failure: Some(String::new()),
-                    inputs,
-                    claimed,
-                };
+                Decision::Fail => {
+                    return RowOutcome {
+                        line,
+                        pass: false,
+                        fell_back: false,
+                        ulps,
+                        failure: Some(String::new()),
+                        inputs,
+                        claimed,
+                    };
+                }
+                Decision::Undecided => {}
             }
         }
         let (pass, ulps, reason, _) = self.exact_row(&inputs, &claimed, None, false);
@@ -569,6 +538,10 @@ impl Prepared {
         }
     }
 }
+
+/// Per-thread buffers of the filter: its scratch, the enclosures, the row's inputs and claimed
+/// values as floats.
+type RowScratch = (Scratch, Vec<Enclosure>, Vec<f64>, Vec<f64>);
 
 /// A parsed row: its input numbers and its claimed numbers.
 type Row = (Vec<Num>, Vec<Num>);
@@ -759,7 +732,7 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
                     .collect::<Vec<_>>()
                     .par_iter()
                     .map_init(
-                        || (Scratch::default(), Vec::new()),
+                        RowScratch::default,
                         |scratch, (no, text)| -> Result<Option<RowOutcome>, InputError> {
                             let Some((inputs, claimed)) =
                                 parse_line(text, json_lines, width, dim, p.precision, &file, *no)?
