@@ -125,16 +125,18 @@ impl Thresholds {
     /// An upper bound on the error of `y` in ULPs of the claim's precision (at the smallest
     /// `|P|` the enclosure allows).
     pub fn ulps_upper(&self, y: f64, e: &Enclosure) -> f64 {
-        if !(e.value.is_finite() && e.mu.is_finite()) {
+        if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
             return f64::INFINITY;
         }
-        let e_hi = ((y - e.value).abs() * (1.0 + R) + e.mu * (1.0 + R)) * (1.0 + R);
-        let w = e.mu * (1.0 + R) + e.value.abs() * 2.0 * EPS + TINY;
-        let lo = if e.value.abs() > w {
-            e.value.abs() - w
-        } else {
-            0.0
-        };
+        // as in `decide`: the error |y − P| ≤ |y − value − corr| + μ, widened for the roundings
+        let d1 = y - e.value;
+        let d = d1 - e.corr;
+        let mu_eff = e.mu + 2.0 * EPS * (d1.abs() + e.corr.abs()) + TINY;
+        let e_hi = (d.abs() * (1.0 + R) + mu_eff * (1.0 + R)) * (1.0 + R);
+        let center = (e.value + e.corr).abs();
+        let w = mu_eff * (1.0 + R) + center * 2.0 * EPS + TINY;
+        let lo = if center > w { center - w } else { 0.0 };
+        // the ulp is a power of two: the quotient is exact barring overflow
         e_hi / ulp_of(lo * (1.0 - R), self.precision)
     }
 
@@ -221,7 +223,13 @@ impl Thresholds {
                 let (g_lo, g_hi) = if faithful {
                     (y - prev, next - y)
                 } else {
-                    ((y - prev) * 0.5, (next - y) * 0.5)
+                    // beyond ±MAX, round to nearest goes to ±inf from MAX + ulp(MAX)/2 on
+                    let half_top = match self.precision {
+                        Precision::F64 => pow2f(970),
+                        Precision::F32 => pow2f(103),
+                    };
+                    let half = |gap: f64| if gap.is_finite() { gap * 0.5 } else { half_top };
+                    (half(y - prev), half(next - y))
                 };
                 let d_hi = d + dabs * 4.0 * EPS;
                 let d_lo = d - dabs * 4.0 * EPS;
@@ -772,6 +780,37 @@ mod tests {
     }
 
     #[test]
+    fn correct_rounding_at_the_largest_float_knows_where_overflow_starts() {
+        use crate::certify::measures::Tolerance;
+        // f32: MAX = 2^128 − 2^104; P ≥ MAX + 2^103 rounds to inf, below that to MAX
+        let max = f64::from(f32::MAX);
+        for (p, y, half) in [
+            (Precision::F32, max, 2f64.powi(103)),
+            (Precision::F64, f64::MAX, 2f64.powi(970)),
+        ] {
+            let th = Thresholds::new(&Tolerance::CorrectlyRounded, p, Algorithm::Casteljau, 2, 1);
+            let at = |corr: f64| Enclosure {
+                value: y,
+                corr,
+                mu: 0.0,
+                s_lo: y,
+                s_hi: y,
+            };
+            assert_eq!(th.decide(y, &at(0.5 * half), 1.0), Decision::Pass, "{p:?}");
+            assert_eq!(th.decide(y, &at(1.5 * half), 1.0), Decision::Fail, "{p:?}");
+            let below = |corr: f64| Enclosure {
+                value: -y,
+                corr,
+                mu: 0.0,
+                s_lo: y,
+                s_hi: y,
+            };
+            assert_eq!(th.decide(-y, &below(-0.5 * half), 1.0), Decision::Pass);
+            assert_eq!(th.decide(-y, &below(-1.5 * half), 1.0), Decision::Fail);
+        }
+    }
+
+    #[test]
     fn ulp_by_bits_matches_the_exact_ulp() {
         for x in [
             0.0,
@@ -933,5 +972,323 @@ mod tests {
             }
         }
         let _ = q("1");
+    }
+
+    /// A named net with the points to evaluate it at.
+    type StressCase = (&'static str, ControlNet<f64>, Vec<Vec<f64>>);
+
+    /// Nets and points that stress the filter: (m, dim) with and without a lean kernel,
+    /// ill-conditioned coordinates (an alternating net: `Σ(−1)^{α_0} B_α = (λ_1 + … − λ_0)^n`,
+    /// zero on `λ_0 = 1/2` while `Σ|c|B = 1`; the linear `λ_0 − λ_1`), points near those zeros
+    /// and outside the simplex (any signs), huge and tiny magnitudes, and inputs that trip the
+    /// compensated kernel's guards (tiny control values, subnormal and huge `λ`).
+    fn stress_cases() -> Vec<StressCase> {
+        let mut st = 11u64;
+        let mut cases = Vec::new();
+        let points = |st: &mut u64, m: usize, count: usize| -> Vec<Vec<f64>> {
+            (0..count)
+                .map(|i| {
+                    let mut l: Vec<f64> = (0..=m).map(|_| lcg(st)).collect();
+                    match i % 5 {
+                        // inside, summing to about 1
+                        0 => {
+                            let t: f64 = l.iter().sum();
+                            l.iter_mut().for_each(|x| *x /= t);
+                        }
+                        // outside: any signs
+                        1 => l.iter_mut().for_each(|x| *x = *x * 5.0 - 2.0),
+                        // near λ_0 = 1/2 (the alternating net's zero), the rest summing to 1/2
+                        2 => {
+                            let t: f64 = l[1..].iter().sum();
+                            l[1..].iter_mut().for_each(|x| *x *= 0.5 / t);
+                            l[0] = 0.5 + (lcg(st) - 0.5) * 1e-12;
+                        }
+                        // near λ_0 = λ_1 (the linear coordinate's zero)
+                        3 => l[1] = l[0] * (1.0 + (lcg(st) - 0.5) * 1e-13),
+                        // far out, large weights
+                        _ => l.iter_mut().for_each(|x| *x = (*x - 0.3) * 1e3),
+                    }
+                    l
+                })
+                .collect()
+        };
+        for (name, m, dim, n) in [
+            ("m=2 dim=3 n=3", 2, 3, 3),
+            ("m=1 dim=1 n=5", 1, 1, 5),
+            ("m=3 dim=2 n=2", 3, 2, 2),
+            ("m=2 dim=4 n=4", 2, 4, 4),
+            ("m=2 dim=5 n=3 (generic kernel)", 2, 5, 3),
+            ("m=4 dim=1 n=2 (generic kernel)", 4, 1, 2),
+        ] {
+            let simplex = Simplex::new(m, n);
+            let mut coords = Vec::new();
+            for alpha in simplex.iter() {
+                for c in 0..dim {
+                    coords.push(match c {
+                        0 => (alpha[0] as f64 - alpha[1] as f64) / n as f64,
+                        1 => {
+                            if alpha[0] % 2 == 0 {
+                                1.0
+                            } else {
+                                -1.0
+                            }
+                        }
+                        2 => (lcg(&mut st) - 0.5) * 10f64.powi((lcg(&mut st) * 200.0) as i32 - 100),
+                        _ => (lcg(&mut st) - 0.5) * 3.0,
+                    });
+                }
+            }
+            let pts = points(&mut st, m, 60);
+            cases.push((name, ControlNet::new(simplex, dim, coords), pts));
+        }
+        // guards: subnormal, tiny and huge λ on an ordinary net
+        let mut pts = points(&mut st, 2, 20);
+        pts.extend([
+            vec![5e-324, 0.5, 0.5],
+            vec![1e-310, -1e-200, 1.0],
+            vec![1e-100, 1e-100, 1.0],
+            vec![1e95, -1e95, 1.0],
+            vec![1e-95, 1e95, 1.0],
+            vec![0.0, 0.0, 1.0],
+            vec![0.0, 0.0, 0.0],
+        ]);
+        let simplex = Simplex::new(2, 3);
+        let coords = (0..simplex.len() * 2)
+            .map(|i| (lcg(&mut st) - 0.5) * (i as f64 + 1.0))
+            .collect();
+        cases.push(("guards: λ", ControlNet::new(simplex, 2, coords), pts));
+        // guards: tiny control values (below 2^-500) beside ordinary and huge ones
+        let simplex = Simplex::new(2, 3);
+        let coords: Vec<f64> = (0..simplex.len() * 2)
+            .map(|i| match i % 4 {
+                0 => 1e-160 * (i as f64 + 1.0),
+                1 => -3.0 / (i as f64 + 1.0),
+                2 => 1e-300,
+                _ => 1e150,
+            })
+            .collect();
+        let mut pts = points(&mut st, 2, 30);
+        pts.extend([
+            vec![5e-324, 0.5, 0.5],
+            vec![1e-310, -1e-200, 1.0],
+            vec![1e-100, 1e-100, 1.0],
+            vec![1e95, -1e95, 1.0],
+            vec![0.0, 0.0, 1.0],
+            vec![0.0, 0.0, 0.0],
+        ]);
+        cases.push(("guards: control", ControlNet::new(simplex, 2, coords), pts));
+        cases
+    }
+
+    #[test]
+    fn every_stage_encloses_the_exact_value_on_the_stress_cases() {
+        for (name, net, pts) in stress_cases() {
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let exact = ExactEvaluator::new(&exact_net);
+            let dim = net.dim();
+            let mut sc = Scratch::default();
+            let (mut plain, mut comp, mut generic) = (
+                vec![Enclosure::default(); dim],
+                vec![Enclosure::default(); dim],
+                vec![Enclosure::default(); dim],
+            );
+            let mut lean_finite = 0;
+            for lam in &pts {
+                let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+                let p = exact.evaluate(&l, Algorithm::Casteljau);
+                let s = crate::certify::bound::condition(&exact_net, &l);
+                f.evaluate(lam, &mut sc, &mut plain);
+                // the lean kernel (where compiled) overwrites the condition numbers: start from
+                // nonsense to see that it does
+                comp.iter_mut().for_each(|e| {
+                    *e = Enclosure {
+                        s_lo: -1.0,
+                        s_hi: -1.0,
+                        ..plain[0]
+                    }
+                });
+                if !f.has_lean_kernel() {
+                    comp.copy_from_slice(&plain);
+                }
+                f.evaluate_compensated(lam, &mut sc, &mut comp);
+                generic.copy_from_slice(&plain);
+                f.evaluate_compensated_generic(lam, &mut sc, &mut generic);
+                for c in 0..dim {
+                    let within = |e: &Enclosure, what: &str| {
+                        if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
+                            return false;
+                        }
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap()
+                            - &p[c])
+                            .abs();
+                        assert!(
+                            err <= exact_f64(e.mu).unwrap(),
+                            "{name}: {what} misses P at {lam:?}, coordinate {c}"
+                        );
+                        if e.s_hi.is_finite() {
+                            assert!(
+                                exact_f64(e.s_lo).unwrap() <= s[c]
+                                    && s[c] <= exact_f64(e.s_hi).unwrap(),
+                                "{name}: {what} condition number at {lam:?}, coordinate {c}"
+                            );
+                        }
+                        true
+                    };
+                    within(&plain[c], "plain");
+                    let g = within(&generic[c], "generic compensated");
+                    if within(&comp[c], "compensated") {
+                        lean_finite += 1;
+                        if g {
+                            // the same operations in the same order
+                            assert_eq!(comp[c].value, generic[c].value, "{name}");
+                            assert_eq!(comp[c].corr, generic[c].corr, "{name}");
+                        }
+                    }
+                }
+            }
+            // (tiny control values trip the lean kernel's guard on every point)
+            assert!(
+                lean_finite > 0 || (name == "guards: control" && f.has_lean_kernel()),
+                "{name}: the compensated stage never applied"
+            );
+        }
+    }
+
+    #[test]
+    fn row_judgements_agree_with_the_exact_judgement_on_the_stress_cases() {
+        use crate::certify::measures::{Leaf, Tolerance};
+        let tols = [
+            "exact",
+            "ulps=1",
+            "ulps=3",
+            "ulps=64",
+            "abs=1e-16",
+            "rel=1e-16",
+            "rel=1e-12",
+            "correctly_rounded",
+            "faithful",
+            "cond=2",
+            "cond=64",
+            "bound",
+        ];
+        let mut st = 5u64;
+        let mut compensated_decided = 0;
+        for (name, net, pts) in stress_cases() {
+            let (m, n, dim) = (net.m(), net.degree(), net.dim());
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let exact = ExactEvaluator::new(&exact_net);
+            let mut sc = Scratch::default();
+            let mut enc = vec![Enclosure::default(); dim];
+            for lam in &pts {
+                let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+                let pe = exact.evaluate(&l, Algorithm::Casteljau);
+                let s = crate::certify::bound::condition(&exact_net, &l);
+                for p in [Precision::F64, Precision::F32] {
+                    // the claimed row: each coordinate the rounded exact value, moved by −2..2 units
+                    let mut ys = Vec::with_capacity(dim);
+                    for exact_c in &pe {
+                        let mut y = match p {
+                            Precision::F64 => round_f64(exact_c),
+                            Precision::F32 => f64::from(crate::number::round_f32(exact_c)),
+                        };
+                        let steps = (lcg(&mut st) * 5.0) as i32 - 2;
+                        for _ in 0..steps.abs() {
+                            y = match (p, steps > 0) {
+                                (Precision::F64, true) => y.next_up(),
+                                (Precision::F64, false) => y.next_down(),
+                                (Precision::F32, true) => f64::from((y as f32).next_up()),
+                                (Precision::F32, false) => f64::from((y as f32).next_down()),
+                            };
+                        }
+                        ys.push(y);
+                    }
+                    if ys.iter().any(|y| !y.is_finite()) {
+                        continue;
+                    }
+                    for t in tols {
+                        let tol = Tolerance::parse(t).unwrap();
+                        let th = Thresholds::new(&tol, p, Algorithm::Casteljau, m, n);
+                        let truth = (0..dim).all(|c| {
+                            let leaf = Leaf {
+                                precision: Some(p),
+                                condition: Some(s[c].clone()),
+                                bound: crate::certify::bound::a_priori(
+                                    Algorithm::Casteljau,
+                                    p,
+                                    m,
+                                    n,
+                                    &s[c],
+                                    &l,
+                                ),
+                            };
+                            tol.accepts(&exact_f64(ys[c]).unwrap(), &pe[c], &leaf)
+                                .unwrap()
+                        });
+                        let r = f.judge(&th, lam, &ys, &mut sc, &mut enc);
+                        match r.decision {
+                            Decision::Pass => assert!(truth, "{name} {t} {p:?} {lam:?} {ys:?}"),
+                            Decision::Fail => assert!(!truth, "{name} {t} {p:?} {lam:?} {ys:?}"),
+                            Decision::Undecided => {}
+                        }
+                        if r.decision == Decision::Pass {
+                            // the ulps figure bounds the true error
+                            for c in 0..dim {
+                                let e = crate::number::ulps_error_f64(
+                                    &exact_f64(ys[c]).unwrap(),
+                                    &pe[c],
+                                );
+                                if p == Precision::F64 && r.ulps.is_finite() {
+                                    assert!(
+                                        e <= BigRational::from_float(r.ulps).unwrap(),
+                                        "{name} {t} ulps"
+                                    );
+                                }
+                            }
+                        }
+                        if r.decision != Decision::Undecided
+                            && f.has_lean_kernel()
+                            && f.compensated_first(&th)
+                        {
+                            compensated_decided += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(compensated_decided > 100, "{compensated_decided}");
+    }
+
+    #[test]
+    fn tight_tolerances_go_to_the_compensated_stage_first() {
+        use crate::certify::measures::Tolerance;
+        let net = ControlNet::new(
+            Simplex::new(2, 3),
+            3,
+            (0..30).map(|i| 1.0 / (i as f64 + 1.0)).collect(),
+        );
+        let f = Filter::new(&net);
+        assert!(f.has_lean_kernel());
+        let first = |t: &str, p| {
+            let th = Thresholds::new(&Tolerance::parse(t).unwrap(), p, Algorithm::Casteljau, 2, 3);
+            f.compensated_first(&th)
+        };
+        for t in [
+            "exact",
+            "correctly_rounded",
+            "faithful",
+            "ulps=4",
+            "rel=1e-15",
+            "cond=2",
+        ] {
+            assert!(first(t, Precision::F64), "{t}");
+        }
+        for t in ["cond=9", "bound", "ulps=64", "rel=1e-12", "abs=1e-6"] {
+            assert!(!first(t, Precision::F64), "{t}");
+        }
+        for t in ["correctly_rounded", "faithful", "ulps=1"] {
+            assert!(!first(t, Precision::F32), "{t}");
+        }
     }
 }
