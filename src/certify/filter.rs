@@ -370,8 +370,18 @@ impl Filter {
 
     /// Enclose every coordinate of `P(λ)` (`λ` has `m + 1` float coordinates, any sum).
     pub fn evaluate(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+        debug_assert_eq!(lambda.len(), self.m + 1);
+        if let Some(lean) = &self.lean {
+            let apex = lean.run_plain(lambda, &mut scratch.lean);
+            self.finish_plain(lambda, apex.value, apex.nu, apex.s, out);
+        } else {
+            self.evaluate_generic(lambda, scratch, out);
+        }
+    }
+
+    /// The plain stage for any m and dim (the lean kernel computes the same numbers).
+    fn evaluate_generic(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
         let (m, dim) = (self.m, self.dim);
-        debug_assert_eq!(lambda.len(), m + 1);
         let Scratch {
             v,
             mu,
@@ -418,21 +428,46 @@ impl Filter {
             std::mem::swap(mu, mu2);
             std::mem::swap(s, s2);
         }
+        self.finish_plain(lambda, &v[..dim], &mu[..dim], &s[..dim], out);
+    }
+
+    /// `Σ_{j≤n} (Σ|λ_k|)^j` (for the absolute allowances carried to the apex) and
+    /// `Σ_{j<n} (Σ|λ_k|)^j` (for the a-priori bound's underflow term).
+    fn geometric(&self, lambda: &[f64]) -> (f64, f64) {
+        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
+        let mut below = 0.0;
+        let mut power = 1.0;
+        for _ in 0..self.n {
+            below += power;
+            power *= sum_abs;
+        }
+        (below + power, below)
+    }
+
+    /// The plain enclosures from the apex's value, running bound and condition number.
+    ///
+    /// The absolute allowance `mu_absolute` for underflow in computing `μ` and `s` themselves
+    /// (per operation) is carried to the apex by the later steps with weight at most `Σ|λ_k|`
+    /// per step, so it is scaled by `Σ_{j≤n} (Σ|λ_k|)^j ≥ 1`.
+    fn finish_plain(
+        &self,
+        lambda: &[f64],
+        v: &[f64],
+        mu: &[f64],
+        s: &[f64],
+        out: &mut [Enclosure],
+    ) {
+        let m = self.m;
         // The filter's own evaluation is de Casteljau in f64, so its a-priori bound applies too
         // (bound.rs): |ŷ − P| ≤ γ_{(m+1)n} Σ|c_i|B_i(|λ|) + 2(m+1)η Σ_{j<n} s^j, s = Σ|λ_k|.
         // The running bound is sharper near cancellation, the a-priori one on well-conditioned
         // data; both hold, so we take the smaller.
-        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
-        let mut geometric = 0.0;
-        let mut power = 1.0;
-        for _ in 0..self.n {
-            geometric += power;
-            power *= sum_abs;
-        }
-        let underflow = 2.0 * (m + 1) as f64 * TINY * geometric * (1.0 + R) + TINY;
-        for c in 0..dim {
-            let s_hi = s[c] * (1.0 + self.s_rel) + self.mu_absolute;
-            let running = mu[c] * self.mu_inflate + self.mu_absolute;
+        let (all, below) = self.geometric(lambda);
+        let absolute = self.mu_absolute * all * (1.0 + R);
+        let underflow = 2.0 * (m + 1) as f64 * TINY * below * (1.0 + R) + TINY;
+        for c in 0..self.dim {
+            let s_hi = s[c] * (1.0 + self.s_rel) + absolute;
+            let running = mu[c] * self.mu_inflate + absolute;
             let a_priori = self.gamma * s_hi * (1.0 + R) + underflow;
             out[c] = Enclosure {
                 value: v[c],
@@ -442,7 +477,7 @@ impl Filter {
                 } else {
                     running
                 },
-                s_lo: (s[c] * (1.0 - self.s_rel) - self.mu_absolute).max(0.0),
+                s_lo: (s[c] * (1.0 - self.s_rel) - absolute).max(0.0),
                 s_hi,
             };
         }
@@ -606,14 +641,7 @@ impl Filter {
         scratch: &mut Scratch,
         out: &mut [Enclosure],
     ) {
-        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
-        let mut geometric = 0.0;
-        let mut power = 1.0;
-        for _ in 0..=self.n {
-            geometric += power;
-            power *= sum_abs;
-        }
-        let absolute = self.mu_absolute * geometric * (1.0 + R);
+        let absolute = self.mu_absolute * self.geometric(lambda).0 * (1.0 + R);
         let (ok, apex) = lean.run(lambda, &mut scratch.lean);
         kernel::enclosures(
             ok && absolute.is_finite(),
@@ -698,6 +726,7 @@ impl Filter {
             std::mem::swap(s, s2);
             std::mem::swap(mu, mu2);
         }
+        let absolute = self.mu_absolute * self.geometric(lambda).0 * (1.0 + R);
         for c in 0..dim {
             // s_lo and s_hi (the condition number) stay those of the plain enclosure in `out`
             out[c].value = v[c];
@@ -705,7 +734,7 @@ impl Filter {
             out[c].mu = if bad || !s[c].is_finite() {
                 f64::NAN
             } else {
-                mu[c] * self.mu_inflate + self.mu_absolute
+                mu[c] * self.mu_inflate + absolute
             };
         }
     }
@@ -1099,6 +1128,19 @@ mod tests {
                 let p = exact.evaluate(&l, Algorithm::Casteljau);
                 let s = crate::certify::bound::condition(&exact_net, &l);
                 f.evaluate(lam, &mut sc, &mut plain);
+                // the lean plain kernel computes the generic code's numbers
+                let mut plain_generic = vec![Enclosure::default(); dim];
+                f.evaluate_generic(lam, &mut sc, &mut plain_generic);
+                for (a, b) in plain.iter().zip(&plain_generic) {
+                    let same = |x: f64, y: f64| x == y || (x.is_nan() && y.is_nan());
+                    assert!(
+                        same(a.value, b.value)
+                            && same(a.mu, b.mu)
+                            && same(a.s_lo, b.s_lo)
+                            && same(a.s_hi, b.s_hi),
+                        "{name}: lean plain {a:?} generic {b:?} at {lam:?}"
+                    );
+                }
                 // the lean kernel (where compiled) overwrites the condition numbers: start from
                 // nonsense to see that it does
                 comp.iter_mut().for_each(|e| {

@@ -1,5 +1,8 @@
-//! The lean compensated kernel: [`Filter::evaluate_compensated`](super::Filter) for small `m`
-//! and `dim`, with the loops unrolled at compile time and one in-place buffer per quantity.
+//! The lean kernels: [`Filter::evaluate_compensated`](super::Filter) and the plain
+//! [`Filter::evaluate`](super::Filter) for small `m` and `dim` (`m ≤ 3`, `dim ≤ 4`), with the
+//! loops unrolled at compile time over one in-place buffer. The plain kernel performs the generic
+//! code's operations in the generic code's order (a test checks the numbers are identical); the
+//! compensated one is described below.
 //!
 //! **In place.** The node `β` of degree `q − 1` (a step's output) overwrites the slot of its
 //! child `β + e_0`. Its other readers are the parents `β + e_0 − e_k` (`k ≥ 1`), whose first
@@ -77,6 +80,8 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
 
 /// One monomorphised kernel.
 type KernelFn = fn(&Lean, &[f64], &mut Vec<f64>) -> bool;
+/// One monomorphised plain kernel.
+type PlainFn = fn(&Lean, &[f64], &mut Vec<f64>);
 
 /// Quantities of a node in the buffer.
 const V: usize = 0;
@@ -106,12 +111,14 @@ pub(super) struct Lean {
     /// Every control coordinate is 0 or in `[2^-500, 2^500]`.
     control_ok: bool,
     kernel: KernelFn,
+    plain: PlainFn,
 }
 
 /// Buffers of the lean kernel (one node per control point: six groups of `lanes` numbers).
 #[derive(Clone, Debug, Default)]
 pub(super) struct LeanScratch {
     buf: Vec<f64>,
+    plain: Vec<f64>,
 }
 
 /// The apex of one lean run, per coordinate (`lanes` entries; the first `dim` count).
@@ -125,7 +132,10 @@ pub(super) struct Apex<'a> {
 macro_rules! pick {
     ($m1:expr; $($a:literal),*; $lanes:expr) => {
         match ($m1, $lanes) {
-            $( ($a, 2) => Some(run::<$a, 2> as KernelFn), ($a, 4) => Some(run::<$a, 4> as KernelFn), )*
+            $(
+                ($a, 2) => Some((run::<$a, 2> as KernelFn, run_plain::<$a, 2> as PlainFn)),
+                ($a, 4) => Some((run::<$a, 4> as KernelFn, run_plain::<$a, 4> as PlainFn)),
+            )*
             _ => None,
         }
     };
@@ -144,7 +154,7 @@ impl Lean {
         if n == 0 {
             return None;
         }
-        let kernel = pick!(m + 1; 2, 3, 4; lanes)?;
+        let (kernel, plain) = pick!(m + 1; 2, 3, 4; lanes)?;
         let nodes = Simplex::new(m, n).len();
         // slot[r] of the nodes of the current degree q (the children), by rank
         let mut slot: Vec<usize> = (0..nodes).collect();
@@ -197,7 +207,23 @@ impl Lean {
             control,
             control_ok: coords.iter().all(|&x| in_range(x, VALUE_MIN, VALUE_MAX)),
             kernel,
+            plain,
         })
+    }
+
+    /// Run the plain kernel at `lambda`: the apex's value, running bound μ (in `nu`) and
+    /// condition number; `corr` is empty.
+    pub(super) fn run_plain<'a>(&self, lambda: &[f64], sc: &'a mut LeanScratch) -> Apex<'a> {
+        (self.plain)(self, lambda, &mut sc.plain);
+        let l = self.lanes;
+        let base = self.apex * 3 * l;
+        let q = |k: usize| &sc.plain[base + k * l..base + k * l + self.dim];
+        Apex {
+            value: q(0),
+            corr: &[],
+            nu: q(1),
+            s: q(2),
+        }
     }
 
     /// Run the kernel at `lambda` (`m + 1` floats); false when a guard tripped (the apex is then
@@ -330,6 +356,80 @@ fn run<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: &mut V
         ok &= vmax[c] <= VALUE_MAX && vmin[c] >= VALUE_MIN;
     }
     ok
+}
+
+/// The plain stage ([`super::Filter::evaluate`]) for `M1 = m + 1` barycentric coordinates and
+/// `L` lanes, in place like [`run`]: per node the value, the running bound
+/// `μ = Σ_k |λ_k| μ_k + ε (Σ_k |p_k| + Σ_{k≥1} |s_k|) + (m + 1) η` and the condition number,
+/// with the same operations in the same order as the generic code (so the same numbers).
+fn run_plain<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: &mut Vec<f64>) {
+    let len = lean.nodes * 3 * L;
+    if buf.len() != len {
+        buf.resize(len, 0.0);
+    }
+    let nodes: &mut [[[f64; L]; 3]] = buf.as_chunks_mut::<L>().0.as_chunks_mut::<3>().0;
+    let control: &[[[f64; L]; 4]] = lean.control.as_chunks::<L>().0.as_chunks::<4>().0;
+    let lam: [f64; M1] = std::array::from_fn(|k| lambda[k]);
+    let la: [f64; M1] = lam.map(f64::abs);
+    let (first, rest) = lean.stencil.split_at(lean.first * (M1 + 1));
+    for row in first.chunks_exact(M1 + 1) {
+        let kids: [&[[f64; L]; 4]; M1] = std::array::from_fn(|k| &control[row[k + 1] as usize]);
+        let mut acc = [0f64; L];
+        let mut rounding = [0f64; L];
+        let mut cond = [0f64; L];
+        for k in 0..M1 {
+            let kid = kids[k];
+            for c in 0..L {
+                let p = lam[k] * kid[V][c];
+                if k == 0 {
+                    acc[c] = p;
+                    rounding[c] = p.abs();
+                    cond[c] = la[k] * kid[ABS][c];
+                } else {
+                    acc[c] += p;
+                    rounding[c] += p.abs() + acc[c].abs();
+                    cond[c] += la[k] * kid[ABS][c];
+                }
+            }
+        }
+        let out = &mut nodes[row[0] as usize];
+        for c in 0..L {
+            out[0][c] = acc[c];
+            // the children's μ are 0: Σ|λ_k|·0 = 0 exactly
+            out[1][c] = EPS * rounding[c] + M1 as f64 * TINY;
+            out[2][c] = cond[c];
+        }
+    }
+    for row in rest.chunks_exact(M1 + 1) {
+        let kids: [[[f64; L]; 3]; M1] = std::array::from_fn(|k| nodes[row[k + 1] as usize]);
+        let mut acc = [0f64; L];
+        let mut rounding = [0f64; L];
+        let mut carried = [0f64; L];
+        let mut cond = [0f64; L];
+        for k in 0..M1 {
+            let kid = &kids[k];
+            for c in 0..L {
+                let p = lam[k] * kid[0][c];
+                if k == 0 {
+                    acc[c] = p;
+                    rounding[c] = p.abs();
+                    carried[c] = la[k] * kid[1][c];
+                    cond[c] = la[k] * kid[2][c];
+                } else {
+                    acc[c] += p;
+                    rounding[c] += p.abs() + acc[c].abs();
+                    carried[c] += la[k] * kid[1][c];
+                    cond[c] += la[k] * kid[2][c];
+                }
+            }
+        }
+        let out = &mut nodes[row[0] as usize];
+        for c in 0..L {
+            out[0][c] = acc[c];
+            out[1][c] = carried[c] + EPS * rounding[c] + M1 as f64 * TINY;
+            out[2][c] = cond[c];
+        }
+    }
 }
 
 /// The lean kernel's result as enclosures (the constants as in [`super::Filter`]).
