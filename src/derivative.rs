@@ -100,6 +100,11 @@ pub struct TangentFrame {
     /// `(n²/D) (c^{n−1}_{010} − c^{n−1}_{100}) × (c^{n−1}_{001} − c^{n−1}_{100})`, `D = 2·signedArea(T)`
     /// (FORMULAS.md §7): equal to [`TangentFrame::normal`] (triangles in `ℝ³` only).
     pub normal_from_intermediate: Option<Vec<BigRational>>,
+    /// Whether the point is regular: the `m` partials are linearly independent (their Gram
+    /// determinant `det(J Jᵀ)`, `J` the `m × d` matrix of partials, is non-zero). At a singular
+    /// point (a collapsed corner, a cusp, a degenerate net) the first partials do not span a
+    /// tangent plane and the normal above is the zero vector.
+    pub regular: bool,
 }
 
 /// The tangent frame of a patch at barycentric `λ` over `domain` (degree `n >= 1`, any `m`).
@@ -143,24 +148,55 @@ pub fn tangent_frame(
             .collect();
         partials.push(v);
     }
-    let (normal, normal_from_intermediate) = if m == 2 && net.dim() == 3 {
-        let k = &nq * &nq / domain.determinant();
-        let c = &intermediate;
-        let via = cross(&sub(&c[1], &c[0]), &sub(&c[2], &c[0]))
-            .into_iter()
-            .map(|x| x * &k)
+    let scale = (m == 2 && net.dim() == 3).then(|| &nq * &nq / domain.determinant());
+    Ok(TangentFrame::assemble(point, intermediate, partials, scale))
+}
+
+impl TangentFrame {
+    /// The frame from its point, level-`(n−1)` points and partials; for triangles in `ℝ³`
+    /// (`scale` given) the normal `p_x × p_y` and `scale · (c_1 − c_0) × (c_2 − c_0)` (`n²/D` for
+    /// a polynomial patch); and whether the point is regular.
+    pub fn assemble(
+        point: Vec<BigRational>,
+        intermediate: Vec<Vec<BigRational>>,
+        partials: Vec<Vec<BigRational>>,
+        scale: Option<BigRational>,
+    ) -> TangentFrame {
+        let (normal, normal_from_intermediate) = match scale {
+            Some(k) => {
+                let c = &intermediate;
+                let via = cross(&sub(&c[1], &c[0]), &sub(&c[2], &c[0]))
+                    .into_iter()
+                    .map(|x| x * &k)
+                    .collect();
+                (Some(cross(&partials[0], &partials[1])), Some(via))
+            }
+            None => (None, None),
+        };
+        let m = partials.len();
+        let gram = (0..m)
+            .map(|a| {
+                (0..m)
+                    .map(|b| {
+                        partials[a]
+                            .iter()
+                            .zip(&partials[b])
+                            .map(|(x, y)| x * y)
+                            .sum()
+                    })
+                    .collect()
+            })
             .collect();
-        (Some(cross(&partials[0], &partials[1])), Some(via))
-    } else {
-        (None, None)
-    };
-    Ok(TangentFrame {
-        point,
-        intermediate,
-        partials,
-        normal,
-        normal_from_intermediate,
-    })
+        let regular = !crate::domain::determinant(gram).is_zero();
+        TangentFrame {
+            point,
+            intermediate,
+            partials,
+            normal,
+            normal_from_intermediate,
+            regular,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -188,6 +224,38 @@ mod tests {
         );
         assert_eq!(f.normal, Some(r(&["-22/9", "2/9", "4/3"])));
         assert_eq!(f.normal_from_intermediate, f.normal);
+        assert!(f.regular);
+    }
+
+    #[test]
+    fn a_collapsed_corner_is_singular() {
+        // Quadratic with c200 = c110 = c101 = (0,0,0): at the corner (1,0,0) the level-1 points
+        // are those three control points, so both partials are zero; elsewhere it is regular.
+        let pts: Vec<Vec<BigRational>> = [
+            ["0", "0", "0"],
+            ["0", "0", "0"],
+            ["1", "0", "0"],
+            ["0", "0", "0"],
+            ["0", "1", "1"],
+            ["0", "1", "0"],
+        ]
+        .iter()
+        .map(|p| r(p))
+        .collect();
+        let net = ControlNet::from_points(2, 2, &pts);
+        let corner = tangent_frame(&net, &Domain::reference(2), &r(&["1", "0", "0"])).unwrap();
+        assert!(!corner.regular);
+        assert_eq!(corner.normal, Some(r(&["0", "0", "0"])));
+        let inside = tangent_frame(&net, &Domain::reference(2), &r(&["0", "1/2", "1/2"])).unwrap();
+        assert!(inside.regular);
+        // A curve (m = 1) in the plane: the Gram test is |p'|² ≠ 0; a net with equal control
+        // points has p' = 0 everywhere.
+        let flat = ControlNet::from_points(1, 2, &[r(&["1", "2"]), r(&["1", "2"]), r(&["1", "2"])]);
+        assert!(
+            !tangent_frame(&flat, &Domain::reference(1), &r(&["1/3", "2/3"]))
+                .unwrap()
+                .regular
+        );
     }
 
     #[test]

@@ -63,28 +63,47 @@ pub fn net_f32(net: &ControlNet<BigRational>) -> ControlNet<f32> {
 macro_rules! glam_casteljau {
     ($name:ident, $vec:ty, $s:ty) => {
         /// de Casteljau on a triangle with points in `ℝ³`, same operation order as the generic
-        /// code. `points` in canonical order (`(n+1)(n+2)/2` of them).
+        /// code. `points` in canonical order (`(n+1)(n+2)/2` of them). The pyramid runs in place
+        /// in one buffer (on the stack up to degree 20).
         pub fn $name(points: &[$vec], n: usize, u: [$s; 3]) -> $vec {
-            debug_assert_eq!(points.len(), (n + 1) * (n + 2) / 2);
-            let mut level: Vec<$vec> = points.to_vec();
-            for q in (1..=n).rev() {
-                // level has degree q; child ranks of β = (i, j, k) at degree q - 1 are
-                // rank_q(i+1, j, k) = base + j, rank_q(i, j+1, k) = base + j + 1 and
-                // rank_q(i, j, k+1) = base_next + j, with base = rank_q(q-k, 0, k).
-                let mut out_pos = 0;
-                for k in 0..q {
-                    let base = k * (2 * q + 3 - k) / 2;
-                    let base_next = (k + 1) * (2 * q + 2 - k) / 2;
-                    for j in 0..q - k {
-                        let a = level[base + j];
-                        let b = level[base + j + 1];
-                        let c = level[base_next + j];
-                        level[out_pos] = a * u[0] + b * u[1] + c * u[2];
-                        out_pos += 1;
+            let len = (n + 1) * (n + 2) / 2;
+            assert_eq!(
+                points.len(),
+                len,
+                "control net size does not match the degree"
+            );
+            fn run(level: &mut [$vec], n: usize, u: [$s; 3]) -> $vec {
+                for q in (1..=n).rev() {
+                    // level has degree q; child ranks of β = (i, j, k) at degree q - 1 are
+                    // rank_q(i+1, j, k) = base + j, rank_q(i, j+1, k) = base + j + 1 and
+                    // rank_q(i, j, k+1) = base_next + j, with base = rank_q(q-k, 0, k); β's own
+                    // rank at degree q − 1 is base − k + j, never after a node still to be read.
+                    for k in 0..q {
+                        let base = k * (2 * q + 3 - k) / 2;
+                        let base_next = base + q + 1 - k;
+                        for j in 0..q - k {
+                            let a = level[base + j];
+                            let b = level[base + j + 1];
+                            let c = level[base_next + j];
+                            level[base - k + j] = a * u[0] + b * u[1] + c * u[2];
+                        }
                     }
                 }
+                level[0]
             }
-            level[0]
+            macro_rules! on_stack {
+                ($cap:expr) => {{
+                    let mut buf = [<$vec>::ZERO; $cap];
+                    buf[..len].copy_from_slice(points);
+                    run(&mut buf[..len], n, u)
+                }};
+            }
+            match n {
+                0..=4 => on_stack!(15),
+                5..=10 => on_stack!(66),
+                11..=20 => on_stack!(231),
+                _ => run(&mut points.to_vec(), n, u),
+            }
         }
     };
 }
@@ -408,7 +427,8 @@ mod tests {
 
     #[test]
     fn glam_kernels_are_bit_identical_to_the_generic_code() {
-        for n in [0, 1, 2, 3, 7, 12] {
+        // every buffer size of the kernel: the stack arrays (n ≤ 4, ≤ 10, ≤ 20) and the heap
+        for n in [0, 1, 2, 3, 4, 5, 7, 10, 12, 20, 21, 25] {
             let net = pseudo_random_net(n, n as u64 + 7);
             let u = ["0.2", "0.7", "0.1"].map(|t| parse_rational(t).unwrap());
             let n64 = net_f64(&net);

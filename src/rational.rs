@@ -164,29 +164,133 @@ impl RationalPatch {
         lambda: &[BigRational],
         direction: &[BigRational],
     ) -> Result<Vec<BigRational>, CoreError> {
+        self.derivative_of_order(lambda, &[direction])
+    }
+
+    /// The mixed directional derivative `D_{d^{(1)}} ⋯ D_{d^{(r)}} p(λ)` of any order `r`
+    /// (`r` may exceed the degree: a rational patch is not a polynomial).
+    ///
+    /// Leibniz's rule on `X = p · W`, over the subsets `S` of the directions, gives
+    /// `D_S p = (D_S X − Σ_{T ⊊ S} D_T p · D_{S∖T} W) / W`, solved for growing `S` from
+    /// `D_∅ p = X / W`. The homogeneous derivatives are blossoms:
+    /// `D_S F(λ) = n!/(n−|S|)! · F[d^{(S)}, λ^{n−|S|}]`, zero when `|S| > n`. The work grows as
+    /// `3^r`; orders above 12 are refused.
+    pub fn derivative_of_order(
+        &self,
+        lambda: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        const MAX_ORDER: usize = 12;
+        let r = directions.len();
+        if r > MAX_ORDER {
+            return Err(CoreError::Invalid(format!(
+                "a derivative of order {r} of a rational patch: at most {MAX_ORDER} directions (the work grows as 3^order)"
+            )));
+        }
         let h = self.homogeneous();
         let n = h.degree();
-        let value = casteljau::evaluate(&h, lambda);
-        let (w, x) = value.split_last().expect("d + 1 coordinates");
+        let dim = h.dim() - 1;
+        // D_S (X, W) for every subset S (bit k: direction k).
+        let hom: Vec<Vec<BigRational>> = (0..1usize << r)
+            .map(|set| {
+                let size = set.count_ones() as usize;
+                if size > n {
+                    return vec![BigRational::zero(); dim + 1];
+                }
+                let mut args: Vec<&[BigRational]> = (0..r)
+                    .filter(|k| set >> k & 1 == 1)
+                    .map(|k| directions[k])
+                    .collect();
+                args.extend(std::iter::repeat_n(lambda, n - size));
+                let f =
+                    BigRational::from_integer(crate::derivative::falling_factorial(n, size).into());
+                casteljau::blossom(&h, &args)
+                    .into_iter()
+                    .map(|c| c * &f)
+                    .collect()
+            })
+            .collect();
+        let w = &hom[0][dim];
         if w.is_zero() {
             return Err(undefined(lambda));
         }
-        if n == 0 {
-            return Ok(vec![BigRational::zero(); x.len()]);
+        let mut p: Vec<Vec<BigRational>> = vec![Vec::new(); 1 << r];
+        // subsets in an order where every proper subset comes first (numerically smaller)
+        for set in 0..1usize << r {
+            let mut v: Vec<BigRational> = hom[set][..dim].to_vec();
+            // proper subsets T of S: T = (t − 1) & S walking down from S
+            let mut t = set;
+            while t != 0 {
+                t = (t - 1) & set;
+                let dw = &hom[set & !t][dim];
+                if !dw.is_zero() {
+                    for (vc, pc) in v.iter_mut().zip(&p[t]) {
+                        *vc -= pc * dw;
+                    }
+                }
+            }
+            p[set] = v.into_iter().map(|x| x / w).collect();
         }
-        let mut args: Vec<&[BigRational]> = vec![direction];
-        args.extend(std::iter::repeat_n(lambda, n - 1));
-        let nn = BigRational::from_integer(n.into());
-        let dh: Vec<BigRational> = casteljau::blossom(&h, &args)
-            .into_iter()
-            .map(|c| c * &nn)
-            .collect();
-        let (dw, dx) = dh.split_last().expect("d + 1 coordinates");
+        Ok(p.pop().expect("the full set"))
+    }
+
+    /// The tangent frame at `λ` over `domain` (FORMULAS.md §7 for the polynomial case): the
+    /// point, the level-`(n−1)` de Casteljau points of the homogeneous net projected
+    /// (`c_k = X_k / W_k`, through which the tangent plane passes), the partials by the quotient
+    /// rule, and for triangles in `ℝ³` the normal `p_x × p_y` beside
+    /// `(n²/D) · W_0 W_1 W_2 / W³ · (c_1 − c_0) × (c_2 − c_0)` (`W` the weight at `λ`, `W_k` those
+    /// of the level-`(n−1)` points, `D = 2·signed area`): with `μ_k = λ_k W_k / W` the point is
+    /// `Σ μ_k c_k`, `p_x = (n/W) Σ δ_k W_k (c_k − p)`, and `(c_k − p) × (c_l − p) = μ_m (c_1 − c_0) × (c_2 − c_0)`
+    /// for `(k, l, m)` cyclic, which gives the product.
+    pub fn tangent_frame(
+        &self,
+        domain: &crate::domain::Domain,
+        lambda: &[BigRational],
+    ) -> Result<crate::derivative::TangentFrame, CoreError> {
+        let h = self.homogeneous();
+        let n = h.degree();
+        let hf = crate::derivative::tangent_frame(&h, domain, lambda)?;
+        let dim = h.dim() - 1;
+        let (w, x) = hf.point.split_last().expect("d + 1 coordinates");
+        if w.is_zero() {
+            return Err(undefined(lambda));
+        }
+        let point: Vec<BigRational> = x.iter().map(|c| c / w).collect();
+        let mut intermediate = Vec::with_capacity(hf.intermediate.len());
+        for (k, c) in hf.intermediate.iter().enumerate() {
+            let (wk, xk) = c.split_last().expect("d + 1 coordinates");
+            if wk.is_zero() {
+                return Err(CoreError::Invalid(format!(
+                    "the level-{} de Casteljau point {k} has weight 0 at {}: it is at infinity, so the tangent frame is not defined there",
+                    n - 1,
+                    crate::domain::format_tuple(lambda)
+                )));
+            }
+            intermediate.push(xk.iter().map(|v| v / wk).collect::<Vec<_>>());
+        }
         let w2 = w * w;
-        Ok(x.iter()
-            .zip(dx)
-            .map(|(xc, dxc)| (dxc * w - xc * dw) / &w2)
-            .collect())
+        let partials: Vec<Vec<BigRational>> = hf
+            .partials
+            .iter()
+            .map(|d| {
+                (0..dim)
+                    .map(|c| (&d[c] * w - &x[c] * &d[dim]) / &w2)
+                    .collect()
+            })
+            .collect();
+        let scale = if domain.m() == 2 && dim == 3 {
+            let weights: BigRational = hf.intermediate.iter().map(|c| c[dim].clone()).product();
+            let nq = BigRational::from_integer(n.into());
+            Some(&nq * &nq / domain.determinant() * weights / (&w2 * w))
+        } else {
+            None
+        };
+        Ok(crate::derivative::TangentFrame::assemble(
+            point,
+            intermediate,
+            partials,
+            scale,
+        ))
     }
 
     /// The float path: the homogeneous net rounded to `F`, de Casteljau in `F` at the rounded
@@ -607,6 +711,51 @@ mod tests {
         assert!(e.contains("weight 0"), "{e}");
     }
 
+    #[test]
+    fn derivatives_of_any_order() {
+        // Constant weights: the rational patch is the polynomial one, derivatives of every order
+        // agree, and vanish above the degree.
+        let poly = crate::testing::finn();
+        let r = RationalPatch::new(
+            Patch {
+                name: None,
+                net: poly.clone(),
+                domain: None,
+            },
+            vec![BigRational::from_integer(5.into()); poly.len()],
+        );
+        let lam = crate::testing::r(&["1/2", "1/3", "1/6"]);
+        let d = crate::testing::r(&["1", "0", "-1"]);
+        let e = crate::testing::r(&["0", "1", "-1"]);
+        for dirs in [vec![&d[..]], vec![&d[..], &e[..]]] {
+            assert_eq!(
+                r.derivative_of_order(&lam, &dirs).unwrap(),
+                crate::derivative::directional_derivative(&poly, &dirs, &lam)
+            );
+        }
+        assert!(
+            r.derivative_of_order(&lam, &[&d, &e, &d])
+                .unwrap()
+                .iter()
+                .all(Zero::is_zero)
+        );
+        // Elevation keeps the function, so every derivative (here of order 3 and 5, above the
+        // octant's degree 4 too) is the same from the elevated net.
+        let p = octant();
+        let up = p.elevate(2).unwrap();
+        let lam = crate::testing::r(&["1/3", "1/4", "5/12"]);
+        let dirs: Vec<&[BigRational]> = vec![&d, &e, &d];
+        assert_eq!(
+            p.derivative_of_order(&lam, &dirs).unwrap(),
+            up.derivative_of_order(&lam, &dirs).unwrap()
+        );
+        let five: Vec<&[BigRational]> = vec![&d, &e, &d, &e, &e];
+        let v = p.derivative_of_order(&lam, &five).unwrap();
+        assert!(v.iter().any(|x| !x.is_zero()));
+        assert_eq!(v, up.derivative_of_order(&lam, &five).unwrap());
+        assert!(p.derivative_of_order(&lam, &[&d[..]; 13]).is_err());
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
         #[test]
@@ -631,6 +780,56 @@ mod tests {
             }
             let mu: Vec<BigRational> = lam.iter().zip(&rho).map(|(l, r)| l / r).collect();
             prop_assert_eq!(q2.evaluate(&mu).unwrap(), x);
+        }
+
+        #[test]
+        fn second_order_matches_the_closed_form_quotient_rule(
+            a in 0i64..30, b in 0i64..30, c in 1i64..30,
+            d0 in -5i64..6, d1 in -5i64..6, e0 in -5i64..6, e1 in -5i64..6,
+        ) {
+            // D_e D_d (X/W) = X_de/W − (X_d W_e + X_e W_d + X W_de)/W² + 2 X W_d W_e/W³,
+            // from the polynomials of the homogeneous form (not Leibniz's recursion over subsets).
+            let s = a + b + c;
+            let lam = vec![BigRational::new(a.into(), s.into()), BigRational::new(b.into(), s.into()), BigRational::new(c.into(), s.into())];
+            let dir = |x: i64, y: i64| vec![BigRational::from_integer(x.into()), BigRational::from_integer(y.into()), BigRational::from_integer((-x - y).into())];
+            let (d, e) = (dir(d0, d1), dir(e0, e1));
+            let p = octant();
+            let h = p.homogeneous_form();
+            let along = |f: &Polynomial, v: &[BigRational]| -> Polynomial {
+                (0..3).fold(Polynomial::zero(3), |acc, k| acc.add(&f.derivative(k).scale(&v[k])))
+            };
+            let (w, x) = h.split_last().unwrap();
+            let at = |f: &Polynomial| f.evaluate(&lam);
+            let (wv, wd, we, wde) = (at(w), at(&along(w, &d)), at(&along(w, &e)), at(&along(&along(w, &d), &e)));
+            let want: Vec<BigRational> = x
+                .iter()
+                .map(|xc| {
+                    let (xv, xd, xe, xde) = (at(xc), at(&along(xc, &d)), at(&along(xc, &e)), at(&along(&along(xc, &d), &e)));
+                    &xde / &wv - (&xd * &we + &xe * &wd + &xv * &wde) / (&wv * &wv)
+                        + BigRational::from_integer(2.into()) * &xv * &wd * &we / (&wv * &wv * &wv)
+                })
+                .collect();
+            prop_assert_eq!(p.derivative_of_order(&lam, &[&d, &e]).unwrap(), want);
+        }
+
+        #[test]
+        fn rational_tangent_frame_is_consistent(
+            a in 0i64..30, b in 0i64..30, c in 1i64..30,
+        ) {
+            // On the sphere the normal is radial; the projected intermediate points give the same
+            // normal through (n²/D) W_0 W_1 W_2 / W³ (c_1 − c_0) × (c_2 − c_0); the partials are the
+            // quotient-rule derivatives along the domain's axes.
+            let s = a + b + c;
+            let lam = vec![BigRational::new(a.into(), s.into()), BigRational::new(b.into(), s.into()), BigRational::new(c.into(), s.into())];
+            let p = octant();
+            let f = p.tangent_frame(&crate::domain::Domain::reference(2), &lam).unwrap();
+            let nrm = f.normal.clone().unwrap();
+            prop_assert_eq!(f.normal_from_intermediate.clone().unwrap(), nrm.clone());
+            prop_assert!(crate::derivative::cross(&nrm, &f.point).iter().all(Zero::is_zero));
+            prop_assert!(f.regular);
+            let axis = |k: usize| { let mut v = vec![BigRational::zero(); 3]; v[k] = BigRational::one(); v[2] -= BigRational::one(); v };
+            prop_assert_eq!(&f.partials[0], &p.derivative(&lam, &axis(0)).unwrap());
+            prop_assert_eq!(&f.partials[1], &p.derivative(&lam, &axis(1)).unwrap());
         }
 
         #[test]

@@ -494,13 +494,40 @@ fn derivative_of_a_rational_patch() {
         .assert()
         .success()
         .stdout(predicate::str::contains("at (1, 0, 0): (0, 2, 0)"));
+    // second order: fixtures/beyond/derive.py, the closed-form second quotient rule
     tribez()
         .args(["derivative"])
         .arg(fixture("octant_quartic.toml"))
-        .args(["--at", "1,0,0", "--dir", "-1,1,0", "--dir", "-1,0,1"])
+        .args(["--at", "1/3,1/4,5/12", "--dir", "-1,1,0", "--dir", "-1,1,0"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "(-16565330304/4750104241, -22730325024/4750104241, -16409296800/4750104241)",
+        ));
+    // orders above 12 are refused (the work grows as 3^order)
+    let mut many = vec!["derivative", "--at", "1/3,1/4,5/12"];
+    for _ in 0..13 {
+        many.extend(["--dir", "-1,1,0"]);
+    }
+    tribez()
+        .args(&many[..1])
+        .arg(fixture("octant_quartic.toml"))
+        .args(&many[1..])
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("first-order derivatives only"));
+        .stderr(predicate::str::contains("at most 12 directions"));
+    // the tangent frame: the normal is radial (each component 12132288/2825761 times p's) and
+    // equals the one from the projected intermediate points
+    tribez()
+        .args(["tangent"])
+        .arg(fixture("octant_quartic.toml"))
+        .args(["--at", "1/3,1/4,5/12"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "normal p_x × p_y = (12374933760/4750104241, 11756187072/4750104241, 11161704960/4750104241)",
+        ))
+        .stdout(predicate::str::contains("(equal)"));
     let zero_corner = RATIONAL.replace("\"1,0,0\" = 1", "\"1,0,0\" = 0");
     fails(
         &zero_corner,
@@ -631,6 +658,72 @@ fn subdivide_a_rational_patch() {
         .assert()
         .success()
         .stdout(predicate::str::contains("[pieces.patch.weights]"));
+}
+
+#[test]
+fn halve_a_rational_patch() {
+    // The octant halved on edge 1,2. The new corner is the parent at (1/2, 1/2, 0), by hand on
+    // the edge w = 0 (weights 12, 12, 16, 24, 48; B_i = C(4,i)/16):
+    // x = (12 + 12·4 + 16·(3/4)·6 + 24·(1/2)·4)/(12 + 12·4 + 16·6 + 24·4 + 48) = 180/300 = 3/5,
+    // y = (12·(1/2)·4 + 16·(3/4)·6 + 24·4 + 48)/300 = 240/300 = 4/5.
+    let out = tribez()
+        .args(["halve", "--format", "json", "--edge", "1,2"])
+        .arg(fixture("octant_quartic.toml"))
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let pieces = j["pieces"].as_array().unwrap();
+    assert_eq!(pieces.len(), 2);
+    let dir = tempfile::tempdir().unwrap();
+    for (s, (piece, corner)) in pieces.iter().zip(["0,1,0", "1,0,0"]).enumerate() {
+        assert!(piece["patch"]["weights"].is_object(), "a rational half");
+        let p = write(
+            dir.path(),
+            &format!("half{s}.json"),
+            &piece["patch"].to_string(),
+        );
+        tribez()
+            .arg("eval")
+            .arg(&p)
+            .args(["--at", corner])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("(3/5, 4/5, 0)"));
+        // each half still lies on the unit sphere, as a polynomial identity
+        write(
+            dir.path(),
+            &format!("half{s}.claims.toml"),
+            &format!(
+                "patch = \"half{s}.json\"\n[[claim]]\nid = \"s\"\nop = \"implicit\"\nequation = \"x^2 + y^2 + z^2 - 1\"\nexpect = \"0\"\n"
+            ),
+        );
+    }
+    tribez().arg("reproduce").arg(dir.path()).assert().success();
+    // seed 003's add-and-halve gives the same halves
+    let again = tribez()
+        .args([
+            "halve",
+            "--format",
+            "json",
+            "--edge",
+            "1,2",
+            "--add-and-halve",
+        ])
+        .arg(fixture("octant_quartic.toml"))
+        .output()
+        .unwrap();
+    let k: serde_json::Value = serde_json::from_slice(&again.stdout).unwrap();
+    assert_eq!(k["pieces"], j["pieces"]);
+    // S-patches are refused with a one-line usage error
+    tribez()
+        .args(["halve", "--edge", "1,2"])
+        .arg(fixture("pentagon_depth2.toml"))
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("does not take S-patches"));
 }
 
 #[test]

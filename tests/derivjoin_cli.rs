@@ -135,6 +135,35 @@ fn tangent_finn_worked_example() {
 }
 
 #[test]
+fn tangent_flags_a_singular_point() {
+    // c200 = c110 = c101: at the corner (1,0,0) both partials vanish (hand derivation: the
+    // level-1 de Casteljau points there are exactly those three control points).
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("pinched.toml");
+    std::fs::write(
+        &p,
+        "degree = 2\n[control_points]\n\"2,0,0\" = [\"0\", \"0\", \"0\"]\n\"1,1,0\" = [\"0\", \"0\", \"0\"]\n\
+         \"0,2,0\" = [\"1\", \"0\", \"0\"]\n\"1,0,1\" = [\"0\", \"0\", \"0\"]\n\
+         \"0,1,1\" = [\"0\", \"1\", \"1\"]\n\"0,0,2\" = [\"0\", \"1\", \"0\"]\n",
+    )
+    .unwrap();
+    let path = p.to_str().unwrap();
+    let v = json(&["tangent", path, "--at", "1,0,0"]);
+    assert_eq!(v["regular"], false);
+    assert_eq!(strings(&v["normal"]), ["0", "0", "0"]);
+    assert_eq!(
+        json(&["tangent", path, "--at", "0,1/2,1/2"])["regular"],
+        true
+    );
+    let text = tribez()
+        .args(["tangent", path, "--at", "1,0,0"])
+        .output()
+        .unwrap();
+    assert!(text.status.success());
+    assert!(String::from_utf8_lossy(&text.stdout).contains("SINGULAR point"));
+}
+
+#[test]
 fn tangent_of_a_constant_is_an_error() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("c.toml");

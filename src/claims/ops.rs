@@ -13,7 +13,7 @@
 //! | `elevate` | optional `by` (default 1) | control points keyed like a patch file |
 //! | `matrix` | `kind` = `"halve"` (`degree`, optional `simplex`, `edge`, `piece`) or `"subpatch"` (`degree`, `vertices`) | the rows, a list of lists |
 //! | `derivative` | `at` or `cartesian`; `dirs` (barycentric directions) and/or `vectors` (Cartesian) | the derivative of order `len(dirs) + len(vectors)` |
-//! | `tangent` | `at` or `cartesian`; optional `part` | `{point, intermediate, partials, normal, spans_tangent_plane}` (or that part) |
+//! | `tangent` | `at` or `cartesian`; optional `part` | `{point, intermediate, partials, regular, normal, spans_tangent_plane}` (or that part) |
 //! | `edge_curve` | `from`, `to` (corners, 1-based) | control points of `t ↦ p((1−t) e_from + t e_to)` |
 //! | `join` | `patches = ["a", "b"]` (names under `[patches]`); optional `part` | `{c0, c1, g1, coplanarity, max_smoothness, mu, violations, g1_determinant}` (or that part) |
 //! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
@@ -629,27 +629,21 @@ fn derivative(inputs: &Inputs<'_>) -> Result<Value, InputError> {
             "give at least one direction in `dirs` (barycentric) or `vectors` (Cartesian)",
         ));
     }
-    crate::derivative::check_order(dirs.len(), patch.net.degree())
-        .map_err(|e| inputs.error("dirs", e.to_string()))?;
     let refs: Vec<&[BigRational]> = dirs.iter().map(Vec::as_slice).collect();
     if let Some(r) = rational {
-        // rational patches: first order, by the quotient rule on the homogeneous net
-        if refs.len() != 1 {
-            return Err(inputs.error(
-                "dirs",
-                "a rational patch takes exactly one direction (first-order derivatives only)",
-            ));
-        }
+        // rational patches: any order, by Leibniz's rule on the homogeneous net
         let key = if inputs.get("at").is_some() {
             "at"
         } else {
             "cartesian"
         };
         return r
-            .derivative(&at, refs[0])
+            .derivative_of_order(&at, &refs)
             .map(|v| Value::numbers(&v))
             .map_err(|e| inputs.error(key, e.to_string()));
     }
+    crate::derivative::check_order(dirs.len(), patch.net.degree())
+        .map_err(|e| inputs.error("dirs", e.to_string()))?;
     Ok(Value::numbers(&crate::derivative::directional_derivative(
         &patch.net, &refs, &at,
     )))
@@ -679,15 +673,24 @@ fn select_part(inputs: &Inputs<'_>, value: Value) -> Result<Value, InputError> {
 }
 
 fn tangent(inputs: &Inputs<'_>) -> Result<Value, InputError> {
-    let patch = inputs.patch()?;
-    let at = inputs.point(patch)?;
-    let f = crate::derivative::tangent_frame(&patch.net, &patch.domain_or_reference(), &at)
-        .map_err(|e| inputs.error("at", e.to_string()))?;
+    let f = match inputs.file.any_patch_for(inputs.claim)? {
+        AnyPatch::Rational(r) => {
+            let at = inputs.point(&r.patch)?;
+            r.tangent_frame(&r.patch.domain_or_reference(), &at)
+        }
+        _ => {
+            let patch = inputs.patch()?;
+            let at = inputs.point(patch)?;
+            crate::derivative::tangent_frame(&patch.net, &patch.domain_or_reference(), &at)
+        }
+    }
+    .map_err(|e| inputs.error("at", e.to_string()))?;
     let rows = |v: &[Vec<BigRational>]| Value::List(v.iter().map(|p| Value::numbers(p)).collect());
     let mut kv = vec![
         ("point".to_string(), Value::numbers(&f.point)),
         ("intermediate".to_string(), rows(&f.intermediate)),
         ("partials".to_string(), rows(&f.partials)),
+        ("regular".to_string(), Value::Bool(f.regular)),
     ];
     if let Some(nrm) = &f.normal {
         kv.push(("normal".into(), Value::numbers(nrm)));

@@ -78,6 +78,91 @@ pub struct Row {
     pub(super) notes: Vec<String>,
 }
 
+impl Row {
+    /// An empty row: `gamma_k` roundings, the bound column's `label` if not `γ_K`.
+    pub(super) fn new(
+        algorithm: Algorithm,
+        precision: Precision,
+        gamma_k: usize,
+        label: Option<String>,
+    ) -> Self {
+        Row {
+            algorithm,
+            precision,
+            cases: 0,
+            max_ulps: 0.0,
+            worst_point: None,
+            correctly_rounded: 0,
+            max_condition: 0.0,
+            max_relative_condition: 0.0,
+            max_bound_ratio: 0.0,
+            violations: Vec::new(),
+            outside_hypothesis: 0,
+            gamma_k,
+            label,
+            notes: Vec::new(),
+        }
+    }
+
+    /// Fold the per-point results (in the order of `points`) into the row; returns the largest
+    /// error of the float coordinates [`Acc::lambda_ulps`].
+    pub(super) fn fold(&mut self, accs: Vec<Acc>, points: &[Vec<BigRational>]) -> f64 {
+        let mut lambda_ulps = 0.0f64;
+        for (i, c) in accs.into_iter().enumerate() {
+            if c.ulps > self.max_ulps {
+                self.max_ulps = c.ulps;
+                self.worst_point = Some(points[i].clone());
+            }
+            self.correctly_rounded += c.cr;
+            self.cases += c.coords;
+            self.max_condition = self.max_condition.max(c.cond);
+            self.max_relative_condition = self.max_relative_condition.max(c.rel_cond);
+            self.max_bound_ratio = self.max_bound_ratio.max(c.ratio);
+            self.outside_hypothesis += usize::from(c.outside);
+            self.violations.extend(c.violation);
+            lambda_ulps = lambda_ulps.max(c.lambda_ulps);
+        }
+        lambda_ulps
+    }
+}
+
+/// One point's results, folded into a [`Row`] by [`Row::fold`].
+#[derive(Default)]
+pub(super) struct Acc {
+    /// The largest error in ULPs over the coordinates, and how many were correctly rounded.
+    pub(super) ulps: f64,
+    pub(super) cr: usize,
+    /// Coordinates judged.
+    pub(super) coords: usize,
+    /// The largest condition number and relative condition number.
+    pub(super) cond: f64,
+    pub(super) rel_cond: f64,
+    /// The largest error ÷ bound, and a bound violation if any.
+    pub(super) ratio: f64,
+    pub(super) violation: Option<String>,
+    /// Outside the bound's hypotheses (not judged against it).
+    pub(super) outside: bool,
+    /// S-patches: the largest error of the float coordinates λ̂, in ULPs.
+    pub(super) lambda_ulps: f64,
+}
+
+impl Acc {
+    /// Measure `y` against `exact` (ULPs, correct rounding); `None` measures of a non-finite
+    /// value count as an infinite error.
+    pub(super) fn measure<F: Float>(&mut self, y: &[F], exact: &[BigRational]) {
+        for (v, q) in y.iter().zip(exact) {
+            let Some(yq) = v.exact() else { continue };
+            let meas = Measures::new(&yq, q, Some(F::PRECISION));
+            self.ulps = self
+                .ulps
+                .max(meas.ulps.as_ref().map_or(f64::INFINITY, round_f64));
+            if meas.correctly_rounded == Some(true) {
+                self.cr += 1;
+            }
+        }
+    }
+}
+
 /// The certification report.
 pub struct CertifyReport {
     patch: String,
@@ -143,17 +228,7 @@ pub fn random_points(m: usize, count: usize, seed: u64) -> Vec<Vec<f64>> {
 fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigRational>]) -> Row {
     let cert = Certifier::<F>::new(&patch.net);
     let (m, n) = (patch.net.m(), patch.net.degree());
-    struct Case {
-        ulps: f64,
-        cr: usize,
-        coords: usize,
-        cond: f64,
-        rel_cond: f64,
-        ratio: f64,
-        violation: Option<String>,
-        outside: bool,
-    }
-    let cases: Vec<Case> = points
+    let cases: Vec<Acc> = points
         .par_iter()
         .map(|point| {
             let lam: Vec<F> = point.iter().map(F::round).collect();
@@ -165,41 +240,31 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
                     && crate::certify::bernstein_may_underflow(&cert.net, &lam));
             let p = cert.exact.evaluate_fast(&lam_q);
             let cond = condition(&cert.exact_net, &lam_q);
-            let mut case = Case {
-                ulps: 0.0,
-                cr: 0,
+            let mut case = Acc {
                 coords: y.len(),
-                cond: 0.0,
-                rel_cond: 0.0,
-                ratio: 0.0,
-                violation: None,
                 outside,
+                ..Acc::default()
             };
+            case.measure(&y, &p);
             for (c, v) in y.iter().enumerate() {
                 case.cond = case.cond.max(round_f64(&cond[c]));
                 if !p[c].is_zero() {
                     case.rel_cond = case.rel_cond.max(round_f64(&(&cond[c] / p[c].abs())));
                 }
                 let Some(yq) = v.exact() else { continue };
-                let meas = Measures::new(&yq, &p[c], Some(F::PRECISION));
-                case.ulps = case
-                    .ulps
-                    .max(meas.ulps.as_ref().map_or(f64::INFINITY, round_f64));
-                if meas.correctly_rounded == Some(true) {
-                    case.cr += 1;
-                }
                 if outside {
                     continue;
                 }
+                let abs = (&yq - &p[c]).abs();
                 if let Some(b) = a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam_q) {
                     if !b.is_zero() {
-                        case.ratio = case.ratio.max(round_f64(&(&meas.abs / &b)));
+                        case.ratio = case.ratio.max(round_f64(&(&abs / &b)));
                     }
-                    if meas.abs > b {
+                    if abs > b {
                         case.violation = Some(format!(
                             "at {} coordinate {c}: error {} exceeds the bound {}",
                             crate::report::tuple(&lam_q),
-                            crate::certify::measures::sci(&meas.abs),
+                            crate::certify::measures::sci(&abs),
                             crate::certify::measures::sci(&b)
                         ));
                     }
@@ -208,37 +273,8 @@ fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigR
             case
         })
         .collect();
-    let mut row = Row {
-        algorithm,
-        precision: F::PRECISION,
-        cases: cases.len(),
-        max_ulps: 0.0,
-        worst_point: None,
-        correctly_rounded: 0,
-        max_condition: 0.0,
-        max_relative_condition: 0.0,
-        max_bound_ratio: 0.0,
-        violations: Vec::new(),
-        outside_hypothesis: 0,
-        gamma_k: roundings(algorithm, m, n),
-        label: None,
-        notes: Vec::new(),
-    };
-    let mut coords = 0;
-    for (i, c) in cases.into_iter().enumerate() {
-        if c.ulps > row.max_ulps {
-            row.max_ulps = c.ulps;
-            row.worst_point = Some(points[i].clone());
-        }
-        row.correctly_rounded += c.cr;
-        coords += c.coords;
-        row.max_condition = row.max_condition.max(c.cond);
-        row.max_relative_condition = row.max_relative_condition.max(c.rel_cond);
-        row.max_bound_ratio = row.max_bound_ratio.max(c.ratio);
-        row.outside_hypothesis += usize::from(c.outside);
-        row.violations.extend(c.violation);
-    }
-    row.cases = coords;
+    let mut row = Row::new(algorithm, F::PRECISION, roundings(algorithm, m, n), None);
+    row.fold(cases, points);
     row
 }
 

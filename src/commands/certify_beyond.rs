@@ -14,10 +14,10 @@ use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 
 use super::CliError;
-use super::certify::{Args, RandomInfo, Row, SplitMix, points_of, reproduce};
+use super::certify::{Acc, Args, RandomInfo, Row, SplitMix, points_of, reproduce};
 use crate::certify::beyond::{RationalCertifier, SPatchCertifier};
 use crate::certify::bound::roundings;
-use crate::certify::measures::{Measures, sci};
+use crate::certify::measures::sci;
 use crate::exact::Algorithm;
 use crate::float::{Float, Precision};
 use crate::rational::RationalPatch;
@@ -38,73 +38,8 @@ fn algorithm_check(args: &Args, kind: &str) -> Result<(), CliError> {
     }
 }
 
-fn empty_row(precision: Precision, k: usize, label: String) -> Row {
-    Row {
-        algorithm: Algorithm::Casteljau,
-        precision,
-        cases: 0,
-        max_ulps: 0.0,
-        worst_point: None,
-        correctly_rounded: 0,
-        max_condition: 0.0,
-        max_relative_condition: 0.0,
-        max_bound_ratio: 0.0,
-        violations: Vec::new(),
-        outside_hypothesis: 0,
-        gamma_k: k,
-        label: Some(label),
-        notes: Vec::new(),
-    }
-}
-
 fn f(x: &BigRational) -> f64 {
     crate::number::round_f64(x)
-}
-
-/// Per-point results folded into a row.
-#[derive(Default)]
-struct Acc {
-    ulps: f64,
-    cr: usize,
-    coords: usize,
-    cond: f64,
-    rel_cond: f64,
-    ratio: f64,
-    violation: Option<String>,
-    outside: bool,
-    lambda_ulps: f64,
-    not_judged_total: bool,
-}
-
-fn fold(row: &mut Row, accs: Vec<Acc>, points: &[Vec<BigRational>]) -> f64 {
-    let mut lambda_ulps = 0.0f64;
-    for (i, c) in accs.into_iter().enumerate() {
-        if c.ulps > row.max_ulps {
-            row.max_ulps = c.ulps;
-            row.worst_point = Some(points[i].clone());
-        }
-        row.correctly_rounded += c.cr;
-        row.cases += c.coords;
-        row.max_condition = row.max_condition.max(c.cond);
-        row.max_relative_condition = row.max_relative_condition.max(c.rel_cond);
-        row.max_bound_ratio = row.max_bound_ratio.max(c.ratio);
-        row.outside_hypothesis += usize::from(c.outside || c.not_judged_total);
-        row.violations.extend(c.violation);
-        lambda_ulps = lambda_ulps.max(c.lambda_ulps);
-    }
-    lambda_ulps
-}
-
-/// Measure `y` against `exact` into `acc` (ULPs, correct rounding).
-fn measure<F: Float>(acc: &mut Acc, y: &[F], exact: &[BigRational]) {
-    for (v, q) in y.iter().zip(exact) {
-        let Some(yq) = v.exact() else { continue };
-        let meas = Measures::new(&yq, q, Some(F::PRECISION));
-        acc.ulps = acc.ulps.max(meas.ulps.as_ref().map_or(f64::INFINITY, f));
-        if meas.correctly_rounded == Some(true) {
-            acc.cr += 1;
-        }
-    }
 }
 
 /// Judge `|y − exact| ≤ bound` per coordinate into `acc`.
@@ -153,7 +88,7 @@ fn rational_row<F: Float + Div<Output = F>>(
                 ..Acc::default()
             };
             if let Some(q) = &case.exact {
-                measure(&mut acc, &case.y, q);
+                acc.measure(&case.y, q);
                 for (qc, kc) in q.iter().zip(case.condition.iter().flatten()) {
                     acc.cond = acc.cond.max(f(kc));
                     if !qc.is_zero() {
@@ -172,8 +107,13 @@ fn rational_row<F: Float + Div<Output = F>>(
             acc
         })
         .collect();
-    let mut row = empty_row(F::PRECISION, k, format!("γ_{k},÷"));
-    fold(&mut row, accs, points);
+    let mut row = Row::new(
+        Algorithm::Casteljau,
+        F::PRECISION,
+        k,
+        Some(format!("γ_{k},÷")),
+    );
+    row.fold(accs, points);
     if row.outside_hypothesis > 0 {
         row.notes.push(format!(
             "{} points not judged: overflow, or |D̂| ≤ e_D (the denominator's sign is not certain, e.g. where it vanishes outside the simplex)",
@@ -263,9 +203,9 @@ fn spatch_row<F: Float + Div<Output = F>>(
             }
             match (&case.exact, &case.exact_lambda) {
                 (Some(v), Some(l)) => {
-                    measure(&mut acc, &case.y, v);
+                    acc.measure(&case.y, v);
                     let mut lacc = Acc::default();
-                    measure(&mut lacc, &case.lambda, l);
+                    lacc.measure(&case.lambda, l);
                     acc.lambda_ulps = lacc.ulps;
                     for (vc, kc) in v.iter().zip(&case.condition) {
                         acc.cond = acc.cond.max(f(kc));
@@ -274,7 +214,8 @@ fn spatch_row<F: Float + Div<Output = F>>(
                         }
                     }
                 }
-                _ => acc.not_judged_total = true,
+                // the total error is not judged (counted with the points outside the hypotheses)
+                _ => acc.outside = true,
             }
             if let Some(b) = &case.casteljau_bound {
                 judge(
@@ -289,8 +230,13 @@ fn spatch_row<F: Float + Div<Output = F>>(
             acc
         })
         .collect();
-    let mut row = empty_row(F::PRECISION, k, format!("γ_{k} dC"));
-    let lambda_ulps = fold(&mut row, accs, points);
+    let mut row = Row::new(
+        Algorithm::Casteljau,
+        F::PRECISION,
+        k,
+        Some(format!("γ_{k} dC")),
+    );
+    let lambda_ulps = row.fold(accs, points);
     row.notes.push(format!(
         "Wachspress coordinates λ̂: max error {} ulp (measured; no proven bound for the coordinate computation)",
         super::certify::g(lambda_ulps)

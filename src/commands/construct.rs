@@ -85,6 +85,44 @@ pub fn child_patch(
     Ok(Patch { name, net, domain })
 }
 
+/// The patch whose net a construction runs on: a polynomial patch itself; for a rational patch
+/// its homogeneous net `(w c, w)` (every construction here is linear in the net, so it commutes
+/// with the projection), with the rational parent to map the pieces back.
+pub fn construction_net(
+    file: &str,
+    command: &str,
+    patch: crate::patch::AnyPatch,
+) -> Result<(Patch, Option<crate::rational::RationalPatch>), CliError> {
+    let (mut p, rational) = super::points_patch(file, command, patch)?;
+    if let Some(r) = &rational {
+        p.net = r.homogeneous();
+    }
+    Ok((p, rational))
+}
+
+/// Pieces of the homogeneous net of `parent` back to rational patches (points and weights),
+/// each over its sub-simplex; `label(k)` names piece `k` (0-based).
+pub fn rational_pieces(
+    file: &str,
+    parent: &crate::rational::RationalPatch,
+    pieces: Vec<crate::subdivide::Piece<BigRational>>,
+    label: impl Fn(usize) -> String,
+) -> Result<super::graph::AnyPiecesReport, CliError> {
+    let mut out = Vec::with_capacity(pieces.len());
+    for (k, p) in pieces.into_iter().enumerate() {
+        let mut piece = crate::rational::RationalPatch::from_homogeneous(&p.net, &parent.patch)
+            .map_err(|e| CliError::core(format!("{file}: piece {}", k + 1), e))?;
+        piece.patch = child_patch(
+            &parent.patch,
+            piece.patch.net,
+            Some(&p.domain_in_parent),
+            &label(k),
+        )?;
+        out.push((p.domain_in_parent, crate::patch::AnyPatch::Rational(piece)));
+    }
+    Ok(super::graph::AnyPiecesReport(out))
+}
+
 fn strings(p: &[BigRational]) -> Vec<String> {
     p.iter().map(ToString::to_string).collect()
 }

@@ -5,11 +5,10 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
-use super::{CliError, Outcome, check_barycentric, check_direction, parse_list};
+use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
 use crate::cli::OutputArgs;
 use crate::derivative::{check_order, directional_derivative};
 use crate::io::patch_file::read_any_patch;
-use crate::patch::AnyPatch;
 use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez derivative`.
@@ -44,27 +43,10 @@ pub struct DerivativeReport {
 /// Run `tribez derivative`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (p, None),
-        AnyPatch::Rational(r) => (r.patch.clone(), Some(r)),
-        AnyPatch::SPatch(_) => {
-            return Err(CliError::Usage(format!(
-                "{file}: `tribez derivative` does not take S-patches"
-            )));
-        }
-    };
+    let (patch, rational) = points_patch(&file, "derivative", read_any_patch(&args.patch)?)?;
     let (m, n) = (patch.net.m(), patch.net.degree());
     let domain = patch.domain_or_reference();
-    let p = parse_list(&args.at, "--at")?;
-    let what = format!("--at {}", args.at);
-    let at = if args.cartesian {
-        domain
-            .barycentric(&p)
-            .map_err(|e| CliError::core(&what, e))?
-    } else {
-        check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
-        p
-    };
+    let at = at_point(&args.at, args.cartesian, &domain, m)?;
     let mut directions = Vec::new();
     for d in &args.dir {
         let v = parse_list(d, "--dir")?;
@@ -84,20 +66,16 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             "give at least one direction with --dir (barycentric) or --vector (Cartesian)".into(),
         ));
     }
-    check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
     let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
     let value = match &rational {
-        None => directional_derivative(&patch.net, &refs, &at),
-        // rational patches: first order, by the quotient rule on the homogeneous net
-        Some(r) if refs.len() == 1 => r
-            .derivative(&at, refs[0])
-            .map_err(|e| CliError::core(&what, e))?,
-        Some(_) => {
-            return Err(CliError::Usage(
-                "a rational patch takes exactly one direction (first-order derivatives only)"
-                    .into(),
-            ));
+        None => {
+            check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
+            directional_derivative(&patch.net, &refs, &at)
         }
+        // rational patches: any order, by Leibniz's rule on the homogeneous net
+        Some(r) => r
+            .derivative_of_order(&at, &refs)
+            .map_err(|e| CliError::core(format!("--at {}", args.at), e))?,
     };
     Outcome::rendered(
         &DerivativeReport {

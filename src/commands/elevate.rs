@@ -30,30 +30,21 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             CoreError::Invalid("elevate by at least 1".into()),
         ));
     }
-    let parent = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
-        AnyPatch::Rational(r) => {
-            // a rational patch: elevate the homogeneous net (w c, w)
-            let (m, n) = (r.patch.net.m(), r.patch.net.degree());
-            check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-            let mut up = r
-                .elevate(args.by)
-                .map_err(|e| CliError::core(args.patch.display().to_string(), e))?;
-            let label = format!("elevated to degree {}", n + args.by);
-            up.patch = child_patch(&r.patch, up.patch.net, None, &label)?;
-            return Outcome::rendered(
-                &AnyPatchReport(AnyPatch::Rational(up)),
-                args.out.format,
-                true,
-            );
-        }
-        AnyPatch::SPatch(_) => {
-            return Err(CliError::Usage(format!(
-                "{}: `tribez elevate` does not take S-patches",
-                args.patch.display()
-            )));
-        }
-    };
+    let file = args.patch.display().to_string();
+    let (parent, rational) = super::points_patch(&file, "elevate", read_any_patch(&args.patch)?)?;
+    if let Some(r) = rational {
+        // a rational patch: elevate the homogeneous net (w c, w)
+        let (m, n) = (r.patch.net.m(), r.patch.net.degree());
+        check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
+        let mut up = r.elevate(args.by).map_err(|e| CliError::core(&file, e))?;
+        let label = format!("elevated to degree {}", n + args.by);
+        up.patch = child_patch(&r.patch, up.patch.net, None, &label)?;
+        return Outcome::rendered(
+            &AnyPatchReport(AnyPatch::Rational(up)),
+            args.out.format,
+            true,
+        );
+    }
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
     let net = crate::elevate::elevate_exact(&parent.net, args.by);

@@ -1,13 +1,14 @@
 //! `tribez halve`: cut a patch in two from the midpoint of the edge between corners I and J to
 //! the opposite corner (FORMULAS.md §5.2). The first piece is the parent with corner J replaced by
 //! the midpoint, the second with corner I replaced, each keeping the parent's vertex order.
+//! A rational patch is halved through its homogeneous net (points and weights).
 
 use std::path::PathBuf;
 
-use super::construct::{PiecesReport, child_patch, parse_edge};
+use super::construct::{PiecesReport, child_patch, construction_net, parse_edge, rational_pieces};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use crate::io::patch_file::read_patch;
+use crate::io::patch_file::read_any_patch;
 use crate::subdivide::{HalvingOrder, Piece, add_and_halve, halve_domains, halve_exact};
 
 /// Arguments of `tribez halve`.
@@ -27,7 +28,8 @@ pub struct Args {
 
 /// Run `tribez halve`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let parent = read_patch(&args.patch)?;
+    let file = args.patch.display().to_string();
+    let (parent, rational) = construction_net(&file, "halve", read_any_patch(&args.patch)?)?;
     let (i, j) = parse_edge(&args.edge, parent.net.m())?;
     let halves = if args.add_and_halve {
         let [a, b] = halve_domains(parent.net.m(), i, j);
@@ -44,16 +46,16 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     } else {
         halve_exact(&parent.net, i, j)
     };
+    let label = |k: usize| format!("half {} of edge {}", k + 1, args.edge);
+    if let Some(r) = rational {
+        let report = rational_pieces(&file, &r, halves.into(), label)?;
+        return Outcome::rendered(&report, args.out.format, true);
+    }
     let pieces = halves
         .into_iter()
         .enumerate()
         .map(|(k, p)| {
-            let patch = child_patch(
-                &parent,
-                p.net,
-                Some(&p.domain_in_parent),
-                &format!("half {} of edge {}", k + 1, args.edge),
-            )?;
+            let patch = child_patch(&parent, p.net, Some(&p.domain_in_parent), &label(k))?;
             Ok((p.domain_in_parent, patch))
         })
         .collect::<Result<_, CliError>>()?;

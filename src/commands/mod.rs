@@ -167,3 +167,38 @@ pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> 
 }
 
 pub use crate::domain::{check_barycentric, check_direction};
+
+/// The barycentric point of `--at TEXT`: checked to sum to 1 on the `m`-simplex, or with
+/// `cartesian` converted by `domain` (Cramer's rule). Errors name `--at TEXT`.
+pub fn at_point(
+    text: &str,
+    cartesian: bool,
+    domain: &crate::domain::Domain,
+    m: usize,
+) -> Result<Vec<BigRational>, CliError> {
+    let p = parse_list(text, "--at")?;
+    let what = format!("--at {text}");
+    if cartesian {
+        domain.barycentric(&p).map_err(|e| CliError::core(&what, e))
+    } else {
+        check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
+        Ok(p)
+    }
+}
+
+/// A patch for the commands that take polynomial and rational patches alike: its points patch,
+/// and the rational patch when it is one. S-patches are a usage error naming `command`.
+pub fn points_patch(
+    file: &str,
+    command: &str,
+    any: crate::patch::AnyPatch,
+) -> Result<(crate::patch::Patch, Option<crate::rational::RationalPatch>), CliError> {
+    use crate::patch::AnyPatch;
+    match any {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),
+        AnyPatch::Rational(r) => Ok((r.patch.clone(), Some(r))),
+        AnyPatch::SPatch(_) => Err(CliError::Usage(format!(
+            "{file}: `tribez {command}` does not take S-patches"
+        ))),
+    }
+}

@@ -3,12 +3,12 @@
 
 use std::path::PathBuf;
 
-use super::construct::{PiecesReport, barycentric_points, child_patch};
-use super::graph::AnyPiecesReport;
+use super::construct::{
+    PiecesReport, barycentric_points, child_patch, construction_net, rational_pieces,
+};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::io::patch_file::read_any_patch;
-use crate::patch::AnyPatch;
 use crate::subdivide::{midpoint_split_exact, split_at_pieces_exact};
 
 /// Arguments of `tribez subdivide`.
@@ -34,20 +34,7 @@ pub struct Args {
 /// Run `tribez subdivide`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (parent, rational) = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (p, None),
-        // a rational patch: split its homogeneous net (w c, w), then back to points and weights
-        AnyPatch::Rational(r) => {
-            let mut h = r.patch.clone();
-            h.net = r.homogeneous();
-            (h, Some(r))
-        }
-        AnyPatch::SPatch(_) => {
-            return Err(CliError::Usage(format!(
-                "{file}: `tribez subdivide` does not take S-patches"
-            )));
-        }
-    };
+    let (parent, rational) = construction_net(&file, "subdivide", read_any_patch(&args.patch)?)?;
     let m = parent.net.m();
     let pieces = match &args.at {
         Some(text) => {
@@ -59,19 +46,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     };
     let total = pieces.len();
     if let Some(r) = rational {
-        let mut out = Vec::with_capacity(total);
-        for (k, p) in pieces.into_iter().enumerate() {
-            let mut piece = crate::rational::RationalPatch::from_homogeneous(&p.net, &r.patch)
-                .map_err(|e| CliError::core(format!("{file}: piece {}", k + 1), e))?;
-            piece.patch = child_patch(
-                &r.patch,
-                piece.patch.net,
-                Some(&p.domain_in_parent),
-                &format!("piece {} of {total}", k + 1),
-            )?;
-            out.push((p.domain_in_parent, AnyPatch::Rational(piece)));
-        }
-        return Outcome::rendered(&AnyPiecesReport(out), args.out.format, true);
+        let report = rational_pieces(&file, &r, pieces, |k| format!("piece {} of {total}", k + 1))?;
+        return Outcome::rendered(&report, args.out.format, true);
     }
     let pieces = pieces
         .into_iter()

@@ -25,17 +25,8 @@ pub struct Args {
 
 /// Run `tribez subpatch`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let any = read_any_patch(&args.patch)?;
-    let (parent, rational) = match any {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (p, None),
-        AnyPatch::Rational(r) => (r.patch.clone(), Some(r)),
-        AnyPatch::SPatch(_) => {
-            return Err(CliError::Usage(format!(
-                "{}: `tribez subpatch` does not take S-patches",
-                args.patch.display()
-            )));
-        }
-    };
+    let file = args.patch.display().to_string();
+    let (parent, rational) = super::points_patch(&file, "subpatch", read_any_patch(&args.patch)?)?;
     let m = parent.net.m();
     if args.vertices.len() != m + 1 {
         return Err(CliError::core(

@@ -5,10 +5,10 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::{Map, Value as Json, json};
 
-use super::{CliError, Outcome, check_barycentric, parse_list};
+use super::{CliError, Outcome, at_point, points_patch};
 use crate::cli::OutputArgs;
 use crate::derivative::{TangentFrame, tangent_frame};
-use crate::io::patch_file::{index_key, read_patch};
+use crate::io::patch_file::{index_key, read_any_patch};
 use crate::report::{Render, json_rationals, tuple};
 use crate::symbolic::cartesian_names;
 
@@ -30,6 +30,7 @@ pub struct Args {
 /// The tangent report.
 pub struct TangentReport {
     file: String,
+    rational: bool,
     degree: usize,
     at: Vec<BigRational>,
     frame: TangentFrame,
@@ -38,23 +39,20 @@ pub struct TangentReport {
 /// Run `tribez tangent`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = read_patch(&args.patch)?;
+    let (patch, rational) = points_patch(&file, "tangent", read_any_patch(&args.patch)?)?;
     let m = patch.net.m();
     let domain = patch.domain_or_reference();
-    let p = parse_list(&args.at, "--at")?;
-    let what = format!("--at {}", args.at);
-    let at = if args.cartesian {
-        domain
-            .barycentric(&p)
-            .map_err(|e| CliError::core(&what, e))?
-    } else {
-        check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
-        p
-    };
-    let frame = tangent_frame(&patch.net, &domain, &at).map_err(|e| CliError::core(&file, e))?;
+    let at = at_point(&args.at, args.cartesian, &domain, m)?;
+    let frame = match &rational {
+        None => tangent_frame(&patch.net, &domain, &at),
+        Some(r) => r.tangent_frame(&domain, &at),
+    }
+    .map_err(|e| CliError::core(&file, e))?;
+    let rational = rational.is_some();
     Outcome::rendered(
         &TangentReport {
             file,
+            rational,
             degree: patch.net.degree(),
             at,
             frame,
@@ -84,8 +82,13 @@ impl Render for TangentReport {
             tuple(&f.point)
         );
         out += &format!(
-            "de Casteljau level {} (the tangent plane passes through these):\n",
-            self.degree - 1
+            "de Casteljau level {}{} (the tangent plane passes through these):\n",
+            self.degree - 1,
+            if self.rational {
+                ", projected: c = X/W"
+            } else {
+                ""
+            }
         );
         for (k, p) in f.intermediate.iter().enumerate() {
             out += &format!("  c[{}] = {}\n", self.unit_key(k), tuple(p));
@@ -96,9 +99,21 @@ impl Render for TangentReport {
         if let (Some(nrm), Some(via)) = (&f.normal, &f.normal_from_intermediate) {
             out += &format!("normal p_x × p_y = {}\n", tuple(nrm));
             out += &format!(
-                "(n²/D)(c[0,1,0] − c[1,0,0]) × (c[0,0,1] − c[1,0,0]) = {} ({})\n",
+                "{}(c[0,1,0] − c[1,0,0]) × (c[0,0,1] − c[1,0,0]) = {} ({})\n",
+                if self.rational {
+                    "(n²/D)(W_100 W_010 W_001/W³)"
+                } else {
+                    "(n²/D)"
+                },
                 tuple(via),
                 if nrm == via { "equal" } else { "DIFFERENT" }
+            );
+        }
+        if !f.regular {
+            out += &format!(
+                "SINGULAR point: the first partials are linearly dependent, so they span no tangent {}
+",
+                if m == 1 { "line" } else { "plane" }
             );
         }
         out
@@ -125,6 +140,7 @@ impl Render for TangentReport {
             "partials": partials,
             "normal": opt(&f.normal),
             "normal_from_intermediate": opt(&f.normal_from_intermediate),
+            "regular": f.regular,
         })
     }
 }

@@ -34,8 +34,8 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::limbs::{
-    add, add_mul, div_word_exact, gcd_u64, mul_into, mul_word, mul_word_add_mul, rem_word, shr,
-    signed_add, trailing_zeros, trim,
+    add, add_mul, div_exact_odd, gcd_u64, inverse_odd, mul_into, mul_word, mul_word_add_mul,
+    rem_hensel, shl, shr, signed_add, trailing_zeros, trim,
 };
 use crate::patch::ControlNet;
 use crate::simplex::count;
@@ -162,7 +162,8 @@ impl Factors {
     }
 }
 
-const CHUNK: usize = 128;
+/// Limbs per residue-table row (small under test, so that the multi-chunk path runs too).
+const CHUNK: usize = if cfg!(test) { 3 } else { 128 };
 
 /// Residue tables for the odd primes of `L_c`.
 #[derive(Clone, Debug)]
@@ -172,6 +173,8 @@ struct Reducer {
     moduli: Vec<(u64, usize, usize, u64)>,
     /// `2^{64h} mod M` for `h < CHUNK`, `CHUNK` entries per modulus.
     table: Vec<u64>,
+    /// `M⁻¹ mod 2^64` per modulus.
+    inverses: Vec<u64>,
 }
 
 impl Reducer {
@@ -198,40 +201,51 @@ impl Reducer {
             }
             *big = x as u64;
         }
+        let inverses = moduli.iter().map(|&(m, ..)| inverse_odd(m)).collect();
         Reducer {
             factors,
             moduli,
             table,
+            inverses,
         }
     }
 
-    /// Divide `limbs` by `gcd(limbs, L)`; returns the primes (with multiplicity) and the power
-    /// of two removed.
-    fn strip(&self, limbs: &mut Vec<u64>, removed: &mut Vec<u64>) -> u64 {
-        let s2 = trailing_zeros(limbs).min(self.factors.e2);
-        if s2 > 0 {
-            shr(limbs, s2);
-        }
-        if self.moduli.is_empty() {
-            return s2;
+    /// Divide `limbs` by `gcd(limbs, L_odd)` (the odd part of `L`), pushing the primes removed
+    /// (with multiplicity) onto `removed`.
+    fn strip_odd(&self, limbs: &mut Vec<u64>, removed: &mut Vec<u64>) {
+        if self.moduli.is_empty() || limbs.is_empty() {
+            return;
         }
         let mut hits = Vec::new();
+        let single = limbs.len() <= CHUNK;
         for (k, &(m, first, end, big)) in self.moduli.iter().enumerate() {
             let row = &self.table[k * CHUNK..(k + 1) * CHUNK];
-            let mm = u128::from(m);
-            let two64 = (1u128 << 64) % mm;
-            let mut r = 0u128;
+            let mut r = 0u64;
             for chunk in limbs.chunks(CHUNK).rev() {
+                // dot = Σ l_h (2^{64h} mod M) < 2^{135}, as three limbs w.
                 let (mut lo, mut hi) = (0u128, 0u128);
                 for (&l, &t) in chunk.iter().zip(row) {
                     let prod = u128::from(l) * u128::from(t);
                     lo += u128::from(prod as u64);
                     hi += prod >> 64;
                 }
-                let dot = ((hi % mm) * two64 + lo % mm) % mm;
-                r = (r * u128::from(big) + dot) % mm;
+                let mid = (lo >> 64) + u128::from(hi as u64);
+                let w = [lo as u64, mid as u64, ((hi >> 64) + (mid >> 64)) as u64];
+                if single {
+                    // Only divisibility matters: the Hensel remainder of the dot product is
+                    // `N · 2^{−192} mod M`, divisible by the same primes of M as N.
+                    r = rem_hensel(&w, m, self.inverses[k]);
+                } else {
+                    // Chunks from the top: r ← r·2^{64·CHUNK} + dot (mod M), each step
+                    // `x·y + z` with `x, y < M < 2^64` and `z < 2^64`, below 2^128.
+                    let mm = u128::from(m);
+                    let t64 = (1u128 << 64) % mm;
+                    let mut dot = u128::from(w[2]) % mm;
+                    dot = (dot * t64 + u128::from(w[1])) % mm;
+                    dot = (dot * t64 + u128::from(w[0])) % mm;
+                    r = ((u128::from(r) * u128::from(big) + dot) % mm) as u64;
+                }
             }
-            let r = r as u64;
             for &(p, e) in &self.factors.odd[first..end] {
                 if r.is_multiple_of(p) {
                     hits.push((p, e));
@@ -239,15 +253,15 @@ impl Reducer {
             }
         }
         for (p, e) in hits {
+            let inv = inverse_odd(p);
             for _ in 0..e {
-                if rem_word(limbs, p) != 0 {
+                if !rem_hensel(limbs, p, inv).is_multiple_of(p) {
                     break;
                 }
-                div_word_exact(limbs, p);
+                div_exact_odd(limbs, p, inv);
                 removed.push(p);
             }
         }
-        s2
     }
 }
 
@@ -261,6 +275,9 @@ struct Coordinate {
     shift: BigUint,
     /// `L_c`.
     denominator: BigUint,
+    /// `L_c = 2^{e2} · odd`: the limbs of the odd part, and `e2`.
+    odd_denominator: Vec<u64>,
+    e2: u64,
     reducer: Option<Reducer>,
     /// The row-scaled form, for triangles.
     rows: Option<Rows>,
@@ -497,6 +514,11 @@ impl FastNet {
                     starts,
                     shift,
                     denominator: denominators[c].magnitude().clone(),
+                    odd_denominator: to_limbs(
+                        &(denominators[c].magnitude()
+                            >> denominators[c].magnitude().trailing_zeros().unwrap_or(0)),
+                    ),
+                    e2: denominators[c].magnitude().trailing_zeros().unwrap_or(0),
                     reducer: f.map(Reducer::new),
                     rows,
                 }
@@ -573,7 +595,7 @@ impl FastNet {
             bufs.resize(self.m, Vec::new());
         }
         let mut sums_ready = false;
-        let dn = BigUint::from(d).pow(n as u32);
+        let den = PointDenominator::new(d, n);
         let mut sum_pow: Option<BigUint> = None;
         self.coords
             .iter()
@@ -586,7 +608,7 @@ impl FastNet {
                         sums_ready = true;
                     }
                     let neg = rows.evaluate(n, a, pw, sp, row_bufs, acc);
-                    return reduce(c, neg, acc, d, n, &dn);
+                    return reduce(c, neg, acc, &den);
                 }
                 self.horner(c, self.m, n, 0, a, pw, bufs);
                 let mut h = std::mem::take(&mut bufs[0]);
@@ -600,70 +622,110 @@ impl FastNet {
                     let v = BigInt::from(from_limbs(&h)) - BigInt::from(&c.shift * &*sp);
                     (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
                 };
-                reduce(c, neg, &mut limbs, d, n, &dn)
+                reduce(c, neg, &mut limbs, &den)
             })
             .collect()
     }
 }
 
-/// `±limbs / (L_c d^n)` in lowest terms.
-fn reduce(
-    c: &Coordinate,
-    neg: bool,
-    limbs: &mut Vec<u64>,
-    d: u64,
+/// The point's share `D^n = 2^{n·v₂(D)} · D_odd^n` of every denominator `L_c D^n`.
+struct PointDenominator {
     n: usize,
-    dn: &BigUint,
-) -> BigRational {
+    d: u64,
+    /// `v₂(D)`, `D_odd`, `D_odd⁻¹ mod 2^64`.
+    tz: u64,
+    odd: u64,
+    odd_inv: u64,
+    /// `D_odd^n` as limbs.
+    odd_pow: Vec<u64>,
+}
+
+impl PointDenominator {
+    fn new(d: u64, n: usize) -> Self {
+        let tz = u64::from(d.trailing_zeros());
+        let odd = d >> tz;
+        let mut odd_pow = vec![1u64];
+        for _ in 0..n {
+            mul_word(&mut odd_pow, odd);
+        }
+        PointDenominator {
+            n,
+            d,
+            tz,
+            odd,
+            odd_inv: inverse_odd(odd),
+            odd_pow,
+        }
+    }
+}
+
+/// Multiply the words of `factors` into as few machine words as fit, and divide `x` by each.
+fn div_exact_words(x: &mut Vec<u64>, factors: &[u64]) {
+    let mut word = 1u64;
+    for &f in factors {
+        match word.checked_mul(f) {
+            Some(w) => word = w,
+            None => {
+                div_exact_odd(x, word, inverse_odd(word));
+                word = f;
+            }
+        }
+    }
+    if word > 1 {
+        div_exact_odd(x, word, inverse_odd(word));
+    }
+}
+
+/// `±limbs / (L_c D^n)` in lowest terms.
+///
+/// `gcd(N, L_c D^n)` is removed prime by prime without a big gcd: the power of two by trailing
+/// zeros against `v₂(L_c) + n·v₂(D)`; the odd part of `D^n` by at most `n` rounds of
+/// `g = gcd(N mod D_odd, D_odd)`, `N ← N/g` (a round removes `p^{min(v_p(N), v_p(D))}` of each
+/// prime, so `n` rounds remove `p^{min(v_p(N), n·v_p(D))}`); then the odd primes of `L_c` up to
+/// their exponents in `L_c` from what is left, which makes `p^{min(v_p(N), v_p(L_c D^n))}` in all.
+/// Remainders and exact quotients by odd words are Hensel divisions (no division instruction).
+fn reduce(c: &Coordinate, neg: bool, limbs: &mut Vec<u64>, pt: &PointDenominator) -> BigRational {
+    let sign = if neg { Sign::Minus } else { Sign::Plus };
     if limbs.is_empty() {
         return BigRational::zero();
     }
     let Some(reducer) = &c.reducer else {
-        let v = BigInt::from_biguint(
-            if neg { Sign::Minus } else { Sign::Plus },
-            from_limbs(limbs),
-        );
+        let v = BigInt::from_biguint(sign, from_limbs(limbs));
+        let dn = BigUint::from(pt.d).pow(pt.n as u32);
         return BigRational::new(v, BigInt::from(&c.denominator * dn));
     };
-    // gcd(N, d^n) by word gcds.
-    let mut g1 = 1u64;
-    let mut g1_big = BigUint::one();
-    if d > 1 {
-        for _ in 0..n {
-            let g = gcd_u64(rem_word(limbs, d), d);
+    // Powers of two.
+    let twos = c.e2 + pt.n as u64 * pt.tz;
+    let s2 = trailing_zeros(limbs).min(twos);
+    shr(limbs, s2);
+    // The odd part of D^n.
+    let mut from_d = Vec::new();
+    if pt.odd > 1 {
+        for _ in 0..pt.n {
+            let g = gcd_u64(rem_hensel(limbs, pt.odd, pt.odd_inv), pt.odd);
             if g == 1 {
                 break;
             }
-            div_word_exact(limbs, g);
-            match g1.checked_mul(g) {
-                Some(x) => g1 = x,
-                None => {
-                    g1_big *= g1;
-                    g1 = g;
-                }
-            }
+            div_exact_odd(limbs, g, inverse_odd(g));
+            from_d.push(g);
         }
     }
-    g1_big *= g1;
-    // gcd(N, L) by the known primes of L.
-    let mut removed = Vec::new();
-    let s2 = reducer.strip(limbs, &mut removed);
-    let mut den = if s2 > 0 {
-        &c.denominator >> s2
+    // The odd primes of L_c.
+    let mut from_l = Vec::new();
+    reducer.strip_odd(limbs, &mut from_l);
+    let mut den = Vec::new();
+    if from_l.is_empty() && from_d.is_empty() {
+        mul_into(&mut den, &c.odd_denominator, &pt.odd_pow);
     } else {
-        c.denominator.clone()
-    };
-    for p in removed {
-        den /= p;
+        let mut l = c.odd_denominator.clone();
+        div_exact_words(&mut l, &from_l);
+        let mut dp = pt.odd_pow.clone();
+        div_exact_words(&mut dp, &from_d);
+        mul_into(&mut den, &l, &dp);
     }
-    let dn_part = if g1_big.is_one() {
-        dn.clone()
-    } else {
-        dn / &g1_big
-    };
-    let numer = BigInt::from_biguint(
-        if neg { Sign::Minus } else { Sign::Plus },
-        from_limbs(limbs),
-    );
-    BigRational::new_raw(numer, BigInt::from(den * dn_part))
+    shl(&mut den, twos - s2);
+    BigRational::new_raw(
+        BigInt::from_biguint(sign, from_limbs(limbs)),
+        BigInt::from(from_limbs(&den)),
+    )
 }

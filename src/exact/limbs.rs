@@ -178,52 +178,76 @@ pub(super) fn add(x: &mut Vec<u64>, y: &[u64]) {
     trim(x);
 }
 
-/// `x mod d` (`d > 0`).
+/// `d⁻¹ mod 2^64` for odd `d` (Newton's iteration `x ← x(2 − dx)`, doubling the correct bits
+/// from the 3 that `x = d` has, since `d² ≡ 1 mod 8`).
 #[inline]
-pub(super) fn rem_word(x: &[u64], d: u64) -> u64 {
-    if d < 1 << 32 {
-        // Native 64-by-32 divisions on half limbs instead of the 128-bit software division.
-        let mut r = 0u64;
-        for &l in x.iter().rev() {
-            r = ((r << 32) | (l >> 32)) % d;
-            r = ((r << 32) | (l & 0xffff_ffff)) % d;
-        }
-        return r;
+pub(super) fn inverse_odd(d: u64) -> u64 {
+    debug_assert!(d % 2 == 1);
+    let mut x = d;
+    for _ in 0..5 {
+        x = x.wrapping_mul(2u64.wrapping_sub(d.wrapping_mul(x)));
     }
-    let mut r = 0u128;
-    let d = u128::from(d);
-    for &l in x.iter().rev() {
-        r = ((r << 64) | u128::from(l)) % d;
-    }
-    r as u64
+    x
 }
 
-/// `x ← x / d` for a `d` known to divide `x`.
+/// One step of Hensel (2-adic) division of `x` by odd `d`: with the running borrow `c`, the
+/// quotient limb `q = (x_i − c) d⁻¹ mod 2^64` and the next borrow `⌊q d / 2^64⌋ + [x_i < c]`,
+/// so that `Σ_{j≤i} x_j 2^{64j} + c' 2^{64(i+1)} = d Σ_{j≤i} q_j 2^{64j}` (GMP's `bdiv`,
+/// Jebelean 1993): no division instruction, one product per limb.
+#[inline(always)]
+fn hensel_step(x: u64, c: u64, d: u64, dinv: u64) -> (u64, u64) {
+    let (s, borrow) = x.overflowing_sub(c);
+    let q = s.wrapping_mul(dinv);
+    let hi = ((u128::from(q) * u128::from(d)) >> 64) as u64;
+    (q, hi + u64::from(borrow))
+}
+
+/// `c` with `x ≡ −c · 2^{64k} (mod d)`, `0 ≤ c ≤ d`, for odd `d` and `k = x.len()`
+/// (GMP's `modexact_1_odd`). Since `2^{64k}` is a unit modulo `d`, `gcd(x, d) = gcd(c, d)`, and
+/// `d | x` exactly when `c ∈ {0, d}`.
 #[inline]
-pub(super) fn div_word_exact(x: &mut Vec<u64>, d: u64) {
-    if d < 1 << 32 {
-        let mut r = 0u64;
-        for l in x.iter_mut().rev() {
-            let hi = (r << 32) | (*l >> 32);
-            let (qh, rh) = (hi / d, hi % d);
-            let lo = (rh << 32) | (*l & 0xffff_ffff);
-            let (ql, rl) = (lo / d, lo % d);
-            *l = (qh << 32) | ql;
-            r = rl;
-        }
-        debug_assert_eq!(r, 0);
-        trim(x);
+pub(super) fn rem_hensel(x: &[u64], d: u64, dinv: u64) -> u64 {
+    let mut c = 0u64;
+    for &l in x {
+        c = hensel_step(l, c, d, dinv).1;
+    }
+    c
+}
+
+/// `x ← x / d` for odd `d` known to divide `x` (Hensel division: the final borrow is zero).
+#[inline]
+pub(super) fn div_exact_odd(x: &mut Vec<u64>, d: u64, dinv: u64) {
+    let mut c = 0u64;
+    for l in x.iter_mut() {
+        let (q, next) = hensel_step(*l, c, d, dinv);
+        *l = q;
+        c = next;
+    }
+    debug_assert_eq!(c, 0, "div_exact_odd: {d} does not divide");
+    trim(x);
+}
+
+/// `x ← x << s` (bits).
+pub(super) fn shl(x: &mut Vec<u64>, s: u64) {
+    if x.is_empty() || s == 0 {
         return;
     }
-    let mut r = 0u128;
-    let dd = u128::from(d);
-    for l in x.iter_mut().rev() {
-        let cur = (r << 64) | u128::from(*l);
-        *l = (cur / dd) as u64;
-        r = cur % dd;
+    let limbs = (s / 64) as usize;
+    let bits = (s % 64) as u32;
+    if bits > 0 {
+        let mut carry = 0u64;
+        for d in x.iter_mut() {
+            let next = *d >> (64 - bits);
+            *d = (*d << bits) | carry;
+            carry = next;
+        }
+        if carry != 0 {
+            x.push(carry);
+        }
     }
-    debug_assert_eq!(r, 0);
-    trim(x);
+    if limbs > 0 {
+        x.splice(0..0, std::iter::repeat_n(0, limbs));
+    }
 }
 
 /// `x ← x >> s` (bits).
@@ -297,13 +321,6 @@ mod tests {
         let mut z = a.clone();
         add(&mut z, &s);
         assert_eq!(big(&z), big(&a) + big(&s));
-        assert_eq!(
-            BigUint::from(rem_word(&a, 1_000_003)),
-            big(&a) % 1_000_003u64
-        );
-        let mut w = y.clone();
-        div_word_exact(&mut w, u64::MAX);
-        assert_eq!(big(&w), big(&a));
         let mut t = a.clone();
         shr(&mut t, 70);
         assert_eq!(big(&t), big(&a) >> 70u32);
@@ -318,6 +335,30 @@ mod tests {
         let mut p = Vec::new();
         mul_into(&mut p, &s, &a);
         assert_eq!(big(&p), big(&a) * big(&s));
+        for d in [1u64, 3, 65_521, 4_294_967_291, u64::MAX] {
+            let inv = inverse_odd(d);
+            assert_eq!(d.wrapping_mul(inv), 1);
+            let c = rem_hensel(&a, d, inv);
+            // x + c 2^{64k} ≡ 0 (mod d), c ≤ d
+            let k = a.len() as u32;
+            assert!(c <= d);
+            assert_eq!(
+                (big(&a) + (BigUint::from(c) << (64 * k))) % d,
+                BigUint::from(0u8),
+                "d = {d}"
+            );
+            let mut prod = a.clone();
+            mul_word(&mut prod, d);
+            assert!(matches!(rem_hensel(&prod, d, inv), 0) || rem_hensel(&prod, d, inv) == d);
+            div_exact_odd(&mut prod, d, inv);
+            assert_eq!(prod, a);
+        }
+        let mut sh = a.clone();
+        shl(&mut sh, 70);
+        assert_eq!(big(&sh), big(&a) << 70u32);
+        let mut sh = a.clone();
+        shl(&mut sh, 64);
+        assert_eq!(big(&sh), big(&a) << 64u32);
         let (mut neg, mut x) = (false, s.clone());
         signed_add(&mut neg, &mut x, true, &a);
         assert!(neg);
