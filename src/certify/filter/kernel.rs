@@ -352,7 +352,8 @@ fn run<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: &mut V
         }
     }
     for c in 0..L {
-        // NaN fails both comparisons
+        // an infinity fails the first comparison; `max`/`min` skip NaN, but a NaN node value
+        // comes only from an infinity before it (or reaches the apex, checked by `enclosures`)
         ok &= vmax[c] <= VALUE_MAX && vmin[c] >= VALUE_MIN;
     }
     ok
@@ -446,7 +447,7 @@ pub(super) fn enclosures(
         *o = Enclosure {
             value,
             corr,
-            mu: if ok && corr.is_finite() && nu.is_finite() {
+            mu: if ok && value.is_finite() && corr.is_finite() && nu.is_finite() {
                 nu * mu_inflate + mu_absolute
             } else {
                 f64::NAN
