@@ -11,7 +11,15 @@
 //! points. Then `|ŷ − P(λ)| ≤ μ_final`. We compute μ itself in f64: every term is non-negative,
 //! so the computed `μ̂` satisfies `μ ≤ μ̂ (1 + γ_K)` with `K ≤ (3m + 5) n` roundings per path, and
 //! we inflate by `1 + 4Kε` and add an absolute `2^-1074` per operation (underflow in computing
-//! `μ̂`). The same pass computes `Σ|c_i| B_i(|λ|)` with a relative enclosure `1 ± 4(m+1)nε`.
+//! `μ̂`; those allowances reach the apex with weight at most `Σ_{j≤n} (Σ|λ_k|)^j`, by which we
+//! scale them). The same pass computes `Σ|c_i| B_i(|λ|)` with a relative enclosure
+//! `1 ± 4(m+1)nε`.
+//!
+//! A second, compensated stage ([`Filter::evaluate_compensated`]) carries every node's exact
+//! local error (TwoProduct, TwoSum) and a running bound of order `ε² Σ|c_i|B_i`. For `m ≤ 3` and
+//! `dim ≤ 4` both stages run in lean kernels (`filter/kernel.rs`: in place, fixed-width loops);
+//! the compensated one yields the condition number too, so tight tolerances skip the plain stage
+//! ([`Filter::judge`], [`Filter::compensated_first`]).
 //!
 //! Given the claimed float `y`, the true error `|y − P|` lies in `[|y − ŷ| − μ, |y − ŷ| + μ]`
 //! (widened by tiny margins for the roundings of these very comparisons); a tolerance is
