@@ -1341,4 +1341,57 @@ mod tests {
             assert!(!first(t, Precision::F32), "{t}");
         }
     }
+
+    /// A float `mantissa · 2^exponent` with a random sign, or 0.
+    fn scaled() -> impl proptest::strategy::Strategy<Value = f64> {
+        use proptest::prelude::*;
+        (-1.0f64..1.0, -80i32..80, 0u8..10).prop_map(
+            |(x, e, zero)| {
+                if zero == 0 { 0.0 } else { x * 2f64.powi(e) }
+            },
+        )
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+        /// Every kernel (lean where compiled, generic otherwise) encloses the exact value of
+        /// random nets of mixed magnitudes at random points of any sign, and the lean plain
+        /// kernel computes the generic one's numbers.
+        #[test]
+        fn enclosures_hold_on_random_nets(
+            m in 1usize..=4,
+            n in 1usize..=4,
+            dim in 1usize..=5,
+            values in proptest::collection::vec(scaled(), 140),
+            lam in proptest::collection::vec(-3.0f64..3.0, 5),
+        ) {
+            let simplex = Simplex::new(m, n);
+            let coords: Vec<f64> = (0..simplex.len() * dim).map(|i| values[i % values.len()]).collect();
+            let net = ControlNet::new(simplex, dim, coords);
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let lam = &lam[..=m];
+            let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+            let p = ExactEvaluator::new(&exact_net).evaluate(&l, Algorithm::Casteljau);
+            let s = crate::certify::bound::condition(&exact_net, &l);
+            let mut sc = Scratch::default();
+            let mut plain = vec![Enclosure::default(); dim];
+            let mut generic = vec![Enclosure::default(); dim];
+            f.evaluate(lam, &mut sc, &mut plain);
+            f.evaluate_generic(lam, &mut sc, &mut generic);
+            proptest::prop_assert_eq!(&plain, &generic);
+            let mut comp = plain.clone();
+            f.evaluate_compensated(lam, &mut sc, &mut comp);
+            for c in 0..dim {
+                for e in [&plain[c], &comp[c]] {
+                    if e.mu.is_finite() {
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap() - &p[c]).abs();
+                        proptest::prop_assert!(err <= exact_f64(e.mu).unwrap());
+                        proptest::prop_assert!(exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap());
+                    }
+                }
+            }
+        }
+    }
 }
