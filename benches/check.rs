@@ -3,9 +3,11 @@
 //!
 //! Both sides run on one thread over the same 1,000,000 points, with the numbers already in
 //! memory: `f64 de Casteljau` is the glam kernel writing into a preallocated buffer; `judge/TOL`
-//! is the float filter (plain stage, then the compensated stage for rows it leaves open) deciding
-//! every claim at tolerance TOL. Rows left open by both stages would go to exact arithmetic; the
-//! bench asserts there are none, so it measures the filter alone. `cargo bench --bench check`.
+//! is [`Filter::judge`], the row judgement `tribez check --patch P --results FILE` runs per row
+//! (the plain running-error stage and the compensated stage, in the order the tolerance calls
+//! for: tight tolerances go straight to the compensated one), deciding every claim at tolerance
+//! TOL. Rows left open by both stages would go to exact arithmetic; the bench asserts there are
+//! none, so it measures the filter alone. `cargo bench --bench check`.
 
 use std::time::Duration;
 
@@ -73,22 +75,12 @@ fn check(c: &mut Criterion) {
         );
         let mut scratch = Scratch::default();
         let mut enc = vec![Enclosure::default(); 3];
+        // the row judgement of `tribez check --results` (src/commands/batch.rs)
         let judge = |scratch: &mut Scratch, enc: &mut [Enclosure]| -> usize {
             let mut open = 0;
             for (p, y) in pts.iter().zip(&claimed) {
-                let s: f64 = p.iter().map(|x| x.abs()).sum();
-                filter.evaluate(p, scratch, enc);
-                if y.iter()
-                    .zip(enc.iter())
-                    .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
-                {
-                    filter.evaluate_compensated(p, scratch, enc);
-                    if y.iter()
-                        .zip(enc.iter())
-                        .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
-                    {
-                        open += 1;
-                    }
+                if filter.judge(&th, p, y, scratch, enc).decision == Decision::Undecided {
+                    open += 1;
                 }
             }
             open

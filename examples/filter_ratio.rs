@@ -59,21 +59,11 @@ fn main() {
         let mut enc = vec![Enclosure::default(); 3];
         let t = Instant::now();
         let mut undecided = 0;
+        // the row judgement of `tribez check --results` (plain and compensated stages, in the
+        // order the tolerance calls for)
         for (p, y) in pts.iter().zip(&claimed) {
-            filter.evaluate(p, &mut scratch, &mut enc);
-            let s: f64 = p.iter().map(|x| x.abs()).sum();
-            // a row is settled by the plain stage when every coordinate is decided
-            if y.iter()
-                .zip(&enc)
-                .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
-            {
-                filter.evaluate_compensated(p, &mut scratch, &mut enc);
-                if y.iter()
-                    .zip(&enc)
-                    .any(|(v, e)| th.decide(*v, e, s) == Decision::Undecided)
-                {
-                    undecided += 1;
-                }
+            if filter.judge(&th, p, y, &mut scratch, &mut enc).decision == Decision::Undecided {
+                undecided += 1;
             }
         }
         let check = t.elapsed();

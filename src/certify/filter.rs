@@ -11,7 +11,15 @@
 //! points. Then `|ŷ − P(λ)| ≤ μ_final`. We compute μ itself in f64: every term is non-negative,
 //! so the computed `μ̂` satisfies `μ ≤ μ̂ (1 + γ_K)` with `K ≤ (3m + 5) n` roundings per path, and
 //! we inflate by `1 + 4Kε` and add an absolute `2^-1074` per operation (underflow in computing
-//! `μ̂`). The same pass computes `Σ|c_i| B_i(|λ|)` with a relative enclosure `1 ± 4(m+1)nε`.
+//! `μ̂`; those allowances reach the apex with weight at most `Σ_{j≤n} (Σ|λ_k|)^j`, by which we
+//! scale them). The same pass computes `Σ|c_i| B_i(|λ|)` with a relative enclosure
+//! `1 ± 4(m+1)nε`.
+//!
+//! A second, compensated stage ([`Filter::evaluate_compensated`]) carries every node's exact
+//! local error (TwoProduct, TwoSum) and a running bound of order `ε² Σ|c_i|B_i`. For `m ≤ 3` and
+//! `dim ≤ 4` both stages run in lean kernels (`filter/kernel.rs`: in place, fixed-width loops);
+//! the compensated one yields the condition number too, so tight tolerances skip the plain stage
+//! ([`Filter::judge`], [`Filter::compensated_first`]).
 //!
 //! Given the claimed float `y`, the true error `|y − P|` lies in `[|y − ŷ| − μ, |y − ŷ| + μ]`
 //! (widened by tiny margins for the roundings of these very comparisons); a tolerance is
@@ -27,6 +35,8 @@ use crate::patch::ControlNet;
 use crate::simplex::Simplex;
 
 use super::measures::Tolerance;
+
+mod kernel;
 
 /// Safety margin of the comparisons (relative).
 const R: f64 = 1.0 / (1u64 << 45) as f64;
@@ -123,16 +133,18 @@ impl Thresholds {
     /// An upper bound on the error of `y` in ULPs of the claim's precision (at the smallest
     /// `|P|` the enclosure allows).
     pub fn ulps_upper(&self, y: f64, e: &Enclosure) -> f64 {
-        if !(e.value.is_finite() && e.mu.is_finite()) {
+        if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
             return f64::INFINITY;
         }
-        let e_hi = ((y - e.value).abs() * (1.0 + R) + e.mu * (1.0 + R)) * (1.0 + R);
-        let w = e.mu * (1.0 + R) + e.value.abs() * 2.0 * EPS + TINY;
-        let lo = if e.value.abs() > w {
-            e.value.abs() - w
-        } else {
-            0.0
-        };
+        // as in `decide`: the error |y − P| ≤ |y − value − corr| + μ, widened for the roundings
+        let d1 = y - e.value;
+        let d = d1 - e.corr;
+        let mu_eff = e.mu + 2.0 * EPS * (d1.abs() + e.corr.abs()) + TINY;
+        let e_hi = (d.abs() * (1.0 + R) + mu_eff * (1.0 + R)) * (1.0 + R);
+        let center = (e.value + e.corr).abs();
+        let w = mu_eff * (1.0 + R) + center * 2.0 * EPS + TINY;
+        let lo = if center > w { center - w } else { 0.0 };
+        // the ulp is a power of two: the quotient is exact barring overflow
         e_hi / ulp_of(lo * (1.0 - R), self.precision)
     }
 
@@ -219,7 +231,13 @@ impl Thresholds {
                 let (g_lo, g_hi) = if faithful {
                     (y - prev, next - y)
                 } else {
-                    ((y - prev) * 0.5, (next - y) * 0.5)
+                    // beyond ±MAX, round to nearest goes to ±inf from MAX + ulp(MAX)/2 on
+                    let half_top = match self.precision {
+                        Precision::F64 => pow2f(970),
+                        Precision::F32 => pow2f(103),
+                    };
+                    let half = |gap: f64| if gap.is_finite() { gap * 0.5 } else { half_top };
+                    (half(y - prev), half(next - y))
                 };
                 let d_hi = d + dabs * 4.0 * EPS;
                 let d_lo = d - dabs * 4.0 * EPS;
@@ -302,6 +320,10 @@ pub struct Filter {
     s_rel: f64,
     /// `γ_{(m+1)n}` for f64, rounded up.
     gamma: f64,
+    /// The lean compensated kernel, when one is compiled for this `(m, dim)`.
+    lean: Option<kernel::Lean>,
+    /// The largest control coordinate in magnitude (the scale of `abs=E` tolerances).
+    scale: f64,
 }
 
 /// Reusable buffers for [`Filter::evaluate`] (one per thread).
@@ -313,6 +335,7 @@ pub struct Scratch {
     v2: Vec<f64>,
     mu2: Vec<f64>,
     s2: Vec<f64>,
+    lean: kernel::LeanScratch,
 }
 
 impl Filter {
@@ -343,6 +366,8 @@ impl Filter {
                     f64::INFINITY
                 }
             },
+            lean: kernel::Lean::new(m, n, dim, net.coords()),
+            scale: net.coords().iter().fold(0.0, |a: f64, x| a.max(x.abs())),
         }
     }
 
@@ -353,8 +378,18 @@ impl Filter {
 
     /// Enclose every coordinate of `P(λ)` (`λ` has `m + 1` float coordinates, any sum).
     pub fn evaluate(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+        debug_assert_eq!(lambda.len(), self.m + 1);
+        if let Some(lean) = &self.lean {
+            let apex = lean.run_plain(lambda, &mut scratch.lean);
+            self.finish_plain(lambda, apex.value, apex.nu, apex.s, out);
+        } else {
+            self.evaluate_generic(lambda, scratch, out);
+        }
+    }
+
+    /// The plain stage for any m and dim (the lean kernel computes the same numbers).
+    fn evaluate_generic(&self, lambda: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
         let (m, dim) = (self.m, self.dim);
-        debug_assert_eq!(lambda.len(), m + 1);
         let Scratch {
             v,
             mu,
@@ -362,6 +397,7 @@ impl Filter {
             v2,
             mu2,
             s2,
+            ..
         } = scratch;
         v.clear();
         v.extend_from_slice(&self.coords);
@@ -400,21 +436,46 @@ impl Filter {
             std::mem::swap(mu, mu2);
             std::mem::swap(s, s2);
         }
+        self.finish_plain(lambda, &v[..dim], &mu[..dim], &s[..dim], out);
+    }
+
+    /// `Σ_{j≤n} (Σ|λ_k|)^j` (for the absolute allowances carried to the apex) and
+    /// `Σ_{j<n} (Σ|λ_k|)^j` (for the a-priori bound's underflow term).
+    fn geometric(&self, lambda: &[f64]) -> (f64, f64) {
+        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
+        let mut below = 0.0;
+        let mut power = 1.0;
+        for _ in 0..self.n {
+            below += power;
+            power *= sum_abs;
+        }
+        (below + power, below)
+    }
+
+    /// The plain enclosures from the apex's value, running bound and condition number.
+    ///
+    /// The absolute allowance `mu_absolute` for underflow in computing `μ` and `s` themselves
+    /// (per operation) is carried to the apex by the later steps with weight at most `Σ|λ_k|`
+    /// per step, so it is scaled by `Σ_{j≤n} (Σ|λ_k|)^j ≥ 1`.
+    fn finish_plain(
+        &self,
+        lambda: &[f64],
+        v: &[f64],
+        mu: &[f64],
+        s: &[f64],
+        out: &mut [Enclosure],
+    ) {
+        let m = self.m;
         // The filter's own evaluation is de Casteljau in f64, so its a-priori bound applies too
         // (bound.rs): |ŷ − P| ≤ γ_{(m+1)n} Σ|c_i|B_i(|λ|) + 2(m+1)η Σ_{j<n} s^j, s = Σ|λ_k|.
         // The running bound is sharper near cancellation, the a-priori one on well-conditioned
         // data; both hold, so we take the smaller.
-        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
-        let mut geometric = 0.0;
-        let mut power = 1.0;
-        for _ in 0..self.n {
-            geometric += power;
-            power *= sum_abs;
-        }
-        let underflow = 2.0 * (m + 1) as f64 * TINY * geometric * (1.0 + R) + TINY;
-        for c in 0..dim {
-            let s_hi = s[c] * (1.0 + self.s_rel) + self.mu_absolute;
-            let running = mu[c] * self.mu_inflate + self.mu_absolute;
+        let (all, below) = self.geometric(lambda);
+        let absolute = self.mu_absolute * all * (1.0 + R);
+        let underflow = 2.0 * (m + 1) as f64 * TINY * below * (1.0 + R) + TINY;
+        for c in 0..self.dim {
+            let s_hi = s[c] * (1.0 + self.s_rel) + absolute;
+            let running = mu[c] * self.mu_inflate + absolute;
             let a_priori = self.gamma * s_hi * (1.0 + R) + underflow;
             out[c] = Enclosure {
                 value: v[c],
@@ -424,10 +485,100 @@ impl Filter {
                 } else {
                     running
                 },
-                s_lo: (s[c] * (1.0 - self.s_rel) - self.mu_absolute).max(0.0),
+                s_lo: (s[c] * (1.0 - self.s_rel) - absolute).max(0.0),
                 s_hi,
             };
         }
+    }
+}
+
+/// The filter's conclusion about one row of claimed coordinates ([`Filter::judge`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowJudgement {
+    /// [`Decision::Fail`] when some coordinate surely fails, [`Decision::Pass`] when every one
+    /// surely passes, [`Decision::Undecided`] otherwise (compute exactly).
+    pub decision: Decision,
+    /// An upper bound on the largest error in ULPs over the coordinates (from the enclosure
+    /// that decided; infinite when nothing could be bounded).
+    pub ulps: f64,
+}
+
+/// The row's conclusion from one set of enclosures.
+fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJudgement {
+    let mut all_pass = true;
+    let mut any_fail = false;
+    let mut ulps = 0f64;
+    for (y, e) in claimed.iter().zip(enc) {
+        match th.decide(*y, e, s) {
+            Decision::Pass => {}
+            Decision::Fail => any_fail = true,
+            Decision::Undecided => all_pass = false,
+        }
+        ulps = ulps.max(th.ulps_upper(*y, e));
+    }
+    RowJudgement {
+        decision: if any_fail {
+            Decision::Fail
+        } else if all_pass {
+            Decision::Pass
+        } else {
+            Decision::Undecided
+        },
+        ulps,
+    }
+}
+
+impl Filter {
+    /// Whether rows at `th` should go straight to the compensated stage: the plain stage's
+    /// running bound is typically a few `(m+1)n ε Σ|c|B` (FORMULAS §14.2), so a tolerance
+    /// narrower than about that (`exact`, `correctly_rounded`, `faithful`, a few ulps, a small
+    /// `rel`/`abs`/`cond`) is rarely decided by it, and running it first only adds its cost. The
+    /// choice affects speed only: [`Filter::judge`] tries both stages before giving up.
+    pub fn compensated_first(&self, th: &Thresholds) -> bool {
+        let unit = ((self.m + 1) * self.n.max(1)) as f64;
+        match (th.precision, &th.tolerance) {
+            (_, Tolerance::Exact) => true,
+            (Precision::F32, _) => false,
+            (Precision::F64, Tolerance::CorrectlyRounded | Tolerance::Faithful) => true,
+            (Precision::F64, Tolerance::Ulps(_)) => th.k_hi < 1.5 * unit,
+            (Precision::F64, Tolerance::Rel(_)) => th.k_hi < 2.5 * unit * EPS,
+            (Precision::F64, Tolerance::Abs(_)) => th.k_hi < 0.3 * unit * EPS * self.scale,
+            (Precision::F64, Tolerance::Cond(_)) => th.k_hi < 0.7 * unit * EPS,
+            (Precision::F64, Tolerance::Bound) => false,
+        }
+    }
+
+    /// Judge one row: the claimed coordinates `claimed` (finite floats) of `P(λ)` against `th`,
+    /// by the plain and the compensated enclosures, in the order [`Filter::compensated_first`]
+    /// picks; the second stage runs only when the first leaves the row undecided. `enc` needs
+    /// [`Filter::dim`] entries and holds the deciding enclosures afterwards. This is the path of
+    /// `tribez check --results` (and of the `check` bench).
+    pub fn judge(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        let s: f64 = lambda.iter().map(|x| x.abs()).sum();
+        // the generic compensated stage needs the plain stage's condition numbers
+        let first = self.lean.is_some() && self.compensated_first(th);
+        if first {
+            self.evaluate_compensated(lambda, scratch, enc);
+        } else {
+            self.evaluate(lambda, scratch, enc);
+        }
+        let r = conclude(th, claimed, enc, s);
+        if r.decision != Decision::Undecided {
+            return r;
+        }
+        if first {
+            self.evaluate(lambda, scratch, enc);
+        } else {
+            self.evaluate_compensated(lambda, scratch, enc);
+        }
+        conclude(th, claimed, enc, s)
     }
 }
 
@@ -462,17 +613,64 @@ impl Filter {
     /// errors `E_k` the node's exact error is `E = Σ_k π_k + Σ σ + Σ_k λ_k E_k`. We compute it in
     /// f64 (`Ê`) with a running bound `ν ≥ |E − Ê|`: `ν = Σ|λ_k| ν_k + ε Σ|partials| + (m+1)η`
     /// (the same model as the plain running bound). Then `|V + Ê − P| ≤ ν`, of order `ε² Σ|c|B`.
-    /// `out` must hold the plain enclosures of [`Filter::evaluate`] at the same `λ`: their
-    /// condition-number bounds are kept. Guards: a factor of magnitude `≥ 2^995` (the split could overflow) or a non-zero product
-    /// below `2^-900` (TwoProduct could be inexact) makes the enclosure undecided (NaN).
+    /// For `(m, dim)` with a lean kernel ([`Filter::has_lean_kernel`]: `m ≤ 3`, `dim ≤ 4`) the
+    /// condition-number bounds are computed in the same pass; otherwise `out` must hold the
+    /// plain enclosures of [`Filter::evaluate`] at the same `λ` and their condition-number
+    /// bounds are kept. Guards: a factor of magnitude `≥ 2^990` (the split could overflow) or a
+    /// non-zero product of non-zero factors below `2^-900` (TwoProduct could be inexact) makes
+    /// the enclosure undecided (NaN).
     pub fn evaluate_compensated(
         &self,
         lambda: &[f64],
         scratch: &mut Scratch,
         out: &mut [Enclosure],
     ) {
+        match &self.lean {
+            Some(lean) => self.evaluate_lean(lean, lambda, scratch, out),
+            None => self.evaluate_compensated_generic(lambda, scratch, out),
+        }
+    }
+
+    /// Whether the lean compensated kernel serves this net (`m ≤ 3`, `dim ≤ 4`, `n ≥ 1`).
+    pub fn has_lean_kernel(&self) -> bool {
+        self.lean.is_some()
+    }
+
+    /// The lean kernel ([`kernel`]): the compensated enclosure and the condition-number bounds
+    /// in one pass (`out` need not hold anything).
+    ///
+    /// The absolute allowance for underflow in computing `ν` and `s` themselves
+    /// (`mu_absolute`, per operation) is carried to the apex by the later steps with weight at
+    /// most `Σ|λ_k|` per step, so it is scaled by `Σ_{j≤n} (Σ|λ_k|)^j ≥ 1`.
+    fn evaluate_lean(
+        &self,
+        lean: &kernel::Lean,
+        lambda: &[f64],
+        scratch: &mut Scratch,
+        out: &mut [Enclosure],
+    ) {
+        let absolute = self.mu_absolute * self.geometric(lambda).0 * (1.0 + R);
+        let (ok, apex) = lean.run(lambda, &mut scratch.lean);
+        kernel::enclosures(
+            ok && absolute.is_finite(),
+            &apex,
+            self.mu_inflate,
+            absolute,
+            self.s_rel,
+            out,
+        );
+    }
+
+    /// The generic compensated stage (any m and dim), as documented at
+    /// [`Filter::evaluate_compensated`].
+    fn evaluate_compensated_generic(
+        &self,
+        lambda: &[f64],
+        scratch: &mut Scratch,
+        out: &mut [Enclosure],
+    ) {
         let (m, dim) = (self.m, self.dim);
-        let big = 2f64.powi(995);
+        let big = 2f64.powi(990);
         let small = 2f64.powi(-900);
         let Scratch {
             v,
@@ -481,6 +679,7 @@ impl Filter {
             v2,
             mu2,
             s2,
+            ..
         } = scratch;
         // v: values, s: corrections Ê, mu: ν
         v.clear();
@@ -535,6 +734,7 @@ impl Filter {
             std::mem::swap(s, s2);
             std::mem::swap(mu, mu2);
         }
+        let absolute = self.mu_absolute * self.geometric(lambda).0 * (1.0 + R);
         for c in 0..dim {
             // s_lo and s_hi (the condition number) stay those of the plain enclosure in `out`
             out[c].value = v[c];
@@ -542,7 +742,7 @@ impl Filter {
             out[c].mu = if bad || !s[c].is_finite() {
                 f64::NAN
             } else {
-                mu[c] * self.mu_inflate + self.mu_absolute
+                mu[c] * self.mu_inflate + absolute
             };
         }
     }
@@ -614,6 +814,37 @@ mod tests {
             s_hi: 1.0,
         };
         assert_eq!(thf.decide(1.0, &e, 1.0), Decision::Pass);
+    }
+
+    #[test]
+    fn correct_rounding_at_the_largest_float_knows_where_overflow_starts() {
+        use crate::certify::measures::Tolerance;
+        // f32: MAX = 2^128 − 2^104; P ≥ MAX + 2^103 rounds to inf, below that to MAX
+        let max = f64::from(f32::MAX);
+        for (p, y, half) in [
+            (Precision::F32, max, 2f64.powi(103)),
+            (Precision::F64, f64::MAX, 2f64.powi(970)),
+        ] {
+            let th = Thresholds::new(&Tolerance::CorrectlyRounded, p, Algorithm::Casteljau, 2, 1);
+            let at = |corr: f64| Enclosure {
+                value: y,
+                corr,
+                mu: 0.0,
+                s_lo: y,
+                s_hi: y,
+            };
+            assert_eq!(th.decide(y, &at(0.5 * half), 1.0), Decision::Pass, "{p:?}");
+            assert_eq!(th.decide(y, &at(1.5 * half), 1.0), Decision::Fail, "{p:?}");
+            let below = |corr: f64| Enclosure {
+                value: -y,
+                corr,
+                mu: 0.0,
+                s_lo: y,
+                s_hi: y,
+            };
+            assert_eq!(th.decide(-y, &below(-0.5 * half), 1.0), Decision::Pass);
+            assert_eq!(th.decide(-y, &below(-1.5 * half), 1.0), Decision::Fail);
+        }
     }
 
     #[test]
@@ -778,5 +1009,389 @@ mod tests {
             }
         }
         let _ = q("1");
+    }
+
+    /// A named net with the points to evaluate it at.
+    type StressCase = (&'static str, ControlNet<f64>, Vec<Vec<f64>>);
+
+    /// Nets and points that stress the filter: (m, dim) with and without a lean kernel,
+    /// ill-conditioned coordinates (an alternating net: `Σ(−1)^{α_0} B_α = (λ_1 + … − λ_0)^n`,
+    /// zero on `λ_0 = 1/2` while `Σ|c|B = 1`; the linear `λ_0 − λ_1`), points near those zeros
+    /// and outside the simplex (any signs), huge and tiny magnitudes, and inputs that trip the
+    /// compensated kernel's guards (tiny control values, subnormal and huge `λ`).
+    fn stress_cases() -> Vec<StressCase> {
+        let mut st = 11u64;
+        let mut cases = Vec::new();
+        let points = |st: &mut u64, m: usize, count: usize| -> Vec<Vec<f64>> {
+            (0..count)
+                .map(|i| {
+                    let mut l: Vec<f64> = (0..=m).map(|_| lcg(st)).collect();
+                    match i % 5 {
+                        // inside, summing to about 1
+                        0 => {
+                            let t: f64 = l.iter().sum();
+                            l.iter_mut().for_each(|x| *x /= t);
+                        }
+                        // outside: any signs
+                        1 => l.iter_mut().for_each(|x| *x = *x * 5.0 - 2.0),
+                        // near λ_0 = 1/2 (the alternating net's zero), the rest summing to 1/2
+                        2 => {
+                            let t: f64 = l[1..].iter().sum();
+                            l[1..].iter_mut().for_each(|x| *x *= 0.5 / t);
+                            l[0] = 0.5 + (lcg(st) - 0.5) * 1e-12;
+                        }
+                        // near λ_0 = λ_1 (the linear coordinate's zero)
+                        3 => l[1] = l[0] * (1.0 + (lcg(st) - 0.5) * 1e-13),
+                        // far out, large weights
+                        _ => l.iter_mut().for_each(|x| *x = (*x - 0.3) * 1e3),
+                    }
+                    l
+                })
+                .collect()
+        };
+        for (name, m, dim, n) in [
+            ("m=2 dim=3 n=3", 2, 3, 3),
+            ("m=1 dim=1 n=5", 1, 1, 5),
+            ("m=3 dim=2 n=2", 3, 2, 2),
+            ("m=2 dim=4 n=4", 2, 4, 4),
+            ("m=2 dim=5 n=3 (generic kernel)", 2, 5, 3),
+            ("m=4 dim=1 n=2 (generic kernel)", 4, 1, 2),
+        ] {
+            let simplex = Simplex::new(m, n);
+            let mut coords = Vec::new();
+            for alpha in simplex.iter() {
+                for c in 0..dim {
+                    coords.push(match c {
+                        0 => (alpha[0] as f64 - alpha[1] as f64) / n as f64,
+                        1 => {
+                            if alpha[0] % 2 == 0 {
+                                1.0
+                            } else {
+                                -1.0
+                            }
+                        }
+                        2 => (lcg(&mut st) - 0.5) * 10f64.powi((lcg(&mut st) * 200.0) as i32 - 100),
+                        _ => (lcg(&mut st) - 0.5) * 3.0,
+                    });
+                }
+            }
+            let pts = points(&mut st, m, 60);
+            cases.push((name, ControlNet::new(simplex, dim, coords), pts));
+        }
+        // guards: subnormal, tiny and huge λ on an ordinary net
+        let mut pts = points(&mut st, 2, 20);
+        pts.extend([
+            vec![5e-324, 0.5, 0.5],
+            vec![1e-310, -1e-200, 1.0],
+            vec![1e-100, 1e-100, 1.0],
+            vec![1e95, -1e95, 1.0],
+            vec![1e-95, 1e95, 1.0],
+            vec![0.0, 0.0, 1.0],
+            vec![0.0, 0.0, 0.0],
+        ]);
+        let simplex = Simplex::new(2, 3);
+        let coords = (0..simplex.len() * 2)
+            .map(|i| (lcg(&mut st) - 0.5) * (i as f64 + 1.0))
+            .collect();
+        cases.push(("guards: λ", ControlNet::new(simplex, 2, coords), pts));
+        // guards: tiny control values (below 2^-500) beside ordinary and huge ones
+        let simplex = Simplex::new(2, 3);
+        let coords: Vec<f64> = (0..simplex.len() * 2)
+            .map(|i| match i % 4 {
+                0 => 1e-160 * (i as f64 + 1.0),
+                1 => -3.0 / (i as f64 + 1.0),
+                2 => 1e-300,
+                _ => 1e150,
+            })
+            .collect();
+        let mut pts = points(&mut st, 2, 30);
+        pts.extend([
+            vec![5e-324, 0.5, 0.5],
+            vec![1e-310, -1e-200, 1.0],
+            vec![1e-100, 1e-100, 1.0],
+            vec![1e95, -1e95, 1.0],
+            vec![0.0, 0.0, 1.0],
+            vec![0.0, 0.0, 0.0],
+        ]);
+        cases.push(("guards: control", ControlNet::new(simplex, 2, coords), pts));
+        cases
+    }
+
+    #[test]
+    fn every_stage_encloses_the_exact_value_on_the_stress_cases() {
+        for (name, net, pts) in stress_cases() {
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let exact = ExactEvaluator::new(&exact_net);
+            let dim = net.dim();
+            let mut sc = Scratch::default();
+            let (mut plain, mut comp, mut generic) = (
+                vec![Enclosure::default(); dim],
+                vec![Enclosure::default(); dim],
+                vec![Enclosure::default(); dim],
+            );
+            let mut lean_finite = 0;
+            for lam in &pts {
+                let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+                let p = exact.evaluate(&l, Algorithm::Casteljau);
+                let s = crate::certify::bound::condition(&exact_net, &l);
+                f.evaluate(lam, &mut sc, &mut plain);
+                // the lean plain kernel computes the generic code's numbers
+                let mut plain_generic = vec![Enclosure::default(); dim];
+                f.evaluate_generic(lam, &mut sc, &mut plain_generic);
+                for (a, b) in plain.iter().zip(&plain_generic) {
+                    let same = |x: f64, y: f64| x == y || (x.is_nan() && y.is_nan());
+                    assert!(
+                        same(a.value, b.value)
+                            && same(a.mu, b.mu)
+                            && same(a.s_lo, b.s_lo)
+                            && same(a.s_hi, b.s_hi),
+                        "{name}: lean plain {a:?} generic {b:?} at {lam:?}"
+                    );
+                }
+                // the lean kernel (where compiled) overwrites the condition numbers: start from
+                // nonsense to see that it does
+                comp.iter_mut().for_each(|e| {
+                    *e = Enclosure {
+                        s_lo: -1.0,
+                        s_hi: -1.0,
+                        ..plain[0]
+                    }
+                });
+                if !f.has_lean_kernel() {
+                    comp.copy_from_slice(&plain);
+                }
+                f.evaluate_compensated(lam, &mut sc, &mut comp);
+                generic.copy_from_slice(&plain);
+                f.evaluate_compensated_generic(lam, &mut sc, &mut generic);
+                for c in 0..dim {
+                    let within = |e: &Enclosure, what: &str| {
+                        if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
+                            return false;
+                        }
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap()
+                            - &p[c])
+                            .abs();
+                        assert!(
+                            err <= exact_f64(e.mu).unwrap(),
+                            "{name}: {what} misses P at {lam:?}, coordinate {c}"
+                        );
+                        if e.s_hi.is_finite() {
+                            assert!(
+                                exact_f64(e.s_lo).unwrap() <= s[c]
+                                    && s[c] <= exact_f64(e.s_hi).unwrap(),
+                                "{name}: {what} condition number at {lam:?}, coordinate {c}"
+                            );
+                        }
+                        true
+                    };
+                    within(&plain[c], "plain");
+                    let g = within(&generic[c], "generic compensated");
+                    if within(&comp[c], "compensated") {
+                        lean_finite += 1;
+                        if g {
+                            // the same operations in the same order
+                            assert_eq!(comp[c].value, generic[c].value, "{name}");
+                            assert_eq!(comp[c].corr, generic[c].corr, "{name}");
+                        }
+                    }
+                }
+            }
+            // (tiny control values trip the lean kernel's guard on every point)
+            assert!(
+                lean_finite > 0 || (name == "guards: control" && f.has_lean_kernel()),
+                "{name}: the compensated stage never applied"
+            );
+        }
+    }
+
+    #[test]
+    fn row_judgements_agree_with_the_exact_judgement_on_the_stress_cases() {
+        use crate::certify::measures::{Leaf, Tolerance};
+        let tols = [
+            "exact",
+            "ulps=1",
+            "ulps=3",
+            "ulps=64",
+            "abs=1e-16",
+            "rel=1e-16",
+            "rel=1e-12",
+            "correctly_rounded",
+            "faithful",
+            "cond=2",
+            "cond=64",
+            "bound",
+        ];
+        let mut st = 5u64;
+        let mut compensated_decided = 0;
+        for (name, net, pts) in stress_cases() {
+            let (m, n, dim) = (net.m(), net.degree(), net.dim());
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let exact = ExactEvaluator::new(&exact_net);
+            let mut sc = Scratch::default();
+            let mut enc = vec![Enclosure::default(); dim];
+            for lam in &pts {
+                let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+                let pe = exact.evaluate(&l, Algorithm::Casteljau);
+                let s = crate::certify::bound::condition(&exact_net, &l);
+                for p in [Precision::F64, Precision::F32] {
+                    // the claimed row: each coordinate the rounded exact value, moved by −2..2 units
+                    let mut ys = Vec::with_capacity(dim);
+                    for exact_c in &pe {
+                        let mut y = match p {
+                            Precision::F64 => round_f64(exact_c),
+                            Precision::F32 => f64::from(crate::number::round_f32(exact_c)),
+                        };
+                        let steps = (lcg(&mut st) * 5.0) as i32 - 2;
+                        for _ in 0..steps.abs() {
+                            y = match (p, steps > 0) {
+                                (Precision::F64, true) => y.next_up(),
+                                (Precision::F64, false) => y.next_down(),
+                                (Precision::F32, true) => f64::from((y as f32).next_up()),
+                                (Precision::F32, false) => f64::from((y as f32).next_down()),
+                            };
+                        }
+                        ys.push(y);
+                    }
+                    if ys.iter().any(|y| !y.is_finite()) {
+                        continue;
+                    }
+                    for t in tols {
+                        let tol = Tolerance::parse(t).unwrap();
+                        let th = Thresholds::new(&tol, p, Algorithm::Casteljau, m, n);
+                        let truth = (0..dim).all(|c| {
+                            let leaf = Leaf {
+                                precision: Some(p),
+                                condition: Some(s[c].clone()),
+                                bound: crate::certify::bound::a_priori(
+                                    Algorithm::Casteljau,
+                                    p,
+                                    m,
+                                    n,
+                                    &s[c],
+                                    &l,
+                                ),
+                            };
+                            tol.accepts(&exact_f64(ys[c]).unwrap(), &pe[c], &leaf)
+                                .unwrap()
+                        });
+                        let r = f.judge(&th, lam, &ys, &mut sc, &mut enc);
+                        match r.decision {
+                            Decision::Pass => assert!(truth, "{name} {t} {p:?} {lam:?} {ys:?}"),
+                            Decision::Fail => assert!(!truth, "{name} {t} {p:?} {lam:?} {ys:?}"),
+                            Decision::Undecided => {}
+                        }
+                        if r.decision == Decision::Pass {
+                            // the ulps figure bounds the true error
+                            for c in 0..dim {
+                                let e = crate::number::ulps_error_f64(
+                                    &exact_f64(ys[c]).unwrap(),
+                                    &pe[c],
+                                );
+                                if p == Precision::F64 && r.ulps.is_finite() {
+                                    assert!(
+                                        e <= BigRational::from_float(r.ulps).unwrap(),
+                                        "{name} {t} ulps"
+                                    );
+                                }
+                            }
+                        }
+                        if r.decision != Decision::Undecided
+                            && f.has_lean_kernel()
+                            && f.compensated_first(&th)
+                        {
+                            compensated_decided += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(compensated_decided > 100, "{compensated_decided}");
+    }
+
+    #[test]
+    fn tight_tolerances_go_to_the_compensated_stage_first() {
+        use crate::certify::measures::Tolerance;
+        let net = ControlNet::new(
+            Simplex::new(2, 3),
+            3,
+            (0..30).map(|i| 1.0 / (i as f64 + 1.0)).collect(),
+        );
+        let f = Filter::new(&net);
+        assert!(f.has_lean_kernel());
+        let first = |t: &str, p| {
+            let th = Thresholds::new(&Tolerance::parse(t).unwrap(), p, Algorithm::Casteljau, 2, 3);
+            f.compensated_first(&th)
+        };
+        for t in [
+            "exact",
+            "correctly_rounded",
+            "faithful",
+            "ulps=4",
+            "rel=1e-15",
+            "cond=2",
+        ] {
+            assert!(first(t, Precision::F64), "{t}");
+        }
+        for t in ["cond=9", "bound", "ulps=64", "rel=1e-12", "abs=1e-6"] {
+            assert!(!first(t, Precision::F64), "{t}");
+        }
+        for t in ["correctly_rounded", "faithful", "ulps=1"] {
+            assert!(!first(t, Precision::F32), "{t}");
+        }
+    }
+
+    /// A float `mantissa · 2^exponent` with a random sign, or 0.
+    fn scaled() -> impl proptest::strategy::Strategy<Value = f64> {
+        use proptest::prelude::*;
+        (-1.0f64..1.0, -80i32..80, 0u8..10).prop_map(
+            |(x, e, zero)| {
+                if zero == 0 { 0.0 } else { x * 2f64.powi(e) }
+            },
+        )
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+        /// Every kernel (lean where compiled, generic otherwise) encloses the exact value of
+        /// random nets of mixed magnitudes at random points of any sign, and the lean plain
+        /// kernel computes the generic one's numbers.
+        #[test]
+        fn enclosures_hold_on_random_nets(
+            m in 1usize..=4,
+            n in 1usize..=4,
+            dim in 1usize..=5,
+            values in proptest::collection::vec(scaled(), 140),
+            lam in proptest::collection::vec(-3.0f64..3.0, 5),
+        ) {
+            let simplex = Simplex::new(m, n);
+            let coords: Vec<f64> = (0..simplex.len() * dim).map(|i| values[i % values.len()]).collect();
+            let net = ControlNet::new(simplex, dim, coords);
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let lam = &lam[..=m];
+            let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+            let p = ExactEvaluator::new(&exact_net).evaluate(&l, Algorithm::Casteljau);
+            let s = crate::certify::bound::condition(&exact_net, &l);
+            let mut sc = Scratch::default();
+            let mut plain = vec![Enclosure::default(); dim];
+            let mut generic = vec![Enclosure::default(); dim];
+            f.evaluate(lam, &mut sc, &mut plain);
+            f.evaluate_generic(lam, &mut sc, &mut generic);
+            proptest::prop_assert_eq!(&plain, &generic);
+            let mut comp = plain.clone();
+            f.evaluate_compensated(lam, &mut sc, &mut comp);
+            for c in 0..dim {
+                for e in [&plain[c], &comp[c]] {
+                    if e.mu.is_finite() {
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap() - &p[c]).abs();
+                        proptest::prop_assert!(err <= exact_f64(e.mu).unwrap());
+                        proptest::prop_assert!(exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap());
+                    }
+                }
+            }
+        }
     }
 }

@@ -1,0 +1,311 @@
+//! Judging one row: the float filter first, exact arithmetic when it cannot decide.
+
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use super::parse::Num;
+use super::report::FailedCoord;
+use crate::certify::bound::{a_priori, condition};
+use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
+use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
+use crate::commands::CliError;
+use crate::commands::check::Args;
+use crate::exact::{Algorithm, ExactEvaluator};
+use crate::float::Precision;
+use crate::patch::{ControlNet, Patch};
+
+/// How one row came out.
+pub(super) struct RowOutcome {
+    pub(super) line: usize,
+    pub(super) pass: bool,
+    pub(super) fell_back: bool,
+    /// The largest error in ULPs over the coordinates (upper bound if filter-decided).
+    pub(super) ulps: f64,
+    pub(super) failure: Option<String>,
+    /// The parsed row (kept for failures and the worst row, to report them exactly).
+    pub(super) inputs: Vec<Num>,
+    pub(super) claimed: Vec<Num>,
+}
+
+/// Everything prepared once per patch.
+pub(super) struct Prepared {
+    pub(super) patch: Patch,
+    pub(super) precision: Option<Precision>,
+    pub(super) tolerance: Tolerance,
+    pub(super) algorithm: Algorithm,
+    pub(super) cartesian: bool,
+    pub(super) filter: Option<(Filter, Thresholds)>,
+    pub(super) seen: ExactEvaluator,
+    pub(super) seen_net: ControlNet<BigRational>,
+    pub(super) intended: ExactEvaluator,
+}
+
+impl Prepared {
+    pub(super) fn new(args: &Args, patch: Patch) -> Result<Self, CliError> {
+        let tolerance = match &args.tolerance {
+            Some(t) => {
+                Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?
+            }
+            None => Tolerance::Exact,
+        };
+        let precision = match &args.precision {
+            Some(p) => Some(
+                p.parse::<Precision>()
+                    .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+            ),
+            None => None,
+        };
+        if tolerance.needs_precision() && precision.is_none() {
+            return Err(CliError::Usage(format!(
+                "--tolerance {tolerance} needs --precision f64 or f32"
+            )));
+        }
+        let algorithm = args.algorithm.algorithm();
+        let seen_net = match precision {
+            Some(p) => {
+                if patch.net.coords().iter().any(|q| as_float(q, p).is_none()) {
+                    return Err(CliError::Usage(format!(
+                        "a control point of the patch overflows {}",
+                        p.name()
+                    )));
+                }
+                patch.net.map(|q| as_float(q, p).unwrap_or_default())
+            }
+            None => patch.net.clone(),
+        };
+        let (m, n) = (patch.net.m(), patch.net.degree());
+        let filter = precision.filter(|_| !args.cartesian).map(|p| {
+            let fnet = seen_net.map(crate::number::round_f64);
+            (
+                Filter::new(&fnet),
+                Thresholds::new(&tolerance, p, algorithm, m, n),
+            )
+        });
+        Ok(Prepared {
+            seen: ExactEvaluator::new(&seen_net),
+            intended: ExactEvaluator::new(&patch.net),
+            seen_net,
+            patch,
+            precision,
+            tolerance,
+            algorithm,
+            cartesian: args.cartesian,
+            filter,
+        })
+    }
+
+    pub(super) fn width(&self) -> usize {
+        let m = self.patch.net.m();
+        if self.cartesian { m } else { m + 1 }
+    }
+
+    /// Barycentric coordinates of an input row (exact), as seen or intended.
+    pub(super) fn barycentric(&self, xs: Vec<BigRational>) -> Option<Vec<BigRational>> {
+        if self.cartesian {
+            self.patch.domain_or_reference().barycentric(&xs).ok()
+        } else {
+            Some(xs)
+        }
+    }
+
+    /// Judge one row exactly; `texts` are the row's fields (for the intended values).
+    pub(super) fn exact_row(
+        &self,
+        inputs: &[Num],
+        claimed: &[Num],
+        texts: Option<&[&str]>,
+        detail: bool,
+    ) -> (bool, f64, Option<String>, Vec<FailedCoord>) {
+        let seen_in: Option<Vec<BigRational>> = inputs
+            .iter()
+            .map(|x| match x {
+                Num::Value { float, text_exact } => match self.precision {
+                    Some(_) => crate::number::exact_f64(*float),
+                    None => text_exact.clone(),
+                },
+                Num::NotFinite(_) => None,
+            })
+            .collect();
+        let Some(lambda) = seen_in.and_then(|x| self.barycentric(x)) else {
+            return (false, f64::INFINITY, Some("an input is not a finite number (or the Cartesian point has no barycentric coordinates)".into()), Vec::new());
+        };
+        let exact = self.seen.evaluate_fast(&lambda);
+        let cond = if self.tolerance.needs_condition() {
+            Some(condition(&self.seen_net, &lambda))
+        } else {
+            None
+        };
+        let (m, n) = (self.patch.net.m(), self.patch.net.degree());
+        let intended: Option<Vec<BigRational>> = if detail {
+            texts
+                .and_then(|t| {
+                    inputs
+                        .iter()
+                        .zip(t)
+                        .map(|(x, s)| x.text_value(s))
+                        .collect::<Option<Vec<_>>>()
+                })
+                .and_then(|x| self.barycentric(x))
+                .map(|l| self.intended.evaluate_fast(&l))
+        } else {
+            None
+        };
+        let mut pass = true;
+        let mut worst = 0f64;
+        let mut reason = None;
+        let mut coords = Vec::new();
+        for (c, y) in claimed.iter().enumerate() {
+            let Num::Value { float, text_exact } = y else {
+                pass = false;
+                worst = f64::INFINITY;
+                if let Num::NotFinite(what) = y {
+                    reason.get_or_insert_with(|| {
+                        format!(
+                            "claimed coordinate {} is not a finite number: {what}",
+                            c + 1
+                        )
+                    });
+                }
+                continue;
+            };
+            let yq = match self.precision {
+                Some(_) => crate::number::exact_f64(*float).unwrap_or_default(),
+                None => text_exact.clone().unwrap_or_default(),
+            };
+            let leaf = Leaf {
+                precision: self.precision,
+                condition: cond.as_ref().map(|s| s[c].clone()),
+                bound: cond.as_ref().and_then(|s| {
+                    a_priori(
+                        self.algorithm,
+                        self.precision.unwrap_or(Precision::F64),
+                        m,
+                        n,
+                        &s[c],
+                        &lambda,
+                    )
+                }),
+            };
+            let ok = self
+                .tolerance
+                .accepts(&yq, &exact[c], &leaf)
+                .unwrap_or(false);
+            let meas = Measures::new(&yq, &exact[c], self.precision.or(Some(Precision::F64)));
+            let u = meas
+                .ulps
+                .as_ref()
+                .and_then(ToPrimitive::to_f64)
+                .unwrap_or(f64::INFINITY);
+            worst = worst.max(u);
+            if !ok {
+                pass = false;
+                reason.get_or_insert_with(|| {
+                    format!(
+                        "coordinate {} breaks tolerance `{}`: {}",
+                        c + 1,
+                        self.tolerance,
+                        meas.text()
+                    )
+                });
+            }
+            if detail {
+                let (decimal, hex) = match self.precision {
+                    Some(Precision::F32) => (
+                        crate::number::display_f32(*float as f32),
+                        crate::number::hex_f32(*float as f32),
+                    ),
+                    _ => (
+                        crate::number::display_f64(*float),
+                        crate::number::hex_f64(*float),
+                    ),
+                };
+                let ei = intended.as_ref().map(|v| v[c].clone());
+                coords.push(FailedCoord {
+                    index: c,
+                    decimal,
+                    hex,
+                    intended: ei.as_ref().map(|e| Measures::new(&yq, e, self.precision)),
+                    exact_intended: ei,
+                    exact_seen: exact[c].clone(),
+                    seen: meas,
+                });
+            }
+        }
+        (pass, worst, reason, coords)
+    }
+
+    /// Judge one row: filter first, exact when undecided.
+    pub(super) fn row(
+        &self,
+        line: usize,
+        inputs: Vec<Num>,
+        claimed: Vec<Num>,
+        scratch: &mut RowScratch,
+    ) -> RowOutcome {
+        let finite = |xs: &[Num]| xs.iter().all(|x| matches!(x, Num::Value { .. }));
+        if !finite(&inputs) || !finite(&claimed) {
+            let (_, _, reason, _) = self.exact_row(&inputs, &claimed, None, false);
+            return RowOutcome {
+                line,
+                pass: false,
+                fell_back: false,
+                ulps: f64::INFINITY,
+                failure: reason,
+                inputs,
+                claimed,
+            };
+        }
+        if let Some((filter, th)) = &self.filter {
+            let float = |x: &Num| match x {
+                Num::Value { float, .. } => *float,
+                Num::NotFinite(_) => f64::NAN,
+            };
+            let (sc, enc, lambda, ys) = scratch;
+            lambda.clear();
+            lambda.extend(inputs.iter().map(float));
+            ys.clear();
+            ys.extend(claimed.iter().map(float));
+            enc.resize(filter.dim(), Enclosure::default());
+            let RowJudgement { decision, ulps } = filter.judge(th, lambda, ys, sc, enc);
+            match decision {
+                Decision::Pass => {
+                    return RowOutcome {
+                        line,
+                        pass: true,
+                        fell_back: false,
+                        ulps,
+                        failure: None,
+                        inputs,
+                        claimed,
+                    };
+                }
+                Decision::Fail => {
+                    return RowOutcome {
+                        line,
+                        pass: false,
+                        fell_back: false,
+                        ulps,
+                        failure: Some(String::new()),
+                        inputs,
+                        claimed,
+                    };
+                }
+                Decision::Undecided => {}
+            }
+        }
+        let (pass, ulps, reason, _) = self.exact_row(&inputs, &claimed, None, false);
+        RowOutcome {
+            line,
+            pass,
+            fell_back: self.filter.is_some(),
+            ulps,
+            failure: if pass { None } else { reason },
+            inputs,
+            claimed,
+        }
+    }
+}
+
+/// Per-thread buffers of the filter: its scratch, the enclosures, the row's inputs and claimed
+/// values as floats.
+pub(super) type RowScratch = (Scratch, Vec<Enclosure>, Vec<f64>, Vec<f64>);
