@@ -278,7 +278,7 @@ fn nan_inf_and_empty_fields_are_failed_claims() {
         .code(1)
         .stdout(
             predicate::str::contains("4 claims: 1 passed, 3 failed").and(predicate::str::contains(
-                "line 2: claimed coordinate 1 is not a finite number",
+                "line 2: claimed coordinate [0] is not a finite number",
             )),
         );
 }
@@ -449,6 +449,34 @@ fn bezier_passes_at_cond_9() {
     .stdout(predicate::str::contains(
         "2000 claims: 2000 passed, 0 failed",
     ));
+}
+
+/// The worst row is the row with the largest error, not the one with the loosest bound, and the
+/// histogram counts the rows' errors: fixtures/peers/exact_errors.py (plain Python fractions)
+/// finds line 417 at 320.7 ulp and the histogram [0, 630, 809, 492, 44, 23, 1, 1]; the same at
+/// every tolerance.
+#[test]
+fn worst_row_is_the_largest_error() {
+    let mut histograms = Vec::new();
+    for tol in ["cond=9", "bound", "ulps=4", "correctly_rounded"] {
+        let out = batch(
+            &peers().join("peer_cubic.toml"),
+            &peers().join("bezier_results.csv"),
+            &["--precision", "f64", "--tolerance", tol, "--format", "json"],
+        )
+        .get_output()
+        .stdout
+        .clone();
+        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["worst"]["line"], 417, "{tol}: {v}");
+        let u = v["worst"]["ulps"].as_f64().unwrap();
+        assert!((u - 320.7).abs() < 0.05, "{tol}: {u}");
+        histograms.push(v["summary"]["ulp_histogram"].clone());
+    }
+    assert!(
+        histograms.windows(2).all(|w| w[0] == w[1]),
+        "{histograms:?}"
+    );
 }
 
 fn next_up_text(t: &str) -> String {

@@ -148,6 +148,21 @@ impl Thresholds {
         e_hi / ulp_of(lo * (1.0 - R), self.precision)
     }
 
+    /// A lower bound on the error of `y` in ULPs of the claim's precision (at the largest `|P|`
+    /// the enclosure allows, so with the largest ulp); 0 when the enclosure is not finite.
+    pub fn ulps_lower(&self, y: f64, e: &Enclosure) -> f64 {
+        if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
+            return 0.0;
+        }
+        let d1 = y - e.value;
+        let d = d1 - e.corr;
+        let mu_eff = e.mu + 2.0 * EPS * (d1.abs() + e.corr.abs()) + TINY;
+        let e_lo = ((d.abs() * (1.0 - R) - mu_eff * (1.0 + R)) * (1.0 - R)).max(0.0);
+        let center = (e.value + e.corr).abs();
+        let w = mu_eff * (1.0 + R) + center * 2.0 * EPS + TINY;
+        e_lo / ulp_of((center + w) * (1.0 + R), self.precision)
+    }
+
     /// Decide one claimed coordinate `y` (finite) against the enclosure `e`; `s` is
     /// `Σ|λ_k|` (for the underflow allowance of `bound`).
     pub fn decide(&self, y: f64, e: &Enclosure, s: f64) -> Decision {
@@ -501,6 +516,11 @@ pub struct RowJudgement {
     /// An upper bound on the largest error in ULPs over the coordinates (from the enclosure
     /// that decided; infinite when nothing could be bounded).
     pub ulps: f64,
+    /// A lower bound on it (0 when the enclosure is too wide to say more).
+    pub ulps_lower: f64,
+    /// Whether the deciding enclosures are the compensated ones (the bounds above are then
+    /// tight, `O(ε²)` relative to the condition number).
+    pub tight: bool,
 }
 
 /// The row's conclusion from one set of enclosures.
@@ -508,6 +528,7 @@ fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJ
     let mut all_pass = true;
     let mut any_fail = false;
     let mut ulps = 0f64;
+    let mut ulps_lower = 0f64;
     for (y, e) in claimed.iter().zip(enc) {
         match th.decide(*y, e, s) {
             Decision::Pass => {}
@@ -515,6 +536,7 @@ fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJ
             Decision::Undecided => all_pass = false,
         }
         ulps = ulps.max(th.ulps_upper(*y, e));
+        ulps_lower = ulps_lower.max(th.ulps_lower(*y, e));
     }
     RowJudgement {
         decision: if any_fail {
@@ -525,6 +547,8 @@ fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJ
             Decision::Undecided
         },
         ulps,
+        ulps_lower,
+        tight: false,
     }
 }
 
@@ -548,6 +572,33 @@ impl Filter {
         }
     }
 
+    /// Tight bounds `(lower, upper)` on the largest error in ULPs over the coordinates of
+    /// `claimed`, from the compensated enclosure (the plain one where the compensated stage's
+    /// guards leave it open): for ranking rows by their error without exact arithmetic.
+    pub fn ulps_bounds(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> (f64, f64) {
+        // the generic compensated stage keeps the plain stage's condition numbers
+        if self.lean.is_none() {
+            self.evaluate(lambda, scratch, enc);
+        }
+        self.evaluate_compensated(lambda, scratch, enc);
+        if enc.iter().any(|e| !e.mu.is_finite()) {
+            self.evaluate(lambda, scratch, enc);
+        }
+        claimed
+            .iter()
+            .zip(enc.iter())
+            .fold((0f64, 0f64), |(lo, hi), (y, e)| {
+                (lo.max(th.ulps_lower(*y, e)), hi.max(th.ulps_upper(*y, e)))
+            })
+    }
+
     /// Judge one row: the claimed coordinates `claimed` (finite floats) of `P(λ)` against `th`,
     /// by the plain and the compensated enclosures, in the order [`Filter::compensated_first`]
     /// picks; the second stage runs only when the first leaves the row undecided. `enc` needs
@@ -569,8 +620,10 @@ impl Filter {
         } else {
             self.evaluate(lambda, scratch, enc);
         }
-        let r = conclude(th, claimed, enc, s);
+        let tight = |enc: &[Enclosure]| enc.iter().all(|e| e.mu.is_finite());
+        let mut r = conclude(th, claimed, enc, s);
         if r.decision != Decision::Undecided {
+            r.tight = first && tight(enc);
             return r;
         }
         if first {
@@ -578,7 +631,9 @@ impl Filter {
         } else {
             self.evaluate_compensated(lambda, scratch, enc);
         }
-        conclude(th, claimed, enc, s)
+        let mut r = conclude(th, claimed, enc, s);
+        r.tight = !first && tight(enc);
+        r
     }
 }
 
@@ -1293,6 +1348,32 @@ mod tests {
                                     assert!(
                                         e <= BigRational::from_float(r.ulps).unwrap(),
                                         "{name} {t} ulps"
+                                    );
+                                }
+                            }
+                        }
+                        if p == Precision::F64 {
+                            // the row's largest error in ULPs lies between the lower and upper
+                            // figures of the judgement and of the compensated ulps_bounds
+                            let e_max = (0..dim)
+                                .map(|c| {
+                                    crate::number::ulps_error_f64(
+                                        &exact_f64(ys[c]).unwrap(),
+                                        &pe[c],
+                                    )
+                                })
+                                .max()
+                                .unwrap();
+                            let (lo, hi) = f.ulps_bounds(&th, lam, &ys, &mut sc, &mut enc);
+                            for (lo, hi) in [(r.ulps_lower, r.ulps), (lo, hi)] {
+                                assert!(
+                                    BigRational::from_float(lo).unwrap() <= e_max,
+                                    "{name} {t} lower {lo} > {e_max}"
+                                );
+                                if hi.is_finite() {
+                                    assert!(
+                                        e_max <= BigRational::from_float(hi).unwrap(),
+                                        "{name} {t} upper {hi} < {e_max}"
                                     );
                                 }
                             }

@@ -41,6 +41,9 @@ use parse::{Chunk, Num, parse_line, texts_of};
 pub const CHUNK: usize = 1 << 16;
 /// Failures listed in full in a report (the rest are counted).
 pub const MAX_LISTED: usize = 100;
+/// At most this many rows tied (within their enclosures) for the largest error are kept to be
+/// settled exactly; past it, later ties are dropped (any of them would do).
+const MAX_CANDIDATES: usize = 256;
 
 /// The algorithm a `bound` tolerance refers to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -115,10 +118,15 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
         fell_back: 0,
         histogram: UlpHistogram::default(),
         histogram_upper_bounds: p.filter.is_some(),
+        histogram_exact: 0,
         worst: None,
         failures: Vec::new(),
     };
-    let mut worst_row: Option<(f64, usize, Vec<Num>, Vec<Num>)> = None;
+    // The worst row: the largest lower bound seen (`floor`) and every row whose upper bound
+    // reaches it (the bounds are tight after `Prepared::settle_ulps`, so only near-ties stay);
+    // settled exactly at the end.
+    let mut floor = 0f64;
+    let mut candidates: Vec<(f64, usize, Vec<Num>, Vec<Num>)> = Vec::new();
     // Chunks of CHUNK lines: the next one is read (one thread) while the current one is judged
     // (the others), so reading overlaps the work and memory stays bounded.
     let mut chunk = Chunk::default();
@@ -146,7 +154,9 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
                             else {
                                 return Ok(None);
                             };
-                            Ok(Some(p.row(*no, inputs, claimed, scratch)))
+                            let mut o = p.row(*no, inputs, claimed, scratch);
+                            p.settle_ulps(&mut o, scratch);
+                            Ok(Some(o))
                         },
                     )
                     .collect()
@@ -160,8 +170,17 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
             if o.fell_back {
                 report.fell_back += 1;
             }
-            if worst_row.as_ref().is_none_or(|w| o.ulps > w.0) && o.ulps.is_finite() {
-                worst_row = Some((o.ulps, o.line, o.inputs.clone(), o.claimed.clone()));
+            if o.settled_exactly {
+                report.histogram_exact += 1;
+            }
+            if o.ulps.is_finite() {
+                if o.ulps_lower > floor {
+                    floor = o.ulps_lower;
+                    candidates.retain(|c| c.0 >= floor);
+                }
+                if o.ulps >= floor && candidates.len() < MAX_CANDIDATES {
+                    candidates.push((o.ulps, o.line, o.inputs.clone(), o.claimed.clone()));
+                }
             }
             if o.pass {
                 report.passed += 1;
@@ -205,6 +224,20 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
     if report.rows == 0 {
         return Err(InputError::file(file, "no result rows").into());
     }
+    // the candidates' exact errors; the first of the largest
+    let worst_row = candidates
+        .into_iter()
+        .map(|(_, line, inputs, claimed)| {
+            let (_, u, _, _) = p.exact_row(&inputs, &claimed, None, false);
+            (u, line, inputs, claimed)
+        })
+        .fold(
+            None,
+            |best: Option<(f64, usize, Vec<Num>, Vec<Num>)>, c| match &best {
+                Some(b) if b.0 >= c.0 => best,
+                _ => Some(c),
+            },
+        );
     if let Some((_, line, inputs, claimed)) = worst_row {
         // Recompute the worst row exactly (its filter figure is an upper bound).
         let mut reader = BufReader::new(

@@ -130,9 +130,9 @@ pub const ULP_BUCKETS: [&str; 8] = [
 ];
 
 impl UlpHistogram {
-    /// Count one error of `ulps` ULPs.
-    pub fn add(&mut self, ulps: f64) {
-        let b = if ulps == 0.0 {
+    /// The bucket of an error of `ulps` ULPs (an index into [`ULP_BUCKETS`]).
+    pub fn bucket(ulps: f64) -> usize {
+        if ulps == 0.0 {
             0
         } else if ulps <= 0.5 {
             1
@@ -148,8 +148,12 @@ impl UlpHistogram {
             6
         } else {
             7
-        };
-        self.counts[b] += 1;
+        }
+    }
+
+    /// Count one error of `ulps` ULPs.
+    pub fn add(&mut self, ulps: f64) {
+        self.counts[Self::bucket(ulps)] += 1;
     }
 
     /// Add another histogram.

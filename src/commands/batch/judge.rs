@@ -21,6 +21,13 @@ pub(super) struct RowOutcome {
     pub(super) fell_back: bool,
     /// The largest error in ULPs over the coordinates (upper bound if filter-decided).
     pub(super) ulps: f64,
+    /// A lower bound on it (equal to `ulps` when computed exactly).
+    pub(super) ulps_lower: f64,
+    /// The ULP figures are the plain filter stage's loose bounds (to be tightened by
+    /// [`Prepared::settle_ulps`]).
+    pub(super) loose: bool,
+    /// The ULP figures were computed exactly by [`Prepared::settle_ulps`] (the verdict was not).
+    pub(super) settled_exactly: bool,
     pub(super) failure: Option<String>,
     /// The parsed row (kept for failures and the worst row, to report them exactly).
     pub(super) inputs: Vec<Num>,
@@ -160,10 +167,7 @@ impl Prepared {
                 worst = f64::INFINITY;
                 if let Num::NotFinite(what) = y {
                     reason.get_or_insert_with(|| {
-                        format!(
-                            "claimed coordinate {} is not a finite number: {what}",
-                            c + 1
-                        )
+                        format!("claimed coordinate [{c}] is not a finite number: {what}")
                     });
                 }
                 continue;
@@ -201,8 +205,7 @@ impl Prepared {
                 pass = false;
                 reason.get_or_insert_with(|| {
                     format!(
-                        "coordinate {} breaks tolerance `{}`: {}",
-                        c + 1,
+                        "coordinate [{c}] breaks tolerance `{}`: {}",
                         self.tolerance,
                         meas.text()
                     )
@@ -250,6 +253,9 @@ impl Prepared {
                 pass: false,
                 fell_back: false,
                 ulps: f64::INFINITY,
+                ulps_lower: f64::INFINITY,
+                loose: false,
+                settled_exactly: false,
                 failure: reason,
                 inputs,
                 claimed,
@@ -266,7 +272,12 @@ impl Prepared {
             ys.clear();
             ys.extend(claimed.iter().map(float));
             enc.resize(filter.dim(), Enclosure::default());
-            let RowJudgement { decision, ulps } = filter.judge(th, lambda, ys, sc, enc);
+            let RowJudgement {
+                decision,
+                ulps,
+                ulps_lower,
+                tight,
+            } = filter.judge(th, lambda, ys, sc, enc);
             match decision {
                 Decision::Pass => {
                     return RowOutcome {
@@ -274,6 +285,9 @@ impl Prepared {
                         pass: true,
                         fell_back: false,
                         ulps,
+                        ulps_lower,
+                        loose: !tight,
+                        settled_exactly: false,
                         failure: None,
                         inputs,
                         claimed,
@@ -285,6 +299,9 @@ impl Prepared {
                         pass: false,
                         fell_back: false,
                         ulps,
+                        ulps_lower,
+                        loose: !tight,
+                        settled_exactly: false,
                         failure: Some(String::new()),
                         inputs,
                         claimed,
@@ -299,9 +316,51 @@ impl Prepared {
             pass,
             fell_back: self.filter.is_some(),
             ulps,
+            ulps_lower: ulps,
+            loose: false,
+            settled_exactly: false,
             failure: if pass { None } else { reason },
             inputs,
             claimed,
+        }
+    }
+}
+
+impl Prepared {
+    /// Settle a row's ULP figures for the histogram and the worst-row search: a row the plain
+    /// filter stage decided gets the compensated enclosure (the errors, to a small fraction of an
+    /// ulp, instead of the looseness of the plain bounds); a row whose enclosure still straddles
+    /// a histogram boundary (an error that may be exactly 0, or exactly 1/2 ulp as at a rounding
+    /// midpoint) is computed exactly, so every row lands in its true bucket.
+    pub(super) fn settle_ulps(&self, o: &mut RowOutcome, scratch: &mut RowScratch) {
+        let Some((filter, th)) = &self.filter else {
+            return;
+        };
+        if !o.ulps.is_finite() {
+            return;
+        }
+        if o.loose {
+            let float = |x: &Num| match x {
+                Num::Value { float, .. } => *float,
+                Num::NotFinite(_) => f64::NAN,
+            };
+            let (sc, enc, lambda, ys) = scratch;
+            lambda.clear();
+            lambda.extend(o.inputs.iter().map(float));
+            ys.clear();
+            ys.extend(o.claimed.iter().map(float));
+            enc.resize(filter.dim(), Enclosure::default());
+            let (lo, hi) = filter.ulps_bounds(th, lambda, ys, sc, enc);
+            o.ulps_lower = o.ulps_lower.max(lo);
+            o.ulps = o.ulps.min(hi);
+            o.loose = false;
+        }
+        use crate::report::UlpHistogram;
+        if UlpHistogram::bucket(o.ulps_lower) != UlpHistogram::bucket(o.ulps) {
+            let (_, u, _, _) = self.exact_row(&o.inputs, &o.claimed, None, false);
+            o.ulps = u;
+            o.ulps_lower = u;
+            o.settled_exactly = true;
         }
     }
 }

@@ -39,8 +39,12 @@ pub struct BatchReport {
     pub(super) failed: u64,
     pub(super) fell_back: u64,
     pub(super) histogram: UlpHistogram,
-    /// Errors of filter-decided rows enter the histogram as upper bounds.
+    /// Errors of filter-decided rows enter the histogram as the upper ends of their compensated
+    /// enclosures.
     pub(super) histogram_upper_bounds: bool,
+    /// Filter-decided rows whose error was computed exactly for the histogram (its enclosure
+    /// straddled a bucket boundary).
+    pub(super) histogram_exact: usize,
     pub(super) worst: Option<(f64, usize, Vec<FailedCoord>)>,
     pub(super) failures: Vec<FailedRow>,
 }
@@ -125,7 +129,7 @@ impl Render for BatchReport {
             out += &format!(
                 "\nErrors in ULPs against the exact value at the inputs as the code saw them{}\n",
                 if self.histogram_upper_bounds {
-                    " (filter-decided rows: an upper bound)"
+                    " (rows the float filter decided: the upper end of a compensated enclosure of the error; exact where it straddles a bucket boundary)"
                 } else {
                     ""
                 }
@@ -134,7 +138,7 @@ impl Render for BatchReport {
         }
         if let Some((u, line, coords)) = &self.worst {
             out += &format!(
-                "\nworst row (largest error bound; filter-decided rows are bounded, not measured): line {line}, exactly {} ulp\n",
+                "\nworst row (the largest error, computed exactly): line {line}, {} ulp\n",
                 to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4)
             );
             for c in coords {
@@ -176,7 +180,7 @@ impl Render for BatchReport {
                 "claims": self.rows, "passed": self.passed, "failed": self.failed,
                 "filter_used": self.histogram_upper_bounds,
                 "decided_by_filter": if self.histogram_upper_bounds { self.rows - self.fell_back } else { 0 }, "fell_back_to_exact": self.fell_back,
-                "ulp_histogram": self.histogram.json(), "histogram_upper_bounds": self.histogram_upper_bounds,
+                "ulp_histogram": self.histogram.json(), "histogram_upper_bounds": self.histogram_upper_bounds, "histogram_settled_exactly": self.histogram_exact,
             },
             "worst": self.worst.as_ref().map(|(u, line, coords)| json!({"ulps": u, "line": line, "coordinates": coords.iter().map(coord_json).collect::<Vec<_>>()})),
             "failures": self.failures.iter().map(|f| json!({"line": f.line, "reason": f.reason, "coordinates": f.coords.iter().map(coord_json).collect::<Vec<_>>()})).collect::<Vec<_>>(),
