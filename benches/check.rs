@@ -7,7 +7,9 @@
 //! (the plain running-error stage and the compensated stage, in the order the tolerance calls
 //! for: tight tolerances go straight to the compensated one), deciding every claim at tolerance
 //! TOL. Rows left open by both stages would go to exact arithmetic; the bench asserts there are
-//! none, so it measures the filter alone. `cargo bench --bench check`.
+//! none, so it measures the filter alone. `judge+report/TOL` is what the command runs per row:
+//! its report (histogram, worst row) wants tight ULP figures for every row, so it judges
+//! compensated-first whatever the tolerance. `cargo bench --bench check`.
 
 use std::time::Duration;
 
@@ -92,6 +94,26 @@ fn check(c: &mut Criterion) {
         );
         g.bench_function(format!("judge/{tol}"), |b| {
             b.iter(|| judge(&mut scratch, &mut enc))
+        });
+        // what the command does per row (src/commands/batch/judge.rs): its report (histogram,
+        // worst row) wants every row's tight ULP figures, so it judges compensated-first
+        // whatever the tolerance ([`Filter::judge_tight`]), then tightens the rare rows only the
+        // plain stage could decide
+        let with_report = |scratch: &mut Scratch, enc: &mut [Enclosure]| -> f64 {
+            let mut worst = 0f64;
+            for (p, y) in pts.iter().zip(&claimed) {
+                let r = filter.judge_tight(&th, p, y, scratch, enc);
+                let hi = if r.tight {
+                    r.ulps
+                } else {
+                    filter.ulps_bounds(&th, p, y, scratch, enc).1
+                };
+                worst = worst.max(hi);
+            }
+            worst
+        };
+        g.bench_function(format!("judge+report/{tol}"), |b| {
+            b.iter(|| with_report(&mut scratch, &mut enc))
         });
     }
     g.finish();

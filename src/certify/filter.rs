@@ -612,9 +612,37 @@ impl Filter {
         scratch: &mut Scratch,
         enc: &mut [Enclosure],
     ) -> RowJudgement {
+        let first = self.compensated_first(th);
+        self.judge_in_order(th, lambda, claimed, scratch, enc, first)
+    }
+
+    /// [`Filter::judge`] starting with the compensated stage whenever a lean kernel exists,
+    /// whatever the tolerance: for callers that want the tight ULP figures of every row anyway
+    /// (the histogram and worst row of `tribez check --results`), one compensated pass is
+    /// cheaper than a plain pass followed by a compensated one.
+    pub fn judge_tight(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        self.judge_in_order(th, lambda, claimed, scratch, enc, true)
+    }
+
+    fn judge_in_order(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+        compensated_first: bool,
+    ) -> RowJudgement {
         let s: f64 = lambda.iter().map(|x| x.abs()).sum();
         // the generic compensated stage needs the plain stage's condition numbers
-        let first = self.lean.is_some() && self.compensated_first(th);
+        let first = self.lean.is_some() && compensated_first;
         if first {
             self.evaluate_compensated(lambda, scratch, enc);
         } else {

@@ -277,7 +277,7 @@ impl Prepared {
                 ulps,
                 ulps_lower,
                 tight,
-            } = filter.judge(th, lambda, ys, sc, enc);
+            } = filter.judge_tight(th, lambda, ys, sc, enc);
             match decision {
                 Decision::Pass => {
                     return RowOutcome {
