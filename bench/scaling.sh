@@ -22,7 +22,7 @@ for n in $DEGREES; do
   points=$(( n <= 20 ? 1000 : n <= 50 ? 100 : n <= 100 ? 20 : 5 ))
   case="$WORK/case_n$n.json"
   (cd "$PEERS" && "$PY" -c "import json,common; json.dump(common.random_case($n, 3, $points, seed=2000 + $n), open('$case', 'w'))")
-  line=$(SPEED_REPEAT=5 "$SPEED" exact "$case")
+  line=$(SPEED_REPEAT=5 SPEED_NO_CHECK=1 "$SPEED" exact "$case")
   printf '| %s | %s | %s | %s | %s ms |\n' "$n" "$(( (n + 1) * (n + 2) / 2 ))" \
     "$(echo "$line" | field us_per_point | xargs printf '%.1f')" \
     "$(echo "$line" | field mean_result_bits | xargs printf '%.0f')" \

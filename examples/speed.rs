@@ -84,7 +84,7 @@ fn main() {
                 "mean_result_bits": bits.iter().sum::<u64>() as f64 / bits.len() as f64,
                 "max_result_bits": bits.iter().max(),
             });
-            if repeat > 3 {
+            if std::env::var_os("SPEED_NO_CHECK").is_some() {
                 println!("{out}");
                 return;
             }
@@ -163,25 +163,25 @@ fn main() {
                 );
             };
             let mut out64 = Vec::new();
-            let (t, v) = best_of(3, || {
+            let (t, v) = best_of(5, || {
                 horner_dvec3_many(&h64, n, &pts, &mut out64);
                 out64.iter().map(|p| p.element_sum()).sum::<f64>()
             });
             report("f64_horner", t, v);
-            let (t, v) = best_of(3, || {
+            let (t, v) = best_of(5, || {
                 pts.iter()
                     .map(|&u| horner_dvec3(&h64, n, u).element_sum())
                     .sum::<f64>()
             });
             report("f64_horner_one_point_calls", t, v);
-            let (t, v) = best_of(3, || {
+            let (t, v) = best_of(5, || {
                 pts.iter()
                     .map(|&u| casteljau_dvec3(&d64, n, u).element_sum())
                     .sum::<f64>()
             });
             report("f64_casteljau", t, v);
             let mut out32 = Vec::new();
-            let (t, v) = best_of(3, || {
+            let (t, v) = best_of(5, || {
                 horner_vec3_many(&h32, n, &pts32, &mut out32);
                 out32
                     .iter()
@@ -189,7 +189,7 @@ fn main() {
                     .sum::<f64>()
             });
             report("f32_horner", t, v);
-            let (t, v) = best_of(3, || {
+            let (t, v) = best_of(5, || {
                 pts32
                     .iter()
                     .map(|&u| f64::from(casteljau_vec3(&d32, n, u).element_sum()))
@@ -230,6 +230,31 @@ fn main() {
             eprintln!(
                 "{}",
                 json!({"tool": "tribez", "what": "f64_horner_for_csv", "degree": n, "points": m, "seconds": secs})
+            );
+        }
+        "read-eval" => {
+            // The end-to-end baseline of `tribez check --results FILE` on a `csv` file: read the
+            // file, parse the six numbers of each row (Rust's correctly rounded `str::parse`),
+            // evaluate the patch at the first three by f64 de Casteljau and compare with the last
+            // three. One thread; best of 3.
+            let path = &args[2];
+            let d64 = dvec3_points(&net_f64(&net));
+            let (secs, differ) = best_of(3, || {
+                let text = std::fs::read_to_string(path).expect("read csv");
+                let mut differ = 0usize;
+                for line in text.lines().filter(|l| !l.starts_with('#')) {
+                    let mut x = [0f64; 6];
+                    for (slot, t) in x.iter_mut().zip(line.split(',')) {
+                        *slot = t.trim().parse().expect("a number");
+                    }
+                    let v = casteljau_dvec3(&d64, n, [x[0], x[1], x[2]]);
+                    differ += usize::from([v.x, v.y, v.z] != [x[3], x[4], x[5]]);
+                }
+                differ
+            });
+            println!(
+                "{}",
+                json!({"tool": "tribez", "what": "read_parse_f64_casteljau", "degree": n, "seconds": secs, "rows_differing": differ})
             );
         }
         other => panic!("unknown mode {other}"),
