@@ -734,7 +734,7 @@ fn float_claims_on_rational_and_s_patches() {
         .assert()
         .success()
         .stdout(predicate::str::contains("octant-f64-python"))
-        .stdout(predicate::str::contains("3 passed"));
+        .stdout(predicate::str::contains("4 passed"));
     // a claimed value 1000 ulps off fails (exit 1)
     let dir = tempfile::tempdir().unwrap();
     std::fs::copy(fixture("octant_quartic.toml"), dir.path().join("o.toml")).unwrap();
