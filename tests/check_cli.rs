@@ -479,6 +479,40 @@ fn worst_row_is_the_largest_error() {
     );
 }
 
+/// Exactly right rows land in the "0 ulp" bucket (their filter enclosures straddle 0, so the
+/// error is settled exactly), and a row one ulp off in (1/2, 1]. The quadratic QUAD at the
+/// corners is its corner control points; at (1/2, 1/2, 0) it is (c200 + 2 c110 + c020)/4 =
+/// (1/2, 1/2, 1) (hand derivation), all exact in f64.
+#[test]
+fn exactly_right_rows_are_counted_as_zero_ulp() {
+    let one_up = format!("{:?}", 1f64.next_up());
+    let rows = format!(
+        "1,0,0,0,0,0\n0,1,0,0,2,0\n0,0,1,0,2,1\n0.5,0.5,0,0.5,0.5,1\n0.5,0.5,0,0.5,0.5,{one_up}\n"
+    );
+    let (_d, patch, results) = batch_dir(&rows, "csv");
+    let out = batch(
+        &patch,
+        &results,
+        &[
+            "--precision",
+            "f64",
+            "--tolerance",
+            "ulps=1",
+            "--format",
+            "json",
+        ],
+    )
+    .success()
+    .get_output()
+    .stdout
+    .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let h = &v["summary"]["ulp_histogram"];
+    assert_eq!(h["0"], 4, "{h}");
+    assert_eq!(h["(1/2, 1]"], 1, "{h}");
+    assert_eq!(v["worst"]["line"], 5);
+}
+
 fn next_up_text(t: &str) -> String {
     let x: f64 = t.parse().unwrap();
     format!("{:?}", x.next_up())
