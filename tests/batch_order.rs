@@ -84,3 +84,29 @@ fn line_numbers_across_chunks() {
     let stderr = String::from_utf8(out.stderr).unwrap();
     assert!(stderr.contains("r.csv:70002:9"), "{stderr}");
 }
+
+/// A JSON array of rows across chunk boundaries: each row is reported at the line where it
+/// starts (rows here take two lines each, so row k starts on line 2 + 2k).
+#[test]
+fn json_array_rows_across_chunks() {
+    let dir = tempfile::tempdir().unwrap();
+    let patch = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/finn_day30.toml");
+    // At the corner (1, 0, 0) the patch is c200 = (0, 0, 0) exactly (corner interpolation).
+    let mut rows = vec!["  [1, 0, 0,\n   0, 0, 0]"; 70_001];
+    rows[69_999] = "  [1, 0, 0,\n   0, 0, 0.5]"; // row 69,999 (0-based): line 2 + 2·69,999
+    let text = format!("[\n{}\n]\n", rows.join(",\n"));
+    let results = dir.path().join("r.json");
+    std::fs::write(&results, &text).unwrap();
+    let out = assert_cmd::Command::cargo_bin("tribez")
+        .unwrap()
+        .args(["check", "--precision", "f64", "--patch"])
+        .arg(&patch)
+        .arg("--results")
+        .arg(&results)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(stdout.contains("70001 rows"), "{stdout}");
+    assert!(stdout.contains("line 140000"), "{stdout}");
+}

@@ -268,6 +268,138 @@ fn batch_json_lines() {
     .stdout(predicate::str::contains("\"passed\": 2"));
 }
 
+/// `rows` as Python's `json.dump(rows, f, indent=2)` writes them (one entry per line).
+fn json_indent2(rows: &[Vec<&str>]) -> String {
+    let rows: Vec<String> = rows
+        .iter()
+        .map(|r| format!("  [\n    {}\n  ]", r.join(",\n    ")))
+        .collect();
+    format!("[\n{}\n]", rows.join(",\n"))
+}
+
+#[test]
+fn batch_one_json_array_of_rows() {
+    // Pretty-printed: row k starts on line 2 + 8k. The second row has strings (a hex float, kept
+    // exact) and is the same point as the first.
+    let fields: Vec<&str> = ROW.split(',').collect();
+    let mut quoted: Vec<String> = fields.iter().map(|x| format!("\"{x}\"")).collect();
+    quoted[0] = "\"0x1p-1\"".into();
+    let quoted: Vec<&str> = quoted.iter().map(String::as_str).collect();
+    let text = json_indent2(&[fields.clone(), quoted]);
+    assert!(text.lines().nth(9).unwrap().trim_start().starts_with('['));
+    let (_d, p, r) = batch_dir(&text, "json");
+    batch(&p, &r, &["--precision", "f64", "--tolerance", "ulps=4"])
+        .success()
+        .stdout(predicate::str::contains("2 claims: 2 passed, 0 failed"));
+    // All on one line, as `json.dump(rows, f)` writes it; `.jsonl` too (the rule is the content).
+    let one_line = format!("[[{ROW}], [{ROW}]]\n");
+    for ext in ["json", "jsonl"] {
+        let (_d, p, r) = batch_dir(&one_line, ext);
+        batch(&p, &r, &["--precision", "f64", "--tolerance", "ulps=4"])
+            .success()
+            .stdout(predicate::str::contains("2 claims: 2 passed, 0 failed"));
+    }
+}
+
+/// Numbers keep their text: exact mode reads 0.1 as 1/10. On the edge w = 0 the patch is
+/// p(u, v, 0) = u² c200 + 2uv c110 + v² c020 = (2uv, 2v², 4uv) (by hand), so at (1/10, 9/10, 0)
+/// it is exactly (0.18, 1.62, 0.36); a failing row is reported at the line where it starts.
+#[test]
+fn batch_json_array_numbers_are_exact_text_and_rows_report_their_start_line() {
+    let good = vec!["0.1", "0.9", "0", "0.18", "1.62", "0.36"];
+    let off = vec!["0.1", "0.9", "0", "0.18", "1.62", "0.36000000000000001"];
+    let text = json_indent2(&[good.clone(), good.clone(), off, good]);
+    let (_d, p, r) = batch_dir(&text, "json");
+    batch(&p, &r, &[]).code(1).stdout(
+        predicate::str::contains("4 claims: 3 passed, 1 failed")
+            .and(predicate::str::contains("line 18: coordinate [2]"))
+            .and(predicate::str::contains(
+                "worst row (the largest error, computed exactly): line 18",
+            )),
+    );
+}
+
+#[test]
+fn json_lines_in_a_json_file_still_work() {
+    let (_d, p, r) = batch_dir(&format!("[{ROW}]\n\n[{ROW}]\n"), "json");
+    batch(&p, &r, &["--precision", "f64", "--tolerance", "ulps=4"])
+        .success()
+        .stdout(predicate::str::contains("2 claims: 2 passed, 0 failed"));
+}
+
+#[test]
+fn json_array_errors_name_file_line_and_column() {
+    let fields: Vec<&str> = ROW.split(',').collect();
+    let full = json_indent2(&[fields.clone(), fields.clone()]);
+    let cases: Vec<(String, &str)> = vec![
+        // the top-level array never closed
+        (
+            format!("[[{ROW}],\n [{ROW}]\n"),
+            "results.json:3:1: invalid JSON: unexpected end of file: the array opened at line 1, column 1 is never closed",
+        ),
+        // a row never closed (cut inside the second row, which opens at line 10, column 3)
+        (
+            full[..full.len() - 20].to_string(),
+            "the row opened at line 10, column 3 is never closed",
+        ),
+        // a row that is not an array
+        (
+            format!("[\n  [{ROW}],\n  0.5\n]"),
+            "results.json:3:3: invalid JSON: expected a row (an array `[…]`), found `0`",
+        ),
+        (
+            format!("[[{ROW}], {{\"a\": 1}}]"),
+            "expected a row (an array `[…]`), found `{`",
+        ),
+        // an entry that is an array
+        (
+            format!("[[{ROW}],\n [0.5, [0.5], 0, 1, 2, 3]]"),
+            "results.json:2:8: a row's entries must be numbers, strings or null",
+        ),
+        // wrong column count: located at the row's `[`
+        (
+            json_indent2(&[fields.clone(), fields[..5].to_vec()]),
+            "results.json:10:3: 5 columns, expected 6",
+        ),
+        // a malformed number on its own line: line 15 (the fifth entry of the second row)
+        (
+            {
+                let at = full.rfind("0.5555555555555555").unwrap();
+                format!("{}0.55x5{}", &full[..at], &full[at + 18..])
+            },
+            "results.json:15:5: malformed number: `0.55x5`",
+        ),
+        // missing entries, commas and text after the array
+        (
+            format!("[[{ROW}],\n]"),
+            "results.json:2:1: invalid JSON: expected a row",
+        ),
+        (
+            format!("[[{ROW}] [{ROW}]]"),
+            "expected ',' or ']' after a row, found `[`",
+        ),
+        (
+            "[[0.5,,0.5,0,1,2]]".to_string(),
+            "results.json:1:7: invalid JSON: expected a number, a string or null",
+        ),
+        (
+            format!("[[{ROW}]]\nx"),
+            "results.json:2:1: invalid JSON: unexpected text after the array of rows",
+        ),
+    ];
+    for (text, message) in cases {
+        let (_d, p, r) = batch_dir(&text, "json");
+        batch(&p, &r, &["--precision", "f64", "--tolerance", "ulps=4"])
+            .code(2)
+            .stdout("")
+            .stderr(predicate::str::contains(message));
+    }
+    let (_d, p, r) = batch_dir("[ ]", "json");
+    batch(&p, &r, &["--precision", "f64"])
+        .code(2)
+        .stderr(predicate::str::contains("results.json: no result rows"));
+}
+
 #[test]
 fn nan_inf_and_empty_fields_are_failed_claims() {
     let rows = format!(

@@ -3,8 +3,9 @@
 //! input order.
 //!
 //! Each row: the barycentric coordinates (or `x, y, …` with `--cartesian`), then the claimed
-//! coordinates of the point. CSV (`#` starts a comment line) or JSON lines (`.jsonl`, `.ndjson`:
-//! one array per line; numbers or strings). With `--precision`, each number denotes the float
+//! coordinates of the point. CSV (`#` starts a comment line), JSON lines (`.jsonl`, `.ndjson`,
+//! `.json`: one array per line; numbers or strings), or one JSON array of such rows (a `.json`
+//! file starting with `[` then `[`, rows spread over any number of lines; see `parse`). With `--precision`, each number denotes the float
 //! nearest its text (hex floats are exact); the claimed value is judged against the exact value
 //! at the inputs as the code saw them (those floats; homogeneous form, they need not sum to 1),
 //! and the error at the intended inputs (the exact text) is reported for failures and for the
@@ -17,7 +18,7 @@
 //! input order); `parse` reads rows, `judge` judges one row (filter, then exact), `report`
 //! renders the report (text, JSON, JUnit).
 
-use std::io::{BufRead, BufReader, IsTerminal, Write};
+use std::io::{BufReader, IsTerminal, Write};
 use std::path::Path;
 
 use rayon::prelude::*;
@@ -35,7 +36,7 @@ use crate::io::InputError;
 use crate::io::patch_file::read_patch;
 use crate::report::{Exporter, UlpHistogram};
 use judge::{Prepared, RowOutcome, RowScratch};
-use parse::{Chunk, Num, parse_line, texts_of};
+use parse::{Chunk, Format, Num, RowReader, parse_row, texts_of};
 
 /// Rows judged per chunk (the memory bound: one chunk of lines is held at a time).
 pub const CHUNK: usize = 1 << 16;
@@ -96,15 +97,10 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 
 fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport, CliError> {
     let file = path.display().to_string();
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    let json_lines = matches!(ext.as_str(), "jsonl" | "ndjson" | "json");
+    let format = Format::of(path, &file)?;
     let reader = std::fs::File::open(path)
         .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
-    let mut reader = BufReader::with_capacity(1 << 20, reader);
+    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file);
     let (width, dim) = (p.width(), p.patch.net.dim());
     let progress = std::io::stderr().is_terminal();
     let mut report = BatchReport {
@@ -126,31 +122,33 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
     // reaches it (the bounds are tight after `Prepared::settle_ulps`, so only near-ties stay);
     // settled exactly at the end.
     let mut floor = 0f64;
-    let mut candidates: Vec<(f64, usize, Vec<Num>, Vec<Num>)> = Vec::new();
-    // Chunks of CHUNK lines: the next one is read (one thread) while the current one is judged
+    // (upper bound, line, inputs, claimed, the row's text and where it starts)
+    type Candidate = (f64, usize, Vec<Num>, Vec<Num>, String, usize);
+    let mut candidates: Vec<Candidate> = Vec::new();
+    // Chunks of CHUNK rows: the next one is read (one thread) while the current one is judged
     // (the others), so reading overlaps the work and memory stays bounded.
     let mut chunk = Chunk::default();
     let mut next = Chunk::default();
-    let mut eof = chunk.read(&mut reader, 1, &file)?;
+    let mut eof = reader.read(&mut chunk)?;
     loop {
         let (read, outcomes) = rayon::join(
             || {
                 if eof {
                     Ok(true)
                 } else {
-                    next.read(&mut reader, chunk.first_line + chunk.len(), &file)
+                    reader.read(&mut next)
                 }
             },
             || -> Result<Vec<Option<RowOutcome>>, InputError> {
                 chunk
-                    .lines()
+                    .rows()
                     .collect::<Vec<_>>()
                     .par_iter()
                     .map_init(
                         RowScratch::default,
-                        |scratch, (no, text)| -> Result<Option<RowOutcome>, InputError> {
+                        |scratch, (no, col, text)| -> Result<Option<RowOutcome>, InputError> {
                             let Some((inputs, claimed)) =
-                                parse_line(text, json_lines, width, dim, p.precision, &file, *no)?
+                                parse_row(format, text, *no, *col, width, dim, p.precision, &file)?
                             else {
                                 return Ok(None);
                             };
@@ -164,7 +162,8 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
         );
         let outcomes = outcomes?;
         let next_eof = read?;
-        for o in outcomes.into_iter().flatten() {
+        for (i, o) in outcomes.into_iter().enumerate() {
+            let Some(o) = o else { continue };
             report.rows += 1;
             report.histogram.add(o.ulps);
             if o.fell_back {
@@ -179,7 +178,15 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
                     candidates.retain(|c| c.0 >= floor);
                 }
                 if o.ulps >= floor && candidates.len() < MAX_CANDIDATES {
-                    candidates.push((o.ulps, o.line, o.inputs.clone(), o.claimed.clone()));
+                    let col = chunk.position(i).1;
+                    candidates.push((
+                        o.ulps,
+                        o.line,
+                        o.inputs.clone(),
+                        o.claimed.clone(),
+                        chunk.row(i).to_string(),
+                        col,
+                    ));
                 }
             }
             if o.pass {
@@ -187,8 +194,7 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
             } else {
                 report.failed += 1;
                 if report.failures.len() < MAX_LISTED {
-                    let text = chunk.line(o.line);
-                    let texts = texts_of(text, json_lines, &file, o.line);
+                    let texts = texts_of(format, chunk.row(i), o.line, chunk.position(i).1, &file);
                     let refs: Vec<&str> = texts.iter().map(String::as_str).collect();
                     let (_, _, reason, coords) =
                         p.exact_row(&o.inputs, &o.claimed, Some(&refs), true);
@@ -227,29 +233,17 @@ fn check_file(p: &Prepared, path: &Path, patch_name: &str) -> Result<BatchReport
     // the candidates' exact errors; the first of the largest
     let worst_row = candidates
         .into_iter()
-        .map(|(_, line, inputs, claimed)| {
+        .map(|(_, line, inputs, claimed, text, col)| {
             let (_, u, _, _) = p.exact_row(&inputs, &claimed, None, false);
-            (u, line, inputs, claimed)
+            (u, line, inputs, claimed, text, col)
         })
-        .fold(
-            None,
-            |best: Option<(f64, usize, Vec<Num>, Vec<Num>)>, c| match &best {
-                Some(b) if b.0 >= c.0 => best,
-                _ => Some(c),
-            },
-        );
-    if let Some((_, line, inputs, claimed)) = worst_row {
+        .fold(None, |best: Option<Candidate>, c| match &best {
+            Some(b) if b.0 >= c.0 => best,
+            _ => Some(c),
+        });
+    if let Some((_, line, inputs, claimed, text, col)) = worst_row {
         // Recompute the worst row exactly (its filter figure is an upper bound).
-        let mut reader = BufReader::new(
-            std::fs::File::open(path)
-                .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?,
-        );
-        let mut text = String::new();
-        for _ in 0..line {
-            text.clear();
-            let _ = reader.read_line(&mut text);
-        }
-        let texts = texts_of(&text, json_lines, &file, line);
+        let texts = texts_of(format, &text, line, col, &file);
         let refs: Vec<&str> = texts.iter().map(String::as_str).collect();
         let (_, u, _, coords) = p.exact_row(&inputs, &claimed, Some(&refs), true);
         report.worst = Some((u, line, coords));

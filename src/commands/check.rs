@@ -21,7 +21,8 @@ pub struct Args {
     /// Batch mode: the patch the results are about.
     #[arg(long, value_name = "PATCH", requires = "results")]
     pub patch: Option<PathBuf>,
-    /// Batch mode: CSV or JSON-lines results (input coordinates, then the claimed coordinates).
+    /// Batch mode: CSV, JSON-lines or JSON-array-of-rows results (input coordinates, then the
+    /// claimed coordinates).
     #[arg(long, value_name = "FILE", requires = "patch")]
     pub results: Option<PathBuf>,
     /// Batch mode: the tolerance every row is judged with (default `exact`).
