@@ -32,7 +32,7 @@ pub enum Command {
     Check(commands::check::Args),
     /// Run tribez's own float algorithms (Bézier, rational, S-patch) and judge their errors against proven bounds.
     Certify(commands::certify::Args),
-    /// The blossom (polar form) b[u1, ..., un] of a patch: exactly n barycentric arguments.
+    /// The blossom (polar form) b[u1, ..., un] of a patch (rational: X[..]/W[..]): exactly n barycentric arguments.
     Blossom(commands::blossom::Args),
     /// The same polynomial over any sub-triangle (sub-simplex), as a patch file.
     Subpatch(commands::subpatch::Args),

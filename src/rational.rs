@@ -366,6 +366,40 @@ impl RationalPatch {
         )
     }
 
+    /// The rational blossom `b[u_1, …, u_n] = X[u_1, …, u_n] / W[u_1, …, u_n]`: the blossom of
+    /// the homogeneous net `(w_α c_α, w_α)` (FORMULAS.md §4: de Casteljau with argument `u_k` at
+    /// level `k`), projected by its last coordinate. It is symmetric in its arguments, and on the
+    /// diagonal `b[u, …, u] = p(u)`; with the corners as arguments it gives the control points,
+    /// `b[e_0^{α_0}, …, e_m^{α_m}] = c_α`. Undefined (an error naming the arguments) where the
+    /// weight blossom `W[u_1, …, u_n]` is 0.
+    ///
+    /// ```
+    /// use tribez::number::parse_rational as q;
+    /// use tribez::patch::{ControlNet, Patch};
+    /// use tribez::rational::RationalPatch;
+    /// let v = |t: &[&str]| t.iter().map(|x| q(x).unwrap()).collect::<Vec<_>>();
+    /// // the quarter circle (1,0), (1,1), (0,1), weights 1, 1, 2 (as in the module example)
+    /// let pts = vec![v(&["1", "0"]), v(&["1", "1"]), v(&["0", "1"])];
+    /// let r = RationalPatch::new(Patch::new(ControlNet::from_points(1, 2, &pts)), v(&["1", "1", "2"]));
+    /// let h = v(&["1/2", "1/2"]);
+    /// assert_eq!(r.blossom(&[h.clone(), h]).unwrap(), v(&["3/5", "4/5"])); // the diagonal: p(1/2, 1/2)
+    /// // b[e_0, e_1] = X_1 / W_1 = c_1
+    /// assert_eq!(r.blossom(&[v(&["1", "0"]), v(&["0", "1"])]).unwrap(), v(&["1", "1"]));
+    /// // W[u, v] = u_0 v_0 + (u_0 v_1 + u_1 v_0) + 2 u_1 v_1 = 1 + v_1 - 1 = 0 at u = (0, 1), v = (2, -1)
+    /// assert!(r.blossom(&[v(&["0", "1"]), v(&["2", "-1"])]).is_err());
+    /// ```
+    pub fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
+        let h = crate::blossom::blossom(&self.homogeneous(), args)?;
+        let (w, x) = h.split_last().expect("d + 1 >= 2 coordinates");
+        if w.is_zero() {
+            let args = args.iter().map(|a| tuple(a)).collect::<Vec<_>>().join(", ");
+            return Err(CoreError::Invalid(format!(
+                "the rational blossom b[{args}] is undefined: the weight blossom W[{args}] (the blossom of the denominator Σ w_α B_α) is 0"
+            )));
+        }
+        Ok(x.iter().map(|c| c / w).collect())
+    }
+
     /// Split at `t` into `m + 1` pieces (piece `s`: vertex `s` replaced by `t`), on the
     /// homogeneous net.
     pub fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError> {

@@ -543,6 +543,72 @@ fn derivative_of_a_rational_patch() {
         .stderr(predicate::str::contains("does not take S-patches"));
 }
 
+/// The rational blossom X[..]/W[..] of the octant; expected values from fixtures/beyond/derive.py
+/// (X and W blossoms by the multi-affine de Casteljau, Python fractions).
+#[test]
+fn blossom_of_a_rational_patch() {
+    let blossom = |args: &[&str]| {
+        let mut cmd = tribez();
+        cmd.arg("blossom").arg(fixture("octant_quartic.toml"));
+        for a in args {
+            cmd.args(["--arg", a]);
+        }
+        cmd.assert()
+    };
+    let u = "1/3,1/4,5/12";
+    // the diagonal is the patch: p(1/3,1/4,5/12) = (1020, 969, 920)/1681 (FORMULAS.md §10)
+    blossom(&[u, u, u, u])
+        .success()
+        .stdout(predicate::str::contains(
+            "= (1020/1681, 969/1681, 920/1681)",
+        ));
+    // four different arguments, in two orders (symmetry)
+    let args = [u, "1/2,1/2,0", "0,1/3,2/3", "1/5,2/5,2/5"];
+    for order in [[0, 1, 2, 3], [3, 2, 0, 1], [1, 3, 0, 2]] {
+        blossom(&order.map(|i| args[i]))
+            .success()
+            .stdout(predicate::str::contains(
+                "= (857/1871, 2917/3742, 907/1871)",
+            ));
+    }
+    // W[e1, e1, e1, x] = 12 x0 + 12 x1 + 9 x2 (the weights w400, w310, w301) is 0 at x = (-3, 0, 4)
+    blossom(&["1,0,0", "1,0,0", "1,0,0", "-3,0,4"])
+        .code(2)
+        .stdout(predicate::str::is_empty())
+        .stderr(predicate::str::contains(
+            "tribez: --arg: the rational blossom b[(1, 0, 0), (1, 0, 0), (1, 0, 0), (-3, 0, 4)] is undefined: the weight blossom W[(1, 0, 0), (1, 0, 0), (1, 0, 0), (-3, 0, 4)]",
+        ));
+    blossom(&["1,0,0"])
+        .code(2)
+        .stderr(predicate::str::contains("takes exactly 4 arguments, got 1"));
+    // the same in a claim file: a located error naming the claim's `args`
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(fixture("octant_quartic.toml"), dir.path().join("o.toml")).unwrap();
+    write(
+        dir.path(),
+        "x.claims.toml",
+        "patch = \"o.toml\"\n[[claim]]\nid = \"w0\"\nop = \"blossom\"\nargs = [[\"1\", \"0\", \"0\"], [\"1\", \"0\", \"0\"], [\"1\", \"0\", \"0\"], [\"-3\", \"0\", \"4\"]]\nexpect = [\"0\", \"0\", \"0\"]\n",
+    );
+    tribez()
+        .arg("reproduce")
+        .arg(dir.path())
+        .assert()
+        .code(2)
+        .stderr(
+            predicate::str::contains("x.claims.toml:5: w0.args")
+                .and(predicate::str::contains("w0.args"))
+                .and(predicate::str::contains("weight blossom W[")),
+        );
+    // S-patches are refused
+    tribez()
+        .args(["blossom"])
+        .arg(fixture("pentagon_depth2.toml"))
+        .args(["--arg", "1,0,0,0,0", "--arg", "1,0,0,0,0"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("does not take S-patches"));
+}
+
 #[test]
 fn elevate_and_subpatch_a_rational_patch() {
     let dir = tempfile::tempdir().unwrap();

@@ -1,7 +1,8 @@
 //! Property tests for the identities of the theory, on random exact data (FORMULAS.md §1, §3):
 //! de Casteljau equals the Bernstein form; partition of unity; corners interpolate; every edge
 //! is the Bézier curve of its boundary control points; affine invariance; the symbolic form
-//! evaluates to the same values; the integer evaluator equals rational de Casteljau.
+//! evaluates to the same values; the integer evaluator equals rational de Casteljau; the
+//! rational blossom is symmetric, the patch on the diagonal and the control points at the corners.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -9,7 +10,8 @@ use num_traits::{One, Zero};
 use proptest::prelude::*;
 
 use tribez::exact::{Algorithm, ExactEvaluator, evaluate_rational};
-use tribez::patch::ControlNet;
+use tribez::patch::{ControlNet, Patch};
+use tribez::rational::RationalPatch;
 use tribez::simplex::Simplex;
 use tribez::symbolic::barycentric_form;
 use tribez::{bernstein, casteljau};
@@ -123,5 +125,69 @@ proptest! {
     fn symbolic_form_evaluates_to_the_patch((net, u) in net_and_point()) {
         let values: Vec<BigRational> = barycentric_form(&net).iter().map(|p| p.evaluate(&u)).collect();
         prop_assert_eq!(values, casteljau::evaluate(&net, &u));
+    }
+}
+
+/// A random rational patch (degree 1..=4, non-zero weights of both signs) and n + 1 random
+/// barycentric points (n blossom arguments and one more).
+fn rational_patch_and_points() -> impl Strategy<Value = (RationalPatch, Vec<Vec<BigRational>>)> {
+    (1usize..=3, 1usize..=4, 1usize..=3).prop_flat_map(|(m, n, d)| {
+        let len = Simplex::new(m, n).len();
+        (
+            proptest::collection::vec(rational(), len * d),
+            proptest::collection::vec(
+                (1i64..=50, 1i64..=9, any::<bool>())
+                    .prop_map(|(a, b, s)| q(if s { a } else { -a }, b)),
+                len,
+            ),
+            proptest::collection::vec(point(m), n + 1),
+        )
+            .prop_map(move |(c, w, pts)| {
+                let net = ControlNet::new(Simplex::new(m, n), d, c);
+                (RationalPatch::new(Patch::new(net), w), pts)
+            })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The rational blossom X[..]/W[..] is symmetric, is the patch on the diagonal, and gives the
+    /// control points at the corners: b[e_0^{α_0}, …, e_m^{α_m}] = c_α.
+    #[test]
+    fn rational_blossom_identities((r, pts) in rational_patch_and_points()) {
+        let n = r.patch.net.degree();
+        let m = r.patch.net.m();
+        let args = &pts[..n];
+        let mut reversed = args.to_vec();
+        reversed.reverse();
+        let mut rotated = args.to_vec();
+        rotated.rotate_left(1);
+        match r.blossom(args) {
+            Ok(b) => {
+                prop_assert_eq!(&b, &r.blossom(&reversed).unwrap());
+                prop_assert_eq!(&b, &r.blossom(&rotated).unwrap());
+            }
+            Err(_) => {
+                prop_assert!(r.blossom(&reversed).is_err());
+                prop_assert!(r.blossom(&rotated).is_err());
+            }
+        }
+        let u = &pts[n];
+        let diagonal = vec![u.clone(); n];
+        match r.evaluate(u) {
+            Ok(p) => prop_assert_eq!(r.blossom(&diagonal).unwrap(), p),
+            Err(_) => prop_assert!(r.blossom(&diagonal).is_err()),
+        }
+        for (alpha, c) in r.patch.net.entries() {
+            let corners: Vec<Vec<BigRational>> = (0..=m)
+                .flat_map(|k| {
+                    let mut e = vec![BigRational::zero(); m + 1];
+                    e[k] = BigRational::one();
+                    std::iter::repeat_n(e, alpha[k] as usize)
+                })
+                .collect();
+            prop_assert_eq!(r.blossom(&corners).unwrap(), c.to_vec());
+        }
     }
 }

@@ -6,7 +6,7 @@
 //! | `symbolic` | `variables` = `"barycentric"` (default) or `"cartesian"`; optional `names`, `component` (0-based) | one polynomial per coordinate (or the one selected) |
 //! | `basis` | `degree`, optional `simplex` (m, default 2), `names`, `at` | the Bernstein polynomials (or their values at `at`) keyed by multi-index |
 //! | `basis_sum` | as `basis`, optional `variables = "cartesian"` | `Σ_α B^n_α` as a polynomial (or value) |
-//! | `blossom` | `args`: exactly n barycentric points | the point `b[args]` |
+//! | `blossom` | `args`: exactly n barycentric points | the point `b[args]` (rational patches: `X[args]/W[args]`, the homogeneous net's blossom projected) |
 //! | `subpatch` | `vertices`: m+1 barycentric points | control points keyed like a patch file (`"2,0,0" = [...]`) |
 //! | `subdivide` | `at` (a barycentric point) or `midpoints = true` | a list of such tables, one per piece |
 //! | `halve` | `edge = [I, J]`; optional `method` = `"blossom"` (default), `"add-and-halve"`, `"add-and-halve-bottom-first"` | the two halves, a list of tables |
@@ -306,7 +306,8 @@ pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError>
             ))
         }
         "basis" | "basis_sum" => basis(&inputs, claim.op == "basis_sum"),
-        "blossom" | "subpatch" | "subdivide" | "halve" | "elevate" | "matrix" => {
+        "blossom" => blossom(&inputs),
+        "subpatch" | "subdivide" | "halve" | "elevate" | "matrix" => {
             construction(&inputs, &claim.op)
         }
         "derivative" => derivative(&inputs),
@@ -446,6 +447,18 @@ impl Inputs<'_> {
             _ => Err(self.error("edge", "an edge is two corner numbers, like [1, 2]")),
         }
     }
+}
+
+/// `blossom` of a polynomial patch, or of a rational one: `X[args] / W[args]`, the blossom of the
+/// homogeneous net projected (an error where `W[args]` is 0).
+fn blossom(inputs: &Inputs<'_>) -> Result<Value, InputError> {
+    let AnyPatch::Rational(r) = inputs.file.any_patch_for(inputs.claim)? else {
+        return construction(inputs, "blossom");
+    };
+    let args = inputs.bary_points("args", r.patch.net.m())?;
+    r.blossom(&args)
+        .map(|v| Value::numbers(&v))
+        .map_err(|e| inputs.error("args", e.to_string()))
 }
 
 /// The construction operations: blossom, subpatch, subdivide, halve, elevate, matrix.
