@@ -174,23 +174,29 @@ fn a_wrong_result_exceeds_the_rational_bound() {
     assert!(err > case.bound.as_ref().unwrap()[0]);
 }
 
+/// An S-patch fixture and its polygon's vertices as f64.
+fn s_patch(name: &str) -> (tribez::spatch::SPatch, Vec<[f64; 2]>) {
+    let AnyPatch::SPatch(s) = read_any_patch(&fixture(name)).unwrap() else {
+        panic!("{name} is an S-patch")
+    };
+    let verts = s
+        .polygon
+        .vertices()
+        .iter()
+        .map(|v| {
+            [
+                v[0].to_string().parse().unwrap(),
+                v[1].to_string().parse().unwrap(),
+            ]
+        })
+        .collect();
+    (s, verts)
+}
+
 #[test]
 fn s_patch_de_casteljau_part_within_its_bound() {
     for name in ["pentagon_depth2.toml", "pentagon_plane.toml"] {
-        let AnyPatch::SPatch(s) = read_any_patch(&fixture(name)).unwrap() else {
-            panic!("{name} is an S-patch")
-        };
-        let verts: Vec<[f64; 2]> = s
-            .polygon
-            .vertices()
-            .iter()
-            .map(|v| {
-                [
-                    v[0].to_string().parse().unwrap(),
-                    v[1].to_string().parse().unwrap(),
-                ]
-            })
-            .collect();
+        let (s, verts) = s_patch(name);
         let cert = SPatchCertifier::<f64>::new(&s).unwrap();
         let cert32 = SPatchCertifier::<f32>::new(&s).unwrap();
         let mut measured = 0;
@@ -229,20 +235,7 @@ fn s_patch_total_error_within_its_proven_bound() {
     // S-patch at the rounded point: within the de Casteljau bound plus the coordinates' term
     // ((1 + θ)^n − 1)/(1 − θ)^n Σ|P|B(λ̂) (src/certify/bound.rs, wachspress_relative).
     for name in ["pentagon_depth2.toml", "pentagon_plane.toml"] {
-        let AnyPatch::SPatch(s) = read_any_patch(&fixture(name)).unwrap() else {
-            panic!("{name} is an S-patch")
-        };
-        let verts: Vec<[f64; 2]> = s
-            .polygon
-            .vertices()
-            .iter()
-            .map(|v| {
-                [
-                    v[0].to_string().parse().unwrap(),
-                    v[1].to_string().parse().unwrap(),
-                ]
-            })
-            .collect();
+        let (s, verts) = s_patch(name);
         let cert = SPatchCertifier::<f64>::new(&s).unwrap();
         let cert32 = SPatchCertifier::<f32>::new(&s).unwrap();
         let (mut judged, mut judged32, mut total) = (0, 0, 0);

@@ -262,16 +262,7 @@ impl Prepared {
             };
         }
         if let Some((filter, th)) = &self.filter {
-            let float = |x: &Num| match x {
-                Num::Value { float, .. } => *float,
-                Num::NotFinite(_) => f64::NAN,
-            };
-            let (sc, enc, lambda, ys) = scratch;
-            lambda.clear();
-            lambda.extend(inputs.iter().map(float));
-            ys.clear();
-            ys.extend(claimed.iter().map(float));
-            enc.resize(filter.dim(), Enclosure::default());
+            let (sc, enc, lambda, ys) = load(scratch, &inputs, &claimed, filter.dim());
             let RowJudgement {
                 decision,
                 ulps,
@@ -373,16 +364,7 @@ impl Prepared {
             return;
         }
         if o.loose {
-            let float = |x: &Num| match x {
-                Num::Value { float, .. } => *float,
-                Num::NotFinite(_) => f64::NAN,
-            };
-            let (sc, enc, lambda, ys) = scratch;
-            lambda.clear();
-            lambda.extend(o.inputs.iter().map(float));
-            ys.clear();
-            ys.extend(o.claimed.iter().map(float));
-            enc.resize(filter.dim(), Enclosure::default());
+            let (sc, enc, lambda, ys) = load(scratch, &o.inputs, &o.claimed, filter.dim());
             let (lo, hi) = filter.ulps_bounds(th, lambda, ys, sc, enc);
             o.ulps_lower = o.ulps_lower.max(lo);
             o.ulps = o.ulps.min(hi);
@@ -396,6 +378,31 @@ impl Prepared {
             o.settled_exactly = true;
         }
     }
+}
+
+/// Load a row's numbers as floats into the thread's buffers (`dim` enclosures ready).
+fn load<'a>(
+    scratch: &'a mut RowScratch,
+    inputs: &[Num],
+    claimed: &[Num],
+    dim: usize,
+) -> (
+    &'a mut Scratch,
+    &'a mut Vec<Enclosure>,
+    &'a mut Vec<f64>,
+    &'a mut Vec<f64>,
+) {
+    let float = |x: &Num| match x {
+        Num::Value { float, .. } => *float,
+        Num::NotFinite(_) => f64::NAN,
+    };
+    let (sc, enc, lambda, ys) = scratch;
+    lambda.clear();
+    lambda.extend(inputs.iter().map(float));
+    ys.clear();
+    ys.extend(claimed.iter().map(float));
+    enc.resize(dim, Enclosure::default());
+    (sc, enc, lambda, ys)
 }
 
 /// Per-thread buffers of the filter: its scratch, the enclosures, the row's inputs and claimed
