@@ -5,7 +5,8 @@
 //! Each row: the barycentric coordinates (or `x, y, …` with `--cartesian`), then the claimed
 //! coordinates of the point. CSV (`#` starts a comment line), JSON lines (`.jsonl`, `.ndjson`,
 //! `.json`: one array per line; numbers or strings), or one JSON array of such rows (a `.json`
-//! file starting with `[` then `[`, rows spread over any number of lines; see `parse`). With `--precision`, each number denotes the float
+//! file starting with `[` then `[`, rows spread over any number of lines; see `parse`). With
+//! `--precision`, each number denotes the float
 //! nearest its text (hex floats are exact); the claimed value is judged against the exact value
 //! at the inputs as the code saw them (those floats; homogeneous form, they need not sum to 1),
 //! and the error at the intended inputs (the exact text) is reported for failures and for the

@@ -115,6 +115,27 @@ impl Prepared {
         }
     }
 
+    /// The exact value of a number as the code saw it: the float it denotes with a precision,
+    /// its text's exact value without (`None` for `nan`, `inf`, empty).
+    fn seen_value(&self, x: &Num) -> Option<BigRational> {
+        match x {
+            Num::Value { float, text_exact } => match self.precision {
+                Some(_) => crate::number::exact_f64(*float),
+                None => text_exact.clone(),
+            },
+            Num::NotFinite(_) => None,
+        }
+    }
+
+    /// The barycentric point of a row's inputs as the code saw them.
+    fn seen_point(&self, inputs: &[Num]) -> Option<Vec<BigRational>> {
+        inputs
+            .iter()
+            .map(|x| self.seen_value(x))
+            .collect::<Option<Vec<_>>>()
+            .and_then(|x| self.barycentric(x))
+    }
+
     /// Judge one row exactly; `texts` are the row's fields (for the intended values).
     pub(super) fn exact_row(
         &self,
@@ -123,17 +144,7 @@ impl Prepared {
         texts: Option<&[&str]>,
         detail: bool,
     ) -> (bool, f64, Option<String>, Vec<FailedCoord>) {
-        let seen_in: Option<Vec<BigRational>> = inputs
-            .iter()
-            .map(|x| match x {
-                Num::Value { float, text_exact } => match self.precision {
-                    Some(_) => crate::number::exact_f64(*float),
-                    None => text_exact.clone(),
-                },
-                Num::NotFinite(_) => None,
-            })
-            .collect();
-        let Some(lambda) = seen_in.and_then(|x| self.barycentric(x)) else {
+        let Some(lambda) = self.seen_point(inputs) else {
             return (false, f64::INFINITY, Some("an input is not a finite number (or the Cartesian point has no barycentric coordinates)".into()), Vec::new());
         };
         let exact = self.seen.evaluate_fast(&lambda);
@@ -162,7 +173,7 @@ impl Prepared {
         let mut reason = None;
         let mut coords = Vec::new();
         for (c, y) in claimed.iter().enumerate() {
-            let Num::Value { float, text_exact } = y else {
+            let Num::Value { float, .. } = y else {
                 pass = false;
                 worst = f64::INFINITY;
                 if let Num::NotFinite(what) = y {
@@ -172,10 +183,7 @@ impl Prepared {
                 }
                 continue;
             };
-            let yq = match self.precision {
-                Some(_) => crate::number::exact_f64(*float).unwrap_or_default(),
-                None => text_exact.clone().unwrap_or_default(),
-            };
+            let yq = self.seen_value(y).unwrap_or_default();
             let leaf = Leaf {
                 precision: self.precision,
                 condition: cond.as_ref().map(|s| s[c].clone()),
@@ -321,23 +329,14 @@ impl Prepared {
     /// The row's largest error in ULPs, computed exactly (the numbers as floats of the batch's
     /// precision; no verdict, condition number or report figures: the histogram's lean path).
     fn exact_ulps(&self, inputs: &[Num], claimed: &[Num]) -> f64 {
-        let value = |x: &Num| match x {
-            Num::Value { float, .. } => crate::number::exact_f64(*float),
-            Num::NotFinite(_) => None,
-        };
-        let Some(lambda) = inputs
-            .iter()
-            .map(value)
-            .collect::<Option<Vec<_>>>()
-            .and_then(|x| self.barycentric(x))
-        else {
+        let Some(lambda) = self.seen_point(inputs) else {
             return f64::INFINITY;
         };
         let exact = self.seen.evaluate_fast(&lambda);
         claimed
             .iter()
             .zip(&exact)
-            .map(|(y, q)| match value(y) {
+            .map(|(y, q)| match self.seen_value(y) {
                 None => f64::INFINITY,
                 Some(yq) if &yq == q => 0.0,
                 Some(yq) => {
