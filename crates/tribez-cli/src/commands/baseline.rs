@@ -1,0 +1,83 @@
+//! Baselines of worst errors (like a libm's table of known worst cases): `--record-baseline FILE`
+//! writes the worst error in ULPs per operation, algorithm and precision; `--baseline FILE`
+//! fails the run when any of them got worse, even inside a loose tolerance.
+//!
+//! The file is JSON: `{"tribez_baseline": 1, "worst": [{"op": "eval", "algorithm": "casteljau",
+//! "precision": "f64", "ulps": 0.75, "at": "…"}]}`.
+
+use std::path::Path;
+
+use serde_json::json;
+
+use super::CliError;
+use tribez::io::InputError;
+
+/// The worst error of one (operation, algorithm, precision).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Worst {
+    /// Operation (`eval`).
+    pub op: String,
+    /// Algorithm (`casteljau`, `bernstein`, or `claimed` for other code's results).
+    pub algorithm: String,
+    /// `f64` or `f32`.
+    pub precision: String,
+    /// The worst error in ULPs.
+    pub ulps: f64,
+    /// Where it occurred.
+    pub at: String,
+}
+
+/// Write the baseline file (whole or not at all).
+pub fn record(path: &Path, worst: &[Worst]) -> Result<(), CliError> {
+    let entries: Vec<_> = worst
+        .iter()
+        .map(|w| json!({"op": w.op, "algorithm": w.algorithm, "precision": w.precision, "ulps": w.ulps, "at": w.at}))
+        .collect();
+    let text = format!("{:#}\n", json!({"tribez_baseline": 1, "worst": entries}));
+    super::write_atomically(path, text.as_bytes())
+}
+
+/// Compare against a baseline file: one line per (op, algorithm, precision) that got worse.
+pub fn compare(path: &Path, worst: &[Worst]) -> Result<Vec<String>, CliError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+    let doc: serde_json::Value = serde_json::from_str(&text).map_err(|e| InputError {
+        file: file.clone(),
+        line: Some(e.line()),
+        column: Some(e.column()),
+        key: None,
+        message: format!("not a baseline file: {e}"),
+    })?;
+    let entries = doc
+        .get("worst")
+        .and_then(|w| w.as_array())
+        .ok_or_else(|| InputError::file(&file, "not a baseline file: no `worst` array"))?;
+    let mut out = Vec::new();
+    for (i, e) in entries.iter().enumerate() {
+        let field = |k: &str| e.get(k).and_then(|v| v.as_str()).map(str::to_string);
+        let (Some(op), Some(alg), Some(prec), Some(ulps)) = (
+            field("op"),
+            field("algorithm"),
+            field("precision"),
+            e.get("ulps").and_then(|v| v.as_f64()),
+        ) else {
+            return Err(InputError::file(
+                &file,
+                format!("worst[{i}]: needs op, algorithm, precision (strings) and ulps (a number)"),
+            )
+            .into());
+        };
+        if let Some(w) = worst
+            .iter()
+            .find(|w| w.op == op && w.algorithm == alg && w.precision == prec)
+            && w.ulps > ulps
+        {
+            out.push(format!(
+                "{op} {alg} {prec}: worst error {} ulp, baseline {ulps} ulp (at {})",
+                w.ulps, w.at
+            ));
+        }
+    }
+    Ok(out)
+}

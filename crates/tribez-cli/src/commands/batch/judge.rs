@@ -1,0 +1,409 @@
+//! Judging one row: the float filter first, exact arithmetic when it cannot decide.
+
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use super::parse::Num;
+use super::report::FailedCoord;
+use tribez::certify::bound::{a_priori, condition};
+use tribez::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
+use tribez::certify::measures::{Leaf, Measures, Tolerance, as_float};
+use crate::commands::CliError;
+use crate::commands::check::Args;
+use tribez::exact::{Algorithm, ExactEvaluator};
+use tribez::float::Precision;
+use tribez::patch::{ControlNet, Patch};
+
+/// How one row came out.
+pub(super) struct RowOutcome {
+    pub(super) line: usize,
+    pub(super) pass: bool,
+    pub(super) fell_back: bool,
+    /// The largest error in ULPs over the coordinates (upper bound if filter-decided).
+    pub(super) ulps: f64,
+    /// A lower bound on it (equal to `ulps` when computed exactly).
+    pub(super) ulps_lower: f64,
+    /// The ULP figures are the plain filter stage's loose bounds (to be tightened by
+    /// [`Prepared::settle_ulps`]).
+    pub(super) loose: bool,
+    /// The ULP figures were computed exactly by [`Prepared::settle_ulps`] (the verdict was not).
+    pub(super) settled_exactly: bool,
+    pub(super) failure: Option<String>,
+    /// The parsed row (kept for failures and the worst row, to report them exactly).
+    pub(super) inputs: Vec<Num>,
+    pub(super) claimed: Vec<Num>,
+}
+
+/// Everything prepared once per patch.
+pub(super) struct Prepared {
+    pub(super) patch: Patch,
+    pub(super) precision: Option<Precision>,
+    pub(super) tolerance: Tolerance,
+    pub(super) algorithm: Algorithm,
+    pub(super) cartesian: bool,
+    pub(super) filter: Option<(Filter, Thresholds)>,
+    pub(super) seen: ExactEvaluator,
+    pub(super) seen_net: ControlNet<BigRational>,
+    pub(super) intended: ExactEvaluator,
+}
+
+impl Prepared {
+    pub(super) fn new(args: &Args, patch: Patch) -> Result<Self, CliError> {
+        let tolerance = match &args.tolerance {
+            Some(t) => {
+                Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?
+            }
+            None => Tolerance::Exact,
+        };
+        let precision = match &args.precision {
+            Some(p) => Some(
+                p.parse::<Precision>()
+                    .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+            ),
+            None => None,
+        };
+        if tolerance.needs_precision() && precision.is_none() {
+            return Err(CliError::Usage(format!(
+                "--tolerance {tolerance} needs --precision f64 or f32"
+            )));
+        }
+        let algorithm = args.algorithm.algorithm();
+        let seen_net = match precision {
+            Some(p) => {
+                if patch.net.coords().iter().any(|q| as_float(q, p).is_none()) {
+                    return Err(CliError::Usage(format!(
+                        "a control point of the patch overflows {}",
+                        p.name()
+                    )));
+                }
+                patch.net.map(|q| as_float(q, p).unwrap_or_default())
+            }
+            None => patch.net.clone(),
+        };
+        let (m, n) = (patch.net.m(), patch.net.degree());
+        let filter = precision.filter(|_| !args.cartesian).map(|p| {
+            let fnet = seen_net.map(tribez::number::round_f64);
+            (
+                Filter::new(&fnet),
+                Thresholds::new(&tolerance, p, algorithm, m, n),
+            )
+        });
+        Ok(Prepared {
+            seen: ExactEvaluator::new(&seen_net),
+            intended: ExactEvaluator::new(&patch.net),
+            seen_net,
+            patch,
+            precision,
+            tolerance,
+            algorithm,
+            cartesian: args.cartesian,
+            filter,
+        })
+    }
+
+    pub(super) fn width(&self) -> usize {
+        let m = self.patch.net.m();
+        if self.cartesian { m } else { m + 1 }
+    }
+
+    /// Barycentric coordinates of an input row (exact), as seen or intended.
+    pub(super) fn barycentric(&self, xs: Vec<BigRational>) -> Option<Vec<BigRational>> {
+        if self.cartesian {
+            self.patch.domain_or_reference().barycentric(&xs).ok()
+        } else {
+            Some(xs)
+        }
+    }
+
+    /// The exact value of a number as the code saw it: the float it denotes with a precision,
+    /// its text's exact value without (`None` for `nan`, `inf`, empty).
+    fn seen_value(&self, x: &Num) -> Option<BigRational> {
+        match x {
+            Num::Value { float, text_exact } => match self.precision {
+                Some(_) => tribez::number::exact_f64(*float),
+                None => text_exact.clone(),
+            },
+            Num::NotFinite(_) => None,
+        }
+    }
+
+    /// The barycentric point of a row's inputs as the code saw them.
+    fn seen_point(&self, inputs: &[Num]) -> Option<Vec<BigRational>> {
+        inputs
+            .iter()
+            .map(|x| self.seen_value(x))
+            .collect::<Option<Vec<_>>>()
+            .and_then(|x| self.barycentric(x))
+    }
+
+    /// Judge one row exactly; `texts` are the row's fields (for the intended values).
+    pub(super) fn exact_row(
+        &self,
+        inputs: &[Num],
+        claimed: &[Num],
+        texts: Option<&[&str]>,
+        detail: bool,
+    ) -> (bool, f64, Option<String>, Vec<FailedCoord>) {
+        let Some(lambda) = self.seen_point(inputs) else {
+            return (false, f64::INFINITY, Some("an input is not a finite number (or the Cartesian point has no barycentric coordinates)".into()), Vec::new());
+        };
+        let exact = self.seen.evaluate_fast(&lambda);
+        let cond = if self.tolerance.needs_condition() {
+            Some(condition(&self.seen_net, &lambda))
+        } else {
+            None
+        };
+        let (m, n) = (self.patch.net.m(), self.patch.net.degree());
+        let intended: Option<Vec<BigRational>> = if detail {
+            texts
+                .and_then(|t| {
+                    inputs
+                        .iter()
+                        .zip(t)
+                        .map(|(x, s)| x.text_value(s))
+                        .collect::<Option<Vec<_>>>()
+                })
+                .and_then(|x| self.barycentric(x))
+                .map(|l| self.intended.evaluate_fast(&l))
+        } else {
+            None
+        };
+        let mut pass = true;
+        let mut worst = 0f64;
+        let mut reason = None;
+        let mut coords = Vec::new();
+        for (c, y) in claimed.iter().enumerate() {
+            let Num::Value { float, .. } = y else {
+                pass = false;
+                worst = f64::INFINITY;
+                if let Num::NotFinite(what) = y {
+                    reason.get_or_insert_with(|| {
+                        format!("claimed coordinate [{c}] is not a finite number: {what}")
+                    });
+                }
+                continue;
+            };
+            let yq = self.seen_value(y).unwrap_or_default();
+            let leaf = Leaf {
+                precision: self.precision,
+                condition: cond.as_ref().map(|s| s[c].clone()),
+                bound: cond.as_ref().and_then(|s| {
+                    a_priori(
+                        self.algorithm,
+                        self.precision.unwrap_or(Precision::F64),
+                        m,
+                        n,
+                        &s[c],
+                        &lambda,
+                    )
+                }),
+            };
+            let ok = self
+                .tolerance
+                .accepts(&yq, &exact[c], &leaf)
+                .unwrap_or(false);
+            let meas = Measures::new(&yq, &exact[c], self.precision.or(Some(Precision::F64)));
+            let u = meas
+                .ulps
+                .as_ref()
+                .and_then(ToPrimitive::to_f64)
+                .unwrap_or(f64::INFINITY);
+            worst = worst.max(u);
+            if !ok {
+                pass = false;
+                reason.get_or_insert_with(|| {
+                    format!(
+                        "coordinate [{c}] breaks tolerance `{}`: {}",
+                        self.tolerance,
+                        meas.text()
+                    )
+                });
+            }
+            if detail {
+                let (decimal, hex) = match self.precision {
+                    Some(Precision::F32) => (
+                        tribez::number::display_f32(*float as f32),
+                        tribez::number::hex_f32(*float as f32),
+                    ),
+                    _ => (
+                        tribez::number::display_f64(*float),
+                        tribez::number::hex_f64(*float),
+                    ),
+                };
+                let ei = intended.as_ref().map(|v| v[c].clone());
+                coords.push(FailedCoord {
+                    index: c,
+                    decimal,
+                    hex,
+                    intended: ei.as_ref().map(|e| Measures::new(&yq, e, self.precision)),
+                    exact_intended: ei,
+                    exact_seen: exact[c].clone(),
+                    seen: meas,
+                });
+            }
+        }
+        (pass, worst, reason, coords)
+    }
+
+    /// Judge one row: filter first, exact when undecided.
+    pub(super) fn row(
+        &self,
+        line: usize,
+        inputs: Vec<Num>,
+        claimed: Vec<Num>,
+        scratch: &mut RowScratch,
+    ) -> RowOutcome {
+        let finite = |xs: &[Num]| xs.iter().all(|x| matches!(x, Num::Value { .. }));
+        if !finite(&inputs) || !finite(&claimed) {
+            let (_, _, reason, _) = self.exact_row(&inputs, &claimed, None, false);
+            return RowOutcome {
+                line,
+                pass: false,
+                fell_back: false,
+                ulps: f64::INFINITY,
+                ulps_lower: f64::INFINITY,
+                loose: false,
+                settled_exactly: false,
+                failure: reason,
+                inputs,
+                claimed,
+            };
+        }
+        if let Some((filter, th)) = &self.filter {
+            let (sc, enc, lambda, ys) = load(scratch, &inputs, &claimed, filter.dim());
+            let RowJudgement {
+                decision,
+                ulps,
+                ulps_lower,
+                tight,
+            } = filter.judge_tight(th, lambda, ys, sc, enc);
+            match decision {
+                Decision::Pass => {
+                    return RowOutcome {
+                        line,
+                        pass: true,
+                        fell_back: false,
+                        ulps,
+                        ulps_lower,
+                        loose: !tight,
+                        settled_exactly: false,
+                        failure: None,
+                        inputs,
+                        claimed,
+                    };
+                }
+                Decision::Fail => {
+                    return RowOutcome {
+                        line,
+                        pass: false,
+                        fell_back: false,
+                        ulps,
+                        ulps_lower,
+                        loose: !tight,
+                        settled_exactly: false,
+                        failure: Some(String::new()),
+                        inputs,
+                        claimed,
+                    };
+                }
+                Decision::Undecided => {}
+            }
+        }
+        let (pass, ulps, reason, _) = self.exact_row(&inputs, &claimed, None, false);
+        RowOutcome {
+            line,
+            pass,
+            fell_back: self.filter.is_some(),
+            ulps,
+            ulps_lower: ulps,
+            loose: false,
+            settled_exactly: false,
+            failure: if pass { None } else { reason },
+            inputs,
+            claimed,
+        }
+    }
+}
+
+impl Prepared {
+    /// The row's largest error in ULPs, computed exactly (the numbers as floats of the batch's
+    /// precision; no verdict, condition number or report figures: the histogram's lean path).
+    fn exact_ulps(&self, inputs: &[Num], claimed: &[Num]) -> f64 {
+        let Some(lambda) = self.seen_point(inputs) else {
+            return f64::INFINITY;
+        };
+        let exact = self.seen.evaluate_fast(&lambda);
+        claimed
+            .iter()
+            .zip(&exact)
+            .map(|(y, q)| match self.seen_value(y) {
+                None => f64::INFINITY,
+                Some(yq) if &yq == q => 0.0,
+                Some(yq) => {
+                    let u = match self.precision {
+                        Some(Precision::F32) => tribez::number::ulps_error_f32(&yq, q),
+                        _ => tribez::number::ulps_error_f64(&yq, q),
+                    };
+                    u.to_f64().unwrap_or(f64::INFINITY)
+                }
+            })
+            .fold(0.0, f64::max)
+    }
+
+    /// Settle a row's ULP figures for the histogram and the worst-row search: a row the plain
+    /// filter stage decided gets the compensated enclosure (the errors, to a small fraction of an
+    /// ulp, instead of the looseness of the plain bounds); a row whose enclosure still straddles
+    /// a histogram boundary (an error that may be exactly 0, or exactly 1/2 ulp as at a rounding
+    /// midpoint) is computed exactly, so every row lands in its true bucket.
+    pub(super) fn settle_ulps(&self, o: &mut RowOutcome, scratch: &mut RowScratch) {
+        let Some((filter, th)) = &self.filter else {
+            return;
+        };
+        if !o.ulps.is_finite() {
+            return;
+        }
+        if o.loose {
+            let (sc, enc, lambda, ys) = load(scratch, &o.inputs, &o.claimed, filter.dim());
+            let (lo, hi) = filter.ulps_bounds(th, lambda, ys, sc, enc);
+            o.ulps_lower = o.ulps_lower.max(lo);
+            o.ulps = o.ulps.min(hi);
+            o.loose = false;
+        }
+        use crate::report::UlpHistogram;
+        if UlpHistogram::bucket(o.ulps_lower) != UlpHistogram::bucket(o.ulps) {
+            let u = self.exact_ulps(&o.inputs, &o.claimed);
+            o.ulps = u;
+            o.ulps_lower = u;
+            o.settled_exactly = true;
+        }
+    }
+}
+
+/// Load a row's numbers as floats into the thread's buffers (`dim` enclosures ready).
+fn load<'a>(
+    scratch: &'a mut RowScratch,
+    inputs: &[Num],
+    claimed: &[Num],
+    dim: usize,
+) -> (
+    &'a mut Scratch,
+    &'a mut Vec<Enclosure>,
+    &'a mut Vec<f64>,
+    &'a mut Vec<f64>,
+) {
+    let float = |x: &Num| match x {
+        Num::Value { float, .. } => *float,
+        Num::NotFinite(_) => f64::NAN,
+    };
+    let (sc, enc, lambda, ys) = scratch;
+    lambda.clear();
+    lambda.extend(inputs.iter().map(float));
+    ys.clear();
+    ys.extend(claimed.iter().map(float));
+    enc.resize(dim, Enclosure::default());
+    (sc, enc, lambda, ys)
+}
+
+/// Per-thread buffers of the filter: its scratch, the enclosures, the row's inputs and claimed
+/// values as floats.
+pub(super) type RowScratch = (Scratch, Vec<Enclosure>, Vec<f64>, Vec<f64>);

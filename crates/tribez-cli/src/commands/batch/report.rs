@@ -1,0 +1,214 @@
+//! The batch report: text, JSON and JUnit.
+
+use num_rational::BigRational;
+use serde_json::{Value as Json, json};
+
+use tribez::certify::measures::{Measures, Tolerance};
+use tribez::exact::Algorithm;
+use tribez::float::Precision;
+use tribez::number::to_decimal_string;
+use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
+
+/// A failed row, in full.
+#[derive(Clone, Debug)]
+pub struct FailedRow {
+    pub(super) line: usize,
+    pub(super) reason: String,
+    pub(super) coords: Vec<FailedCoord>,
+}
+
+#[derive(Clone, Debug)]
+pub(super) struct FailedCoord {
+    pub(super) index: usize,
+    pub(super) decimal: String,
+    pub(super) hex: String,
+    pub(super) exact_seen: BigRational,
+    pub(super) seen: Measures,
+    pub(super) exact_intended: Option<BigRational>,
+    pub(super) intended: Option<Measures>,
+}
+
+/// The batch report.
+pub struct BatchReport {
+    pub(super) file: String,
+    pub(super) patch: String,
+    pub(super) tolerance: Tolerance,
+    pub(super) precision: Option<Precision>,
+    pub(super) rows: u64,
+    pub(super) passed: u64,
+    pub(super) failed: u64,
+    pub(super) fell_back: u64,
+    pub(super) histogram: UlpHistogram,
+    /// Errors of filter-decided rows enter the histogram as the upper ends of their compensated
+    /// enclosures.
+    pub(super) histogram_upper_bounds: bool,
+    /// Filter-decided rows whose error was computed exactly for the histogram (its enclosure
+    /// straddled a bucket boundary).
+    pub(super) histogram_exact: usize,
+    pub(super) worst: Option<(f64, usize, Vec<FailedCoord>)>,
+    pub(super) failures: Vec<FailedRow>,
+}
+
+impl BatchReport {
+    /// The worst error for baselines: (eval, claimed, precision).
+    pub(super) fn worst_errors(
+        &self,
+        _algorithm: Algorithm,
+    ) -> Vec<crate::commands::baseline::Worst> {
+        self.worst
+            .iter()
+            .map(|(u, line, _)| crate::commands::baseline::Worst {
+                op: "eval".into(),
+                algorithm: "claimed".into(),
+                precision: self.precision.map_or("exact", |p| p.name()).into(),
+                ulps: *u,
+                at: format!("{}:{line}", self.file),
+            })
+            .collect()
+    }
+}
+
+pub(super) fn coord_text(c: &FailedCoord) -> String {
+    let mut s = format!(
+        "claimed {} = {}; exact at the inputs as seen {} ({})",
+        c.decimal,
+        c.hex,
+        to_decimal_string(&c.exact_seen, 20),
+        c.seen.text()
+    );
+    if let (Some(e), Some(m)) = (&c.exact_intended, &c.intended) {
+        s += &format!(
+            "; at the intended inputs {} ({})",
+            to_decimal_string(e, 20),
+            m.text()
+        );
+    }
+    s
+}
+
+pub(super) fn coord_json(c: &FailedCoord) -> Json {
+    json!({
+        "coordinate": c.index,
+        "claimed": {"decimal": c.decimal, "hex": c.hex},
+        "exact_at_inputs_as_seen": c.exact_seen.to_string(),
+        "error_at_inputs_as_seen": c.seen.to_json(),
+        "exact_at_intended_inputs": c.exact_intended.as_ref().map(ToString::to_string),
+        "error_at_intended_inputs": c.intended.as_ref().map(Measures::to_json),
+    })
+}
+
+impl Render for BatchReport {
+    fn text(&self) -> String {
+        let mut out = format!(
+            "{}: {} rows checked against {} (tolerance {}, {})\n",
+            self.file,
+            self.rows,
+            self.patch,
+            self.tolerance,
+            self.precision
+                .map_or("exact numbers".to_string(), |p| format!(
+                    "each number the nearest {}",
+                    p.name()
+                ))
+        );
+        if self.histogram_upper_bounds {
+            out += &format!(
+                "  passed {}, failed {}; decided by the float filter {}, fell back to exact arithmetic {}\n",
+                self.passed,
+                self.failed,
+                self.rows - self.fell_back,
+                self.fell_back
+            );
+        } else {
+            out += &format!(
+                "  passed {}, failed {}; every row computed exactly (no float filter without --precision, or with --cartesian)\n",
+                self.passed, self.failed
+            );
+        }
+        if !self.histogram.is_empty() {
+            out += &format!(
+                "\nErrors in ULPs against the exact value at the inputs as the code saw them{}\n",
+                if self.histogram_upper_bounds {
+                    " (rows the float filter decided: the upper end of a compensated enclosure of the error; exact where it straddles a bucket boundary)"
+                } else {
+                    ""
+                }
+            );
+            out += &self.histogram.text();
+        }
+        if let Some((u, line, coords)) = &self.worst {
+            out += &format!(
+                "\nworst row (the largest error, computed exactly): line {line}, {} ulp\n",
+                to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4)
+            );
+            for c in coords {
+                out += &format!("  [{}] {}\n", c.index, coord_text(c));
+            }
+        }
+        if !self.failures.is_empty() {
+            out += "\nFailures\n";
+            for f in &self.failures {
+                out += &format!("  line {}: {}\n", f.line, f.reason);
+                for c in &f.coords {
+                    out += &format!("    [{}] {}\n", c.index, coord_text(c));
+                }
+            }
+            if self.failed as usize > self.failures.len() {
+                out += &format!(
+                    "  … and {} more\n",
+                    self.failed as usize - self.failures.len()
+                );
+            }
+        }
+        out += &format!(
+            "\n{} claim{}: {} passed, {} failed\n",
+            self.rows,
+            if self.rows == 1 { "" } else { "s" },
+            self.passed,
+            self.failed
+        );
+        out
+    }
+
+    fn json(&self) -> Json {
+        json!({
+            "results": self.file,
+            "patch": self.patch,
+            "tolerance": self.tolerance.text(),
+            "precision": self.precision.map(|p| p.name()),
+            "summary": {
+                "claims": self.rows, "passed": self.passed, "failed": self.failed,
+                "filter_used": self.histogram_upper_bounds,
+                "decided_by_filter": if self.histogram_upper_bounds { self.rows - self.fell_back } else { 0 }, "fell_back_to_exact": self.fell_back,
+                "ulp_histogram": self.histogram.json(), "histogram_upper_bounds": self.histogram_upper_bounds, "histogram_settled_exactly": self.histogram_exact,
+            },
+            "worst": self.worst.as_ref().map(|(u, line, coords)| json!({"ulps": u, "line": line, "coordinates": coords.iter().map(coord_json).collect::<Vec<_>>()})),
+            "failures": self.failures.iter().map(|f| json!({"line": f.line, "reason": f.reason, "coordinates": f.coords.iter().map(coord_json).collect::<Vec<_>>()})).collect::<Vec<_>>(),
+            "failures_not_listed": self.failed as usize - self.failures.len(),
+        })
+    }
+}
+
+impl Exporter for BatchReport {
+    fn junit(&self) -> String {
+        let mut failures: Vec<String> = self
+            .failures
+            .iter()
+            .map(|f| format!("line {}: {}", f.line, f.reason))
+            .collect();
+        if self.failed as usize > self.failures.len() {
+            failures.push(format!(
+                "… and {} more",
+                self.failed as usize - self.failures.len()
+            ));
+        }
+        junit_xml(
+            "check",
+            &[JunitCase {
+                name: self.file.clone(),
+                checks: self.rows as usize,
+                failures,
+            }],
+        )
+    }
+}

@@ -1,0 +1,82 @@
+//! `tribez blossom`: the blossom (polar form) `b[u_1, …, u_n]` of a patch (FORMULAS.md §4).
+//!
+//! For a rational patch it is the rational blossom `X[u_1, …, u_n] / W[u_1, …, u_n]`, the blossom
+//! of the homogeneous net `(w c, w)` projected ([`tribez::rational::RationalPatch::blossom`]); an
+//! error where the weight blossom `W` is 0.
+
+use std::path::PathBuf;
+
+use num_rational::BigRational;
+use serde_json::{Value as Json, json};
+
+use super::construct::barycentric_points;
+use super::{CliError, Outcome, points_patch};
+use crate::cli::OutputArgs;
+use tribez::error::CoreError;
+use tribez::io::patch_file::read_any_patch;
+use crate::report::{Render, json_rationals, tuple};
+
+/// Arguments of `tribez blossom`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The patch file (.toml or .json; polynomial or rational).
+    pub patch: PathBuf,
+    /// One argument of the blossom: a barycentric point (`1/2,1/2,0`). Give exactly n (the degree).
+    #[arg(long = "arg", value_name = "POINT", allow_hyphen_values = true)]
+    pub args: Vec<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// The blossom value.
+pub struct BlossomReport {
+    args: Vec<Vec<BigRational>>,
+    point: Vec<BigRational>,
+}
+
+/// Run `tribez blossom`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let file = args.patch.display().to_string();
+    let (patch, rational) = points_patch(&file, "blossom", read_any_patch(&args.patch)?)?;
+    let n = patch.net.degree();
+    if args.args.len() != n {
+        return Err(CliError::core(
+            "--arg",
+            CoreError::BlossomArity {
+                degree: n,
+                found: args.args.len(),
+            },
+        ));
+    }
+    let points = barycentric_points(&args.args, "arg", patch.net.m())?;
+    let point = match &rational {
+        None => tribez::blossom::blossom(&patch.net, &points),
+        Some(r) => r.blossom(&points),
+    }
+    .map_err(|e| CliError::core("--arg", e))?;
+    Outcome::rendered(
+        &BlossomReport {
+            args: points,
+            point,
+        },
+        args.out.format,
+        true,
+    )
+}
+
+impl Render for BlossomReport {
+    fn text(&self) -> String {
+        format!(
+            "b[{}] = {}\n",
+            self.args
+                .iter()
+                .map(|a| tuple(a))
+                .collect::<Vec<_>>()
+                .join(", "),
+            tuple(&self.point)
+        )
+    }
+    fn json(&self) -> Json {
+        json!({ "point": json_rationals(&self.point) })
+    }
+}

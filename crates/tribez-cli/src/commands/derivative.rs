@@ -1,0 +1,118 @@
+//! `tribez derivative`: exact directional derivatives of any order `r <= n` at a point.
+
+use std::path::PathBuf;
+
+use num_rational::BigRational;
+use serde_json::{Value as Json, json};
+
+use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
+use crate::cli::OutputArgs;
+use tribez::derivative::{check_order, directional_derivative};
+use tribez::io::patch_file::read_any_patch;
+use crate::report::{Render, json_rationals, tuple};
+
+/// Arguments of `tribez derivative`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The patch file (.toml or .json).
+    pub patch: PathBuf,
+    /// The point: barycentric coordinates summing to 1 (`1/2,1/3,1/6`), or Cartesian with --cartesian.
+    #[arg(long = "at", value_name = "POINT", allow_hyphen_values = true)]
+    pub at: String,
+    /// The point is Cartesian (converted by the domain, Cramer's rule).
+    #[arg(long)]
+    pub cartesian: bool,
+    /// A barycentric direction (m+1 components summing to 0, e.g. `1,0,-1`). Repeat for higher orders.
+    #[arg(long = "dir", value_name = "D", allow_hyphen_values = true)]
+    pub dir: Vec<String>,
+    /// A Cartesian direction vector (m components, e.g. `1,-2`), converted by the domain (seed 000 eqs. 9-10). Repeatable; mixes with --dir.
+    #[arg(long = "vector", value_name = "X,Y", allow_hyphen_values = true)]
+    pub vector: Vec<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// The derivative report.
+pub struct DerivativeReport {
+    file: String,
+    at: Vec<BigRational>,
+    directions: Vec<Vec<BigRational>>,
+    value: Vec<BigRational>,
+}
+
+/// Run `tribez derivative`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let file = args.patch.display().to_string();
+    let (patch, rational) = points_patch(&file, "derivative", read_any_patch(&args.patch)?)?;
+    let (m, n) = (patch.net.m(), patch.net.degree());
+    let domain = patch.domain_or_reference();
+    let at = at_point(&args.at, args.cartesian, &domain, m)?;
+    let mut directions = Vec::new();
+    for d in &args.dir {
+        let v = parse_list(d, "--dir")?;
+        check_direction(&v, m, "direction").map_err(|e| CliError::core(format!("--dir {d}"), e))?;
+        directions.push(v);
+    }
+    for x in &args.vector {
+        let v = parse_list(x, "--vector")?;
+        directions.push(
+            domain
+                .direction(&v)
+                .map_err(|e| CliError::core(format!("--vector {x}"), e))?,
+        );
+    }
+    if directions.is_empty() {
+        return Err(CliError::Usage(
+            "give at least one direction with --dir (barycentric) or --vector (Cartesian)".into(),
+        ));
+    }
+    let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
+    let value = match &rational {
+        None => {
+            check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
+            directional_derivative(&patch.net, &refs, &at)
+        }
+        // rational patches: any order, by Leibniz's rule on the homogeneous net
+        Some(r) => r
+            .derivative_of_order(&at, &refs)
+            .map_err(|e| CliError::core(format!("--at {}", args.at), e))?,
+    };
+    Outcome::rendered(
+        &DerivativeReport {
+            file,
+            at,
+            directions,
+            value,
+        },
+        args.out.format,
+        true,
+    )
+}
+
+impl Render for DerivativeReport {
+    fn text(&self) -> String {
+        let dirs = self
+            .directions
+            .iter()
+            .map(|d| tuple(d))
+            .collect::<Vec<_>>()
+            .join(", ");
+        format!(
+            "{}: derivative of order {} along the barycentric direction(s) {dirs}\nat {}: {}\n",
+            self.file,
+            self.directions.len(),
+            tuple(&self.at),
+            tuple(&self.value)
+        )
+    }
+
+    fn json(&self) -> Json {
+        json!({
+            "patch": self.file,
+            "at": json_rationals(&self.at),
+            "order": self.directions.len(),
+            "directions": self.directions.iter().map(|d| json_rationals(d)).collect::<Vec<_>>(),
+            "value": json_rationals(&self.value),
+        })
+    }
+}

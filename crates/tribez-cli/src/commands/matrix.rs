@@ -1,0 +1,211 @@
+//! `tribez matrix`: the exact matrix that maps a parent's control points to a child's, for
+//! halving (FORMULAS.md §5.2) or any subpatch (§4): `c′_α = Σ_β M_{αβ} c_β`, rows and columns in
+//! the canonical order of FORMULAS.md §1 (the order of seed 003's 10×10 matrix).
+
+use num_rational::BigRational;
+use serde_json::{Value as Json, json};
+
+use super::construct::{barycentric_points, parse_edge};
+use super::{CliError, Outcome};
+use tribez::blossom::subpatch_matrix;
+use crate::cli::OutputArgs;
+use tribez::error::CoreError;
+use crate::report::Render;
+use tribez::simplex::{self, Simplex};
+use tribez::subdivide::halve_domains;
+
+/// The largest matrix `tribez matrix` prints: this many rows (degree 43 on a triangle).
+pub const MAX_ROWS: usize = tribez::blossom::MAX_MATRIX_ROWS;
+
+/// Which matrix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Kind {
+    /// Halving along an edge (--edge I,J, --piece 1|2).
+    Halve,
+    /// A subpatch over the simplex given with --vertex (m+1 times).
+    Subpatch,
+}
+
+/// Arguments of `tribez matrix`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// halve or subpatch.
+    #[arg(value_enum)]
+    pub kind: Kind,
+    /// The degree n.
+    #[arg(long)]
+    pub degree: usize,
+    /// halve: the simplex dimension m (2 = triangle, the default; 1 curves, 3 tetrahedra).
+    #[arg(long, default_value_t = 2)]
+    pub simplex: usize,
+    /// halve: the edge, two corner numbers (default 1,2).
+    #[arg(long, value_name = "I,J")]
+    pub edge: Option<String>,
+    /// halve: piece 1 (default) replaces corner J by the midpoint (keeps corner I), piece 2 replaces corner I.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=2))]
+    pub piece: Option<u8>,
+    /// subpatch: a vertex of the sub-simplex in the parent's barycentric coordinates (m+1 of them; m is their count minus one).
+    #[arg(long = "vertex", value_name = "POINT")]
+    pub vertices: Vec<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// The matrix and what it is.
+pub struct MatrixReport {
+    title: String,
+    order: Simplex,
+    rows: Vec<Vec<BigRational>>,
+}
+
+/// Run `tribez matrix`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let (m, f, title) = match args.kind {
+        Kind::Halve => {
+            if !args.vertices.is_empty() {
+                return Err(CliError::Usage("--vertex belongs to `matrix subpatch`; `matrix halve` takes --edge and --piece".into()));
+            }
+            let edge = args.edge.as_deref().unwrap_or("1,2");
+            let piece = args.piece.unwrap_or(1);
+            let m = args.simplex;
+            if m == 0 || m > tribez::io::patch_file::MAX_SIMPLEX_DIMENSION {
+                return Err(CliError::core(
+                    format!("--simplex {m}"),
+                    CoreError::Invalid("the simplex dimension must be 1 to 16".into()),
+                ));
+            }
+            let (i, j) = parse_edge(edge, m)?;
+            let [a, b] = halve_domains(m, i, j);
+            let (f, replaced) = if piece == 1 { (a, j) } else { (b, i) };
+            (
+                m,
+                f,
+                format!(
+                    "halving along edge {}, piece {}: corner {} replaced by the midpoint",
+                    edge,
+                    piece,
+                    replaced + 1
+                ),
+            )
+        }
+        Kind::Subpatch => {
+            if args.edge.is_some() || args.piece.is_some() {
+                return Err(CliError::Usage(
+                    "--edge and --piece belong to `matrix halve`; `matrix subpatch` takes --vertex"
+                        .into(),
+                ));
+            }
+            if args.vertices.len() < 2 {
+                return Err(CliError::Usage(
+                    "give the sub-simplex with --vertex, m+1 times (3 for a triangle)".into(),
+                ));
+            }
+            let m = args.vertices.len() - 1;
+            let f = barycentric_points(&args.vertices, "vertex", m)?;
+            (m, f, "subpatch".to_string())
+        }
+    };
+    let n = args.degree;
+    let len = simplex::binomial((n + m) as u64, m as u64);
+    if len > MAX_ROWS as u128 {
+        return Err(CliError::core(
+            format!("--degree {n}"),
+            CoreError::Invalid(format!(
+                "the matrix would have {len} rows, above the limit of {MAX_ROWS}"
+            )),
+        ));
+    }
+    let context = args
+        .vertices
+        .iter()
+        .map(|v| format!("--vertex {v}"))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let rows = subpatch_matrix(m, n, &f).map_err(|e| CliError::core(context, e))?;
+    let title = format!(
+        "{title}; degree {n} on the {m}-simplex; child = M · parent, rows and columns in canonical order"
+    );
+    Outcome::rendered(
+        &MatrixReport {
+            title,
+            order: Simplex::new(m, n),
+            rows,
+        },
+        args.out.format,
+        true,
+    )
+}
+
+fn key(alpha: &[u32]) -> String {
+    tribez::io::patch_file::index_key(alpha)
+}
+
+fn latex_number(q: &BigRational) -> String {
+    if q.is_integer() {
+        q.to_string()
+    } else {
+        let sign = if q.numer() < &0.into() { "-" } else { "" };
+        format!(
+            "{sign}\\frac{{{}}}{{{}}}",
+            num_traits::Signed::abs(q.numer()),
+            q.denom()
+        )
+    }
+}
+
+impl Render for MatrixReport {
+    fn text(&self) -> String {
+        let cells: Vec<Vec<String>> = self
+            .rows
+            .iter()
+            .map(|r| r.iter().map(ToString::to_string).collect())
+            .collect();
+        let width = cells
+            .iter()
+            .flatten()
+            .map(String::len)
+            .chain(self.order.iter().map(|a| key(a).len()))
+            .max()
+            .unwrap_or(1);
+        let label = self.order.iter().map(|a| key(a).len()).max().unwrap_or(1);
+        let mut out = format!(
+            "{}\n{:label$}   {}\n",
+            self.title,
+            "",
+            self.order
+                .iter()
+                .map(|a| format!("{:>width$}", key(a)))
+                .collect::<Vec<_>>()
+                .join(" ")
+        );
+        for (alpha, row) in self.order.iter().zip(&cells) {
+            out += &format!(
+                "{:>label$} [ {} ]\n",
+                key(alpha),
+                row.iter()
+                    .map(|c| format!("{c:>width$}"))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            );
+        }
+        out
+    }
+    fn json(&self) -> Json {
+        json!({
+            "order": self.order.iter().map(<[u32]>::to_vec).collect::<Vec<_>>(),
+            "rows": self.rows.iter().map(|r| r.iter().map(ToString::to_string).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        })
+    }
+    fn latex(&self) -> Option<String> {
+        let rows: Vec<String> = self
+            .rows
+            .iter()
+            .map(|r| r.iter().map(latex_number).collect::<Vec<_>>().join(" & "))
+            .collect();
+        Some(format!(
+            "% {}\n\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}\n",
+            self.title,
+            rows.join(" \\\\\n")
+        ))
+    }
+}

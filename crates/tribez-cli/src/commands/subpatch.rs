@@ -1,0 +1,69 @@
+//! `tribez subpatch`: the same polynomial over any sub-simplex (FORMULAS.md §4, §11):
+//! `c′_α = b[f_1^{α_1}, …, f_{m+1}^{α_{m+1}}]`.
+
+use std::path::PathBuf;
+
+use super::construct::{PatchReport, barycentric_points, child_patch};
+use super::graph::AnyPatchReport;
+use super::{CliError, Outcome};
+use crate::cli::OutputArgs;
+use tribez::error::CoreError;
+use tribez::io::patch_file::read_any_patch;
+use tribez::patch::AnyPatch;
+
+/// Arguments of `tribez subpatch`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The patch file (.toml or .json).
+    pub patch: PathBuf,
+    /// A vertex of the sub-triangle (sub-simplex) in the parent's barycentric coordinates; may lie outside. Give m+1 (3 for a triangle), in order.
+    #[arg(long = "vertex", value_name = "POINT")]
+    pub vertices: Vec<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// Run `tribez subpatch`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let file = args.patch.display().to_string();
+    let (parent, rational) = super::points_patch(&file, "subpatch", read_any_patch(&args.patch)?)?;
+    let m = parent.net.m();
+    if args.vertices.len() != m + 1 {
+        return Err(CliError::core(
+            "--vertex",
+            CoreError::WrongLength {
+                what: format!("the sub-simplex of a patch over the {m}-simplex (vertices given)"),
+                expected: m + 1,
+                found: args.vertices.len(),
+            },
+        ));
+    }
+    let f = barycentric_points(&args.vertices, "vertex", m)?;
+    let context = args
+        .vertices
+        .iter()
+        .map(|v| format!("--vertex {v}"))
+        .collect::<Vec<_>>()
+        .join(" ");
+    if let Some(r) = rational {
+        // a rational patch: the subpatch of the homogeneous net (w c, w)
+        let mut sub = r.subpatch(&f).map_err(|e| CliError::core(context, e))?;
+        sub.patch = child_patch(&parent, sub.patch.net, Some(&f), "subpatch")?;
+        return Outcome::rendered(
+            &AnyPatchReport(AnyPatch::Rational(sub)),
+            args.out.format,
+            true,
+        );
+    }
+    let net =
+        tribez::blossom::subpatch_exact(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
+    let patch = child_patch(&parent, net, Some(&f), "subpatch")?;
+    Outcome::rendered(
+        &PatchReport {
+            patch,
+            domain_in_parent: Some(f),
+        },
+        args.out.format,
+        true,
+    )
+}

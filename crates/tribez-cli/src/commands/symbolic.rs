@@ -1,0 +1,149 @@
+//! `tribez symbolic`: the patch as polynomials with exact coefficients.
+//!
+//! A rational patch prints its numerators `Σ w_α c_α B_α` and the common denominator
+//! `Σ w_α B_α`; an S-patch prints its rational form in `x, y` (FORMULAS.md §12): numerators
+//! `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
+
+use std::path::PathBuf;
+
+use serde_json::{Value as Json, json};
+
+use super::{CliError, Outcome};
+use crate::cli::OutputArgs;
+use tribez::io::patch_file::read_any_patch;
+use tribez::patch::AnyPatch;
+use crate::report::Render;
+use tribez::symbolic::{
+    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
+};
+
+/// Arguments of `tribez symbolic`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The patch file (.toml or .json).
+    pub patch: PathBuf,
+    /// Use the Cartesian variables of the domain (x, y) instead of the barycentric ones (u, v, w).
+    #[arg(long)]
+    pub cartesian: bool,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// Polynomials with their variable names.
+pub struct SymbolicReport {
+    file: String,
+    names: Vec<String>,
+    components: Vec<Polynomial>,
+    /// The common denominator of a rational patch or an S-patch.
+    denominator: Option<Polynomial>,
+}
+
+/// Run `tribez symbolic`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let patch = match read_any_patch(&args.patch)? {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
+        AnyPatch::Rational(r) => {
+            let m = r.patch.net.m();
+            let mut h = r.homogeneous_form();
+            let names = if args.cartesian {
+                let subs =
+                    tribez::symbolic::barycentric_of_cartesian(&r.patch.domain_or_reference());
+                h = h.iter().map(|p| p.compose(&subs)).collect();
+                cartesian_names(m)
+            } else {
+                barycentric_names(m)
+            };
+            let denominator = h.pop();
+            let report = SymbolicReport {
+                file: args.patch.display().to_string(),
+                names,
+                components: h,
+                denominator,
+            };
+            return Outcome::rendered(&report, args.out.format, true);
+        }
+        AnyPatch::SPatch(s) => {
+            let (components, den) = s.rational_form();
+            let report = SymbolicReport {
+                file: args.patch.display().to_string(),
+                names: cartesian_names(2),
+                components,
+                denominator: Some(den),
+            };
+            return Outcome::rendered(&report, args.out.format, true);
+        }
+    };
+    let m = patch.net.m();
+    let (names, components) = if args.cartesian {
+        (
+            cartesian_names(m),
+            cartesian_form(&patch.net, &patch.domain_or_reference()),
+        )
+    } else {
+        (barycentric_names(m), barycentric_form(&patch.net))
+    };
+    let report = SymbolicReport {
+        file: args.patch.display().to_string(),
+        names,
+        components,
+        denominator: None,
+    };
+    Outcome::rendered(&report, args.out.format, true)
+}
+
+impl SymbolicReport {
+    fn names(&self) -> Vec<&str> {
+        self.names.iter().map(String::as_str).collect()
+    }
+}
+
+impl Render for SymbolicReport {
+    fn text(&self) -> String {
+        let names = self.names();
+        let mut out = format!(
+            "{}: in the variables {}\n",
+            self.file,
+            self.names.join(", ")
+        );
+        for (c, p) in self.components.iter().enumerate() {
+            out += &format!("[{c}] {}\n", p.to_text(&names));
+        }
+        if let Some(d) = &self.denominator {
+            out += &format!("denominator {}\n", d.to_text(&names));
+        }
+        out
+    }
+
+    fn json(&self) -> Json {
+        let components: Vec<Json> = self
+            .components
+            .iter()
+            .map(|p| {
+                Json::Array(
+                    p.terms()
+                        .into_iter()
+                        .map(|(e, c)| json!({ "coefficient": c.to_string(), "exponents": e }))
+                        .collect(),
+                )
+            })
+            .collect();
+        let mut out = json!({ "variables": self.names, "components": components });
+        if let Some(d) = &self.denominator {
+            out["denominator"] = json!(d.to_text(&self.names()));
+        }
+        out
+    }
+
+    fn latex(&self) -> Option<String> {
+        let names = self.names();
+        let rows: Vec<String> = self.components.iter().map(|p| p.to_latex(&names)).collect();
+        let matrix = format!(
+            "\\begin{{pmatrix}}\n{}\n\\end{{pmatrix}}",
+            rows.join(" \\\\\n")
+        );
+        Some(match &self.denominator {
+            Some(d) => format!("\\frac{{1}}{{{}}}\n{matrix}\n", d.to_latex(&names)),
+            None => format!("{matrix}\n"),
+        })
+    }
+}

@@ -1,0 +1,185 @@
+//! Reports out: every command's result renders as text for people, JSON for machines and,
+//! where it makes sense, LaTeX.
+
+use serde_json::Value as Json;
+
+/// Output format chosen with `--format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// Text for people.
+    Text,
+    /// JSON for machines (exact numbers as strings in lowest terms).
+    Json,
+    /// LaTeX, where the result is a formula or a matrix.
+    Latex,
+}
+
+/// A command's result, renderable in each format.
+pub trait Render {
+    /// Text for people.
+    fn text(&self) -> String;
+    /// The machine-readable report.
+    fn json(&self) -> Json;
+    /// LaTeX, if this result has a natural LaTeX form.
+    fn latex(&self) -> Option<String> {
+        None
+    }
+}
+
+/// Render `r` in `format`; `None` when the format does not apply to this result.
+pub fn render(r: &dyn Render, format: Format) -> Option<String> {
+    match format {
+        Format::Text => Some(r.text()),
+        Format::Json => Some(format!("{:#}\n", r.json())),
+        Format::Latex => r.latex(),
+    }
+}
+
+/// Exact rationals as JSON strings.
+pub fn json_rationals(xs: &[num_rational::BigRational]) -> Json {
+    Json::Array(xs.iter().map(|x| Json::String(x.to_string())).collect())
+}
+
+/// `(a, b, c)` for people.
+pub fn tuple(xs: &[num_rational::BigRational]) -> String {
+    tribez::domain::format_tuple(xs)
+}
+
+/// The reports of `check` and `certify`: text and JSON (through [`Render`]) plus JUnit XML for
+/// CI dashboards. One trait for the three formats of a judging report.
+pub trait Exporter: Render {
+    /// JUnit XML: one `<testsuite>`, one `<testcase>` per claim file (or results file, or
+    /// algorithm), with a `<failure>` listing what failed.
+    fn junit(&self) -> String;
+}
+
+/// One JUnit test case: name, number of failures and the failure text (empty when it passed).
+pub struct JunitCase {
+    /// `classname`/`name` of the case.
+    pub name: String,
+    /// How many checks it contains.
+    pub checks: usize,
+    /// The failures, one per line.
+    pub failures: Vec<String>,
+}
+
+/// JUnit XML for `cases` under the suite name `suite`.
+pub fn junit_xml(suite: &str, cases: &[JunitCase]) -> String {
+    let failed = cases.iter().filter(|c| !c.failures.is_empty()).count();
+    let mut out = format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"tribez\" tests=\"{}\" failures=\"{failed}\">\n  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failed}\" errors=\"0\">\n",
+        cases.len(),
+        xml_escape(suite),
+        cases.len()
+    );
+    for c in cases {
+        out += &format!(
+            "    <testcase classname=\"tribez.{}\" name=\"{}\" assertions=\"{}\"",
+            xml_escape(suite),
+            xml_escape(&c.name),
+            c.checks
+        );
+        if c.failures.is_empty() {
+            out += "/>\n";
+        } else {
+            out += &format!(
+                ">\n      <failure message=\"{} of {} claims failed\" type=\"tribez.claim\">{}</failure>\n    </testcase>\n",
+                c.failures.len(),
+                c.checks,
+                xml_escape(&c.failures.join("\n"))
+            );
+        }
+    }
+    out + "  </testsuite>\n</testsuites>\n"
+}
+
+/// Escape text for XML attributes and content.
+pub fn xml_escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for ch in s.chars() {
+        match ch {
+            '&' => out += "&amp;",
+            '<' => out += "&lt;",
+            '>' => out += "&gt;",
+            '"' => out += "&quot;",
+            '\'' => out += "&apos;",
+            c if (c as u32) < 0x20 && c != '\n' && c != '\t' => {}
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A histogram of errors in ULPs: buckets `0`, `≤ 1/2`, `≤ 1`, `≤ 2`, `≤ 4`, `≤ 16`, `≤ 256`, `> 256`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct UlpHistogram {
+    /// Counts per bucket.
+    pub counts: [u64; 8],
+}
+
+/// The bucket labels of [`UlpHistogram`].
+pub const ULP_BUCKETS: [&str; 8] = [
+    "0",
+    "(0, 1/2]",
+    "(1/2, 1]",
+    "(1, 2]",
+    "(2, 4]",
+    "(4, 16]",
+    "(16, 256]",
+    "> 256",
+];
+
+impl UlpHistogram {
+    /// The bucket of an error of `ulps` ULPs (an index into [`ULP_BUCKETS`]).
+    pub fn bucket(ulps: f64) -> usize {
+        if ulps == 0.0 {
+            0
+        } else if ulps <= 0.5 {
+            1
+        } else if ulps <= 1.0 {
+            2
+        } else if ulps <= 2.0 {
+            3
+        } else if ulps <= 4.0 {
+            4
+        } else if ulps <= 16.0 {
+            5
+        } else if ulps <= 256.0 {
+            6
+        } else {
+            7
+        }
+    }
+
+    /// Count one error of `ulps` ULPs.
+    pub fn add(&mut self, ulps: f64) {
+        self.counts[Self::bucket(ulps)] += 1;
+    }
+
+    /// Is it empty?
+    pub fn is_empty(&self) -> bool {
+        self.counts.iter().all(|&c| c == 0)
+    }
+
+    /// A small text histogram (bars scaled to 40 characters).
+    pub fn text(&self) -> String {
+        let max = self.counts.iter().copied().max().unwrap_or(0).max(1);
+        let mut out = String::new();
+        for (label, &c) in ULP_BUCKETS.iter().zip(&self.counts) {
+            let bar = "#".repeat(((c as f64 / max as f64) * 40.0).ceil() as usize);
+            out += &format!("  {label:>10} ulp  {c:>10}  {bar}\n");
+        }
+        out
+    }
+
+    /// JSON: bucket label → count.
+    pub fn json(&self) -> Json {
+        Json::Object(
+            ULP_BUCKETS
+                .iter()
+                .zip(self.counts)
+                .map(|(l, c)| (l.to_string(), Json::from(c)))
+                .collect(),
+        )
+    }
+}
