@@ -48,7 +48,7 @@ pub enum Command {
     Derivative(commands::derivative::Args),
     /// Tangent plane at a point: the de Casteljau intermediate points, the partial derivatives and the normal.
     Tangent(commands::tangent::Args),
-    /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, seed 002's coplanarity), or build a C1 neighbour.
+    /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, Finn's coplanarity), or build a C1 neighbour.
     Join(commands::join::Args),
 }
 

@@ -211,7 +211,7 @@ fn cubic_curve_halved_exactly() {
 
 #[test]
 fn degree_elevation_identity_on_a_tetrahedron() {
-    // c^(1)_α = Σ_k α_k c_{α−e_k} / (n+1) (FORMULAS.md §11) gives the same polynomial:
+    // c^(1)_α = Σ_k α_k c_{α−e_k} / (n+1) (docs/theory.md §11) gives the same polynomial:
     // its homogeneous form equals (u0 + u1 + u2 + u3) times the original one.
     let s = Simplex::new(3, 2);
     let coords: Vec<BigRational> = (0..s.len() * 3)
@@ -556,7 +556,7 @@ fn blossom_of_a_rational_patch() {
         cmd.assert()
     };
     let u = "1/3,1/4,5/12";
-    // the diagonal is the patch: p(1/3,1/4,5/12) = (1020, 969, 920)/1681 (FORMULAS.md §10)
+    // the diagonal is the patch: p(1/3,1/4,5/12) = (1020, 969, 920)/1681 (docs/theory.md §10)
     blossom(&[u, u, u, u])
         .success()
         .stdout(predicate::str::contains(
@@ -768,7 +768,7 @@ fn halve_a_rational_patch() {
         );
     }
     tribez().arg("reproduce").arg(dir.path()).assert().success();
-    // seed 003's add-and-halve gives the same halves
+    // the Wikipedia article's add-and-halve gives the same halves
     let again = tribez()
         .args([
             "halve",

@@ -47,7 +47,7 @@ fn float_claims_of_an_independent_computation_pass() {
 
 #[test]
 fn exact_and_tolerance_claims() {
-    // seed 002, worked example (a): [4/9, 5/9, 29/36] exactly.
+    // Finn's notes, worked example (a): [4/9, 5/9, 29/36] exactly.
     let d = claim_dir(
         "[[claim]]\nop = \"eval\"\nat = [\"1/2\", \"1/3\", \"1/6\"]\nexpect = [\"4/9\", \"5/9\", \"29/36\"]\n\
          [[claim]]\nop = \"eval\"\nat = [\"1/2\", \"1/3\", \"1/6\"]\nexpect = [\"0.4444\", \"0.5556\", \"0.8056\"]\ntolerance = \"abs=1e-4\"\n\
@@ -210,7 +210,7 @@ fn batch(patch: &Path, results: &Path, extra: &[&str]) -> assert_cmd::assert::As
         .assert()
 }
 
-// f64 de Casteljau of seed 002's quadratic at (0.5, 1/3, 1/6), as Python computes it
+// f64 de Casteljau of Finn's quadratic at (0.5, 1/3, 1/6), as Python computes it
 // (fixtures/certify/gen_float_claims.py, claim f64-0): within 2 ulps, not all correctly rounded.
 const ROW: &str = "0.5,0.3333333333333333,0.16666666666666666,0.4444444444444444,0.5555555555555555,0.8055555555555556";
 
@@ -568,7 +568,7 @@ fn peers() -> PathBuf {
 }
 
 /// The Python package `bezier` (fixtures/peers/bezier_peer.py) passes at cond=9: 9 = 3n is the
-/// constant of de Casteljau's own a-priori bound γ_{3n} (FORMULAS §14.1) for n = 3, i.e. we accept
+/// constant of de Casteljau's own a-priori bound γ_{3n} (docs/theory.md §14.1) for n = 3, i.e. we accept
 /// any algorithm as accurate as de Casteljau (bezier needs about 4: it fails at cond=3 on one row).
 #[test]
 fn bezier_passes_at_cond_9() {

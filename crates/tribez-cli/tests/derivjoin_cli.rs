@@ -46,7 +46,7 @@ const FLOATER: &str = "derivatives/finn_floater.toml";
 
 #[test]
 fn derivative_floater_example_cartesian_vectors() {
-    // FORMULAS.md §7
+    // docs/theory.md §7
     let v = json(&[
         "derivative",
         &fixture(FLOATER),

@@ -2,13 +2,13 @@
 //!
 //! `B^n_α(λ) = C(n; α) λ_0^{α_0} ⋯ λ_m^{α_m}` with the multinomial coefficient
 //! `C(n; α) = n!/(α_0! ⋯ α_m!)`; `Σ_{|α|=n} B^n_α(λ) = (λ_0 + ⋯ + λ_m)^n` (partition of unity on
-//! `Σλ = 1`), and the recursion `B^n_α = Σ_k λ_k B^{n−1}_{α−e_k}` (FORMULAS.md §1).
+//! `Σλ = 1`), and the recursion `B^n_α = Σ_k λ_k B^{n−1}_{α−e_k}` (docs/theory.md §1).
 //!
 //! ```
 //! use tribez::bernstein::basis;
 //! use tribez::number::parse_rational as q;
 //! use tribez::simplex::Simplex;
-//! // FORMULAS.md §1: the cubic basis at (1/2, 1/3, 1/6)
+//! // docs/theory.md §1: the cubic basis at (1/2, 1/3, 1/6)
 //! let u = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
 //! let b: Vec<String> = basis(&Simplex::new(2, 3), &u).iter().map(|x| x.to_string()).collect();
 //! assert_eq!(b, ["1/8", "1/4", "1/6", "1/27", "1/8", "1/6", "1/18", "1/24", "1/36", "1/216"]);

@@ -1,4 +1,4 @@
-//! Blossoms and subpatches over any simplex (FORMULAS.md §4, §11).
+//! Blossoms and subpatches over any simplex (docs/theory.md §4, §11).
 //!
 //! The blossom `b[x_1, …, x_n]` is de Casteljau run with a different argument at each level
 //! ([`crate::casteljau::blossom`]). The same polynomial over the simplex with vertices
@@ -22,7 +22,7 @@
 //! use tribez::number::parse_rational as q;
 //! use tribez::patch::ControlNet;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
-//! // Finn's net; the half [a1, (1/2,1/2,0), a3] of FORMULAS.md §5.2
+//! // Finn's net; the half [a1, (1/2,1/2,0), a3] of docs/theory.md §5.2
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);
@@ -72,7 +72,7 @@ pub fn blossom<T: Scalar>(net: &ControlNet<T>, args: &[Vec<T>]) -> Result<Vec<T>
 }
 
 /// The face of a de Casteljau pyramid (`levels[r]` of degree `n − r`) with slot `s` zero:
-/// `d_α = c^{α_s}_{α with α_s set to 0}` (FORMULAS.md §5.1, §11). If the pyramid was built at
+/// `d_α = c^{α_s}_{α with α_s set to 0}` (docs/theory.md §5.1, §11). If the pyramid was built at
 /// `x`, this is the net over the parent simplex with vertex `s` replaced by `x`.
 pub fn pyramid_face<T: Scalar>(levels: &[ControlNet<T>], s: usize) -> ControlNet<T> {
     let top = &levels[0];
@@ -380,7 +380,7 @@ mod tests {
     use proptest::prelude::*;
 
     #[test]
-    fn blossom_values_of_formulas_section_4() {
+    fn blossom_values_of_theory_section_4() {
         let net = finn();
         let e1 = r(&["1", "0", "0"]);
         let e3 = r(&["0", "0", "1"]);
@@ -408,7 +408,7 @@ mod tests {
     }
 
     #[test]
-    fn central_midpoint_triangle_of_formulas_section_5_3() {
+    fn central_midpoint_triangle_of_theory_section_5_3() {
         let f = [
             r(&["0", "1/2", "1/2"]),
             r(&["1/2", "0", "1/2"]),

@@ -2,7 +2,7 @@
 //!
 //! One step with argument `x = (x_0, …, x_m)` maps a net of degree `q` to one of degree `q − 1`:
 //!
-//! `c^{r}_β = Σ_{k=0..m} x_k c^{r−1}_{β+e_k}`,  `|β| = q − 1`   (FORMULAS.md §3, §11).
+//! `c^{r}_β = Σ_{k=0..m} x_k c^{r−1}_{β+e_k}`,  `|β| = q − 1`   (docs/theory.md §3, §11).
 //!
 //! With the same argument `λ` at each of the `n` levels the apex is `p(λ)`; with different
 //! arguments `x_1, …, x_n` it is the blossom `b[x_1, …, x_n]` (§4), symmetric and multi-affine.
@@ -16,7 +16,7 @@
 //! use tribez::casteljau::evaluate;
 //! use tribez::number::parse_rational as q;
 //! use tribez::patch::ControlNet;
-//! // seed 002's worked example: the point [4/9, 5/9, 29/36]
+//! // Finn's worked example: the point [4/9, 5/9, 29/36]
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);

@@ -1,16 +1,16 @@
 //! Directional derivatives of any order, intermediate points and the tangent plane
-//! (seed 000 §4, seed 002 §30.1; FORMULAS.md §3 and §7).
+//! (Floater's notes §4, Finn's notes §30.1; docs/theory.md §3 and §7).
 //!
 //! For barycentric directions `d^{(1)}, …, d^{(r)}` (each with `m + 1` components summing to 0)
 //! and `Δ_d c_α = Σ_k d_k c_{α+e_k}`, the `r`-th directional derivative of a degree-`n` patch is
 //!
 //! `D_{d^{(1)}} ⋯ D_{d^{(r)}} p(λ) = n!/(n−r)! · Σ_{|α|=n−r} (Δ_{d^{(1)}} ⋯ Δ_{d^{(r)}} c)_α B^{n−r}_α(λ)`
 //!
-//! `= n!/(n−r)! · b[d^{(1)}, …, d^{(r)}, λ^{n−r}]`  (the blossom, FORMULAS.md §4),
+//! `= n!/(n−r)! · b[d^{(1)}, …, d^{(r)}, λ^{n−r}]`  (the blossom, docs/theory.md §4),
 //!
 //! computed here as `r` de Casteljau steps with the directions followed by `n − r` steps with
 //! `λ`. A Cartesian vector `v` is turned into a barycentric direction by the domain (Cramer's rule,
-//! seed 000 eqs. 9–10: `Σ v_k = 0`, `Σ v_k a_k = v`). Indices follow the canonical order of
+//! Floater's notes eqs. 9–10: `Σ v_k = 0`, `Σ v_k a_k = v`). Indices follow the canonical order of
 //! [`crate::simplex`]; direction component `k` belongs to domain vertex `k`.
 //!
 //! ```
@@ -18,12 +18,12 @@
 //! use tribez::number::parse_rational as q;
 //! use tribez::patch::ControlNet;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
-//! // seed 002's worked example (Finn): n = 2, at (1/2, 1/3, 1/6)
+//! // Finn's worked example (Finn): n = 2, at (1/2, 1/3, 1/6)
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);
 //! // on the reference triangle u = x, w = 1 − x − y, so ∂/∂x is the direction (1, 0, −1):
-//! // p_x = (0, −2, 1/3) (FORMULAS.md §3)
+//! // p_x = (0, −2, 1/3) (docs/theory.md §3)
 //! let px = directional_derivative(&net, &[&r(&["1", "0", "-1"])], &r(&["1/2", "1/3", "1/6"]));
 //! assert_eq!(px, r(&["0", "-2", "1/3"]));
 //! ```
@@ -57,7 +57,7 @@ pub fn derivative_net<T: Scalar>(net: &ControlNet<T>, dirs: &[&[T]]) -> ControlN
 }
 
 /// `D_{d^{(1)}} ⋯ D_{d^{(r)}} p(λ)`: `r` de Casteljau steps with the directions, then `n − r`
-/// with `λ`, times `n!/(n−r)!` (FORMULAS.md §7). Generic, any `m`. Panics if `r > n`.
+/// with `λ`, times `n!/(n−r)!` (docs/theory.md §7). Generic, any `m`. Panics if `r > n`.
 pub fn directional_derivative<T: Scalar>(net: &ControlNet<T>, dirs: &[&[T]], at: &[T]) -> Vec<T> {
     let d = derivative_net(net, dirs);
     casteljau::evaluate(&d, at)
@@ -90,7 +90,7 @@ pub struct TangentFrame {
     /// `p(λ)`.
     pub point: Vec<BigRational>,
     /// The de Casteljau points of level `n − 1`: `c^{n−1}_{e_k}(λ)`, `k = 0..=m` (for triangles
-    /// `p100, p010, p001` of seed 002). `∂P/∂λ_k = n c^{n−1}_{e_k}` and `p(λ) = Σ λ_k c^{n−1}_{e_k}`.
+    /// `p100, p010, p001` of Finn's notes). `∂P/∂λ_k = n c^{n−1}_{e_k}` and `p(λ) = Σ λ_k c^{n−1}_{e_k}`.
     pub intermediate: Vec<Vec<BigRational>>,
     /// `∂p/∂x_c` for each Cartesian coordinate `x_c` of the domain:
     /// `n Σ_k δ^{(c)}_k c^{n−1}_{e_k}` with `δ^{(c)}` the directional coordinates of the unit vector.
@@ -98,7 +98,7 @@ pub struct TangentFrame {
     /// `p_x × p_y` (triangles in `ℝ³` only).
     pub normal: Option<Vec<BigRational>>,
     /// `(n²/D) (c^{n−1}_{010} − c^{n−1}_{100}) × (c^{n−1}_{001} − c^{n−1}_{100})`, `D = 2·signedArea(T)`
-    /// (FORMULAS.md §7): equal to [`TangentFrame::normal`] (triangles in `ℝ³` only).
+    /// (docs/theory.md §7): equal to [`TangentFrame::normal`] (triangles in `ℝ³` only).
     pub normal_from_intermediate: Option<Vec<BigRational>>,
     /// Whether the point is regular: the `m` partials are linearly independent (their Gram
     /// determinant `det(J Jᵀ)`, `J` the `m × d` matrix of partials, is non-zero). At a singular
@@ -207,7 +207,7 @@ mod tests {
     use proptest::prelude::*;
 
     #[test]
-    fn finn_tangent_frame_formulas_section_3() {
+    fn finn_tangent_frame_theory_section_3() {
         let f = tangent_frame(&finn(), &Domain::reference(2), &r(&["1/2", "1/3", "1/6"])).unwrap();
         assert_eq!(f.point, r(&["4/9", "5/9", "29/36"]));
         assert_eq!(
@@ -259,7 +259,7 @@ mod tests {
     }
 
     #[test]
-    fn floater_example_formulas_section_7() {
+    fn floater_example_theory_section_7() {
         // Finn's net over T = (1,2),(7,3),(2,8), v = (1,−2), at t = (3,4).
         let t = Domain::new(vec![r(&["1", "2"]), r(&["7", "3"]), r(&["2", "8"])]).unwrap();
         let at = t.barycentric(&r(&["3", "4"])).unwrap();

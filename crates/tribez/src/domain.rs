@@ -1,5 +1,5 @@
 //! The domain simplex in `ℝ^m`, barycentric coordinates by Cramer's rule, and directional
-//! coordinates (seed 000 §2 and §4; FORMULAS.md §2 and §11).
+//! coordinates (Floater's notes §2 and §4; docs/theory.md §2 and §11).
 //!
 //! For a triangle `T = [a1, a2, a3]` in the plane and a point `t`, the barycentric coordinates
 //! solve `[1 1 1; x1 x2 x3; y1 y2 y3] (u, v, w)ᵀ = (1, t_x, t_y)ᵀ`, so `u = D1/D`, `v = D2/D`,
@@ -10,7 +10,7 @@
 //! use tribez::domain::Domain;
 //! use tribez::number::parse_rational as q;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
-//! // FORMULAS.md §2: T = (1,2), (7,3), (2,8)
+//! // docs/theory.md §2: T = (1,2), (7,3), (2,8)
 //! let t = Domain::new(vec![r(&["1", "2"]), r(&["7", "3"]), r(&["2", "8"])]).unwrap();
 //! let s = |v: Vec<num_rational::BigRational>| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
 //! assert_eq!(s(t.barycentric(&r(&["3", "4"])).unwrap()), ["3/7", "2/7", "2/7"]);
@@ -57,7 +57,7 @@ impl Domain {
 
     /// The reference simplex: vertex `k` is the unit vector `e_{k+1}` for `k < m`, and the last
     /// vertex is the origin. For triangles `(1,0), (0,1), (0,0)`, so that `u = x`, `v = y`,
-    /// `w = 1 − x − y` (seed 000).
+    /// `w = 1 − x − y` (Floater's notes).
     pub fn reference(m: usize) -> Self {
         let mut vertices = vec![vec![BigRational::zero(); m]; m + 1];
         for (k, v) in vertices.iter_mut().enumerate().take(m) {
@@ -254,7 +254,7 @@ mod tests {
     use crate::testing::r;
 
     #[test]
-    fn tetrahedron_cramer_formulas_section_11() {
+    fn tetrahedron_cramer_theory_section_11() {
         let t = Domain::new(vec![
             r(&["0", "0", "0"]),
             r(&["2", "0", "0"]),

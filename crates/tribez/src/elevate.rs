@@ -1,4 +1,4 @@
-//! Degree elevation (FORMULAS.md §6, §11), any simplex dimension.
+//! Degree elevation (docs/theory.md §6, §11), any simplex dimension.
 //!
 //! One step, `n → n + 1` (terms with a negative index are omitted):
 //!
@@ -18,7 +18,7 @@
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);
-//! // FORMULAS.md §6: Finn's net elevated to degree 3 has c_{111} = (2/3, 2/3, 1).
+//! // docs/theory.md §6: Finn's net elevated to degree 3 has c_{111} = (2/3, 2/3, 1).
 //! let up = elevate(&net, 1);
 //! let s: Vec<String> = up.at(&[1, 1, 1]).iter().map(|x| x.to_string()).collect();
 //! assert_eq!(s, ["2/3", "2/3", "1"]);
@@ -61,7 +61,7 @@ pub fn elevate_once<T: Field>(net: &ControlNet<T>) -> ControlNet<T> {
     ControlNet::new(up, dim, coords)
 }
 
-/// Elevate by `r` steps at once with the closed form of FORMULAS.md §6 (`r = 0` returns the net).
+/// Elevate by `r` steps at once with the closed form of docs/theory.md §6 (`r = 0` returns the net).
 pub fn elevate<T: Field>(net: &ControlNet<T>, r: usize) -> ControlNet<T> {
     if r == 0 {
         return net.clone();

@@ -122,7 +122,7 @@ macro_rules! glam_horner {
         /// Error: every term `s_α u^i v^j w^k` passes through at most `2n + 5` roundings (two for
         /// `C(n;α)·c_α` when the multinomial is not representable, `j − 1` for `v^j`, one for the
         /// product, `1 + 2(n−k−j)` in its row, `1 + 2k` across rows), so
-        /// `|computed − p(λ)| ≤ γ_{2n+5} Σ_α |c_α| B_α(|λ|)` (FORMULAS §14), with `p` evaluated
+        /// `|computed − p(λ)| ≤ γ_{2n+5} Σ_α |c_α| B_α(|λ|)` (docs/theory.md §14), with `p` evaluated
         /// exactly at the float inputs; a test checks it.
         pub fn $name(scaled: &[$vec], n: usize, u: [$s; 3]) -> $vec {
             debug_assert_eq!(scaled.len(), (n + 1) * (n + 2) / 2);

@@ -1,5 +1,5 @@
 //! Nonparametric (functional) patches: a scalar function over a domain simplex
-//! (FORMULAS.md §13; seed 004's "1D Bézier triangle").
+//! (docs/theory.md §13; Wolfe's "1D Bézier triangle").
 //!
 //! `f(t) = Σ_{|α|=n} b_α B^n_α(λ(t))` with control ordinates `b_α ∈ ℚ` attached to the
 //! **Bézier abscissae** `ξ_α = (α_0 a_0 + … + α_m a_m)/n` (for triangles `(i a1 + j a2 + k a3)/n`).
@@ -161,7 +161,7 @@ mod tests {
     }
 
     #[test]
-    fn linear_precision_formulas_section_13() {
+    fn linear_precision_theory_section_13() {
         let xy = ["x", "y"];
         let l = Polynomial::parse("3 - 2x + 1/2*y", &xy).unwrap();
         let b = ordinates(&tri(), 3, &l).unwrap();

@@ -1,15 +1,15 @@
 //! Joining two patches across a common domain edge (facet): C0, C1 by the μ rule, C^r by the
-//! blossom, G1 as an exact polynomial identity, and seed 002's quadrilateral condition
-//! (seed 000 §5, seed 002 §30.1; FORMULAS.md §8).
+//! blossom, G1 as an exact polynomial identity, and Finn's quadrilateral condition
+//! (Floater's notes §5, Finn's notes §30.1; docs/theory.md §8).
 //!
-//! Setting (seed 000): `A` is given over `T = [a_1, a_2, a_3]` with net `c`, `B` over
+//! Setting (Floater's notes): `A` is given over `T = [a_1, a_2, a_3]` with net `c`, `B` over
 //! `U = [a_1, a_2, a_4]` with net `c̃`, where `c̃`'s third index belongs to `a_4`. Here the common
 //! edge is found from the two domains, with the vertices listed in any order: `B`'s index that
 //! belongs to its fourth vertex is its *row index* `ρ`, and `B`'s other indices are matched to
 //! `A`'s through the common vertices. With `μ` the barycentric coordinates of `a_4` with respect
 //! to `T`:
 //!
-//! * **C0** (seed 000 eq. 12) ⇔ `c̃_{i,j,0} = c_{i,j,0}`, `i + j = n`;
+//! * **C0** (Floater's notes eq. 12) ⇔ `c̃_{i,j,0} = c_{i,j,0}`, `i + j = n`;
 //! * **C1** ⇔ C0 and `c̃_{i,j,1} = μ_1 c_{i+1,j,0} + μ_2 c_{i,j+1,0} + μ_3 c_{i,j,1}` (the μ rule);
 //! * **C^r** ⇔ for `ρ = 0..=r`: `c̃_{i,j,ρ} = b_A[e_1^i, e_2^j, μ^ρ]`, i.e. the first `r + 1` rows of
 //!   `B` agree with the subpatch of `A` over `U` (its C^n extension).
@@ -23,8 +23,8 @@
 //! determinant `E · (X_A × X_B)`) is the zero polynomial in `t`; both patches must also be regular
 //! along the edge (`E ∧ X_A ≢ 0`, `E ∧ X_B ≢ 0`). This is decided symbolically, never by sampling.
 //!
-//! **Seed 002's condition:** each quadrilateral `c_{i+1,j,0}, c_{i,j+1,0}, c_{i,j,1}, c̃_{i,j,1}`
-//! (`i + j = n − 1`) is planar. Seed 002 claims this suffices for G1; it does not (FORMULAS.md §8).
+//! **Finn's condition:** each quadrilateral `c_{i+1,j,0}, c_{i,j+1,0}, c_{i,j,1}, c̃_{i,j,1}`
+//! (`i + j = n − 1`) is planar. Finn's notes claims this suffices for G1; it does not (docs/theory.md §8).
 //!
 //! ```
 //! use tribez::domain::Domain;
@@ -33,7 +33,7 @@
 //! use tribez::patch::{ControlNet, Patch};
 //! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
 //! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
-//! // FORMULAS.md §8: planar quadrilaterals, C0, yet not G1
+//! // docs/theory.md §8: planar quadrilaterals, C0, yet not G1
 //! let p = Patch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "1"]])), net: ControlNet::from_points(2, 2,
 //!     &pts(&[["0", "0", "0"], ["1", "0", "0"], ["2", "0", "0"], ["1/2", "1", "0"], ["3/2", "1", "1"], ["1", "2", "1"]])) };
 //! let b = Patch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "-1"]])), net: ControlNet::from_points(2, 2,
@@ -161,7 +161,7 @@ fn a_index(facet: &SharedFacet, beta: &[u32], extra: u32) -> Vec<u32> {
     alpha
 }
 
-/// Seed 000's μ rule for one point of `B`'s row 1: `Σ_k μ_k c_{α+e_k}` where `α` is `B`'s index
+/// Floater's μ rule for one point of `B`'s row 1: `Σ_k μ_k c_{α+e_k}` where `α` is `B`'s index
 /// moved to `A` with the row entry removed (`|α| = n − 1`).
 pub fn mu_rule(net: &ControlNet<Q>, facet: &SharedFacet, mu: &[Q], beta: &[u32]) -> Vec<Q> {
     assert_eq!(beta[facet.b_opposite], 1, "the μ rule is about row 1");
@@ -193,7 +193,7 @@ pub enum Violation {
         /// `actual − required`.
         difference: Vec<Q>,
     },
-    /// Seed 002's quadrilateral at `B`'s row-1 index `index` is not planar.
+    /// Finn's quadrilateral at `B`'s row-1 index `index` is not planar.
     Coplanarity {
         /// `B`'s multi-index of the quadrilateral's point `c̃_{i,j,1}`.
         index: Vec<u32>,
@@ -249,7 +249,7 @@ pub struct Join {
     pub g1: Option<bool>,
     /// The minors of `[E X_A X_B]` as polynomials in the edge parameter `t` (`d = 3`: one).
     pub g1_minors: Vec<Polynomial>,
-    /// Seed 002's quadrilateral condition (`None` unless triangles in `ℝ^d`, `d >= 3`).
+    /// Finn's quadrilateral condition (`None` unless triangles in `ℝ^d`, `d >= 3`).
     pub coplanarity: Option<bool>,
     /// Every failed condition.
     pub violations: Vec<Violation>,
@@ -437,7 +437,7 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
 
     let (mut g1, mut g1_minors, mut coplanarity) = (None, Vec::new(), None);
     if m == 2 && d >= 3 && n >= 1 {
-        // seed 002's quadrilaterals
+        // Finn's quadrilaterals
         let mut all_planar = true;
         for (beta, qb) in nb.entries().filter(|(beta, _)| beta[facet.b_opposite] == 1) {
             let base = a_index(&facet, beta, 0);
@@ -549,7 +549,7 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         }
         g1 = Some(holds);
     } else if m == 2 {
-        notes.push(format!("G1 and seed 002's coplanarity are decided for surfaces in R^d with d >= 3; these points have d = {d}"));
+        notes.push(format!("G1 and Finn's coplanarity are decided for surfaces in R^d with d >= 3; these points have d = {d}"));
     } else {
         notes.push(format!(
             "G1 is decided for triangles (m = 2) only; this is a join of {m}-simplices"
@@ -674,7 +674,7 @@ mod tests {
         }
     }
 
-    /// FORMULAS.md §8: planar quadrilaterals, yet not G1 (normals not parallel at the midpoint).
+    /// docs/theory.md §8: planar quadrilaterals, yet not G1 (normals not parallel at the midpoint).
     #[test]
     fn seed_002_g1_counterexample() {
         let t: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "1"]];
@@ -713,7 +713,7 @@ mod tests {
         assert!(tt("0").is_zero() && tt("1").is_zero() && !tt("1/2").is_zero());
     }
 
-    /// FORMULAS.md §8: row 1 from a common λ ≠ μ (Σλ = 1, λ_3 < 0) is G1 but not C1.
+    /// docs/theory.md §8: row 1 from a common λ ≠ μ (Σλ = 1, λ_3 < 0) is G1 but not C1.
     #[test]
     fn common_lambda_gives_g1_without_c1() {
         let t: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "1"]];

@@ -8,7 +8,7 @@
 //! use tribez::casteljau::evaluate;
 //! use tribez::number::parse_rational as q;
 //! use tribez::patch::ControlNet;
-//! // Seed 002 (Finn, day 30), worked example (a): the point is exactly [4/9, 5/9, 29/36].
+//! // Finn's notes (Finn, day 30), worked example (a): the point is exactly [4/9, 5/9, 29/36].
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);

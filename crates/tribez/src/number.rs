@@ -3,7 +3,7 @@
 //!
 //! Everything here is exact: no floating-point operation is used to compute a
 //! value (the only float arithmetic is a first guess of a decimal exponent in
-//! [`to_decimal_string`], which is then corrected exactly). See FORMULAS.md §14.3
+//! [`to_decimal_string`], which is then corrected exactly). See docs/theory.md §14.3
 //! (exact value of an f64) and §14.4 (ULPs, round-to-nearest with integers only).
 //!
 //! ```
@@ -482,7 +482,7 @@ fn hex_text(neg: bool, lead: u8, frac: u64, width: usize, exp: i64) -> String {
 const F64_FRAC_MASK: u64 = (1 << 52) - 1;
 const F32_FRAC_MASK: u32 = (1 << 23) - 1;
 
-/// Exact value of a finite `f64` (FORMULAS 14.3), `None` for NaN and ±inf.
+/// Exact value of a finite `f64` (docs/theory.md §14.3), `None` for NaN and ±inf.
 /// With s, e, f the sign, biased exponent and fraction fields: `x = (−1)^s·f·2^−1074`
 /// when e = 0, else `(−1)^s·(2^52+f)·2^(e−1075)`; ±0 both give 0.
 ///
@@ -610,7 +610,7 @@ fn round_rational(q: &BigRational, format: Format) -> Option<(bool, Rounded)> {
     Some((neg, round_magnitude(n.magnitude(), d.magnitude(), format)))
 }
 
-/// RN(a/b) for `a ≥ 0`, `b > 0` (FORMULAS 14.4).
+/// RN(a/b) for `a ≥ 0`, `b > 0` (docs/theory.md §14.4).
 fn round_magnitude(a: &BigUint, b: &BigUint, f: Format) -> Rounded {
     if a.is_zero() {
         return Rounded {
@@ -653,7 +653,7 @@ fn is_power_of_two(b: &BigUint) -> bool {
 }
 
 /// floor(log2(a/b)) for `a, b > 0`: with e = bitlen(a) − bitlen(b), the answer is
-/// e − 1 when a < b·2^e, else e (FORMULAS 14.4). Both sides of the comparison have
+/// e − 1 when a < b·2^e, else e (docs/theory.md §14.4). Both sides of the comparison have
 /// the same bit length, so their leading 64 bits usually decide it.
 fn floor_log2_mag(a: &BigUint, b: &BigUint) -> i64 {
     let (la, lb) = (a.bits(), b.bits());
@@ -812,7 +812,7 @@ fn encode_f32(neg: bool, mag: Magnitude) -> f32 {
 }
 
 /// The `f64` nearest to `q`, ties to even, computed with integers only
-/// (FORMULAS 14.4): e = floor(log2|q|) clamped to ≥ −1022, m = RN(|q|/2^(e−52)),
+/// (docs/theory.md §14.4): e = floor(log2|q|) clamped to ≥ −1022, m = RN(|q|/2^(e−52)),
 /// carry m = 2^53 into the next binade, e > 1023 gives ±inf (so 2^1024 − 2^970,
 /// a tie, rounds to inf). Subnormals are exact multiples of 2^−1074. `0` gives
 /// `+0.0`; a negative `q` too small for the smallest subnormal gives `-0.0` (as
@@ -886,7 +886,7 @@ fn faithful_key(x: i64, nearest: i64, dir: Ordering) -> bool {
 // ULPs and step distances
 // ---------------------------------------------------------------------------
 
-/// floor(log2|q|) for `q ≠ 0`, from bit lengths only (FORMULAS 14.4): with
+/// floor(log2|q|) for `q ≠ 0`, from bit lengths only (docs/theory.md §14.4): with
 /// e = bitlen(p) − bitlen(d), it is e − 1 when |p| < d·2^e, else e.
 /// Returns `i64::MIN` for `q = 0`.
 pub fn floor_log2(q: &BigRational) -> i64 {
@@ -906,7 +906,7 @@ fn ulp_in(q: &BigRational, f: Format) -> BigRational {
     pow2(e - i64::from(f.prec - 1))
 }
 
-/// Binade ulp of a rational (FORMULAS 14.4, as `math.ulp` on f64 values):
+/// Binade ulp of a rational (docs/theory.md §14.4, as `math.ulp` on f64 values):
 /// `2^(e−52)` with e = floor(log2|q|) clamped to ≥ −1022; ulp(0) = 2^−1074.
 /// (Not clamped above: beyond `f64::MAX` it keeps growing with the binade.)
 pub fn ulp_f64(q: &BigRational) -> BigRational {
@@ -936,7 +936,7 @@ pub fn ulps_error_f32(x: &BigRational, q: &BigRational) -> BigRational {
     (x - q).abs() / ulp_f32(q)
 }
 
-/// Order-preserving integer key of an `f64` (FORMULAS 14.4): the bits when the
+/// Order-preserving integer key of an `f64` (docs/theory.md §14.4): the bits when the
 /// sign is clear, else −(bits without sign); ±0 both map to 0.
 fn key_f64(x: f64) -> i64 {
     let bits = x.to_bits();
@@ -959,7 +959,7 @@ fn key_f32(x: f32) -> i32 {
 }
 
 /// Number of `nextafter` steps between `a` and `b`: |key(a) − key(b)| with the
-/// key of FORMULAS 14.4, so ±0 are the same point and crossing zero counts the
+/// key of docs/theory.md §14.4, so ±0 are the same point and crossing zero counts the
 /// steps on both sides (`steps_f64(-5e-324, 5e-324) = 2`). Infinities are one
 /// step beyond `±MAX`. `u64::MAX` if either is NaN.
 pub fn steps_f64(a: f64, b: f64) -> u64 {
@@ -1478,7 +1478,7 @@ mod tests {
         assert_eq!(ulp_f32(&BigRational::one()), pow2(-23));
         assert_eq!(ulp_f32(&BigRational::zero()), pow2(-149));
         assert_eq!(ulp_f32(&pow2(-140)), pow2(-149));
-        // FORMULAS 14.4: |0.1 - 1/10| = 1/180143985094819840 = 0.4 ulp(1/10).
+        // docs/theory.md §14.4: |0.1 - 1/10| = 1/180143985094819840 = 0.4 ulp(1/10).
         let x = exact_f64(0.1).unwrap();
         assert_eq!(
             format_rational(&(&x - ratio(1, 10))),

@@ -1,4 +1,4 @@
-//! Rational Bézier simplices: a polynomial patch divided by another (FORMULAS.md §10).
+//! Rational Bézier simplices: a polynomial patch divided by another (docs/theory.md §10).
 //!
 //! With weights `w_α` and points `c_α ∈ ℚ^d`:
 //!
@@ -234,7 +234,7 @@ impl RationalPatch {
         Ok(p.pop().expect("the full set"))
     }
 
-    /// The tangent frame at `λ` over `domain` (FORMULAS.md §7 for the polynomial case): the
+    /// The tangent frame at `λ` over `domain` (docs/theory.md §7 for the polynomial case): the
     /// point, the level-`(n−1)` de Casteljau points of the homogeneous net projected
     /// (`c_k = X_k / W_k`, through which the tangent plane passes), the partials by the quotient
     /// rule, and for triangles in `ℝ³` the normal `p_x × p_y` beside
@@ -346,7 +346,7 @@ pub fn homogenised_residual(f: &Polynomial, x: &[Polynomial], w: &Polynomial) ->
 }
 
 impl RationalPatch {
-    /// Degree elevation by `r`, on the homogeneous net (FORMULAS.md §6 applied to `(w c, w)`):
+    /// Degree elevation by `r`, on the homogeneous net (docs/theory.md §6 applied to `(w c, w)`):
     /// the same rational patch, degree `n + r`. An error if an elevated weight is zero (possible
     /// only with weights of both signs).
     pub fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError> {
@@ -357,7 +357,7 @@ impl RationalPatch {
     }
 
     /// The same rational patch over the sub-simplex `[f_0, …, f_m]` (barycentric points of the
-    /// parent): the homogeneous net's subpatch (FORMULAS.md §4), then back to points and weights.
+    /// parent): the homogeneous net's subpatch (docs/theory.md §4), then back to points and weights.
     /// The result keeps the parent's name and domain.
     pub fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError> {
         RationalPatch::from_homogeneous(
@@ -367,7 +367,7 @@ impl RationalPatch {
     }
 
     /// The rational blossom `b[u_1, …, u_n] = X[u_1, …, u_n] / W[u_1, …, u_n]`: the blossom of
-    /// the homogeneous net `(w_α c_α, w_α)` (FORMULAS.md §4: de Casteljau with argument `u_k` at
+    /// the homogeneous net `(w_α c_α, w_α)` (docs/theory.md §4: de Casteljau with argument `u_k` at
     /// level `k`), projected by its last coordinate. It is symmetric in its arguments, and on the
     /// diagonal `b[u, …, u] = p(u)`; with the corners as arguments it gives the control points,
     /// `b[e_0^{α_0}, …, e_m^{α_m}] = c_α`. Undefined (an error naming the arguments) where the
@@ -428,7 +428,7 @@ mod tests {
     use num_traits::One;
     use proptest::prelude::*;
 
-    /// FORMULAS.md §10: the quartic octant, weights ×6 and points in canonical order.
+    /// docs/theory.md §10: the quartic octant, weights ×6 and points in canonical order.
     pub(crate) fn octant() -> RationalPatch {
         let w = [
             "12", "12", "16", "24", "48", "9", "8", "10", "18", "7", "6", "9", "6", "6", "6",
@@ -474,7 +474,7 @@ mod tests {
     }
 
     #[test]
-    fn octant_rational_point_formulas_section_10() {
+    fn octant_rational_point_theory_section_10() {
         let at = r(&["1/3", "1/4", "5/12"]);
         let want = r(&["1020/1681", "969/1681", "920/1681"]);
         assert_eq!(octant().evaluate(&at).unwrap(), want);
@@ -558,7 +558,7 @@ mod tests {
     }
 
     /// Numbers a + b√2 with a, b rational: enough to run the generic de Casteljau on the
-    /// quadratic "octant" candidate, whose edge weights are √2/2 (FORMULAS.md §10).
+    /// quadratic "octant" candidate, whose edge weights are √2/2 (docs/theory.md §10).
     #[derive(Clone, Debug, PartialEq)]
     struct Q2(BigRational, BigRational);
 
@@ -635,7 +635,7 @@ mod tests {
 
     #[test]
     fn quadratic_candidate_misses_the_sphere() {
-        // FORMULAS.md §10/§15: the only quadratic candidate for the octant has corners e_x, e_y,
+        // docs/theory.md §10/§15: the only quadratic candidate for the octant has corners e_x, e_y,
         // e_z (weight 1) and edge points (1,1,0), (0,1,1), (1,0,1) with weight √2/2. Run the
         // generic homogeneous de Casteljau in Q(√2).
         let rat = |t: &str| Q2(q(t).unwrap(), BigRational::zero());
@@ -673,7 +673,7 @@ mod tests {
         assert!(norm_minus_w2(&["1/2", "1/2", "0"]).is_zero());
         assert!(norm_minus_w2(&["0", "1/2", "1/2"]).is_zero());
         // … the centroid is not: X·X − W² ≠ 0. With W = (3 + 3√2)/9 and X·X = 3(1 + 2√2)²/81,
-        // |P|² = X·X / W² = 11/3 − 2√2 ≈ 0.838 (FORMULAS.md §10).
+        // |P|² = X·X / W² = 11/3 − 2√2 ≈ 0.838 (docs/theory.md §10).
         let c = norm_minus_w2(&["1/3", "1/3", "1/3"]);
         assert!(!c.is_zero());
         let lam: Vec<Q2> = ["1/3", "1/3", "1/3"].iter().map(|t| rat(t)).collect();
@@ -804,7 +804,7 @@ mod tests {
             // the point is on the sphere
             let norm: BigRational = x.iter().map(|t| t * t).sum();
             prop_assert!(norm.is_one());
-            // ρ-reparametrisation (FORMULAS §10): w_ijk ρ1^i ρ2^j ρ3^k, u_k ↦ ρ_k u_k / (ρ·u)
+            // ρ-reparametrisation (docs/theory.md §10): w_ijk ρ1^i ρ2^j ρ3^k, u_k ↦ ρ_k u_k / (ρ·u)
             let rho = [BigRational::from_integer(rho.into()), BigRational::from_integer(sigma.into()), BigRational::one()];
             let mut q2 = p.clone();
             for (w, alpha) in q2.weights.iter_mut().zip(p.patch.net.simplex().iter()) {

@@ -5,7 +5,7 @@
 //! `α = (α_0, …, α_m) ∈ ℕ^{m+1}` with `|α| = α_0 + … + α_m = n`; coordinate `α_k` belongs to
 //! vertex `k` of the domain (for triangles `(i, j, k)` belong to `(u, v, w)`).
 //!
-//! **Canonical order** (FORMULAS.md §1; the order of seed 003's 10×10 matrix and of the Python
+//! **Canonical order** (docs/theory.md §1; the order of the Wikipedia article's 10×10 matrix and of the Python
 //! package `bezier`): ascending in `α_m`, then `α_{m−1}`, …, then `α_1` (`α_0` is implied and
 //! therefore descends). For triangles: by `k` ascending, then `j` ascending.
 //!
@@ -161,7 +161,7 @@ impl Simplex {
     }
 }
 
-/// Rank of a multi-index in the canonical order of its degree: FORMULAS.md §1,
+/// Rank of a multi-index in the canonical order of its degree: docs/theory.md §1,
 /// `Σ_{t=1..m} [C(s_t+t, t) − C(s_t−α_t+t, t)]`, `s_t = α_0 + … + α_t`.
 pub fn rank(alpha: &[u32]) -> usize {
     let mut s: u64 = u64::from(alpha[0]);
@@ -174,7 +174,7 @@ pub fn rank(alpha: &[u32]) -> usize {
     r as usize
 }
 
-/// Unrank by the closed formula of FORMULAS.md §1 (no table): for `t = m` down to `1`, `α_t` is
+/// Unrank by the closed formula of docs/theory.md §1 (no table): for `t = m` down to `1`, `α_t` is
 /// the largest `a ≤ s` with `C(s+t,t) − C(s−a+t,t) ≤ r`.
 pub fn unrank(m: usize, n: usize, mut r: usize) -> Vec<u32> {
     let mut alpha = vec![0u32; m + 1];
@@ -228,7 +228,7 @@ mod tests {
     }
 
     #[test]
-    fn canonical_order_matches_formulas_section_1() {
+    fn canonical_order_matches_theory_section_1() {
         assert_eq!(
             names(&Simplex::new(2, 2)),
             ["200", "110", "020", "101", "011", "002"]
@@ -244,7 +244,7 @@ mod tests {
 
     #[test]
     fn triangle_rank_closed_form() {
-        // rank(i,j,k) = k(2n+3-k)/2 + j (FORMULAS §1), checked against enumeration.
+        // rank(i,j,k) = k(2n+3-k)/2 + j (docs/theory.md §1), checked against enumeration.
         for n in 0..40usize {
             let s = Simplex::new(2, n);
             for (r, a) in s.iter().enumerate() {
@@ -271,7 +271,7 @@ mod tests {
     }
 
     #[test]
-    fn numbers_from_formulas() {
+    fn numbers_from_the_theory() {
         let s = Simplex::new(2, 3);
         assert_eq!(s.rank(&[1, 1, 1]), 5);
         assert_eq!(unrank(2, 3, 7), vec![1, 0, 2]);

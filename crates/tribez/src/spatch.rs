@@ -1,5 +1,5 @@
 //! S-patches (Loop and DeRose) over convex polygons, with Wachspress coordinates
-//! (FORMULAS.md §12).
+//! (docs/theory.md §12).
 //!
 //! **Domain.** A strictly convex polygon `p_1 … p_N` (`N ≥ 3`) with rational vertices, listed
 //! counter-clockwise. A clockwise list is rejected (it is not silently reversed, because the
@@ -19,7 +19,7 @@
 //! ```
 //! use tribez::number::parse_rational as q;
 //! use tribez::spatch::Polygon;
-//! // FORMULAS.md §12: the pentagon (0,0), (4,0), (5,3), (2,5), (−1,3) at p = (2,2)
+//! // docs/theory.md §12: the pentagon (0,0), (4,0), (5,3), (2,5), (−1,3) at p = (2,2)
 //! let v: Vec<Vec<_>> = [["0","0"],["4","0"],["5","3"],["2","5"],["-1","3"]].iter().map(|p| p.iter().map(|x| q(x).unwrap()).collect()).collect();
 //! let poly = Polygon::new(v).unwrap();
 //! let l: Vec<String> = poly.wachspress(&[q("2").unwrap(), q("2").unwrap()]).unwrap().iter().map(|x| x.to_string()).collect();
@@ -344,7 +344,7 @@ mod tests {
     }
 
     #[test]
-    fn pentagon_numbers_formulas_section_12() {
+    fn pentagon_numbers_theory_section_12() {
         let p = pentagon();
         let at = [q("2").unwrap(), q("2").unwrap()];
         assert_eq!(p.areas(&at), r(&["4", "4", "9/2", "9/2", "4"]));

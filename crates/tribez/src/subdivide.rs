@@ -1,4 +1,4 @@
-//! Subdivision: split at a point, halve along an edge, four-way midpoint split (FORMULAS.md §5).
+//! Subdivision: split at a point, halve along an edge, four-way midpoint split (docs/theory.md §5).
 //!
 //! Every piece is a subpatch ([`crate::blossom`]) over a sub-simplex whose vertices are given in
 //! the parent's barycentric coordinates (`domain_in_parent`); evaluated at `β` it equals the
@@ -13,7 +13,7 @@
 //!   parent's vertex order. Along every line from corner `I` towards `J` the net is split like a
 //!   Bézier curve: `d_α = 2^{−α_J} Σ_l C(α_J, l) c_{α + (α_J − l) e_I − (α_J − l) e_J}` for the first
 //!   piece (§5.2). [`add_and_halve`] does it with additions and halvings only, in place, in the
-//!   order of seed 003's table.
+//!   order of the Wikipedia article's table.
 //! * **Four-way midpoint split** (triangles): `[a1, m12, m13]`, `[m12, a2, m23]`,
 //!   `[m13, m23, a3]`, central `[m23, m13, m12]`, each keeping the orientation (§5.3).
 //!
@@ -26,7 +26,7 @@
 //! let net = ControlNet::from_points(2, 2, &pts);
 //! let t = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
 //! let pieces = split_at(&net, &t);
-//! // FORMULAS.md §5.1: T1 = [t, a2, a3] has d200 = p(t) and d110 = c¹010.
+//! // docs/theory.md §5.1: T1 = [t, a2, a3] has d200 = p(t) and d110 = c¹010.
 //! let s = |p: &[num_rational::BigRational]| p.iter().map(|x| x.to_string()).collect::<Vec<_>>();
 //! assert_eq!(s(pieces[0].at(&[2, 0, 0])), ["4/9", "5/9", "29/36"]);
 //! assert_eq!(s(pieces[0].at(&[1, 1, 0])), ["2/3", "5/6", "7/6"]);
@@ -174,7 +174,7 @@ fn halve_with<T: Field>(net: &ControlNet<T>, i: usize, j: usize, sub: Sub<T>) ->
     })
 }
 
-/// The four-way midpoint split of a triangle (FORMULAS.md §5.3), each piece with the
+/// The four-way midpoint split of a triangle (docs/theory.md §5.3), each piece with the
 /// orientation of the parent: `[a1, m12, m13]`, `[m12, a2, m23]`, `[m13, m23, a3]`,
 /// `[m23, m13, m12]`.
 pub fn midpoint_split<T: Field>(net: &ControlNet<T>) -> Result<Vec<Piece<T>>, CoreError> {
@@ -223,16 +223,16 @@ fn midpoint_split_with<T: Field>(
 /// The order of the in-place updates of [`add_and_halve`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum HalvingOrder {
-    /// Seed 003's table read row by row, top to bottom, each row left to right: along each line
+    /// the Wikipedia article's table read row by row, top to bottom, each row left to right: along each line
     /// `P_0 … P_d` (from the kept corner), passes `s = 1, …, d`, pass `s` updating
-    /// `P_j := (P_{j−1} + P_j)/2` for `j = d−s+1, …, d`. Correct (FORMULAS.md §5.2).
+    /// `P_j := (P_{j−1} + P_j)/2` for `j = d−s+1, …, d`. Correct (docs/theory.md §5.2).
     TopDown,
     /// The same passes in the reverse order, `s = d, …, 1` (the longest row of the table first).
-    /// WRONG: gives different points (FORMULAS.md §5.2, §15); kept to exhibit the erratum.
+    /// WRONG: gives different points (docs/theory.md §5.2, §15); kept to exhibit the erratum.
     BottomFirst,
 }
 
-/// Halving with additions and exact divisions by two only, in place (seed 003): the piece that
+/// Halving with additions and exact divisions by two only, in place (the Wikipedia article): the piece that
 /// keeps corner `keep` and replaces corner `replace` (0-based) by the midpoint of the two. With
 /// [`HalvingOrder::TopDown`] this equals [`halve`]'s piece, for every degree and dimension.
 pub fn add_and_halve<T: Field>(
@@ -290,7 +290,7 @@ mod tests {
     use proptest::prelude::*;
 
     #[test]
-    fn split_of_formulas_section_5_1() {
+    fn split_of_theory_section_5_1() {
         let pieces = split_at_pieces(&finn(), &r(&["1/2", "1/3", "1/6"])).unwrap();
         let t1 = &pieces[0].net;
         let want = [
@@ -308,7 +308,7 @@ mod tests {
     }
 
     #[test]
-    fn half_of_formulas_section_5_2() {
+    fn half_of_theory_section_5_2() {
         let [a, _] = halve(&finn(), 0, 1);
         let want = [
             ["0", "0", "0"],
@@ -369,7 +369,7 @@ mod tests {
     }
 
     #[test]
-    fn halving_matrices_follow_the_closed_form_of_formulas_5_2() {
+    fn halving_matrices_follow_the_closed_form_of_theory_5_2() {
         // d_ijk = 2^-j Σ_l C(j,l) c_(i+j−l, l, k) (first half), 2^-i Σ_l C(i,l) c_(i−l, j+l, k) (second).
         let n = 5;
         let sx = simplex::Simplex::new(2, n);

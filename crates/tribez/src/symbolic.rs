@@ -2,7 +2,7 @@
 //!
 //! A patch of degree `n` is, coordinate by coordinate, the homogeneous polynomial
 //! `P(λ) = Σ_{|α|=n} C(n;α) c_α λ^α` in the barycentric variables (`u, v, w` for triangles; the
-//! homogeneous form does not use `u + v + w = 1`, FORMULAS.md §0). Given a domain simplex, the
+//! homogeneous form does not use `u + v + w = 1`, docs/theory.md §0). Given a domain simplex, the
 //! substitution `λ = λ(x)` (Cramer's rule, affine in `x`) gives the polynomial in the Cartesian
 //! variables (`x, y` for triangles).
 //!
@@ -10,7 +10,7 @@
 //! use tribez::number::parse_rational as q;
 //! use tribez::patch::ControlNet;
 //! use tribez::symbolic::{Polynomial, barycentric_form};
-//! // seed 002's worked example, part (b): the exact x-component is 2uv + 2vw (FORMULAS.md §15)
+//! // Finn's worked example, part (b): the exact x-component is 2uv + 2vw (docs/theory.md §15)
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let p = barycentric_form(&ControlNet::from_points(2, 2, &pts));
@@ -495,8 +495,8 @@ mod tests {
     }
 
     #[test]
-    fn finn_monomial_form_formulas_section_9() {
-        // FORMULAS.md §9: Finn's net in monomials on the reference triangle is
+    fn finn_monomial_form_theory_section_9() {
+        // docs/theory.md §9: Finn's net in monomials on the reference triangle is
         // (2y − 2y², 2 − 2x − 2y + 2y², 1 − 2x + x² + 4xy − y²).
         let net = crate::testing::finn();
         let xy = ["x", "y"];

@@ -20,7 +20,7 @@ pub fn s(p: &[BigRational]) -> Vec<String> {
     p.iter().map(ToString::to_string).collect()
 }
 
-/// Seed 002's worked example: the quadratic net of Finn, Day 30, §30.1.
+/// Finn's worked example: the quadratic net of Finn, Day 30, §30.1.
 pub fn finn() -> ControlNet<BigRational> {
     let pts: Vec<Vec<BigRational>> = [
         [0, 0, 0],

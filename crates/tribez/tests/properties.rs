@@ -1,4 +1,4 @@
-//! Property tests for the identities of the theory, on random exact data (FORMULAS.md §1, §3):
+//! Property tests for the identities of the theory, on random exact data (docs/theory.md §1, §3):
 //! de Casteljau equals the Bernstein form; partition of unity; corners interpolate; every edge
 //! is the Bézier curve of its boundary control points; affine invariance; the symbolic form
 //! evaluates to the same values; the integer evaluator equals rational de Casteljau; the

@@ -1,4 +1,4 @@
-//! `tribez blossom`: the blossom (polar form) `b[u_1, …, u_n]` of a patch (FORMULAS.md §4).
+//! `tribez blossom`: the blossom (polar form) `b[u_1, …, u_n]` of a patch (docs/theory.md §4).
 //!
 //! For a rational patch it is the rational blossom `X[u_1, …, u_n] / W[u_1, …, u_n]`, the blossom
 //! of the homogeneous net `(w c, w)` projected ([`tribez::rational::RationalPatch::blossom`]); an

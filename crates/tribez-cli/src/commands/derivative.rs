@@ -25,7 +25,7 @@ pub struct Args {
     /// A barycentric direction (m+1 components summing to 0, e.g. `1,0,-1`). Repeat for higher orders.
     #[arg(long = "dir", value_name = "D", allow_hyphen_values = true)]
     pub dir: Vec<String>,
-    /// A Cartesian direction vector (m components, e.g. `1,-2`), converted by the domain (seed 000 eqs. 9-10). Repeatable; mixes with --dir.
+    /// A Cartesian direction vector (m components, e.g. `1,-2`), converted by the domain (Floater's notes eqs. 9-10). Repeatable; mixes with --dir.
     #[arg(long = "vector", value_name = "X,Y", allow_hyphen_values = true)]
     pub vector: Vec<String>,
     #[command(flatten)]

@@ -1,4 +1,4 @@
-//! `tribez elevate`: degree elevation by R steps (FORMULAS.md §6): the same surface, degree n + R.
+//! `tribez elevate`: degree elevation by R steps (docs/theory.md §6): the same surface, degree n + R.
 
 use std::path::PathBuf;
 

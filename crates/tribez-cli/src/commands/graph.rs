@@ -1,5 +1,5 @@
 //! `tribez graph`: the graph `(x, y, f(x, y))` of a functional patch as a parametric patch file
-//! (FORMULAS.md §13: control points `(ξ_α, b_α)` at the Bézier abscissae).
+//! (docs/theory.md §13: control points `(ξ_α, b_α)` at the Bézier abscissae).
 
 use std::path::PathBuf;
 

@@ -1,5 +1,5 @@
 //! `tribez halve`: cut a patch in two from the midpoint of the edge between corners I and J to
-//! the opposite corner (FORMULAS.md §5.2). The first piece is the parent with corner J replaced by
+//! the opposite corner (docs/theory.md §5.2). The first piece is the parent with corner J replaced by
 //! the midpoint, the second with corner I replaced, each keeping the parent's vertex order.
 //! A rational patch is halved through its homogeneous net (points and weights).
 
@@ -19,7 +19,7 @@ pub struct Args {
     /// The edge to cut, as two corner numbers (1 to m+1), e.g. `1,2`.
     #[arg(long, value_name = "I,J")]
     pub edge: String,
-    /// Compute with seed 003's additions and divisions by two only (in place, row by row), instead of blossoms; the result is the same.
+    /// Compute with the Wikipedia article's additions and divisions by two only (in place, row by row), instead of blossoms; the result is the same.
     #[arg(long)]
     pub add_and_halve: bool,
     #[command(flatten)]

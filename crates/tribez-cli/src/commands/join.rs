@@ -258,7 +258,7 @@ impl Render for JoinReport {
             }
         );
         out += &format!(
-            "C0: {}\nC1: {}\nmax smoothness: C^{}{}\nG1: {}\nseed 002 coplanarity: {}\n",
+            "C0: {}\nC1: {}\nmax smoothness: C^{}{}\nG1: {}\nFinn's notes coplanarity: {}\n",
             word(Some(j.c0)),
             word(Some(j.c1)),
             j.max_smoothness,

@@ -1,6 +1,6 @@
 //! `tribez matrix`: the exact matrix that maps a parent's control points to a child's, for
-//! halving (FORMULAS.md §5.2) or any subpatch (§4): `c′_α = Σ_β M_{αβ} c_β`, rows and columns in
-//! the canonical order of FORMULAS.md §1 (the order of seed 003's 10×10 matrix).
+//! halving (docs/theory.md §5.2) or any subpatch (§4): `c′_α = Σ_β M_{αβ} c_β`, rows and columns in
+//! the canonical order of docs/theory.md §1 (the order of the Wikipedia article's 10×10 matrix).
 
 use num_rational::BigRational;
 use serde_json::{Value as Json, json};

@@ -1,4 +1,4 @@
-//! `tribez subdivide`: split a patch at a point (m+1 pieces, FORMULAS.md §5.1) or, for
+//! `tribez subdivide`: split a patch at a point (m+1 pieces, docs/theory.md §5.1) or, for
 //! triangles, at the edge midpoints (four pieces, §5.3).
 
 use std::path::PathBuf;

@@ -1,4 +1,4 @@
-//! `tribez subpatch`: the same polynomial over any sub-simplex (FORMULAS.md §4, §11):
+//! `tribez subpatch`: the same polynomial over any sub-simplex (docs/theory.md §4, §11):
 //! `c′_α = b[f_1^{α_1}, …, f_{m+1}^{α_{m+1}}]`.
 
 use std::path::PathBuf;

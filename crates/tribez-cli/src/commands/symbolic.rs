@@ -1,7 +1,7 @@
 //! `tribez symbolic`: the patch as polynomials with exact coefficients.
 //!
 //! A rational patch prints its numerators `Σ w_α c_α B_α` and the common denominator
-//! `Σ w_α B_α`; an S-patch prints its rational form in `x, y` (FORMULAS.md §12): numerators
+//! `Σ w_α B_α`; an S-patch prints its rational form in `x, y` (docs/theory.md §12): numerators
 //! `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
 
 use std::path::PathBuf;

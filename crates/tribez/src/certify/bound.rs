@@ -5,7 +5,7 @@
 //! `γ_k = kε / (1 − kε)`, and a product of `k` factors `(1 + δ)^{±1}` is `1 + θ_k` with
 //! `|θ_k| ≤ γ_k` (\[Higham02\] Lemma 3.1).
 //!
-//! **de Casteljau** on the m-simplex (FORMULAS.md §14.1, derived as in \[MP99\] Cor. 3.2; \[MP06\]
+//! **de Casteljau** on the m-simplex (docs/theory.md §14.1, derived as in \[MP99\] Cor. 3.2; \[MP06\]
 //! §3 for the simplex): every step computes `((λ_0 A_0 + λ_1 A_1) + …) + λ_m A_m` left to right,
 //! so a term collects at most `m + 1` roundings per level and at most `(m + 1) n` along its path
 //! to the apex. The computed value is `Σ_paths c_i · (product of the path's weights) · (1 + θ)`,
@@ -14,7 +14,7 @@
 //! `|fl(p) − P(λ)| ≤ γ_{(m+1)n} Σ_i |c_i| B^n_i(|λ_0|, …, |λ_m|)`,
 //!
 //! with `P` the homogeneous form at the exact values of the float inputs (they need not sum to 1).
-//! For `λ ≥ 0` this is FORMULAS' `γ_{3n} Σ|c_i|B_i(u,v,w)` on the triangle. Underflow adds at most
+//! For `λ ≥ 0` this is the theory reference's `γ_{3n} Σ|c_i|B_i(u,v,w)` on the triangle. Underflow adds at most
 //! `η` (2^-1075 or 2^-150) per product (\[Higham02\] (2.8)); those absolute errors are carried to
 //! the apex by the later steps with weight at most `s = Σ|λ_k|` per level, so we add
 //! `2 (m+1) η Σ_{j<n} s^j` (the factor 2 covers the roundings of the carrying steps).
@@ -341,7 +341,7 @@ mod tests {
 
     #[test]
     fn rounding_counts() {
-        assert_eq!(roundings(Algorithm::Casteljau, 2, 3), 9); // γ_{3n}, FORMULAS §14.1
+        assert_eq!(roundings(Algorithm::Casteljau, 2, 3), 9); // γ_{3n}, docs/theory.md §14.1
         assert_eq!(roundings(Algorithm::Casteljau, 1, 4), 8); // curves: γ_{2n} \[MP99\]
         assert_eq!(roundings(Algorithm::Bernstein, 2, 3), 10 + 3 + 2 + 2);
     }

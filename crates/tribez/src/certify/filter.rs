@@ -1,7 +1,7 @@
 //! The floating-point filter: decide most claims about `p(λ)` without big integers.
 //!
 //! [`Filter`] evaluates the patch (its control points as the claimed code saw them: floats) in
-//! f64 by de Casteljau and carries, per node, the running error bound of FORMULAS.md §14.2
+//! f64 by de Casteljau and carries, per node, the running error bound of docs/theory.md §14.2
 //! (after \[Higham02\] §3.1, "running error analysis"), extended to any sign of `λ` and any m:
 //!
 //! `μ = Σ_k |λ_k| μ_k + ε (Σ_k |p_k| + Σ_{k≥1} |s_k|) + (m + 1) η`,
@@ -283,7 +283,7 @@ fn neighbours(y: f64, p: Precision) -> (f64, f64) {
 }
 
 /// Binade ulp of `|x|` in precision `p` (monotone in `|x|`), as an f64 (exact power of two;
-/// FORMULAS §14.4), by bit manipulation only.
+/// docs/theory.md §14.4), by bit manipulation only.
 fn ulp_of(x: f64, p: Precision) -> f64 {
     if !x.is_finite() {
         return f64::INFINITY;
@@ -554,7 +554,7 @@ fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJ
 
 impl Filter {
     /// Whether rows at `th` should go straight to the compensated stage: the plain stage's
-    /// running bound is typically a few `(m+1)n ε Σ|c|B` (FORMULAS §14.2), so a tolerance
+    /// running bound is typically a few `(m+1)n ε Σ|c|B` (docs/theory.md §14.2), so a tolerance
     /// narrower than about that (`exact`, `correctly_rounded`, `faithful`, a few ulps, a small
     /// `rel`/`abs`/`cond`) is rarely decided by it, and running it first only adds its cost. The
     /// choice affects speed only: [`Filter::judge`] tries both stages before giving up.

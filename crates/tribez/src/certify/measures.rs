@@ -6,7 +6,7 @@
 //! | tolerance | accepts when |
 //! |---|---|
 //! | `exact` | `y = q` |
-//! | `ulps=N` | `|y − q| ≤ N · ulp_p(q)` (binade ulp of the claim's precision `p`, FORMULAS §14.4) |
+//! | `ulps=N` | `|y − q| ≤ N · ulp_p(q)` (binade ulp of the claim's precision `p`, docs/theory.md §14.4) |
 //! | `abs=E` | `|y − q| ≤ E` |
 //! | `rel=E` | `|y − q| ≤ E · |q|` |
 //! | `correctly_rounded` | `y = RN_p(q)` (nearest, ties to even) |
@@ -185,7 +185,7 @@ pub fn unit_roundoff(p: Precision) -> BigRational {
     pow2(i64::from(p.unit_roundoff_log2()))
 }
 
-/// Binade ulp of `q` in precision `p` (FORMULAS §14.4).
+/// Binade ulp of `q` in precision `p` (docs/theory.md §14.4).
 pub fn ulp(q: &BigRational, p: Precision) -> BigRational {
     match p {
         Precision::F64 => ulp_f64(q),
@@ -347,7 +347,7 @@ mod tests {
 
     #[test]
     fn point_one_plus_point_two() {
-        // FORMULAS §14.4: (0.1 + 0.2) − 3/10 = 0.8 ulp(3/10), one step above RN(3/10) = 0.3.
+        // docs/theory.md §14.4: (0.1 + 0.2) − 3/10 = 0.8 ulp(3/10), one step above RN(3/10) = 0.3.
         let y = exact_f64(0.1 + 0.2).unwrap();
         let x = q("3/10").unwrap();
         let l = leaf(Some(Precision::F64));

@@ -9,9 +9,9 @@
 //!   `faithful`, `cond=K`, `bound`) and the exact error measures (absolute, relative, ULPs,
 //!   correct rounding).
 //! * [`bound`]: the a-priori forward error bounds of de Casteljau and of the direct Bernstein form
-//!   (FORMULAS.md §14.1), and the condition number `Σ|c_i| B_i(|λ|)`.
+//!   (docs/theory.md §14.1), and the condition number `Σ|c_i| B_i(|λ|)`.
 //! * [`filter`]: the floating-point filter: an f64 de Casteljau with a rigorous running error
-//!   bound (FORMULAS.md §14.2) that decides the clear claims without big integers.
+//!   bound (docs/theory.md §14.2) that decides the clear claims without big integers.
 
 pub mod beyond;
 pub mod bound;

@@ -3,7 +3,7 @@
 //! tribez computes the exact value and judges the claim.
 //!
 //! ```toml
-//! source = "seed 002: D. L. Finn, MA 323 course notes, Day 30"
+//! source = "D. L. Finn, MA 323 course notes, Day 30"
 //! patch = "finn_day30.toml"            # a patch file beside this one, or an inline [patch] table
 //!
 //! [[claim]]
@@ -17,7 +17,7 @@
 //! id = "worked-example-b-x"
 //! op = "symbolic"
 //! expect = ["2uv + v^2 + vw", "2uw + 2vw + 2v^2 + 2w^2", "4uv + 2vw + w^2"]
-//! erratum = "the printed x-component is wrong: 2uv + 2vw (FORMULAS.md §15)"
+//! erratum = "the printed x-component is wrong: 2uv + 2vw (docs/theory.md §15)"
 //! ```
 //!
 //! Every claim may carry `tolerance` (`exact` by default; `ulps=N`, `abs=E`, `rel=E`,

@@ -19,7 +19,7 @@
 //! | `barycentric` | `domain` (m+1 vertices), `point` (Cartesian) | the barycentric coordinates (Cramer) |
 //! | `direction` | `domain`, `vector` (Cartesian) | the directional coordinates (they sum to 0) |
 //! | `implicit` | `equation` (a polynomial in the coordinates), optional `coordinates` (their names, default `x, y, z`), `names` | the residual `W^k F(X/W)` as a polynomial in the patch's variables (barycentric; `x, y` for an S-patch); `"0"` proves the whole patch lies on `F = 0` |
-//! | `wachspress` | `cartesian` (a point of an S-patch's polygon) | `{ A = [A_j], C = [C_i], lambda = [λ_i] }` (FORMULAS.md §12) |
+//! | `wachspress` | `cartesian` (a point of an S-patch's polygon) | `{ A = [A_j], C = [C_i], lambda = [λ_i] }` (docs/theory.md §12) |
 //! | `abscissae` | (a functional or Bézier patch) | the Bézier abscissae `ξ_α` keyed by multi-index |
 //! | `ordinates` | `domain`, `degree`, `function` (polynomial in `x, y`, or `names`) | the control ordinates `b_α` keyed by multi-index |
 //! | `graph` | (a functional patch) | the control points `(ξ_α, b_α)` of its graph, keyed by multi-index |

@@ -12,7 +12,7 @@
 //! `H_c = Σ_α s_α a^α`, `N_c = H_c − K_c (Σ_k a_k)^n` (because `Σ_α C(n;α) a^α = (Σa)^n`),
 //! `p_c(λ) = N_c / (L_c D^n)`,
 //!
-//! with `H_c` computed by nested homogeneous Horner in canonical order (FORMULAS §1): on the
+//! with `H_c` computed by nested homogeneous Horner in canonical order (docs/theory.md §1): on the
 //! `t`-simplex, `H = Σ_{k=0..N} a_t^k H_k` with `H_k` the face block `α_t = k` of degree `N − k`
 //! on `(a_0, …, a_{t−1})`, run as `S ← S·a_t + H_k` for `k = N … 0` (all blocks are contiguous in
 //! the canonical order); on an edge (`t = 1`) `Σ_j s_j a_0^{N−j} a_1^j` as `T ← T·a_0 + s_j a_1^j`.
