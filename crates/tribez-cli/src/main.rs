@@ -10,7 +10,7 @@ mod commands;
 mod report;
 
 fn main() {
-    let cli = match cli::Cli::try_parse() {
+    let cli = match commands::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => std::process::exit(usage(&e)),
     };
