@@ -123,3 +123,12 @@ def test_evaluate_float_is_de_casteljau_in_floats(finn):
     f32 = finn.evaluate_float(pts.astype(np.float32), precision="f32")
     assert f32.dtype == np.float32
     assert np.allclose(f32, got, rtol=1e-6)
+
+
+def test_patch_pickles_exactly(root):
+    import pickle
+
+    for f in ["finn_day30.toml", "beyond/octant_quartic.toml", "beyond/pentagon_depth2.toml"]:
+        p = tribez.Patch.from_file(root / "fixtures" / f)
+        q = pickle.loads(pickle.dumps(p))
+        assert q == p and q.name == p.name and q.kind == p.kind

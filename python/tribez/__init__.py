@@ -195,6 +195,10 @@ class Patch:
     def __repr__(self) -> str:
         return repr(self._native)
 
+    def __reduce__(self):
+        # pickled as its JSON patch file (exact), e.g. to send it to Dask workers
+        return (_patch_from_json, (self.to_json(),))
+
     # -- evaluation ---------------------------------------------------------------------
 
     def evaluate(self, points, cartesian: bool = False) -> list:
@@ -225,6 +229,10 @@ class Patch:
         raw = self._native.evaluate_float(arr.tobytes(), width, _precision_name(precision))
         dtype = np.float64 if precision == "f64" else np.float32
         return np.frombuffer(raw, dtype=dtype).reshape(arr.shape[0], self.dimension).copy()
+
+
+def _patch_from_json(text: str) -> Patch:
+    return Patch.from_json(text)
 
 
 def _check_str(x, where):
