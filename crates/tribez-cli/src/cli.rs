@@ -76,6 +76,11 @@ where
 
 /// A clap value parser for `--random N`: 1 to [`MAX_RANDOM_POINTS`].
 pub fn random_count(text: &str) -> Result<usize, String> {
+    if whole_number::<usize>(0, 0)(text).is_ok() {
+        return Err(format!(
+            "needs at least one point (a whole number from 1 to {MAX_RANDOM_POINTS})"
+        ));
+    }
     whole_number(1, MAX_RANDOM_POINTS as u64)(text)
 }
 
@@ -177,11 +182,25 @@ mod tests {
         assert_eq!(p("7"), Ok(7));
         assert_eq!(p("+7"), Ok(7));
         assert_eq!(p("010"), Ok(10));
-        for bad in ["-5", "0", "11", "1.5", "", "x", "18446744073709551616", "99999999999999999999999"] {
-            assert_eq!(p(bad), Err("expected a whole number from 1 to 10".into()), "{bad}");
+        for bad in [
+            "-5",
+            "0",
+            "11",
+            "1.5",
+            "",
+            "x",
+            "18446744073709551616",
+            "99999999999999999999999",
+        ] {
+            assert_eq!(
+                p(bad),
+                Err("expected a whole number from 1 to 10".into()),
+                "{bad}"
+            );
         }
         assert_eq!(seed("18446744073709551615"), Ok(u64::MAX));
         assert!(random_count("1000001").is_err());
+        assert!(random_count("0").unwrap_err().contains("at least one point"));
         assert_eq!(random_count("1000000"), Ok(1_000_000));
     }
 }

@@ -96,7 +96,7 @@ fn a_negative_count_is_a_clear_error() {
 
 #[test]
 fn random_point_counts_are_capped_before_allocating() {
-    for n in ["18446744073709551615", "1000000000", "1000001", "0"] {
+    for n in ["18446744073709551615", "1000000000", "1000001", "0", "-1"] {
         fails_with(
             &["certify", &finn_str(), "--random", n],
             &["--random", "from 1 to 1000000"],
@@ -287,4 +287,22 @@ fn subdivide_at_a_corner_stays_an_error() {
         &["subdivide", &finn_str(), "--at", "0,1,0"],
         &["--at 0,1,0", "corner 2"],
     );
+}
+
+#[test]
+fn usage_errors_are_one_line() {
+    for args in [
+        vec!["eval", "--no-such-option"],
+        vec!["subdivide"],
+        vec!["matrix", "halve", "--degree", "x"],
+        vec!["frobnicate"],
+    ] {
+        let out = tribez().args(&args).assert().code(2).get_output().clone();
+        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("tribez: "), "{err}");
+    }
+    // without a command: the help, on standard error
+    let out = tribez().assert().code(2).get_output().clone();
+    assert!(String::from_utf8_lossy(&out.stderr).contains("Commands:"));
 }

@@ -6,10 +6,10 @@ use serde_json::{Map, Value as Json, json};
 
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
+use crate::report::{Render, json_rationals, tuple};
 use tribez::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
 use tribez::join::{Join, Violation, analyse, c1_neighbour};
 use tribez::patch::Patch;
-use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez join`.
 #[derive(Debug, clap::Args)]
@@ -25,7 +25,12 @@ pub struct Args {
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub domain: Option<String>,
     /// With --make-c1: the common edge, as A's corners I,J (numbered 1 to 3); default 1,2.
-    #[arg(long, value_name = "I,J", default_value = "1,2", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "I,J",
+        default_value = "1,2",
+        allow_hyphen_values = true
+    )]
     pub edge: String,
     #[command(flatten)]
     pub out: OutputArgs,

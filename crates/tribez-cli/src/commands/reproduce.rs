@@ -64,7 +64,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         None => {
             if builtin_fixtures().is_empty() {
                 return Err(CliError::Usage(
-                    "this tribez was built without fixtures: give a directory of claim files".into(),
+                    "this tribez was built without fixtures: give a directory of claim files"
+                        .into(),
                 ));
             }
             let tmp = tempfile::tempdir().map_err(|e| {

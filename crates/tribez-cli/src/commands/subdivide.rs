@@ -17,9 +17,9 @@ use super::construct::{
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
+use tribez::blossom::split_at_exact;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::blossom::split_at_exact;
 use tribez::subdivide::{Piece, midpoint_split_exact, replaced, split_at_pieces_exact};
 
 /// Arguments of `tribez subdivide`.
@@ -61,7 +61,14 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let label = |k: usize| format!("piece {} of {total}", numbers[k]);
     if let Some(r) = rational {
         let report = rational_pieces(&file, &r, pieces, label)?;
-        return Outcome::rendered(&Noted { note, inner: report }, args.out.format, true);
+        return Outcome::rendered(
+            &Noted {
+                note,
+                inner: report,
+            },
+            args.out.format,
+            true,
+        );
     }
     let pieces = pieces
         .into_iter()
