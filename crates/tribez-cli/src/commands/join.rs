@@ -8,7 +8,7 @@ use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
 use tribez::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
 use tribez::join::{Join, Violation, analyse, c1_neighbour};
-use tribez::patch::Patch;
+use tribez::patch::BezierPatch as Patch;
 use crate::report::{Format, Render, json_rationals, tuple};
 
 /// Arguments of `tribez join`.

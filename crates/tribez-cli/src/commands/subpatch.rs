@@ -9,7 +9,7 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
+use tribez::any_patch::AnyPatch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]

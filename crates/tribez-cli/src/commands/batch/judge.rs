@@ -12,7 +12,7 @@ use crate::commands::CliError;
 use crate::commands::check::Args;
 use tribez::exact::{Algorithm, ExactEvaluator};
 use tribez::float::Precision;
-use tribez::patch::{ControlNet, Patch};
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {
