@@ -8,7 +8,7 @@ use crate::patch::BezierPatch;
 use crate::rational::RationalPatch;
 use crate::spatch::SPatch;
 
-/// Any kind of patch a patch file can describe (the patch file format: `[weights]`, `polygon`,
+/// Any kind of patch a patch file can describe (docs/guide.md §3: `[weights]`, `polygon`,
 /// `kind = "functional"`). Plain Bézier simplices are [`BezierPatch`]; the other kinds wrap one
 /// or carry their own net.
 #[derive(Clone, Debug, PartialEq)]
