@@ -27,10 +27,10 @@ use std::path::Path;
 use num_rational::BigRational;
 
 use crate::cli::{Cli, Command, OutputArgs};
+use crate::report::{Format, Render, render};
 use tribez::error::CoreError;
 use tribez::io::InputError;
 use tribez::number::parse_rational;
-use crate::report::{Format, Render, render};
 
 /// Why a command could not run: bad input or usage (exit status 2).
 #[derive(Debug, thiserror::Error)]
@@ -192,7 +192,13 @@ pub fn points_patch(
     file: &str,
     command: &str,
     any: tribez::patch::AnyPatch,
-) -> Result<(tribez::patch::Patch, Option<tribez::rational::RationalPatch>), CliError> {
+) -> Result<
+    (
+        tribez::patch::Patch,
+        Option<tribez::rational::RationalPatch>,
+    ),
+    CliError,
+> {
     use tribez::patch::AnyPatch;
     match any {
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),
