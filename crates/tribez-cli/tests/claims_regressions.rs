@@ -47,7 +47,7 @@ fn check_fails(claims: &str, fragments: &[&str]) {
 fn claim_op_sizes_are_capped_before_allocating() {
     // n + m wrapped: the 1000-row limit was bypassed
     check_fails(
-        "[[claim]]\nid = \"big\"\nop = \"matrix\"\nkind = \"halve\"\ndegree = 18446744073709551615\nexpect = []\n",
+        "[[claim]]\nid = \"big\"\nop = \"matrix\"\nkind = \"halve\"\ndegree = \"18446744073709551615\"\nexpect = []\n",
         &["c.claims.toml:", "big.degree", "at most 1000 rows"],
     );
     check_fails(
