@@ -60,7 +60,13 @@ where
     T: TryFrom<u64> + Clone + Send + Sync + 'static,
 {
     move |text: &str| {
-        let range = || format!("expected a whole number from {lo} to {hi}");
+        let range = || {
+            if hi == u64::MAX {
+                format!("expected a whole number, at least {lo}")
+            } else {
+                format!("expected a whole number from {lo} to {hi}")
+            }
+        };
         let t = text.trim();
         let digits = t.strip_prefix('+').unwrap_or(t);
         if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
@@ -199,8 +205,16 @@ mod tests {
             );
         }
         assert_eq!(seed("18446744073709551615"), Ok(u64::MAX));
+        assert_eq!(
+            whole_number::<usize>(1, u64::MAX)("0"),
+            Err("expected a whole number, at least 1".into())
+        );
         assert!(random_count("1000001").is_err());
-        assert!(random_count("0").unwrap_err().contains("at least one point"));
+        assert!(
+            random_count("0")
+                .unwrap_err()
+                .contains("at least one point")
+        );
         assert_eq!(random_count("1000000"), Ok(1_000_000));
     }
 }

@@ -137,7 +137,7 @@ fn matrix_degree_is_capped_before_any_arithmetic() {
 fn elevation_beyond_the_degree_limit_is_refused_before_adding() {
     fails_with(
         &["elevate", &finn_str(), "--by", "18446744073709551615"],
-        &["--by", "limit of 200"],
+        &["--by", "degree 18446744073709551615", "limits (degree 200"],
     );
     fails_with(
         &["elevate", &finn_str(), "--by", "199"],

@@ -55,7 +55,7 @@ pub fn check_size(m: usize, n: usize, what: &str) -> Result<(), CliError> {
         return Err(CliError::core(
             what,
             CoreError::Invalid(format!(
-                "the result would have degree {n}, above the patch-file limit of {MAX_DEGREE}"
+                "the result would have degree {n}, above the patch-file limits (degree {MAX_DEGREE}, {MAX_CONTROL_POINTS} points)"
             )),
         ));
     }
@@ -126,7 +126,10 @@ pub fn rational_pieces(
             Some(&p.domain_in_parent),
             &label(k),
         )?;
-        out.push((p.domain_in_parent, tribez::any_patch::AnyPatch::Rational(piece)));
+        out.push((
+            p.domain_in_parent,
+            tribez::any_patch::AnyPatch::Rational(piece),
+        ));
     }
     Ok(super::graph::AnyPiecesReport(out))
 }

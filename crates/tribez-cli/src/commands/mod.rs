@@ -264,7 +264,13 @@ pub fn points_patch(
     file: &str,
     command: &str,
     any: tribez::any_patch::AnyPatch,
-) -> Result<(tribez::patch::BezierPatch, Option<tribez::rational::RationalPatch>), CliError> {
+) -> Result<
+    (
+        tribez::patch::BezierPatch,
+        Option<tribez::rational::RationalPatch>,
+    ),
+    CliError,
+> {
     use tribez::any_patch::AnyPatch;
     match any {
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),

@@ -11,8 +11,8 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
 use crate::report::Render;
-use tribez::io::patch_file::read_any_patch;
 use tribez::any_patch::AnyPatch;
+use tribez::io::patch_file::read_any_patch;
 use tribez::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
 };
