@@ -22,6 +22,7 @@
 //! [`casteljau`], [`exact`], [`float`]) never depends on the outer layers: files ([`io`]) and the
 //! command line.
 
+pub mod batch;
 pub mod bernstein;
 pub mod blossom;
 pub mod casteljau;
