@@ -5,10 +5,10 @@ use num_traits::ToPrimitive;
 
 use super::parse::Num;
 use super::report::FailedCoord;
+use super::{BatchError, BatchOptions};
 use crate::certify::bound::{a_priori, condition};
 use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
 use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
-use super::{BatchError, BatchOptions};
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Precision;
 use crate::patch::{ControlNet, Patch};
