@@ -11,7 +11,7 @@ use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch,
 use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Precision;
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{BezierPatch as Patch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {

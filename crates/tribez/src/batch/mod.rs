@@ -37,7 +37,7 @@ use crate::certify::measures::Tolerance;
 use crate::exact::Algorithm;
 use crate::float::Precision;
 use crate::io::InputError;
-use crate::patch::Patch;
+use crate::patch::BezierPatch as Patch;
 use judge::{Prepared, RowOutcome, RowScratch};
 use parse::{Chunk, Num, RowReader, parse_row, texts_of};
 
