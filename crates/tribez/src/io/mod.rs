@@ -4,6 +4,7 @@
 
 pub mod patch_file;
 pub mod points;
+pub mod text;
 pub mod tree;
 
 use std::fmt;
