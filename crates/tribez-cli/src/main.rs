@@ -1,6 +1,8 @@
 //! The `tribez` command: parse arguments, run one command, map the outcome to an exit status
 //! (0 every claim holds, 1 some claim fails, 2 bad input or usage).
 
+use std::io::Write;
+
 use clap::Parser;
 
 mod cli;
@@ -8,6 +10,27 @@ mod commands;
 mod report;
 
 fn main() {
-    let cli = cli::Cli::parse();
+    let cli = match cli::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => std::process::exit(usage(&e)),
+    };
     std::process::exit(commands::main(cli));
+}
+
+/// Print clap's help, version or usage error; a help text that cannot be written (`> /dev/full`)
+/// is an error too. Returns the exit status (0 for help and version, 2 for a usage error).
+fn usage(e: &clap::Error) -> i32 {
+    let status = e.exit_code();
+    let text = e.render().to_string();
+    if e.use_stderr() {
+        let _ = std::io::stderr().write_all(text.as_bytes());
+        return status;
+    }
+    match commands::output::write_stdout(text.as_bytes()) {
+        Ok(()) => status,
+        Err(err) => {
+            let _ = writeln!(std::io::stderr(), "tribez: {err}");
+            2
+        }
+    }
 }

@@ -15,6 +15,7 @@ pub mod graph;
 pub mod halve;
 pub mod join;
 pub mod matrix;
+pub mod output;
 pub mod reproduce;
 pub mod subdivide;
 pub mod subpatch;
@@ -27,10 +28,10 @@ use std::path::Path;
 use num_rational::BigRational;
 
 use crate::cli::{Cli, Command, OutputArgs};
+use crate::report::{Format, Render, render};
 use tribez::error::CoreError;
 use tribez::io::InputError;
 use tribez::number::parse_rational;
-use crate::report::{Format, Render, render};
 
 /// Why a command could not run: bad input or usage (exit status 2).
 #[derive(Debug, thiserror::Error)]
@@ -83,6 +84,9 @@ impl Outcome {
 }
 
 /// Run the command line; returns the exit status.
+///
+/// The output files a command staged (see [`output`]) are committed only when it ran to the end
+/// (exit status 0 or 1) and its report was written; a run that exits 2 leaves none.
 pub fn main(cli: Cli) -> i32 {
     let (result, out) = match &cli.command {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
@@ -101,52 +105,35 @@ pub fn main(cli: Cli) -> i32 {
         Command::Tangent(a) => (tangent::run(a), &a.out),
         Command::Join(a) => (join::run(a), &a.out),
     };
-    match result.and_then(|o| emit(&o, out).map(|()| o.success)) {
+    let finished = result.and_then(|o| {
+        emit(&o, out)?;
+        output::commit_all()?;
+        Ok(o.success)
+    });
+    match finished {
         Ok(true) => 0,
         Ok(false) => 1,
         Err(e) => {
-            eprintln!("tribez: {e}");
+            output::discard_all();
+            let _ = writeln!(std::io::stderr(), "tribez: {e}");
             2
         }
     }
 }
 
-/// Write the output to stdout, or to `--output FILE` through a temporary file and a rename, so
-/// that the file is written whole or not at all.
+/// Write the output to standard output, or stage it for `--output FILE` (written whole or not at
+/// all when the run ends, see [`output`]).
 pub fn emit(outcome: &Outcome, out: &OutputArgs) -> Result<(), CliError> {
     match &out.output {
-        None => {
-            let mut stdout = std::io::stdout().lock();
-            // A closed pipe (`| head`) is not an error worth a message.
-            let _ = stdout.write_all(outcome.output.as_bytes());
-            let _ = stdout.flush();
-            Ok(())
-        }
-        Some(path) => write_atomically(path, outcome.output.as_bytes()),
+        None => output::write_stdout(outcome.output.as_bytes()),
+        Some(path) => output::stage(path, outcome.output.as_bytes()),
     }
 }
 
-/// Write `bytes` to `path` whole or not at all (temporary file in the same directory, then rename).
+/// Stage `bytes` as the new content of `path` (see [`output::stage`]): the file is written whole
+/// when the run ends with exit status 0 or 1, and not at all otherwise.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
-    let file = path.display().to_string();
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .ok_or_else(|| InputError::file(&file, "not a file name"))?;
-    let tmp = dir.join(format!(
-        ".{}.tribez-tmp-{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    if let Err(e) = result {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(InputError::file(file, format!("cannot write: {e}")).into());
-    }
-    Ok(())
+    output::stage(path, bytes)
 }
 
 /// Parse a comma-separated list of exact numbers from the command line (`1/2,1/3,1/6`).
@@ -192,7 +179,13 @@ pub fn points_patch(
     file: &str,
     command: &str,
     any: tribez::patch::AnyPatch,
-) -> Result<(tribez::patch::Patch, Option<tribez::rational::RationalPatch>), CliError> {
+) -> Result<
+    (
+        tribez::patch::Patch,
+        Option<tribez::rational::RationalPatch>,
+    ),
+    CliError,
+> {
     use tribez::patch::AnyPatch;
     match any {
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),

@@ -1,0 +1,250 @@
+//! Every file and byte the command line writes goes through here.
+//!
+//! * Output files (`-o FILE`, `--junit FILE`, `--record-baseline FILE`, ...) are **staged** with
+//!   [`stage`]: the target is checked at once (it must be a regular file or not exist; a
+//!   symbolic link, a directory, a device node, a FIFO or a socket is refused), and the bytes are
+//!   written to a temporary file created exclusively (`O_EXCL`, an unpredictable name) in the
+//!   target's directory, with the permissions of the file it replaces (a new file gets the
+//!   usual `0666` less the umask).
+//! * [`crate::commands::main`] commits every staged file (one rename each) only after the command
+//!   succeeded with exit status 0 or 1 and its report reached standard output; a run that exits 2
+//!   drops them all, so it leaves no output file behind, whole or partial.
+//! * Standard output is written with [`write_stdout`]: a failed write (a full disk, `> /dev/full`)
+//!   is an error (exit status 2, one line); a closed pipe (`| head -1`) is not worth a message.
+//!
+//! A file staged twice in one run (`-o r.xml --junit r.xml`) is refused: one of the two would be
+//! lost.
+
+use std::io::{ErrorKind, Write};
+use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
+
+use tempfile::NamedTempFile;
+use tribez::io::InputError;
+
+use super::CliError;
+
+/// The files staged in this run, committed together by [`commit_all`].
+static STAGED: Mutex<Staging> = Mutex::new(Staging { files: Vec::new() });
+
+/// Stage `bytes` as the new content of `path`; the file appears (whole) only when the run ends
+/// with exit status 0 or 1. Errors (a target that is not a regular file, a directory that
+/// cannot be written, a full disk) are reported now, before anything is committed.
+pub fn stage(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    staging().stage(path, bytes)
+}
+
+/// Commit every staged file (called once, at the end of a successful run).
+pub(crate) fn commit_all() -> Result<(), CliError> {
+    let staged = std::mem::take(&mut staging().files);
+    Staging { files: staged }.commit()
+}
+
+/// Drop every staged file (their temporary files are removed): the run failed.
+pub(crate) fn discard_all() {
+    staging().files.clear();
+}
+
+fn staging() -> MutexGuard<'static, Staging> {
+    STAGED
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// Write `bytes` to standard output. A closed pipe is quiet (`Ok`); any other failure is an
+/// error naming standard output.
+pub fn write_stdout(bytes: &[u8]) -> Result<(), CliError> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(bytes).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(InputError::file("<standard output>", format!("cannot write: {e}")).into()),
+    }
+}
+
+/// A set of staged output files.
+#[derive(Default)]
+pub(crate) struct Staging {
+    files: Vec<Staged>,
+}
+
+/// One staged file: its target and the temporary file beside it holding the new content.
+struct Staged {
+    /// The target as given (for messages) and as an absolute path (to detect duplicates).
+    target: PathBuf,
+    key: PathBuf,
+    tmp: NamedTempFile,
+}
+
+impl Staging {
+    /// See [`stage`].
+    pub(crate) fn stage(&mut self, path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+        let file = path.display().to_string();
+        let fail = |message: String| CliError::from(InputError::file(&file, message));
+        let name = path
+            .file_name()
+            .ok_or_else(|| fail("not a file name".into()))?;
+        let dir = match path.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        let existing = match std::fs::symlink_metadata(path) {
+            Ok(md) => {
+                let kind = md.file_type();
+                if kind.is_symlink() {
+                    return Err(fail(
+                        "is a symbolic link; tribez writes only regular files (give the path it points to, or remove the link)".into(),
+                    ));
+                }
+                if kind.is_dir() {
+                    return Err(fail(
+                        "is a directory; tribez writes only regular files".into(),
+                    ));
+                }
+                if !kind.is_file() {
+                    return Err(fail(
+                        "is not a regular file (a device, FIFO or socket); tribez writes only regular files".into(),
+                    ));
+                }
+                Some(md.permissions())
+            }
+            Err(e) if e.kind() == ErrorKind::NotFound => None,
+            Err(e) => return Err(fail(format!("cannot write: {e}"))),
+        };
+        let key = std::fs::canonicalize(dir)
+            .map_err(|e| fail(format!("cannot write into {}: {e}", dir.display())))?
+            .join(name);
+        if self.files.iter().any(|s| s.key == key) {
+            return Err(fail(
+                "given as two outputs of one run; give each output its own file".into(),
+            ));
+        }
+        let prefix = format!(".{}.", name.to_string_lossy());
+        let mut builder = tempfile::Builder::new();
+        builder.prefix(&prefix).suffix(".tribez-tmp");
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            // a new file: 0666 less the umask, as any program creating a file gets
+            builder.permissions(std::fs::Permissions::from_mode(0o666));
+        }
+        let mut tmp = builder
+            .tempfile_in(dir)
+            .map_err(|e| fail(format!("cannot write: {e}")))?;
+        let written = (|| {
+            if let Some(permissions) = existing {
+                // keep the permissions of the file being replaced (exactly, not less the umask)
+                tmp.as_file().set_permissions(permissions)?;
+            }
+            tmp.write_all(bytes)?;
+            tmp.as_file().sync_all()
+        })();
+        written.map_err(|e| fail(format!("cannot write: {e}")))?;
+        self.files.push(Staged {
+            target: path.to_path_buf(),
+            key,
+            tmp,
+        });
+        Ok(())
+    }
+
+    /// Rename every staged file onto its target, in the order staged.
+    pub(crate) fn commit(self) -> Result<(), CliError> {
+        for s in self.files {
+            s.tmp.persist(&s.target).map_err(|e| {
+                InputError::file(s.target.display().to_string(), format!("cannot write: {e}"))
+            })?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn listing(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn nothing_appears_before_commit_and_nothing_stays_when_dropped() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("out.txt");
+        let mut s = Staging::default();
+        s.stage(&target, b"hello\n").unwrap();
+        assert!(!target.exists());
+        drop(s);
+        assert_eq!(listing(dir.path()), Vec::<String>::new());
+    }
+
+    #[test]
+    fn commit_writes_every_file_and_leaves_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+        let mut s = Staging::default();
+        s.stage(&a, b"1").unwrap();
+        s.stage(&b, b"2").unwrap();
+        s.commit().unwrap();
+        assert_eq!(std::fs::read(&a).unwrap(), b"1");
+        assert_eq!(std::fs::read(&b).unwrap(), b"2");
+        assert_eq!(listing(dir.path()), ["a", "b"]);
+    }
+
+    #[test]
+    fn the_same_target_twice_is_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = Staging::default();
+        s.stage(&dir.path().join("r.xml"), b"1").unwrap();
+        let twice = dir.path().join(".").join("r.xml");
+        let e = s.stage(&twice, b"2").unwrap_err().to_string();
+        assert!(e.contains("two outputs"), "{e}");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn permissions_of_a_replaced_file_are_kept() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("secret");
+        std::fs::write(&target, "old").unwrap();
+        std::fs::set_permissions(&target, std::fs::Permissions::from_mode(0o600)).unwrap();
+        let mut s = Staging::default();
+        s.stage(&target, b"new").unwrap();
+        s.commit().unwrap();
+        let md = std::fs::metadata(&target).unwrap();
+        assert_eq!(md.permissions().mode() & 0o7777, 0o600);
+        assert_eq!(std::fs::read(&target).unwrap(), b"new");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn links_directories_and_devices_are_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let aim = dir.path().join("aim");
+        std::fs::write(&aim, "keep").unwrap();
+        let link = dir.path().join("link");
+        std::os::unix::fs::symlink(&aim, &link).unwrap();
+        let mut s = Staging::default();
+        for (path, word) in [
+            (link.as_path(), "symbolic link"),
+            (dir.path(), "directory"),
+            (Path::new("/dev/null"), "not a regular file"),
+        ] {
+            let e = s.stage(path, b"x").unwrap_err().to_string();
+            assert!(e.contains(word), "{}: {e}", path.display());
+        }
+        assert_eq!(std::fs::read(&aim).unwrap(), b"keep");
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+    }
+}
