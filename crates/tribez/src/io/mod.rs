@@ -6,6 +6,7 @@ pub mod patch_file;
 pub mod points;
 pub mod text;
 pub mod tree;
+pub mod walk;
 
 use std::fmt;
 

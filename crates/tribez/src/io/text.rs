@@ -31,36 +31,31 @@ pub fn check_regular(path: &Path, file: &str) -> Result<std::fs::Metadata, Input
     if meta.is_file() {
         Ok(meta)
     } else {
-        Err(InputError::file(
-            file,
-            format!(
-                "cannot read: {} (only a regular file can be read)",
-                file_kind(&meta)
-            ),
-        ))
+        Err(InputError::file(file, not_regular(&meta)))
     }
 }
 
-/// A word for what a non-regular path is: "a directory", "a FIFO", "a device", …
-pub fn file_kind(meta: &std::fs::Metadata) -> &'static str {
+/// What a path that is not a regular file is, for messages: "a directory, not a regular file",
+/// "a FIFO (named pipe), not a regular file", "a device, not a regular file", …
+pub fn not_regular(meta: &std::fs::Metadata) -> String {
     let ft = meta.file_type();
-    if ft.is_dir() {
-        return "it is a directory";
-    }
+    let mut kind = if ft.is_dir() { "a directory" } else { "" };
     #[cfg(unix)]
     {
         use std::os::unix::fs::FileTypeExt;
         if ft.is_fifo() {
-            return "it is a FIFO (named pipe)";
-        }
-        if ft.is_char_device() || ft.is_block_device() {
-            return "it is a device";
-        }
-        if ft.is_socket() {
-            return "it is a socket";
+            kind = "a FIFO (named pipe)";
+        } else if ft.is_char_device() || ft.is_block_device() {
+            kind = "a device";
+        } else if ft.is_socket() {
+            kind = "a socket";
         }
     }
-    "it is not a regular file"
+    if kind.is_empty() {
+        "not a regular file".into()
+    } else {
+        format!("{kind}, not a regular file")
+    }
 }
 
 /// An I/O error without the "(os error N)" suffix.
