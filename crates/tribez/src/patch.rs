@@ -169,7 +169,7 @@ impl Patch {
     }
 }
 
-/// Any kind of patch a patch file can describe (README, "Patch files": `[weights]`, `polygon`,
+/// Any kind of patch a patch file can describe (docs/guide.md §3: `[weights]`, `polygon`,
 /// `kind = "functional"`). Plain Bézier simplices stay [`Patch`], so code that takes a `Patch`
 /// keeps working; the other kinds wrap one or carry their own net.
 #[derive(Clone, Debug, PartialEq)]

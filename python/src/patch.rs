@@ -1,0 +1,486 @@
+//! `NativePatch`: a patch of any kind (the library's), built from files, text or `bezier`-style
+//! nodes, evaluated exactly and on tribez's own float path.
+
+use std::path::PathBuf;
+
+use num_rational::BigRational;
+use pyo3::prelude::*;
+use pyo3::types::PyBytes;
+use rayon::prelude::*;
+
+use tribez::domain::check_barycentric;
+use tribez::error::CoreError;
+use tribez::exact::ExactEvaluator;
+use tribez::float::{Float, casteljau, net_to};
+use tribez::io::patch_file::{
+    MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION, any_patch_from_document,
+    any_patch_to_json, any_patch_to_toml, read_any_patch,
+};
+use tribez::io::tree::Document;
+use tribez::number::{format_rational, parse_rational};
+use tribez::patch::{AnyPatch, ControlNet, Patch};
+use tribez::rational::RationalPatch;
+use tribez::simplex::{Simplex, binomial};
+
+use crate::{guard, input_error};
+
+/// Parse a number in tribez's syntax; its exact value in lowest terms (`p/q` or `p`).
+#[pyfunction]
+pub fn parse_number(py: Python<'_>, text: &str) -> PyResult<String> {
+    guard(py, || {
+        parse_rational(text)
+            .map(|q| format_rational(&q))
+            .map_err(|e| input_error(py, e))
+    })
+}
+
+/// A patch of any kind.
+#[pyclass(module = "tribez._native", frozen)]
+pub struct NativePatch {
+    pub(crate) patch: AnyPatch,
+}
+
+impl NativePatch {
+    /// The control net (the homogeneous one's point part for rational patches).
+    pub(crate) fn net(&self) -> &ControlNet<BigRational> {
+        match &self.patch {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => &p.net,
+            AnyPatch::Rational(r) => &r.patch.net,
+            AnyPatch::SPatch(s) => &s.net,
+        }
+    }
+}
+
+fn parse_all(
+    py: Python<'_>,
+    rows: &[Vec<String>],
+    what: &str,
+) -> PyResult<Vec<Vec<BigRational>>> {
+    rows.iter()
+        .enumerate()
+        .map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(j, t)| {
+                    parse_rational(t).map_err(|e| input_error(py, format!("{what}[{i}][{j}]: {e}")))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The degree `n` with `C(n + m, m) = count`, if any.
+fn degree_of(count: usize, m: usize) -> Option<usize> {
+    (0..=MAX_DEGREE).find(|&n| binomial((n + m) as u64, m as u64) == count as u128)
+}
+
+#[pymethods]
+impl NativePatch {
+    /// Read a patch file (.toml or .json, by extension).
+    #[staticmethod]
+    fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+        guard(py, || {
+            let patch = py
+                .detach(|| read_any_patch(&path))
+                .map_err(|e| input_error(py, e))?;
+            Ok(NativePatch { patch })
+        })
+    }
+
+    /// Parse a patch from TOML text (`file` names it in error messages).
+    #[staticmethod]
+    fn from_toml(py: Python<'_>, text: &str, file: &str) -> PyResult<Self> {
+        guard(py, || {
+            let doc = Document::parse_toml(file, text).map_err(|e| input_error(py, e))?;
+            let patch =
+                any_patch_from_document(&doc, &doc.root, "").map_err(|e| input_error(py, e))?;
+            Ok(NativePatch { patch })
+        })
+    }
+
+    /// Parse a patch from JSON text (`file` names it in error messages).
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: &str, file: &str) -> PyResult<Self> {
+        guard(py, || {
+            let doc = Document::parse_json(file, text).map_err(|e| input_error(py, e))?;
+            let patch =
+                any_patch_from_document(&doc, &doc.root, "").map_err(|e| input_error(py, e))?;
+            Ok(NativePatch { patch })
+        })
+    }
+
+    /// A Bézier simplex over the `simplex`-simplex from its control points in canonical order
+    /// (`points[r]` = the coordinates of control point `r`, as number texts); rational with
+    /// `weights` (one per control point).
+    #[staticmethod]
+    #[pyo3(signature = (simplex, degree, points, weights=None))]
+    fn from_nodes(
+        py: Python<'_>,
+        simplex: usize,
+        degree: Option<usize>,
+        points: Vec<Vec<String>>,
+        weights: Option<Vec<String>>,
+    ) -> PyResult<Self> {
+        guard(py, || {
+            let err = |m: String| input_error(py, m);
+            if simplex == 0 || simplex > MAX_SIMPLEX_DIMENSION {
+                return Err(err(format!(
+                    "simplex: {simplex} is not a simplex dimension from 1 to {MAX_SIMPLEX_DIMENSION} (1 for curves, 2 for triangles, 3 for tetrahedra)"
+                )));
+            }
+            let count = points.len();
+            if count == 0 {
+                return Err(err("nodes: no control points (nodes has 0 columns)".into()));
+            }
+            if count > MAX_CONTROL_POINTS {
+                return Err(err(format!(
+                    "nodes: {count} control points, above the limit of {MAX_CONTROL_POINTS}"
+                )));
+            }
+            let n = match degree {
+                Some(n) if n > MAX_DEGREE => {
+                    return Err(err(format!(
+                        "degree: {n} is above the limit of {MAX_DEGREE}"
+                    )));
+                }
+                Some(n) => {
+                    let expected = binomial((n + simplex) as u64, simplex as u64);
+                    if expected != count as u128 {
+                        return Err(err(format!(
+                            "nodes: {count} control points (columns), but degree {n} on the {simplex}-simplex has {expected}"
+                        )));
+                    }
+                    n
+                }
+                None => degree_of(count, simplex).ok_or_else(|| {
+                    let firsts: Vec<String> = (1..=5)
+                        .map(|n| binomial((n + simplex) as u64, simplex as u64).to_string())
+                        .collect();
+                    err(format!(
+                        "nodes: {count} control points (columns) is the number of no degree on the {simplex}-simplex (degrees 1, 2, 3, ... have {}, ...)",
+                        firsts.join(", ")
+                    ))
+                })?,
+            };
+            let dim = points[0].len();
+            if dim == 0 {
+                return Err(err(
+                    "nodes: a control point needs at least one coordinate (nodes has 0 rows)"
+                        .into(),
+                ));
+            }
+            if let Some((r, p)) = points.iter().enumerate().find(|(_, p)| p.len() != dim) {
+                return Err(err(format!(
+                    "nodes: control point {r} has {} coordinates, but control point 0 has {dim}",
+                    p.len()
+                )));
+            }
+            let coords: Vec<BigRational> = points
+                .iter()
+                .enumerate()
+                .flat_map(|(r, p)| p.iter().enumerate().map(move |(i, t)| (r, i, t)))
+                .map(|(r, i, t)| {
+                    parse_rational(t).map_err(|e| err(format!("nodes[{i}, {r}]: {e}")))
+                })
+                .collect::<PyResult<_>>()?;
+            let net = ControlNet::new(Simplex::new(simplex, n), dim, coords);
+            let patch = Patch::new(net);
+            let patch = match weights {
+                None => AnyPatch::Bezier(patch),
+                Some(w) => {
+                    if w.len() != count {
+                        return Err(err(format!(
+                            "weights: {} weights for {count} control points (one each)",
+                            w.len()
+                        )));
+                    }
+                    let w: Vec<BigRational> = w
+                        .iter()
+                        .enumerate()
+                        .map(|(r, t)| {
+                            parse_rational(t).map_err(|e| err(format!("weights[{r}]: {e}")))
+                        })
+                        .collect::<PyResult<_>>()?;
+                    if w.iter().all(num_traits::Zero::is_zero) {
+                        return Err(err(
+                            "weights: every weight is zero: the rational patch is undefined everywhere".into(),
+                        ));
+                    }
+                    AnyPatch::Rational(RationalPatch::new(patch, w))
+                }
+            };
+            Ok(NativePatch { patch })
+        })
+    }
+
+    /// The degree `n`.
+    #[getter]
+    fn degree(&self) -> usize {
+        self.net().degree()
+    }
+
+    /// The dimension `d` of the control points (the number of coordinates of a value).
+    #[getter]
+    fn dimension(&self) -> usize {
+        self.net().dim()
+    }
+
+    /// The simplex dimension `m` (1 curves, 2 triangles, 3 tetrahedra, ...); for an S-patch
+    /// over an N-gon, N - 1.
+    #[getter]
+    fn simplex(&self) -> usize {
+        self.net().m()
+    }
+
+    /// `"bezier"`, `"rational"`, `"functional"` or `"s-patch"` (the patch file's `kind`).
+    #[getter]
+    fn kind(&self) -> &'static str {
+        match &self.patch {
+            AnyPatch::Bezier(_) => "bezier",
+            AnyPatch::Rational(_) => "rational",
+            AnyPatch::Functional(_) => "functional",
+            AnyPatch::SPatch(_) => "s-patch",
+        }
+    }
+
+    /// The name from the file, if any.
+    #[getter]
+    fn name(&self) -> Option<String> {
+        match &self.patch {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p.name.clone(),
+            AnyPatch::Rational(r) => r.patch.name.clone(),
+            AnyPatch::SPatch(s) => s.name.clone(),
+        }
+    }
+
+    /// Number of barycentric coordinates of a point (m + 1), or 2 (Cartesian) for an S-patch.
+    #[getter]
+    fn point_width(&self) -> usize {
+        match &self.patch {
+            AnyPatch::SPatch(_) => 2,
+            _ => self.net().m() + 1,
+        }
+    }
+
+    /// The control points in canonical order, as exact texts.
+    fn control_points(&self) -> Vec<Vec<String>> {
+        self.net()
+            .points()
+            .map(|p| p.iter().map(format_rational).collect())
+            .collect()
+    }
+
+    /// The weights of a rational patch, as exact texts.
+    fn weights(&self) -> Option<Vec<String>> {
+        match &self.patch {
+            AnyPatch::Rational(r) => Some(r.weights.iter().map(format_rational).collect()),
+            _ => None,
+        }
+    }
+
+    /// The patch file (TOML).
+    fn to_toml(&self) -> String {
+        any_patch_to_toml(&self.patch)
+    }
+
+    /// The patch file (JSON).
+    fn to_json(&self) -> String {
+        any_patch_to_json(&self.patch).to_string()
+    }
+
+    fn __eq__(&self, other: &Self) -> bool {
+        self.patch == other.patch
+    }
+
+    /// Exact values at points (number texts), each a list of exact texts.
+    fn evaluate(
+        &self,
+        py: Python<'_>,
+        points: Vec<Vec<String>>,
+        cartesian: bool,
+    ) -> PyResult<Vec<Vec<String>>> {
+        guard(py, || {
+            let pts = parse_all(py, &points, "points")?;
+            let patch = &self.patch;
+            let results: Vec<Result<Vec<BigRational>, String>> = py.detach(|| {
+                let evaluator = match patch {
+                    AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+                        Some(ExactEvaluator::new(&p.net))
+                    }
+                    _ => None,
+                };
+                pts.par_iter()
+                    .enumerate()
+                    .map(|(i, x)| {
+                        evaluate_one(patch, evaluator.as_ref(), x, cartesian)
+                            .map_err(|e| format!("points[{i}]: {e}"))
+                    })
+                    .collect()
+            });
+            results
+                .into_iter()
+                .map(|r| {
+                    r.map(|v| v.iter().map(format_rational).collect())
+                        .map_err(|e| input_error(py, e))
+                })
+                .collect()
+        })
+    }
+
+    /// tribez's own float path at float points (`points`: the bytes of row-major f64, `width`
+    /// numbers a row): de Casteljau in `precision` ("f64" or "f32") on the control net rounded
+    /// to it, the points rounded to it; rational patches by homogeneous de Casteljau and one
+    /// division, S-patches (Cartesian points) by float Wachspress coordinates then de Casteljau.
+    /// Returns the bytes of row-major values in that precision.
+    fn evaluate_float<'py>(
+        &self,
+        py: Python<'py>,
+        points: &[u8],
+        width: usize,
+        precision: &str,
+    ) -> PyResult<Bound<'py, PyBytes>> {
+        guard(py, || {
+            let expected = self.point_width();
+            if width != expected {
+                return Err(input_error(
+                    py,
+                    format!(
+                        "points: rows of {width} coordinates, but this {} needs {expected}",
+                        self.described()
+                    ),
+                ));
+            }
+            let xs = f64s(points);
+            let patch = &self.patch;
+            let out: Vec<u8> = match precision {
+                "f64" => py.detach(|| float_rows::<f64>(patch, &xs, width, |x| x)),
+                "f32" => py.detach(|| float_rows::<f32>(patch, &xs, width, |x| x as f32)),
+                other => {
+                    return Err(input_error(
+                        py,
+                        format!("precision: unknown precision `{other}` (expected f64 or f32)"),
+                    ));
+                }
+            };
+            Ok(PyBytes::new(py, &out))
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<tribez.Patch {} degree={} simplex={} dimension={}{}>",
+            self.kind(),
+            self.degree(),
+            self.simplex(),
+            self.dimension(),
+            self.name().map(|n| format!(" name={n:?}")).unwrap_or_default()
+        )
+    }
+}
+
+impl NativePatch {
+    fn described(&self) -> &'static str {
+        self.patch.described().trim_start_matches("a ").trim_start_matches("an ")
+    }
+}
+
+/// Native-endian f64s from bytes (the Python layer passes `ndarray.tobytes()` of float64).
+pub(crate) fn f64s(bytes: &[u8]) -> Vec<f64> {
+    bytes
+        .chunks_exact(8)
+        .map(|c| f64::from_ne_bytes(c.try_into().expect("8 bytes")))
+        .collect()
+}
+
+fn evaluate_one(
+    patch: &AnyPatch,
+    evaluator: Option<&ExactEvaluator>,
+    x: &[BigRational],
+    cartesian: bool,
+) -> Result<Vec<BigRational>, CoreError> {
+    match patch {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+            let lambda = if cartesian {
+                p.domain_or_reference().barycentric(x)?
+            } else {
+                check_barycentric(x, p.net.m(), "the point")?;
+                x.to_vec()
+            };
+            Ok(evaluator
+                .expect("an evaluator for polynomial patches")
+                .evaluate_fast(&lambda))
+        }
+        AnyPatch::Rational(r) => {
+            let lambda = if cartesian {
+                r.patch.domain_or_reference().barycentric(x)?
+            } else {
+                check_barycentric(x, r.patch.net.m(), "the point")?;
+                x.to_vec()
+            };
+            r.evaluate(&lambda)
+        }
+        AnyPatch::SPatch(s) => {
+            if !cartesian {
+                return Err(CoreError::Invalid(
+                    "an S-patch is evaluated at Cartesian points (cartesian=True)".into(),
+                ));
+            }
+            s.evaluate(x).map(|(_, v)| v)
+        }
+    }
+}
+
+fn float_rows<F: Float + std::ops::Div<Output = F> + ToBytes>(
+    patch: &AnyPatch,
+    xs: &[f64],
+    width: usize,
+    round: impl Fn(f64) -> F + Sync,
+) -> Vec<u8> {
+    let rows: Vec<&[f64]> = xs.chunks_exact(width).collect();
+    let values: Vec<Vec<F>> = match patch {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+            let net = net_to::<F>(&p.net);
+            rows.par_iter()
+                .map(|r| {
+                    let lambda: Vec<F> = r.iter().map(|&x| round(x)).collect();
+                    casteljau(&net, &lambda)
+                })
+                .collect()
+        }
+        AnyPatch::Rational(rp) => rows
+            .par_iter()
+            .map(|r| {
+                let lambda: Vec<F> = r.iter().map(|&x| round(x)).collect();
+                rp.evaluate_float::<F>(&lambda)
+            })
+            .collect(),
+        AnyPatch::SPatch(s) => rows
+            .par_iter()
+            .map(|r| s.evaluate_float::<F>(&[round(r[0]), round(r[1])]))
+            .collect(),
+    };
+    let mut out = Vec::with_capacity(values.len() * values.first().map_or(0, Vec::len) * 8);
+    for v in values {
+        for x in v {
+            x.extend_bytes(&mut out);
+        }
+    }
+    out
+}
+
+/// Native-endian bytes of a float, for numpy's `frombuffer`.
+pub(crate) trait ToBytes {
+    fn extend_bytes(self, out: &mut Vec<u8>);
+}
+
+impl ToBytes for f64 {
+    fn extend_bytes(self, out: &mut Vec<u8>) {
+        out.extend_from_slice(&self.to_ne_bytes());
+    }
+}
+
+impl ToBytes for f32 {
+    fn extend_bytes(self, out: &mut Vec<u8>) {
+        out.extend_from_slice(&self.to_ne_bytes());
+    }
+}

@@ -1,0 +1,130 @@
+"""Every kind of bad input raises tribez.InputError (a ValueError) with a one-line message;
+a Rust panic becomes tribez.InternalError, never a PanicException."""
+
+import os
+import pathlib
+import subprocess
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+
+import tribez
+
+FINN_TOML = """degree = 2
+[control_points]
+"2,0,0" = ["0", "0", "0"]
+"1,1,0" = ["1", "0", "2"]
+"0,2,0" = ["0", "2", "0"]
+"1,0,1" = ["0", "1", "0"]
+"0,1,1" = ["1", "1", "1"]
+"0,0,2" = ["0", "2", "1"]
+"""
+
+
+def raises(fragment, f, *args, **kwargs):
+    with pytest.raises(tribez.InputError) as info:
+        f(*args, **kwargs)
+    msg = str(info.value)
+    assert fragment in msg, msg
+    assert "\n" not in msg
+    assert isinstance(info.value, ValueError)
+    return msg
+
+
+def test_input_error_is_a_value_error():
+    assert issubclass(tribez.InputError, ValueError)
+    assert issubclass(tribez.InputError, tribez.TribezError)
+
+
+def test_bad_files(tmp_path):
+    raises("cannot read", tribez.Patch.from_file, tmp_path / "missing.toml")
+    (tmp_path / "p.txt").write_text(FINN_TOML)
+    raises("unknown file type", tribez.Patch.from_file, tmp_path / "p.txt")
+    (tmp_path / "bad.toml").write_text(FINN_TOML.replace('"1", "1", "1"', '"1", "x", "1"'))
+    msg = raises('control_points."0,1,1"[1]', tribez.Patch.from_file, tmp_path / "bad.toml")
+    assert msg.startswith(str(tmp_path / "bad.toml") + ":7:"), msg
+    (tmp_path / "empty.json").write_text("")
+    raises("the file is empty", tribez.Patch.from_file, tmp_path / "empty.json")
+
+
+def test_bad_text():
+    raises("invalid TOML", tribez.Patch.from_toml, "degree = = 2")
+    raises("missing key `degree`", tribez.Patch.from_toml, "[control_points]\n")
+    raises("<toml>:", tribez.Patch.from_toml, FINN_TOML.replace("degree = 2", "degree = 3"))
+    raises("above the limit of 200", tribez.Patch.from_toml, FINN_TOML.replace("degree = 2", "degree = 201"))
+    raises("zero denominator", tribez.Patch.from_toml, FINN_TOML.replace('"2", "1"]', '"2", "1/0"]'))
+    raises("<json>", tribez.Patch.from_json, "{")
+    raises("expected a str", tribez.Patch.from_toml, b"degree = 2")
+
+
+def test_bad_nodes():
+    good = [[0, 1, 0, 0, 1, 0], [0, 0, 2, 1, 1, 2]]
+    raises("1-dimensional", tribez.Patch.from_nodes, np.zeros(6))
+    raises("rows of different lengths", tribez.Patch.from_nodes, [[0, 1, 2], [0, 1]])
+    raises("nodes[1][2]: None is not a number", tribez.Patch.from_nodes, [[0, 1, 2], [0, 1, None]])
+    raises("is a bool", tribez.Patch.from_nodes, [[True, 0, 0]])
+    raises("NaN has no exact value", tribez.Patch.from_nodes, [[0, float("nan"), 0]])
+    raises("infinity has no exact value", tribez.Patch.from_nodes, [[0, np.inf, 0]])
+    raises("nodes[0, 1]: `abc`: not a number", tribez.Patch.from_nodes, [["0", "abc", "0"]])
+    raises("zero denominator", tribez.Patch.from_nodes, [["0", "1/0", "0"]])
+    raises("is the number of no degree", tribez.Patch.from_nodes, [[0, 1, 2, 3, 4]])
+    raises("degree 3 on the 2-simplex has 10", tribez.Patch.from_nodes, good, degree=3)
+    raises("above the limit of 200", tribez.Patch.from_nodes, good, degree=201)
+    raises("degree: expected a non-negative int", tribez.Patch.from_nodes, good, degree=2.0)
+    raises("degree: -1 is negative", tribez.Patch.from_nodes, good, degree=-1)
+    raises("simplex: 0 is not a simplex dimension", tribez.Patch.from_nodes, good, simplex=0)
+    raises("simplex: 17 is not a simplex dimension", tribez.Patch.from_nodes, good, simplex=17)
+    raises("no control points", tribez.Patch.from_nodes, [[]])
+    raises("no rows", tribez.Patch.from_nodes, [])
+    raises("expected a 2-D numpy array or a list of lists", tribez.Patch.from_nodes, "0 1 2")
+    raises("3 weights for 6 control points", tribez.Patch.from_nodes, good, weights=[1, 1, 1])
+    raises("every weight is zero", tribez.Patch.from_nodes, good, weights=[0] * 6)
+    raises("weights[2]: `w`: not a number", tribez.Patch.from_nodes, good, weights=[1, 1, "w", 1, 1, 1])
+    # a size the input controls is capped before anything is allocated from it
+    raises("above the limit of 250000", tribez.Patch.from_nodes, np.zeros((1, 250_001)))
+
+
+def test_bad_points(finn, root):
+    raises("sum to 3, not 1", finn.evaluate, [[1, 1, 1]])
+    raises("has 2 coordinates, expected 3", finn.evaluate, [[1, 0]])
+    raises("points[0][1]: `x`: not a number", finn.evaluate, [["1", "x", "0"]])
+    raises("points[1]: a row of 2 numbers", finn.evaluate, [[1, 0, 0], [1, 0]])
+    # 1/3 as a float is not exactly a third: the sum is not 1
+    raises("not 1", finn.evaluate, [[1 / 3, 1 / 3, 1 / 3]])
+    s = tribez.Patch.from_file(root / "fixtures" / "beyond" / "pentagon_depth2.toml")
+    raises("Cartesian points", s.evaluate, [[0, 0, 0, 0, 1]])
+    raises("rows of 2 numbers, expected 3", finn.evaluate_float, np.zeros((4, 2)))
+    raises("unknown precision", finn.evaluate_float, np.zeros((4, 3)), precision="f16")
+    raises("expected floats", finn.evaluate_float, np.array([["1", "0", "0"]]))
+    if np.dtype(np.longdouble).itemsize > 8:
+        raises("not f64 or f32", finn.evaluate_float, np.zeros((1, 3), dtype=np.longdouble))
+
+
+def test_parse_number_errors():
+    raises("not a number", tribez.parse_number, "1..2")
+    raises("exponent magnitude above 100000", tribez.parse_number, "1e100001")
+    raises("is not a number", tribez.parse_number, object())
+
+
+def test_panics_become_exceptions():
+    with pytest.raises(tribez.InternalError, match="boom"):
+        tribez._native._panic_for_test("boom")
+    # in a worker thread of the parallel engine, with the GIL released
+    with pytest.raises(tribez.InternalError, match="worker 37"):
+        tribez._native._panic_in_worker_for_test()
+    assert issubclass(tribez.InternalError, Exception)
+
+
+CLI = os.environ.get("TRIBEZ_CLI")
+
+
+@pytest.mark.skipif(not CLI, reason="TRIBEZ_CLI (the tribez binary) not set; .ci/run sets it")
+def test_same_message_as_the_command_line(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(FINN_TOML.replace('"1", "1", "1"', '"1", "x", "1"'))
+    with pytest.raises(tribez.InputError) as info:
+        tribez.Patch.from_file(bad)
+    out = subprocess.run([CLI, "eval", str(bad), "--at", "1/2,1/3,1/6"], capture_output=True, text=True)
+    assert out.returncode == 2
+    assert out.stderr.strip() == f"tribez: {info.value}"

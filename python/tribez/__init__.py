@@ -1,0 +1,255 @@
+"""tribez: exact Bézier triangles and simplices, to certify floating-point code.
+
+tribez computes with Bézier triangles (and Bézier simplices of any dimension, rational patches,
+functional patches and S-patches) exactly, in rational arithmetic, and judges floating-point
+results against those exact values.
+
+>>> import tribez
+>>> from fractions import Fraction as F
+>>> p = tribez.Patch.from_nodes([[0, 1, 0, 0, 1, 0], [0, 0, 2, 1, 1, 2], [0, 2, 0, 0, 1, 1]])
+>>> p.evaluate([[F(1, 2), F(1, 3), F(1, 6)]])
+[(Fraction(4, 9), Fraction(5, 9), Fraction(29, 36))]
+
+The main entry points: :class:`Patch` (from files, text or ``bezier``-style node arrays; exact
+and float evaluation), :func:`check` (judge many float results at once, from numpy arrays),
+:func:`check_claims` (claim files), :func:`certify` (tribez's own float paths) and
+:func:`tribez.testing.assert_certified` (for pytest). Bad input raises :class:`InputError`,
+a ``ValueError`` whose message is the one line the command line prints.
+"""
+
+from __future__ import annotations
+
+import os
+from fractions import Fraction
+from typing import Optional, Sequence
+
+import numpy as np
+
+from . import _native
+from ._convert import float_rows, matrix_texts, number_text
+from ._errors import CertificationError, InputError, InternalError, TribezError
+
+__all__ = [
+    "Patch",
+    "TribezError",
+    "InputError",
+    "CertificationError",
+    "InternalError",
+    "parse_number",
+]
+
+__version__ = "0.1.0"
+
+MAX_DEGREE: int = _native.MAX_DEGREE
+MAX_CONTROL_POINTS: int = _native.MAX_CONTROL_POINTS
+MAX_SIMPLEX_DIMENSION: int = _native.MAX_SIMPLEX_DIMENSION
+
+
+def parse_number(x) -> Fraction:
+    """The exact value of a number: an int, a float (the exact value of the double), a
+    ``Fraction``, or a string in tribez's number syntax (``"7"``, ``"4/9"``, ``"-1.5e-3"`` =
+    -3/2000, ``"0x1.8p-3"``, ``"f64:0.1"`` = the double nearest 0.1, ``"f32:0.1"``).
+
+    >>> parse_number("0.1"), parse_number(0.1) == Fraction(0.1)
+    (Fraction(1, 10), True)
+    """
+    return Fraction(_native.parse_number(number_text(x, "number")))
+
+
+class Patch:
+    """A Bézier patch of any kind, with exact rational control points.
+
+    Build one with :meth:`from_file`, :meth:`from_toml`, :meth:`from_json` or
+    :meth:`from_nodes`. Attributes: ``degree`` (n), ``dimension`` (d, coordinates of a value),
+    ``simplex`` (m: 1 curves, 2 triangles, 3 tetrahedra, ...), ``kind`` (``"bezier"``,
+    ``"rational"``, ``"functional"`` or ``"s-patch"``), ``name``, ``nodes`` (exact, in
+    ``bezier``'s layout) and ``weights`` (rational patches).
+
+    A value is ``p(λ) = Σ_{|α|=n} c_α B^n_α(λ)``, ``B^n_α(λ) = n!/(α_0!⋯α_m!) λ_0^{α_0}⋯λ_m^{α_m}``,
+    at barycentric coordinates ``λ = (λ_0, …, λ_m)`` (``(u, v, w)`` on a triangle); corner ``k``
+    interpolates ``c_{n e_k}``.
+    """
+
+    __slots__ = ("_native",)
+
+    def __init__(self, native):
+        if not isinstance(native, _native.NativePatch):
+            raise TypeError(
+                "use Patch.from_file, Patch.from_toml, Patch.from_json or Patch.from_nodes"
+            )
+        self._native = native
+
+    # -- construction -------------------------------------------------------------------
+
+    @classmethod
+    def from_file(cls, path) -> "Patch":
+        """Read a patch file (``.toml`` or ``.json``, by extension; the layout of README.md,
+        "Patch files"). Errors name the file, line and key."""
+        return cls(_native.NativePatch.from_file(os.fspath(path)))
+
+    @classmethod
+    def from_toml(cls, text: str, name: str = "<toml>") -> "Patch":
+        """Parse a patch from TOML text; ``name`` stands for the file in error messages."""
+        _check_str(text, "text")
+        return cls(_native.NativePatch.from_toml(text, name))
+
+    @classmethod
+    def from_json(cls, text: str, name: str = "<json>") -> "Patch":
+        """Parse a patch from JSON text; ``name`` stands for the file in error messages."""
+        _check_str(text, "text")
+        return cls(_native.NativePatch.from_json(text, name))
+
+    @classmethod
+    def from_nodes(cls, nodes, degree: Optional[int] = None, weights=None, simplex: int = 2) -> "Patch":
+        """A Bézier simplex from control points in the layout of the Python package ``bezier``.
+
+        ``nodes``: a numpy array or nested lists of shape ``(dimension, number of control
+        points)``: column ``j`` is control point ``j`` in the canonical order (the same as
+        ``bezier``'s: sorted by the last index, then the one before, …; for a quadratic
+        triangle ``200 110 020 101 011 002``). ``degree`` is inferred from the number of
+        columns when omitted (``C(n + m, m)`` of them on the m-simplex). ``weights`` (one per
+        control point) makes a rational patch. ``simplex``: m (1 curves, 2 triangles, 3
+        tetrahedra, ...).
+
+        Numbers may be ints, floats (taken as the exact value of the double: ``0.1`` is
+        3602879701896397/36028797018963968), ``fractions.Fraction``, or strings in tribez's number
+        syntax (``"1/10"``, ``"0.1"`` = 1/10 exactly, ``"0x1.8p-3"``).
+        """
+        if isinstance(nodes, np.ndarray) and nodes.ndim == 1:
+            raise InputError(
+                "nodes: a 1-dimensional array; expected shape (dimension, number of control points)"
+            )
+        rows = matrix_texts(nodes, "nodes")
+        if not rows:
+            raise InputError("nodes: no rows (expected shape (dimension, number of control points))")
+        points = [list(col) for col in zip(*rows)]
+        if not points:
+            raise InputError("nodes: no control points (nodes has 0 columns)")
+        w = None
+        if weights is not None:
+            if isinstance(weights, np.ndarray):
+                weights = weights.reshape(-1).tolist() if weights.dtype.kind in "fiu" else list(weights.reshape(-1))
+            elif not isinstance(weights, (list, tuple)):
+                raise InputError(f"weights: expected a sequence of numbers, got {type(weights).__name__}")
+            w = [number_text(x, f"weights[{i}]") for i, x in enumerate(weights)]
+        if degree is not None:
+            degree = _count(degree, "degree")
+        simplex = _count(simplex, "simplex")
+        return cls(_native.NativePatch.from_nodes(simplex, degree, points, w))
+
+    # -- attributes ---------------------------------------------------------------------
+
+    @property
+    def degree(self) -> int:
+        """The degree n."""
+        return self._native.degree
+
+    @property
+    def dimension(self) -> int:
+        """The number of coordinates d of a control point (and of a value)."""
+        return self._native.dimension
+
+    @property
+    def simplex(self) -> int:
+        """The simplex dimension m (2 for triangles); N - 1 for an S-patch over an N-gon."""
+        return self._native.simplex
+
+    @property
+    def kind(self) -> str:
+        """``"bezier"``, ``"rational"``, ``"functional"`` or ``"s-patch"``."""
+        return self._native.kind
+
+    @property
+    def name(self) -> Optional[str]:
+        """The ``name`` of the patch file, if any."""
+        return self._native.name
+
+    @property
+    def nodes(self) -> list:
+        """The control points, exact, in ``bezier``'s layout: ``dimension`` lists of Fractions,
+        one entry per control point in canonical order."""
+        pts = self._native.control_points()
+        return [[Fraction(p[i]) for p in pts] for i in range(self.dimension)]
+
+    @property
+    def weights(self) -> Optional[list]:
+        """The weights of a rational patch (Fractions, canonical order), else None."""
+        w = self._native.weights()
+        return None if w is None else [Fraction(x) for x in w]
+
+    def to_toml(self) -> str:
+        """The patch as a TOML patch file (exact numbers as strings)."""
+        return self._native.to_toml()
+
+    def to_json(self) -> str:
+        """The patch as a JSON patch file (exact numbers as strings)."""
+        return self._native.to_json()
+
+    def __eq__(self, other):
+        if not isinstance(other, Patch):
+            return NotImplemented
+        return self._native == other._native
+
+    __hash__ = None
+
+    def __repr__(self) -> str:
+        return repr(self._native)
+
+    def __reduce__(self):
+        # pickled as its JSON patch file (exact), e.g. to send it to Dask workers
+        return (_patch_from_json, (self.to_json(),))
+
+    # -- evaluation ---------------------------------------------------------------------
+
+    def evaluate(self, points, cartesian: bool = False) -> list:
+        """Exact values at points: a list with one tuple of ``fractions.Fraction`` per point.
+
+        ``points``: rows of barycentric coordinates (m + 1 numbers summing to exactly 1), or of
+        Cartesian coordinates in the patch's domain with ``cartesian=True`` (S-patches: always
+        Cartesian). One flat sequence is one point. Numbers as in :meth:`from_nodes` (a float is
+        its exact value, so ``[1/3, 1/3, 1/3]`` in floats does not sum to 1: use Fractions or
+        strings). Rational patches: the quotient, exactly.
+        """
+        rows = matrix_texts(points, "points", allow_vector=True)
+        values = self._native.evaluate(rows, bool(cartesian))
+        return [tuple(Fraction(x) for x in v) for v in values]
+
+    def evaluate_float(self, points, precision: str = "f64") -> np.ndarray:
+        """tribez's own float path at float points: a numpy array of shape (rows, dimension),
+        dtype float64 (``precision="f64"``) or float32 (``"f32"``).
+
+        The control net and the points are rounded to the precision (the points are floats
+        already: float64, or float32 which widens exactly), then de Casteljau runs in it
+        (rational patches: homogeneous de Casteljau then one division; S-patches: Cartesian
+        points, float Wachspress coordinates then de Casteljau). Its error is within the bound
+        that ``certify`` reports (``docs/theory.md §14``).
+        """
+        width = self._native.point_width
+        arr = float_rows(points, "points", width)
+        raw = self._native.evaluate_float(arr.tobytes(), width, _precision_name(precision))
+        dtype = np.float64 if precision == "f64" else np.float32
+        return np.frombuffer(raw, dtype=dtype).reshape(arr.shape[0], self.dimension).copy()
+
+
+def _patch_from_json(text: str) -> Patch:
+    return Patch.from_json(text)
+
+
+def _check_str(x, where):
+    if not isinstance(x, str):
+        raise InputError(f"{where}: expected a str, got {type(x).__name__}")
+
+
+def _count(x, where) -> int:
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, np.integer)):
+        raise InputError(f"{where}: expected a non-negative int, got {x!r}")
+    x = int(x)
+    if x < 0:
+        raise InputError(f"{where}: {x} is negative")
+    return x
+
+
+def _precision_name(precision) -> str:
+    if precision in ("f64", "f32"):
+        return precision
+    raise InputError(f"precision: unknown precision `{precision}` (expected \"f64\" or \"f32\")")
