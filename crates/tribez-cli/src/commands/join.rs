@@ -263,7 +263,7 @@ impl Render for JoinReport {
             word(Some(j.c1)),
             j.max_smoothness,
             if j.max_smoothness == self.degree as i64 {
-                " (B is the extension of A: the same polynomial)"
+                " (B is the extension of A: the same polynomial, C^r for every r)"
             } else {
                 ""
             },
