@@ -3,26 +3,26 @@
 //! a-priori error bounds ([`tribez::certify::bound`]). Rational patches and S-patches:
 //! [`super::certify_beyond`].
 
-use tribez::certify::sample::random_points;
 use std::path::PathBuf;
+use tribez::certify::sample::random_points;
 
-use tribez::number::round_f64;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
+use tribez::number::round_f64;
 
 use super::{CliError, Outcome};
+use crate::cli::OutputArgs;
+use crate::report::{Exporter, JunitCase, Render, junit_xml};
 use tribez::certify::Certifier;
 use tribez::certify::bound::{a_priori, condition, roundings};
 use tribez::certify::measures::Measures;
-use crate::cli::OutputArgs;
 use tribez::exact::Algorithm;
 use tribez::float::{Float, Precision};
 use tribez::io::patch_file::read_any_patch;
 use tribez::io::points::read_points;
 use tribez::patch::{AnyPatch, Patch};
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
 
 /// Arguments of `tribez certify`.
 #[derive(Debug, clap::Args)]

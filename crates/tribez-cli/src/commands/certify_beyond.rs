@@ -15,10 +15,10 @@ use rayon::prelude::*;
 
 use super::CliError;
 use super::certify::{Acc, Args, RandomInfo, Row, points_of, reproduce};
-use tribez::certify::sample::random_polygon_points;
 use tribez::certify::beyond::{RationalCertifier, SPatchCertifier};
 use tribez::certify::bound::roundings;
 use tribez::certify::measures::sci;
+use tribez::certify::sample::random_polygon_points;
 use tribez::exact::Algorithm;
 use tribez::float::{Float, Precision};
 use tribez::rational::RationalPatch;
@@ -141,7 +141,6 @@ pub fn rational(
         .collect::<Result<_, _>>()?;
     Ok((rows, points.len(), random))
 }
-
 
 fn spatch_row<F: Float + Div<Output = F>>(
     s: &SPatch,

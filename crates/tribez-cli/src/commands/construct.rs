@@ -6,11 +6,11 @@ use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, check_barycentric, parse_list};
+use crate::report::Render;
 use tribez::domain::Domain;
 use tribez::error::CoreError;
 use tribez::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, patch_to_json, patch_to_toml};
 use tribez::patch::{ControlNet, Patch};
-use crate::report::Render;
 use tribez::simplex;
 
 /// Parse barycentric points given as `--{flag} a,b,c`, each with `m + 1` coordinates summing to 1.

@@ -7,14 +7,14 @@ use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome, check_barycentric};
-use tribez::bernstein;
 use crate::cli::OutputArgs;
+use crate::report::{Render, json_rationals, tuple};
+use tribez::bernstein;
 use tribez::exact::ExactEvaluator;
 use tribez::float::{Float, Precision, net_to};
 use tribez::io::patch_file::read_any_patch;
 use tribez::number::to_decimal_string;
 use tribez::patch::{AnyPatch, ControlNet, Patch};
-use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez eval`.
 #[derive(Debug, clap::Args)]

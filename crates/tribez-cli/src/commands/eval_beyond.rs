@@ -13,13 +13,13 @@ use serde_json::{Value as Json, json};
 
 use super::eval::{Args, FloatChoice};
 use super::{CliError, Outcome, check_barycentric, parse_list};
+use crate::report::{Render, json_rationals, tuple};
 use tribez::error::CoreError;
 use tribez::exact::{Algorithm, ExactEvaluator};
 use tribez::float::{Float, Precision};
 use tribez::io::points::read_points;
 use tribez::number::to_decimal_string;
 use tribez::rational::RationalPatch;
-use crate::report::{Render, json_rationals, tuple};
 use tribez::spatch::{Polygon, SPatch};
 
 /// The points of `--at` and `--points`, with a description each (for every kind of patch).
