@@ -4,7 +4,9 @@
 
 pub mod patch_file;
 pub mod points;
+pub mod text;
 pub mod tree;
+pub mod walk;
 
 use std::fmt;
 
