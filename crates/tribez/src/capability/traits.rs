@@ -8,7 +8,7 @@
 //! | [`Constructions`] | degree elevation, subpatches, blossoms, splitting | Bézier, functional, rational |
 //!
 //! A kind is one file in this folder that implements these traits for its type; the commands
-//! and [`crate::judge`] work through the traits and never name a kind.
+//! and [`crate::judge()`] work through the traits and never name a kind.
 //!
 //! Floats cross these traits as `f64`: an `f32` value widens exactly, and a precision says which
 //! format the numbers belong to.
@@ -84,6 +84,7 @@ pub trait ExactEval {
     fn exact_evaluator(&self) -> Box<dyn PointEvaluator + '_>;
     /// The kind's input at a Cartesian point of its domain (`m` coordinates for a simplex,
     /// converted to barycentric coordinates by Cramer's rule; `(x, y)` for an S-patch).
+    #[allow(clippy::wrong_self_convention)] // converts a point, using the patch's domain
     fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError>;
 }
 
