@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# The README's scaling table: exact evaluation cost and result size against degree, on the
-# reference workload of ../shared/peers (dimension 3, control points p/q with |p| <= 2^16,
-# 1 <= q <= 2^16, barycentric points with a common denominator <= 2^16), one core, best of 5.
+# The scaling table of docs/performance.md: exact evaluation cost and result size against the
+# degree, on the reference workload of bench/peers/workload.py (dimension 3, control values p/q
+# with |p| <= 2^16, 1 <= q <= 2^16, barycentric points with a common denominator <= 2^16),
+# one core, best of 5.
 #
 #   bench/scaling.sh [DEGREES]        # default "3 10 20 30 50 100 200"
 #
-# Needs python3 (the peers' case generator, ../shared/peers/common.py, uses only the standard library).
+# Needs python3 (the workload generator uses only the standard library).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
-PEERS="${PEERS:-$ROOT/../shared/peers}"
 PY="${PY:-python3}"
 DEGREES="${1:-3 10 20 30 50 100 200}"
 WORK="$(mktemp -d)"
@@ -21,7 +21,7 @@ echo "|---|---|---|---|---|"
 for n in $DEGREES; do
   points=$(( n <= 20 ? 1000 : n <= 50 ? 100 : n <= 100 ? 20 : 5 ))
   case="$WORK/case_n$n.json"
-  (cd "$PEERS" && "$PY" -c "import json,common; json.dump(common.random_case($n, 3, $points, seed=2000 + $n), open('$case', 'w'))")
+  "$PY" "$ROOT/bench/peers/workload.py" --degree "$n" --points "$points" --seed $((2000 + n)) > "$case"
   line=$(SPEED_REPEAT=5 SPEED_NO_CHECK=1 "$SPEED" exact "$case")
   printf '| %s | %s | %s | %s | %s ms |\n' "$n" "$(( (n + 1) * (n + 2) / 2 ))" \
     "$(echo "$line" | field us_per_point | xargs printf '%.1f')" \

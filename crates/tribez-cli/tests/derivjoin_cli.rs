@@ -265,6 +265,37 @@ fn make_c1_builds_a_cn_neighbour() {
     );
 }
 
+/// issue 10: `--make-c1` on a constant (degree 0) builds the same constant, and `join` accepts
+/// the pair as C1 (equal constants are C^r for every r); G1 is decided: no (no tangent plane).
+#[test]
+fn make_c1_of_a_constant_is_accepted_as_c1() {
+    let dir = tempfile::tempdir().unwrap();
+    let b = dir.path().join("b.toml");
+    tribez()
+        .args([
+            "join",
+            &fixture("joins/const_a.toml"),
+            "--make-c1",
+            "--domain",
+            "5,-3",
+            "-o",
+            b.to_str().unwrap(),
+        ])
+        .assert()
+        .success();
+    let v = json(&["join", &fixture("joins/const_a.toml"), b.to_str().unwrap()]);
+    assert_eq!(v["c0"], true);
+    assert_eq!(v["c1"], true);
+    assert_eq!(v["g1"], false);
+    assert_eq!(v["coplanarity"], true);
+    let v = json(&[
+        "join",
+        &fixture("joins/const_a.toml"),
+        &fixture("joins/const_b.toml"),
+    ]);
+    assert_eq!((v["c1"].clone(), v["g1"].clone()), (true.into(), false.into()));
+}
+
 #[test]
 fn join_errors() {
     let a = fixture("joins/quad_a.toml");

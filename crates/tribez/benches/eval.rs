@@ -1,8 +1,8 @@
 //! `cargo bench`: exact and float evaluation, subdivision and degree elevation.
 //!
-//! Workloads (ratios against the peers come from `bench/compare.sh`, which runs the peers'
-//! own input files):
-//! - "reference" (../shared/peers/README.md): dimension 3, control points `p/q` with
+//! Workloads (ratios against the peers come from `bench/compare.sh`, which runs the peers of
+//! `bench/peers/` on the same input files; docs/performance.md):
+//! - "reference" (`bench/peers/workload.py`): dimension 3, control points `p/q` with
 //!   `|p| ≤ 2^16`, `1 ≤ q ≤ 2^16`, barycentric points `(a, b, c)/q` with `q ≤ 2^16`;
 //! - "dyadic": the exact values of random f64 control points in `[−1, 1]` and of random f64
 //!   barycentric points (`w = 1 − u − v` rounded, so the exact sum may differ from 1: the

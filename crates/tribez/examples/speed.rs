@@ -1,5 +1,5 @@
 //! Machine-readable timings for `bench/compare.sh`, on a case file of the peers' format
-//! (`../shared/peers/common.py`: `{"degree", "dim", "nodes": [[x, y, z], …], "points": …}`, nodes in
+//! (`bench/peers/workload.py`: `{"degree", "dim", "nodes": [[x, y, z], …], "points": …}`, nodes in
 //! `bezier`'s order, which is tribez's canonical order). One JSON object per line.
 //!
 //! ```text

@@ -23,6 +23,18 @@
 //! determinant `E · (X_A × X_B)`) is the zero polynomial in `t`; both patches must also be regular
 //! along the edge (`E ∧ X_A ≢ 0`, `E ∧ X_B ≢ 0`). This is decided symbolically, never by sampling.
 //!
+//! **Degree 0 (constant patches).** `B` has rows `ρ = 0..=n` only, so C^r means "rows
+//! `0..=min(r, n)` agree" ([`Join::c1`] and [`Join::max_smoothness`] read it so). When all
+//! `n + 1` rows agree, `B` is the C^n extension of `A`: both are pieces of one polynomial, hence
+//! C^r for every `r`. For `n = 0` that single row is C0, so two equal constants are C1, C2, …
+//! (and `c1_neighbour` of a constant is that constant, a pair `analyse` accepts as C1). G1 is
+//! still decided, and it fails: G1 asks for a common *tangent plane* along the edge, and a
+//! constant patch has none (its edge tangent and cross-boundary derivative vanish, so the
+//! regularity condition `E ∧ X_A ≢ 0` fails, exactly as for a higher-degree patch that is
+//! singular along the whole edge). C1 implies G1 only where the surface is regular. Finn's
+//! condition has no quadrilaterals at `n = 0` (`i + j = n − 1` has no solutions): it holds
+//! vacuously.
+//!
 //! **Finn's condition:** each quadrilateral `c_{i+1,j,0}, c_{i,j+1,0}, c_{i,j,1}, c̃_{i,j,1}`
 //! (`i + j = n − 1`) is planar. Finn's notes claims this suffices for G1; it does not (docs/theory.md §8).
 //!
@@ -30,7 +42,7 @@
 //! use tribez::domain::Domain;
 //! use tribez::join::analyse;
 //! use tribez::number::parse_rational as q;
-//! use tribez::patch::{ControlNet, Patch};
+//! use tribez::patch::{BezierPatch as Patch, ControlNet};
 //! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
 //! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
 //! // docs/theory.md §8: planar quadrilaterals, C0, yet not G1
@@ -50,7 +62,7 @@ use num_traits::{One, Signed, Zero};
 use crate::casteljau;
 use crate::domain::{Domain, determinant};
 use crate::error::CoreError;
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{BezierPatch as Patch, ControlNet};
 use crate::simplex::Simplex;
 use crate::symbolic::Polynomial;
 #[cfg(test)]
@@ -241,11 +253,14 @@ pub struct Join {
     pub rows_agree: Vec<bool>,
     /// C0.
     pub c0: bool,
-    /// C1.
+    /// C1: C0 and row 1 agrees (for `n = 0`, where there is no row 1, C0 alone: see the module doc).
     pub c1: bool,
-    /// The highest `r` with C^r (`−1` when not C0, `n` when `B` is the extension of `A`).
+    /// The highest `r` with C^r (`−1` when not C0). `n` means every row agrees: `B` is the
+    /// extension of `A`, one polynomial, so the pair is C^r for *every* `r` (for `n = 0`, two equal
+    /// constants: `0` here, yet C1).
     pub max_smoothness: i64,
-    /// G1 (`None` unless triangles in `ℝ^d`, `d >= 3`).
+    /// G1 (`None` unless triangles in `ℝ^d`, `d >= 3`; decided for every degree, `false` for
+    /// constant patches, which have no tangent plane).
     pub g1: Option<bool>,
     /// The minors of `[E X_A X_B]` as polynomials in the edge parameter `t` (`d = 3`: one).
     pub g1_minors: Vec<Polynomial>,
@@ -304,7 +319,11 @@ fn minors(cols: &[Vec<Polynomial>]) -> Vec<Polynomial> {
 /// `Σ_k d_k ∂P/∂λ_k` for each coordinate, restricted to the edge `λ(t) = (1−t) e_i + t e_j`:
 /// polynomials in `t`. The derivative net (one de Casteljau step with `d`, times `n`) restricted to
 /// the edge is the Bézier curve of its face `[i, j]`: `Σ_k b_k C(n−1, k) (1−t)^{n−1−k} t^k`.
+/// A constant net (degree 0) has the zero derivative.
 fn edge_derivative(net: &ControlNet<Q>, dir: &[Q], i: usize, j: usize) -> Vec<Polynomial> {
+    if net.degree() == 0 {
+        return vec![Polynomial::zero(1); net.dim()];
+    }
     let dn = crate::derivative::derivative_net(net, &[dir]);
     let face = dn.face(&[i, j]);
     let q = face.degree();
@@ -432,11 +451,14 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         .iter()
         .position(|&ok| !ok)
         .map_or(n as i64, |r| r as i64 - 1);
-    let c0 = max_smoothness >= 0;
-    let c1 = max_smoothness >= 1;
+    // C^r ⇔ rows 0..=min(r, n) agree: B has no row beyond n, so once all n + 1 rows agree the
+    // pair is one polynomial and C^r for every r (degree 0 included: two equal constants are C1).
+    let c_r = |r: usize| rows_agree[..=r.min(n)].iter().all(|&ok| ok);
+    let c0 = c_r(0);
+    let c1 = c_r(1);
 
     let (mut g1, mut g1_minors, mut coplanarity) = (None, Vec::new(), None);
-    if m == 2 && d >= 3 && n >= 1 {
+    if m == 2 && d >= 3 {
         // Finn's quadrilaterals
         let mut all_planar = true;
         for (beta, qb) in nb.entries().filter(|(beta, _)| beta[facet.b_opposite] == 1) {
@@ -474,6 +496,9 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
             }
         }
         coplanarity = Some(all_planar);
+        if n == 0 {
+            notes.push("degree 0: Finn's condition has no quadrilaterals (it holds vacuously); constant patches have no tangent plane, so G1 fails although the pair is C^r for every r".into());
+        }
 
         // G1 as a polynomial identity in the edge parameter t
         let (ia, ja, ka) = (facet.a[0], facet.a[1], facet.a_opposite);
@@ -500,7 +525,11 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         for (who, ok) in [("A", regular_a), ("B", regular_b)] {
             if !ok {
                 violations.push(Violation::G1 {
-                    reason: format!("{who} is singular along the whole edge (its edge tangent and cross-boundary derivative are parallel): no tangent plane"),
+                    reason: if n == 0 {
+                        format!("{who} is constant (degree 0): its derivatives vanish, it has no tangent plane")
+                    } else {
+                        format!("{who} is singular along the whole edge (its edge tangent and cross-boundary derivative are parallel): no tangent plane")
+                    },
                     determinant: None,
                     witness: None,
                 });
@@ -916,6 +945,40 @@ mod tests {
         )
         .unwrap();
         assert_eq!(jt2.max_smoothness, 1);
+    }
+
+    /// Degree 0 (module doc): equal constants are C^r for every r, and not G1 (no tangent plane);
+    /// `c1_neighbour` of a constant is that constant, and `analyse` accepts the pair as C1.
+    #[test]
+    fn degree_zero_joins_are_decided() {
+        let t: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "1"]];
+        let u: &[&[&str]] = &[&["0", "0"], &["1", "0"], &["0", "-1"]];
+        let a = patch(0, &[&["2", "-1", "5"]], t);
+        let b = patch(0, &[&["2", "-1", "5"]], u);
+        let j = analyse(&a, &b).unwrap();
+        assert!(j.c0 && j.c1);
+        assert_eq!(j.max_smoothness, 0);
+        assert_eq!((j.g1, j.coplanarity), (Some(false), Some(true)));
+        assert!(j.g1_minors.iter().all(Polynomial::is_zero));
+        assert_eq!(
+            j.violations
+                .iter()
+                .filter(|v| matches!(v, Violation::G1 { reason, .. } if reason.contains("constant (degree 0)")))
+                .count(),
+            2
+        );
+        // the neighbour --make-c1 builds is the same constant, and it is accepted as C1
+        let nb = c1_neighbour(&a, &[0, 1], r(&["1", "-1"])).unwrap();
+        assert_eq!(nb.net.points().next().unwrap(), r(&["2", "-1", "5"]).as_slice());
+        let jn = analyse(&a, &nb).unwrap();
+        assert!(jn.c0 && jn.c1 && jn.max_smoothness == 0);
+        // different constants: not even C0
+        let c = patch(0, &[&["2", "-1", "6"]], u);
+        let jc = analyse(&a, &c).unwrap();
+        assert!(!jc.c0 && !jc.c1 && jc.max_smoothness == -1 && jc.g1 == Some(false));
+        // scalar constants (d = 1): C^r decided, G1 not (d < 3)
+        let s = analyse(&patch(0, &[&["7"]], t), &patch(0, &[&["7"]], u)).unwrap();
+        assert!(s.c1 && s.g1.is_none());
     }
 
     #[test]

@@ -3,13 +3,17 @@
 
 use std::path::PathBuf;
 
+use num_rational::BigRational;
+use serde_json::Value as Json;
+
 use super::construct::{PatchReport, barycentric_points, child_patch};
 use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
+use crate::report::Render;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
+use tribez::any_patch::AnyPatch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]
@@ -21,6 +25,45 @@ pub struct Args {
     pub vertices: Vec<String>,
     #[command(flatten)]
     pub out: OutputArgs,
+}
+
+/// A rational subpatch: the patch file (with `[weights]`) and, as for a polynomial subpatch,
+/// `domain_in_parent` (its simplex in the parent's barycentric coordinates).
+pub struct RationalSubpatchReport {
+    /// The rational patch.
+    pub patch: AnyPatch,
+    /// Its vertices in the parent's barycentric coordinates.
+    pub domain_in_parent: Vec<Vec<BigRational>>,
+}
+
+impl Render for RationalSubpatchReport {
+    fn text(&self) -> String {
+        let text = AnyPatchReport(self.patch.clone()).text();
+        let rows: Vec<String> = self
+            .domain_in_parent
+            .iter()
+            .map(|p| {
+                let xs: Vec<String> = p.iter().map(|x| format!("\"{x}\"")).collect();
+                format!("[{}]", xs.join(", "))
+            })
+            .collect();
+        let line = format!("domain_in_parent = [{}]\n", rows.join(", "));
+        // top-level keys come before the first table
+        match text.find("\n[") {
+            Some(k) => format!("{}{line}{}", &text[..k], &text[k..]),
+            None => text + &line,
+        }
+    }
+    fn json(&self) -> Json {
+        let mut j = AnyPatchReport(self.patch.clone()).json();
+        j["domain_in_parent"] = Json::Array(
+            self.domain_in_parent
+                .iter()
+                .map(|p| Json::Array(p.iter().map(|x| Json::String(x.to_string())).collect()))
+                .collect(),
+        );
+        j
+    }
 }
 
 /// Run `tribez subpatch`.
@@ -50,7 +93,10 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         let mut sub = r.subpatch(&f).map_err(|e| CliError::core(context, e))?;
         sub.patch = child_patch(&parent, sub.patch.net, Some(&f), "subpatch")?;
         return Outcome::rendered(
-            &AnyPatchReport(AnyPatch::Rational(sub)),
+            &RationalSubpatchReport {
+                patch: AnyPatch::Rational(sub),
+                domain_in_parent: f,
+            },
             args.out.format,
             true,
         );

@@ -37,9 +37,9 @@ use super::{CLAIM_KEYS, Claim, ClaimFile};
 use crate::bernstein;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
-use crate::io::patch_file::index_key;
+use crate::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, index_key};
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::patch::AnyPatch;
+use crate::any_patch::AnyPatch;
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
@@ -162,13 +162,13 @@ impl<'a> Inputs<'a> {
     }
 
     /// The claim's patch.
-    pub fn patch(&self) -> Result<&'a crate::patch::Patch, InputError> {
+    pub fn patch(&self) -> Result<&'a crate::patch::BezierPatch, InputError> {
         self.file.patch_for(self.claim)
     }
 
     /// A barycentric point from `at` (checked to sum to one, except for float claims: what a
     /// float program uses need not), or a Cartesian one from `cartesian`.
-    pub fn point(&self, patch: &crate::patch::Patch) -> Result<Vec<BigRational>, InputError> {
+    pub fn point(&self, patch: &crate::patch::BezierPatch) -> Result<Vec<BigRational>, InputError> {
         let m = patch.net.m();
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) if self.get("precision").is_some() => {
@@ -532,19 +532,34 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
         }
         "elevate" => {
             let r = inputs.opt_usize("by")?.unwrap_or(1);
-            if r == 0 || net.degree() + r > crate::io::patch_file::MAX_DEGREE {
+            let to = net.degree().checked_add(r).filter(|_| r > 0);
+            let Some(to) = to.filter(|&t| t <= MAX_DEGREE) else {
                 return Err(inputs.error(
                     "by",
                     format!(
-                        "elevate by 1 to {}",
-                        crate::io::patch_file::MAX_DEGREE - net.degree()
+                        "elevate by 1 to {} (the degree is capped at {MAX_DEGREE})",
+                        MAX_DEGREE - net.degree()
                     ),
                 ));
-            }
+            };
+            check_count(inputs, "by", m, to)?;
             net_value(&crate::elevate::elevate_exact(net, r))
         }
         _ => unreachable!("construction ops only"),
     })
+}
+
+/// An error unless degree `n` on the `m`-simplex has at most
+/// [`crate::io::patch_file::MAX_CONTROL_POINTS`] control points (checked before allocating).
+fn check_count(inputs: &Inputs<'_>, key: &str, m: usize, n: usize) -> Result<(), InputError> {
+    let total = crate::simplex::binomial((n + m) as u64, m as u64);
+    if total > MAX_CONTROL_POINTS as u128 {
+        return Err(inputs.error(
+            key,
+            format!("degree {n} on a {m}-simplex has {total} control points, above the limit of {MAX_CONTROL_POINTS}"),
+        ));
+    }
+    Ok(())
 }
 
 /// The matrix of a halving or a subpatch, as a list of rows.
@@ -582,9 +597,17 @@ fn matrix(inputs: &Inputs<'_>) -> Result<Value, InputError> {
         }
         _ => return Err(inputs.error("kind", "`kind` must be \"halve\" or \"subpatch\"")),
     };
-    if crate::simplex::binomial((n + m) as u64, m as u64) > crate::blossom::MAX_MATRIX_ROWS as u128
+    if n > MAX_DEGREE
+        || crate::simplex::binomial((n + m) as u64, m as u64)
+            > crate::blossom::MAX_MATRIX_ROWS as u128
     {
-        return Err(inputs.error("degree", "the matrix would be too large"));
+        return Err(inputs.error(
+            "degree",
+            format!(
+                "the matrix would be too large (at most {} rows, the control points of the degree)",
+                crate::blossom::MAX_MATRIX_ROWS
+            ),
+        ));
     }
     let rows = crate::blossom::subpatch_matrix(m, n, &f)
         .map_err(|e| inputs.error("vertices", e.to_string()))?;
@@ -845,11 +868,11 @@ fn join(inputs: &Inputs<'_>) -> Result<Value, InputError> {
 mod beyond {
     use num_rational::BigRational;
 
-    use super::{Inputs, Value};
+    use super::{Inputs, MAX_DEGREE, Value};
     use crate::functional;
     use crate::io::InputError;
     use crate::io::patch_file::index_key;
-    use crate::patch::AnyPatch;
+    use crate::any_patch::AnyPatch;
     use crate::rational::homogenised_residual;
     use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_names};
 
@@ -1073,12 +1096,14 @@ mod beyond {
         let any = inputs.file.any_patch_for(inputs.claim)?;
         let (x, w, default_names) = match any {
             AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+                // the barycentric form is homogeneous of degree n, so its weight is
+                // W = (Σλ)^n (ΣB_α = (Σλ)^n), not 1: W^k F(X/W) is then homogeneous too
                 let m = p.net.m();
-                (
-                    barycentric_form(&p.net),
-                    Polynomial::constant(m + 1, num_traits::One::one()),
-                    barycentric_names(m),
-                )
+                let sum = (0..=m).fold(Polynomial::zero(m + 1), |acc, i| {
+                    acc.add(&Polynomial::variable(m + 1, i))
+                });
+                let n = u32::try_from(p.net.degree()).expect("degrees are capped");
+                (barycentric_form(&p.net), sum.pow(n), barycentric_names(m))
             }
             AnyPatch::Rational(r) => {
                 let mut h = r.homogeneous_form();
@@ -1164,8 +1189,12 @@ mod beyond {
             .opt_usize("degree")?
             .ok_or_else(|| inputs.error("degree", "missing input `degree`"))?;
         if n > crate::io::patch_file::MAX_DEGREE {
-            return Err(inputs.error("degree", "degree out of range"));
+            return Err(inputs.error(
+                "degree",
+                format!("degree {n} is above the limit of {MAX_DEGREE}"),
+            ));
         }
+        super::check_count(inputs, "degree", m, n)?;
         let names = inputs.names(cartesian_names(m))?;
         let text = inputs
             .opt_string("function")?
@@ -1191,8 +1220,12 @@ fn basis(inputs: &Inputs<'_>, sum: bool) -> Result<Value, InputError> {
     if !(1..=crate::io::patch_file::MAX_SIMPLEX_DIMENSION).contains(&m)
         || n > crate::io::patch_file::MAX_DEGREE
     {
-        return Err(inputs.error("degree", "degree or simplex dimension out of range"));
+        return Err(inputs.error(
+            "degree",
+            format!("degree {n} on a {m}-simplex is out of range (degree at most {MAX_DEGREE}, simplex dimension 1 to {})", crate::io::patch_file::MAX_SIMPLEX_DIMENSION),
+        ));
     }
+    check_count(inputs, "degree", m, n)?;
     let simplex = Simplex::new(m, n);
     if let Some(at) = inputs.opt_rationals("at")? {
         if at.len() != m + 1 {

@@ -1,4 +1,4 @@
-//! Patch files: TOML or JSON (chosen by extension), documented in README.md.
+//! Patch files: TOML or JSON (chosen by extension), documented in docs/guide.md (§3).
 //!
 //! ```toml
 //! name = "Finn, day 30, worked example"
@@ -15,8 +15,8 @@
 //! strings in the number syntax of [`crate::number::parse_rational`] or as plain numbers (taken
 //! from their text, exactly).
 //!
-//! Three optional additions make the other kinds of [`AnyPatch`] (README, "Beyond the
-//! triangle"):
+//! Three optional additions make the other kinds of [`AnyPatch`] (docs/guide.md §3,
+//! "Rational patches, S-patches and functional patches"):
 //!
 //! * `[weights]`, keyed like `control_points`, one number per control point: a **rational**
 //!   patch. Every control point needs exactly one weight; zero and negative weights are
@@ -39,13 +39,14 @@ use serde_json::{Map, Value as Json, json};
 use super::InputError;
 use super::tree::{Document, Node};
 use crate::domain::Domain;
-use crate::patch::{AnyPatch, ControlNet, Patch};
+use crate::any_patch::AnyPatch;
+use crate::patch::{BezierPatch as Patch, ControlNet};
 use crate::rational::RationalPatch;
 use crate::simplex::{self, Simplex};
 use crate::spatch::{Polygon, SPatch};
 
 /// The largest degree a patch file may have. Exact evaluation at degree 200 costs tens of
-/// milliseconds per point (README, "Scaling"); beyond that, results run to many kilobits.
+/// milliseconds per point (docs/performance.md, "Scaling"); beyond that, results run to many kilobits.
 pub const MAX_DEGREE: usize = 200;
 /// The largest number of control points a patch file may have.
 pub const MAX_CONTROL_POINTS: usize = 250_000;
@@ -133,7 +134,7 @@ pub fn any_patch_from_document(
         return Err(doc.error(
             degree_node,
             &key("degree"),
-            format!("degree {degree} is above the limit of {MAX_DEGREE} (see README, Scaling)"),
+            format!("degree {degree} is above the limit of {MAX_DEGREE} (see docs/performance.md, Scaling)"),
         ));
     }
     let cp_node = Document::get(table, "control_points").ok_or_else(|| {
