@@ -6,17 +6,80 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use serde_json::{Value as Json, json};
 
-use tribez::batch::{BatchReport, FailedCoord, FailedRow, ULP_BUCKETS, UlpHistogram};
+use tribez::any_patch::AnyPatch;
+use tribez::batch::{
+    BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
+    UlpHistogram,
+};
 use tribez::certify::measures::{Measures, Tolerance};
+use tribez::exact::Algorithm;
 use tribez::float::Precision;
 use tribez::number::parse_rational;
 
-use crate::guard;
+use crate::patch::{NativePatch, f64s};
+use crate::{guard, input_error};
+
+/// Judge in-memory rows with the library's batch engine (the GIL released meanwhile).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn check_rows(
+    py: Python<'_>,
+    patch: &NativePatch,
+    points: &[u8],
+    values: &[u8],
+    width: usize,
+    dimension: usize,
+    tolerance: &str,
+    precision: &str,
+    cartesian: bool,
+    algorithm: &str,
+    first_row: usize,
+) -> PyResult<NativeReport> {
+    guard(py, || {
+        let poly = match &patch.patch {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p.clone(),
+            other => {
+                return Err(input_error(
+                    py,
+                    format!(
+                        "patch: this is {}; check judges polynomial Bézier patches (rational patches and S-patches: claim files)",
+                        other.described()
+                    ),
+                ));
+            }
+        };
+        let tolerance =
+            Tolerance::parse(tolerance).map_err(|e| input_error(py, format!("tolerance: {e}")))?;
+        let precision: Precision = precision
+            .parse()
+            .map_err(|e: String| input_error(py, format!("precision: {e}")))?;
+        let algorithm = match algorithm {
+            "bernstein" => Algorithm::Bernstein,
+            _ => Algorithm::Casteljau,
+        };
+        let options = BatchOptions {
+            tolerance,
+            precision: Some(precision),
+            algorithm,
+            cartesian,
+        };
+        let name = poly.name.clone().unwrap_or_else(|| "the patch".into());
+        let checker = BatchChecker::new(poly, &options).map_err(|e| input_error(py, e))?;
+        let (pts, vals) = (f64s(points), f64s(values));
+        debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
+        let (report, verdicts) = py
+            .detach(|| checker.check_rows(&pts, &vals, first_row, "<arrays>", &name))
+            .map_err(|e| input_error(py, e))?;
+        Ok(NativeReport { report, verdicts })
+    })
+}
 
 /// A batch report and, row by row, its verdicts and errors.
 #[pyclass(module = "tribez._native", frozen)]
 pub struct NativeReport {
     pub(crate) report: BatchReport,
+    /// Every row's verdict, by row index.
+    pub(crate) verdicts: Vec<RowVerdict>,
 }
 
 #[pymethods]
@@ -54,10 +117,11 @@ impl NativeReport {
     /// The worst row as JSON (the `worst` object of the JSON report, with `row` for its index).
     fn worst_json(&self) -> Option<String> {
         let mut j = self.report.json();
-        let w = j.get_mut("worst")?.take();
-        if w.is_null() {
-            return None;
-        }
+        let mut w = j.get_mut("worst")?.take();
+        let obj = w.as_object_mut()?;
+        // in-memory rows are named by index where a file's rows have line numbers
+        let row = obj.remove("line")?;
+        obj.insert("row".into(), row);
         Some(w.to_string())
     }
 
@@ -80,14 +144,22 @@ impl NativeReport {
     fn merge(&self, py: Python<'_>, other: &NativeReport) -> PyResult<NativeReport> {
         guard(py, || {
             let mut report = self.report.clone();
-            report.merge(&other.report);
-            Ok(NativeReport { report })
+            report
+                .merge(&other.report)
+                .map_err(|e| input_error(py, format!("merge: {e}")))?;
+            let mut verdicts = self.verdicts.clone();
+            verdicts.extend_from_slice(&other.verdicts);
+            verdicts.sort_by_key(|v| v.row);
+            Ok(NativeReport { report, verdicts })
         })
     }
 
     /// Per-row arrays: (name, numpy dtype, bytes).
-    fn row_arrays<'py>(&self, py: Python<'py>) -> Vec<(&'static str, &'static str, Bound<'py, PyBytes>)> {
-        let rows = &self.report.row_details;
+    fn row_arrays<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> Vec<(&'static str, &'static str, Bound<'py, PyBytes>)> {
+        let rows = &self.verdicts;
         let mut index = Vec::with_capacity(rows.len() * 8);
         let mut passed = Vec::with_capacity(rows.len());
         let mut ulps = Vec::with_capacity(rows.len() * 8);
@@ -111,7 +183,23 @@ impl NativeReport {
 
     /// The whole report as a JSON state (for pickling).
     fn state(&self) -> String {
-        state_of(&self.report).to_string()
+        let verdicts: Vec<Json> = self
+            .verdicts
+            .iter()
+            .map(|v| {
+                json!([
+                    v.row,
+                    v.pass,
+                    v.fell_back,
+                    if v.ulps.is_finite() {
+                        json!(v.ulps)
+                    } else {
+                        Json::Null
+                    }
+                ])
+            })
+            .collect();
+        json!({"report": state_of(&self.report), "verdicts": verdicts}).to_string()
     }
 
     #[staticmethod]
@@ -119,8 +207,21 @@ impl NativeReport {
         guard(py, || {
             let j: Json = serde_json::from_str(state)
                 .map_err(|e| crate::input_error(py, format!("report state: {e}")))?;
-            report_of(&j)
-                .map(|report| NativeReport { report })
+            let verdicts = j["verdicts"].as_array().and_then(|v| {
+                v.iter()
+                    .map(|r| {
+                        Some(RowVerdict {
+                            row: r[0].as_u64()? as usize,
+                            pass: r[1].as_bool()?,
+                            fell_back: r[2].as_bool()?,
+                            ulps: r[3].as_f64().unwrap_or(f64::INFINITY),
+                        })
+                    })
+                    .collect::<Option<Vec<_>>>()
+            });
+            report_of(&j["report"])
+                .zip(verdicts)
+                .map(|(report, verdicts)| NativeReport { report, verdicts })
                 .ok_or_else(|| crate::input_error(py, "report state: malformed"))
         })
     }
@@ -160,7 +261,11 @@ fn rat(j: &Json) -> Option<BigRational> {
 }
 
 fn opt_rat(j: &Json) -> Option<Option<BigRational>> {
-    if j.is_null() { Some(None) } else { rat(j).map(Some) }
+    if j.is_null() {
+        Some(None)
+    } else {
+        rat(j).map(Some)
+    }
 }
 
 fn measures_of(j: &Json) -> Option<Measures> {
@@ -180,7 +285,11 @@ fn coord_of(j: &Json) -> Option<FailedCoord> {
         exact_seen: rat(&j["exact_seen"])?,
         seen: measures_of(&j["seen"])?,
         exact_intended: opt_rat(&j["exact_intended"])?,
-        intended: if j["intended"].is_null() { None } else { Some(measures_of(&j["intended"])?) },
+        intended: if j["intended"].is_null() {
+            None
+        } else {
+            Some(measures_of(&j["intended"])?)
+        },
     })
 }
 
@@ -189,7 +298,11 @@ fn coords_of(j: &Json) -> Option<Vec<FailedCoord>> {
 }
 
 fn report_of(j: &Json) -> Option<BatchReport> {
-    let counts: Vec<u64> = j["histogram"].as_array()?.iter().map(Json::as_u64).collect::<Option<_>>()?;
+    let counts: Vec<u64> = j["histogram"]
+        .as_array()?
+        .iter()
+        .map(Json::as_u64)
+        .collect::<Option<_>>()?;
     Some(BatchReport {
         file: j["file"].as_str()?.to_string(),
         patch: j["patch"].as_str()?.to_string(),
@@ -202,14 +315,20 @@ fn report_of(j: &Json) -> Option<BatchReport> {
         passed: j["passed"].as_u64()?,
         failed: j["failed"].as_u64()?,
         fell_back: j["fell_back"].as_u64()?,
-        histogram: UlpHistogram { counts: counts.try_into().ok()? },
+        histogram: UlpHistogram {
+            counts: counts.try_into().ok()?,
+        },
         histogram_upper_bounds: j["upper"].as_bool()?,
         histogram_exact: j["hexact"].as_u64()? as usize,
         worst: if j["worst"].is_null() {
             None
         } else {
             let w = &j["worst"];
-            Some((w["ulps"].as_f64()?, w["line"].as_u64()? as usize, coords_of(&w["coords"])?))
+            Some((
+                w["ulps"].as_f64()?,
+                w["line"].as_u64()? as usize,
+                coords_of(&w["coords"])?,
+            ))
         },
         failures: j["failures"]
             .as_array()?

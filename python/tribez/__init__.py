@@ -12,7 +12,7 @@ results against those exact values.
 
 The main entry points: :class:`Patch` (from files, text or ``bezier``-style node arrays; exact
 and float evaluation), :func:`check` (judge many float results at once, from numpy arrays),
-:func:`check_claims` (claim files), :func:`certify` (tribez's own float paths) and
+:class:`Report` (its verdict, the command line's report) and
 :func:`tribez.testing.assert_certified` (for pytest). Bad input raises :class:`InputError`,
 a ``ValueError`` whose message is the one line the command line prints.
 """
@@ -35,8 +35,6 @@ __all__ = [
     "Patch",
     "Report",
     "check",
-    "check_claims",
-    "certify",
     "threads",
     "TribezError",
     "InputError",
@@ -347,34 +345,3 @@ def _native_width(patch: Patch, cartesian: bool) -> int:
     if patch.kind == "s-patch":
         return 2
     return patch.simplex if cartesian else patch.simplex + 1
-
-
-def check_claims(path) -> Report:
-    """Judge claim files (a ``*.claims.toml`` / ``.json`` file, or a directory searched
-    recursively), as ``tribez check PATH`` does; a :class:`Report` whose text is the command
-    line's report. Errata (values the sources print wrongly, marked as such) do not fail."""
-    return Report(_native.check_claims(os.fspath(path)))
-
-
-def certify(patch: Patch, points=None, random: Optional[int] = None, seed: Optional[int] = None,
-            precision: str = "all", algorithm: str = "all") -> Report:
-    """Certify tribez's own float paths on ``patch`` (as ``tribez certify``): at ``points``
-    (rows of barycentric coordinates, exact numbers as in :meth:`Patch.evaluate`) or at
-    ``random`` random points from ``seed``; ``precision`` "f64", "f32" or "all", ``algorithm``
-    "casteljau", "bernstein" or "all". The report gives per algorithm and precision the
-    largest error in ULPs, the share of correctly rounded results, the condition number and
-    the a-priori bound; it fails if an error exceeds its bound."""
-    if not isinstance(patch, Patch):
-        raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
-    if (points is None) == (random is None):
-        raise InputError("certify: give either points or random (a number of random points)")
-    rows = None if points is None else matrix_texts(points, "points", allow_vector=True)
-    if random is not None:
-        random = _count(random, "random")
-    if seed is not None:
-        seed = _count(seed, "seed")
-    if precision not in ("f64", "f32", "all"):
-        raise InputError(f"precision: unknown precision `{precision}` (expected f64, f32 or all)")
-    if algorithm not in ("casteljau", "bernstein", "all"):
-        raise InputError(f"algorithm: unknown algorithm `{algorithm}` (expected casteljau, bernstein or all)")
-    return Report(_native.certify(patch._native, rows, random, seed, precision, algorithm))

@@ -102,12 +102,3 @@ def check(
     algorithm: Literal["casteljau", "bernstein"] = ...,
     first_row: int = ...,
 ) -> Report: ...
-def check_claims(path: PathLike) -> Report: ...
-def certify(
-    patch: Patch,
-    points: Optional[Rows] = ...,
-    random: Optional[int] = ...,
-    seed: Optional[int] = ...,
-    precision: Literal["f64", "f32", "all"] = ...,
-    algorithm: Literal["casteljau", "bernstein", "all"] = ...,
-) -> Report: ...

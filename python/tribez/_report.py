@@ -11,10 +11,10 @@ from ._errors import CertificationError, InputError
 
 
 class Report:
-    """The verdict of :func:`check` (or :func:`check_claims`): the library's report, as the
+    """The verdict of :func:`check`: the library's batch report, as the
     command line prints it (``str(report)``) and exports it (``report.to_json()``).
 
-    Attributes: ``passed`` and ``failed`` (counts of rows or claims), ``ok`` (nothing failed),
+    Attributes: ``passed`` and ``failed`` (counts of rows), ``ok`` (nothing failed),
     ``fell_back`` (rows the float filter left open, computed in exact arithmetic),
     ``max_ulps`` (the largest error in ULPs, of the worst row, computed exactly; None without a
     precision), ``worst`` (a dict: ``row`` (its index in the whole set), ``ulps``, and per
@@ -33,12 +33,12 @@ class Report:
 
     @property
     def passed(self) -> int:
-        """Rows (claims) that hold."""
+        """Rows that hold."""
         return self._native.passed
 
     @property
     def failed(self) -> int:
-        """Rows (claims) that fail."""
+        """Rows that fail."""
         return self._native.failed
 
     @property
@@ -66,7 +66,8 @@ class Report:
 
     @property
     def worst(self) -> Optional[dict]:
-        """The worst row: ``{"row": index, "ulps": error, "coordinates": [...]}``, or None."""
+        """The worst row: ``{"row": index, "ulps": error, "coordinates": [...]}`` (the JSON
+        report's ``worst``, its ``line`` named ``row``), or None."""
         w = self._native.worst_json()
         return None if w is None else json.loads(w)
 
@@ -81,9 +82,9 @@ class Report:
         merge, by row index): ``passed`` (bool), ``ulps`` (float64: the error in ULPs at the
         inputs as the code saw them, max over coordinates; exact for rows computed exactly, else
         the upper end of a compensated enclosure a small fraction of an ULP wide),
-        ``ulps_intended`` (float64: the same at the intended inputs; with float arrays as
-        input the inputs as seen are the intended ones), ``correctly_rounded`` (bool: the error
-        is at most half an ULP), ``fell_back`` (bool), ``row`` (int64: the row's index)."""
+        ``correctly_rounded`` (bool: the error is at most half an ULP: the nearest float, or
+        either one at an exact tie), ``fell_back`` (bool), ``row`` (int64: the row's index).
+        With float arrays as input the inputs as seen are the intended ones."""
         raw = self._native.row_arrays()
         out = {}
         for name, dtype, data in raw:
