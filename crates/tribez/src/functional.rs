@@ -31,7 +31,7 @@ use num_traits::Zero;
 
 use crate::domain::Domain;
 use crate::error::CoreError;
-use crate::patch::{ControlNet, BezierPatch};
+use crate::patch::{BezierPatch, ControlNet};
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::Polynomial;
 

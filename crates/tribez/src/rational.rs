@@ -36,7 +36,7 @@ use num_traits::{One, Zero};
 use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
-use crate::patch::{ControlNet, BezierPatch};
+use crate::patch::{BezierPatch, ControlNet};
 use crate::symbolic::{Polynomial, barycentric_form};
 use crate::{casteljau, float::Float};
 

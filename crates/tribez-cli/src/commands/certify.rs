@@ -225,7 +225,11 @@ impl Acc {
             if let (Some(q), Some(b)) = (&case.exact, &case.bound) {
                 acc.judge(&case.y, q, b, &case.input, "");
             }
-            if let Some((cc, b)) = case.coordinates.as_ref().and_then(|cc| Some((cc, cc.bound.as_ref()?))) {
+            if let Some((cc, b)) = case
+                .coordinates
+                .as_ref()
+                .and_then(|cc| Some((cc, cc.bound.as_ref()?)))
+            {
                 acc.judge(&cc.values, &cc.exact, b, &case.input, coordinate);
             }
         }
@@ -263,7 +267,10 @@ fn certify_row(
 ) -> Result<Row, CliError> {
     let precision = program.precision();
     let bound = program.error_bound().ok_or_else(|| {
-        CliError::Usage(format!("{}: the float program has no proven bound", precision.name()))
+        CliError::Usage(format!(
+            "{}: the float program has no proven bound",
+            precision.name()
+        ))
     })?;
     let text = bound.text(algorithm);
     let coordinate = text.coordinates.as_ref().map_or("", |c| c.one);
@@ -300,7 +307,11 @@ fn certify_row(
 }
 
 /// The algorithms of `--algorithm` among those of the kind's float program.
-fn algorithms(args: &Args, patch: &Patch, float: &dyn FloatEval) -> Result<Vec<Algorithm>, CliError> {
+fn algorithms(
+    args: &Args,
+    patch: &Patch,
+    float: &dyn FloatEval,
+) -> Result<Vec<Algorithm>, CliError> {
     let offered = float.float_algorithms();
     if let [only] = offered {
         return match args.algorithm.as_str() {

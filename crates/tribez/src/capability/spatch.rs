@@ -12,8 +12,8 @@ use num_rational::BigRational;
 
 use crate::capability::bezier::check_len;
 use crate::capability::traits::{
-    BoundText, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
-    InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input,
+    BoundText, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval,
+    FloatProgram, InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input,
 };
 use crate::certify::beyond::SPatchCertifier;
 use crate::certify::bound::roundings;
