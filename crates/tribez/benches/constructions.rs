@@ -3,11 +3,11 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
-use tribez::blossom::subpatch_exact;
-use tribez::elevate::elevate_exact;
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
-use tribez::subdivide::{halve_exact, midpoint_split_exact, split_at_pieces_exact};
+use tribez::hazmat::blossom::subpatch_exact;
+use tribez::hazmat::elevate::elevate_exact;
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
+use tribez::hazmat::subdivide::{halve_exact, midpoint_split_exact, split_at_pieces_exact};
 
 fn q(a: i64, b: i64) -> BigRational {
     BigRational::new(a.into(), b.into())

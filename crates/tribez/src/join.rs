@@ -39,10 +39,10 @@
 //! (`i + j = n − 1`) is planar. Finn's notes claims this suffices for G1; it does not (docs/theory.md §8).
 //!
 //! ```
-//! use tribez::domain::Domain;
-//! use tribez::join::analyse;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::{BezierPatch as Patch, ControlNet};
+//! use tribez::hazmat::domain::Domain;
+//! use tribez::hazmat::join::analyse;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
 //! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
 //! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
 //! // docs/theory.md §8: planar quadrilaterals, C0, yet not G1
@@ -969,7 +969,10 @@ mod tests {
         );
         // the neighbour --make-c1 builds is the same constant, and it is accepted as C1
         let nb = c1_neighbour(&a, &[0, 1], r(&["1", "-1"])).unwrap();
-        assert_eq!(nb.net.points().next().unwrap(), r(&["2", "-1", "5"]).as_slice());
+        assert_eq!(
+            nb.net.points().next().unwrap(),
+            r(&["2", "-1", "5"]).as_slice()
+        );
         let jn = analyse(&a, &nb).unwrap();
         assert!(jn.c0 && jn.c1 && jn.max_smoothness == 0);
         // different constants: not even C0

@@ -7,7 +7,7 @@
 //! (exact value of an f64) and §14.4 (ULPs, round-to-nearest with integers only).
 //!
 //! ```
-//! use tribez::number::*;
+//! use tribez::hazmat::number::*;
 //! let q = parse_rational("f64:0.1").unwrap();
 //! assert_eq!(format_rational(&q), "3602879701896397/36028797018963968");
 //! assert_eq!(round_f64(&parse_rational("1/10").unwrap()), 0.1);
@@ -84,7 +84,7 @@ pub enum NumberError {
 /// magnitude above [`MAX_EXPONENT`].
 ///
 /// ```
-/// use tribez::number::{format_rational, parse_rational};
+/// use tribez::hazmat::number::{format_rational, parse_rational};
 /// let q = |s| format_rational(&parse_rational(s).unwrap());
 /// assert_eq!(q("-1.5e-3"), "-3/2000");
 /// assert_eq!(q("0x1.8p-3"), "3/16");
@@ -305,7 +305,7 @@ pub fn format_rational(q: &BigRational) -> String {
 /// `1.2345e-20`. For people; exact values are printed with [`format_rational`].
 ///
 /// ```
-/// use tribez::number::{parse_rational, to_decimal_string};
+/// use tribez::hazmat::number::{parse_rational, to_decimal_string};
 /// let d = |s, n| to_decimal_string(&parse_rational(s).unwrap(), n);
 /// assert_eq!(d("1/3", 5), "0.33333");
 /// assert_eq!(d("2/3", 3), "0.667");
@@ -423,7 +423,7 @@ pub fn display_f32(x: f32) -> String {
 /// `±0x0.hhhhhhhhhhhhhp-1022`, zero `0x0p+0` / `-0x0p+0`; `inf`, `-inf`, `nan`.
 ///
 /// ```
-/// use tribez::number::hex_f64;
+/// use tribez::hazmat::number::hex_f64;
 /// assert_eq!(hex_f64(0.1), "0x1.999999999999ap-4");
 /// assert_eq!(hex_f64(-1.0), "-0x1p+0");
 /// assert_eq!(hex_f64(5e-324), "0x0.0000000000001p-1022");
@@ -487,7 +487,7 @@ const F32_FRAC_MASK: u32 = (1 << 23) - 1;
 /// when e = 0, else `(−1)^s·(2^52+f)·2^(e−1075)`; ±0 both give 0.
 ///
 /// ```
-/// use tribez::number::{exact_f64, format_rational};
+/// use tribez::hazmat::number::{exact_f64, format_rational};
 /// assert_eq!(format_rational(&exact_f64(0.1).unwrap()), "3602879701896397/36028797018963968");
 /// assert_eq!(format_rational(&exact_f64(-0.0).unwrap()), "0");
 /// assert_eq!(exact_f64(f64::NAN), None);
@@ -819,7 +819,7 @@ fn encode_f32(neg: bool, mag: Magnitude) -> f32 {
 /// IEEE 754 and `str::parse` do). A zero denominator gives NaN.
 ///
 /// ```
-/// use tribez::number::{parse_rational, round_f64};
+/// use tribez::hazmat::number::{parse_rational, round_f64};
 /// let r = |s| round_f64(&parse_rational(s).unwrap());
 /// assert_eq!(r("1/3"), 1.0 / 3.0);
 /// assert_eq!(r("0x1.00000000000008p0"), 1.0); // 1 + 2^-53: tie, to even
@@ -923,7 +923,7 @@ pub fn ulp_f32(q: &BigRational) -> BigRational {
 /// It is at most 1/2 when x = RN(q).
 ///
 /// ```
-/// use tribez::number::{exact_f64, format_rational, parse_rational, ulps_error_f64};
+/// use tribez::hazmat::number::{exact_f64, format_rational, parse_rational, ulps_error_f64};
 /// let e = ulps_error_f64(&exact_f64(0.1).unwrap(), &parse_rational("1/10").unwrap());
 /// assert_eq!(format_rational(&e), "2/5");
 /// ```

@@ -12,7 +12,7 @@
 //! and the error at the intended inputs (the exact text) is reported for failures and for the
 //! worst row. Without a precision numbers are exact and every row is computed exactly.
 //!
-//! Clear rows are decided by the float filter ([`tribez::certify::filter`]); only undecided ones
+//! Clear rows are decided by the float filter ([`tribez::hazmat::certify::filter`]); only undecided ones
 //! fall back to exact big-integer evaluation, and the report counts them.
 //!
 //! This file drives a run (streaming chunks, judging them on all cores, assembling the report in
@@ -35,9 +35,9 @@ use super::{CliError, Outcome};
 use crate::report::{Exporter, UlpHistogram};
 use judge::{Prepared, RowOutcome, RowScratch};
 use parse::{Chunk, Format, Num, RowReader, parse_row, texts_of};
-use tribez::exact::Algorithm;
-use tribez::io::InputError;
-use tribez::io::patch_file::read_patch;
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::io::InputError;
+use tribez::hazmat::io::patch_file::read_patch;
 
 /// Rows judged per chunk (the memory bound: one chunk of lines is held at a time).
 pub const CHUNK: usize = 1 << 16;

@@ -6,9 +6,9 @@ use super::construct::{PatchReport, check_size, child_patch};
 use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::error::CoreError;
-use tribez::io::patch_file::read_any_patch;
-use tribez::any_patch::AnyPatch;
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez elevate`.
 #[derive(Debug, clap::Args)]
@@ -47,7 +47,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let net = tribez::elevate::elevate_exact(&parent.net, args.by);
+    let net = tribez::hazmat::elevate::elevate_exact(&parent.net, args.by);
     let patch = child_patch(
         &parent,
         net,

@@ -9,13 +9,13 @@ use super::construct::{barycentric_points, parse_edge};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::blossom::subpatch_matrix;
-use tribez::error::CoreError;
-use tribez::simplex::{self, Simplex};
-use tribez::subdivide::halve_domains;
+use tribez::hazmat::blossom::subpatch_matrix;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::simplex::{self, Simplex};
+use tribez::hazmat::subdivide::halve_domains;
 
 /// The largest matrix `tribez matrix` prints: this many rows (degree 43 on a triangle).
-pub const MAX_ROWS: usize = tribez::blossom::MAX_MATRIX_ROWS;
+pub const MAX_ROWS: usize = tribez::hazmat::blossom::MAX_MATRIX_ROWS;
 
 /// Which matrix.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -68,7 +68,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             let edge = args.edge.as_deref().unwrap_or("1,2");
             let piece = args.piece.unwrap_or(1);
             let m = args.simplex;
-            if m == 0 || m > tribez::io::patch_file::MAX_SIMPLEX_DIMENSION {
+            if m == 0 || m > tribez::hazmat::io::patch_file::MAX_SIMPLEX_DIMENSION {
                 return Err(CliError::core(
                     format!("--simplex {m}"),
                     CoreError::Invalid("the simplex dimension must be 1 to 16".into()),
@@ -137,7 +137,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 }
 
 fn key(alpha: &[u32]) -> String {
-    tribez::io::patch_file::index_key(alpha)
+    tribez::hazmat::io::patch_file::index_key(alpha)
 }
 
 fn latex_number(q: &BigRational) -> String {

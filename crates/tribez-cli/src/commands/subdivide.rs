@@ -8,8 +8,8 @@ use super::construct::{
 };
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{midpoint_split_exact, split_at_pieces_exact};
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::subdivide::{midpoint_split_exact, split_at_pieces_exact};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]

@@ -7,12 +7,14 @@ use super::parse::Num;
 use super::report::FailedCoord;
 use crate::commands::CliError;
 use crate::commands::check::Args;
-use tribez::certify::bound::{a_priori, condition};
-use tribez::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
-use tribez::certify::measures::{Leaf, Measures, Tolerance, as_float};
-use tribez::exact::{Algorithm, ExactEvaluator};
-use tribez::float::Precision;
-use tribez::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::certify::bound::{a_priori, condition};
+use tribez::hazmat::certify::filter::{
+    Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds,
+};
+use tribez::hazmat::certify::measures::{Leaf, Measures, Tolerance, as_float};
+use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {
@@ -82,7 +84,7 @@ impl Prepared {
         };
         let (m, n) = (patch.net.m(), patch.net.degree());
         let filter = precision.filter(|_| !args.cartesian).map(|p| {
-            let fnet = seen_net.map(tribez::number::round_f64);
+            let fnet = seen_net.map(tribez::hazmat::number::round_f64);
             (
                 Filter::new(&fnet),
                 Thresholds::new(&tolerance, p, algorithm, m, n),
@@ -120,7 +122,7 @@ impl Prepared {
     fn seen_value(&self, x: &Num) -> Option<BigRational> {
         match x {
             Num::Value { float, text_exact } => match self.precision {
-                Some(_) => tribez::number::exact_f64(*float),
+                Some(_) => tribez::hazmat::number::exact_f64(*float),
                 None => text_exact.clone(),
             },
             Num::NotFinite(_) => None,
@@ -222,12 +224,12 @@ impl Prepared {
             if detail {
                 let (decimal, hex) = match self.precision {
                     Some(Precision::F32) => (
-                        tribez::number::display_f32(*float as f32),
-                        tribez::number::hex_f32(*float as f32),
+                        tribez::hazmat::number::display_f32(*float as f32),
+                        tribez::hazmat::number::hex_f32(*float as f32),
                     ),
                     _ => (
-                        tribez::number::display_f64(*float),
-                        tribez::number::hex_f64(*float),
+                        tribez::hazmat::number::display_f64(*float),
+                        tribez::hazmat::number::hex_f64(*float),
                     ),
                 };
                 let ei = intended.as_ref().map(|v| v[c].clone());
@@ -341,8 +343,8 @@ impl Prepared {
                 Some(yq) if &yq == q => 0.0,
                 Some(yq) => {
                     let u = match self.precision {
-                        Some(Precision::F32) => tribez::number::ulps_error_f32(&yq, q),
-                        _ => tribez::number::ulps_error_f64(&yq, q),
+                        Some(Precision::F32) => tribez::hazmat::number::ulps_error_f32(&yq, q),
+                        _ => tribez::hazmat::number::ulps_error_f64(&yq, q),
                     };
                     u.to_f64().unwrap_or(f64::INFINITY)
                 }

@@ -11,10 +11,10 @@ use std::io::BufRead;
 use num_rational::BigRational;
 
 use super::CHUNK;
-use tribez::certify::measures::as_float;
-use tribez::float::Precision;
-use tribez::io::InputError;
-use tribez::number::parse_rational;
+use tribez::hazmat::certify::measures::as_float;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::io::InputError;
+use tribez::hazmat::number::parse_rational;
 
 /// One field of a row: its text and its 1-based column.
 pub(super) struct Field<'a> {
@@ -73,7 +73,7 @@ pub(super) fn parse_num(
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
             match as_float(&q, p) {
                 Some(x) => Ok(Num::Value {
-                    float: tribez::number::round_f64(&x),
+                    float: tribez::hazmat::number::round_f64(&x),
                     text_exact: Some(q),
                 }),
                 None => Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name()))),
@@ -82,7 +82,7 @@ pub(super) fn parse_num(
         None => {
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
             Ok(Num::Value {
-                float: tribez::number::round_f64(&q),
+                float: tribez::hazmat::number::round_f64(&q),
                 text_exact: Some(q),
             })
         }

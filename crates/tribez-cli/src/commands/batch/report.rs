@@ -4,10 +4,10 @@ use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
 use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
-use tribez::certify::measures::{Measures, Tolerance};
-use tribez::exact::Algorithm;
-use tribez::float::Precision;
-use tribez::number::to_decimal_string;
+use tribez::hazmat::certify::measures::{Measures, Tolerance};
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::number::to_decimal_string;
 
 /// A failed row, in full.
 #[derive(Clone, Debug)]
