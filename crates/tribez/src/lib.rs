@@ -39,7 +39,8 @@
 //!   result (docs/theory.md §14);
 //! * [`Rational`], [`parse_rational`], [`Precision`], [`Tolerance`], [`Algorithm`]: exact
 //!   numbers, precisions and tolerances, parsed from the same strings as the command line;
-//! * [`claims`]: claim files, read and checked;
+//! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
+//!   results, judged in parallel;
 //! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
 //! * [`hazmat`]: the low-level building blocks, **unstable**.
 //!
@@ -48,6 +49,7 @@
 
 mod any_patch;
 mod api_error;
+pub mod batch;
 mod bernstein;
 mod blossom;
 pub mod capability;
