@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome};
-use crate::cli::OutputArgs;
+use crate::cli::LatexOutputArgs;
 use crate::report::Render;
 use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::io::patch_file::read_any_patch;
@@ -26,7 +26,7 @@ pub struct Args {
     #[arg(long)]
     pub cartesian: bool,
     #[command(flatten)]
-    pub out: OutputArgs,
+    pub out: LatexOutputArgs,
 }
 
 /// Polynomials with their variable names.
