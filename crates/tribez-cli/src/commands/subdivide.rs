@@ -9,7 +9,7 @@ use super::construct::{
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{midpoint_split_exact, split_at_pieces_exact};
+use tribez::subdivide::{midpoint_split, split_at_pieces};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]
@@ -39,10 +39,10 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let pieces = match &args.at {
         Some(text) => {
             let t = barycentric_points(std::slice::from_ref(text), "at", m)?.remove(0);
-            split_at_pieces_exact(&parent.net, &t)
+            split_at_pieces(&parent.net, &t)
                 .map_err(|e| CliError::core(format!("--at {text}"), e))?
         }
-        None => midpoint_split_exact(&parent.net).map_err(|e| CliError::core(&file, e))?,
+        None => midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?,
     };
     let total = pieces.len();
     if let Some(r) = rational {
