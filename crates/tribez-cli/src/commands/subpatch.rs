@@ -13,7 +13,7 @@ use crate::cli::OutputArgs;
 use crate::report::Render;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
+use tribez::any_patch::AnyPatch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]

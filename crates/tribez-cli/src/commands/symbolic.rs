@@ -12,7 +12,7 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
+use tribez::any_patch::AnyPatch;
 use tribez::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
 };

@@ -39,7 +39,7 @@ use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
 use crate::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, index_key};
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::patch::AnyPatch;
+use crate::any_patch::AnyPatch;
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
@@ -162,13 +162,13 @@ impl<'a> Inputs<'a> {
     }
 
     /// The claim's patch.
-    pub fn patch(&self) -> Result<&'a crate::patch::Patch, InputError> {
+    pub fn patch(&self) -> Result<&'a crate::patch::BezierPatch, InputError> {
         self.file.patch_for(self.claim)
     }
 
     /// A barycentric point from `at` (checked to sum to one, except for float claims: what a
     /// float program uses need not), or a Cartesian one from `cartesian`.
-    pub fn point(&self, patch: &crate::patch::Patch) -> Result<Vec<BigRational>, InputError> {
+    pub fn point(&self, patch: &crate::patch::BezierPatch) -> Result<Vec<BigRational>, InputError> {
         let m = patch.net.m();
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) if self.get("precision").is_some() => {
@@ -866,7 +866,7 @@ mod beyond {
     use crate::functional;
     use crate::io::InputError;
     use crate::io::patch_file::index_key;
-    use crate::patch::AnyPatch;
+    use crate::any_patch::AnyPatch;
     use crate::rational::homogenised_residual;
     use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_names};
 

@@ -12,7 +12,7 @@ use tribez::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch
 use tribez::certify::measures::{Leaf, Measures, Tolerance, as_float};
 use tribez::exact::{Algorithm, ExactEvaluator};
 use tribez::float::Precision;
-use tribez::patch::{ControlNet, Patch};
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {
