@@ -9,7 +9,6 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
-use num_traits::{One, Zero};
 use tribez::blossom::subpatch;
 use tribez::elevate::elevate;
 use tribez::patch::ControlNet;
