@@ -6,9 +6,9 @@ use super::construct::{PatchReport, check_size, child_patch};
 use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
+use tribez::any_patch::AnyPatch;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::any_patch::AnyPatch;
 
 /// Arguments of `tribez elevate`.
 #[derive(Debug, clap::Args)]
