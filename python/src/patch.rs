@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use rayon::prelude::*;
 
+use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::domain::check_barycentric;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::exact::ExactEvaluator;
@@ -18,7 +19,6 @@ use tribez::hazmat::io::patch_file::{
 };
 use tribez::hazmat::io::tree::Document;
 use tribez::hazmat::number::{format_rational, parse_rational};
-use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
 use tribez::hazmat::rational::RationalPatch;
 use tribez::hazmat::simplex::{Simplex, binomial};
@@ -52,11 +52,7 @@ impl NativePatch {
     }
 }
 
-fn parse_all(
-    py: Python<'_>,
-    rows: &[Vec<String>],
-    what: &str,
-) -> PyResult<Vec<Vec<BigRational>>> {
+fn parse_all(py: Python<'_>, rows: &[Vec<String>], what: &str) -> PyResult<Vec<Vec<BigRational>>> {
     rows.iter()
         .enumerate()
         .map(|(i, row)| {
@@ -374,14 +370,19 @@ impl NativePatch {
             self.degree(),
             self.simplex(),
             self.dimension(),
-            self.name().map(|n| format!(" name={n:?}")).unwrap_or_default()
+            self.name()
+                .map(|n| format!(" name={n:?}"))
+                .unwrap_or_default()
         )
     }
 }
 
 impl NativePatch {
     fn described(&self) -> &'static str {
-        self.patch.described().trim_start_matches("a ").trim_start_matches("an ")
+        self.patch
+            .described()
+            .trim_start_matches("a ")
+            .trim_start_matches("an ")
     }
 }
 

@@ -198,13 +198,13 @@ fn structure(c: &mut Criterion) {
     // constructions` measures more constructions on small rationals).
     g.bench_function("split_at_point_exact", |b| {
         b.iter(|| {
-            tribez::hazmat::subdivide::split_at_pieces_exact(&net, &at)
+            tribez::hazmat::subdivide::split_at_pieces(&net, &at)
                 .unwrap()
                 .len()
         })
     });
     g.bench_function("elevate_by_1_exact", |b| {
-        b.iter(|| tribez::hazmat::elevate::elevate_exact(&net, 1).len())
+        b.iter(|| tribez::hazmat::elevate::elevate(&net, 1).len())
     });
     let n64 = net_f64(&net);
     let at64: Vec<f64> = at.iter().map(tribez::hazmat::number::round_f64).collect();

@@ -101,7 +101,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             true,
         );
     }
-    let net = tribez::hazmat::blossom::subpatch_exact(&parent.net, &f)
+    let net = tribez::hazmat::blossom::subpatch(&parent.net, &f)
         .map_err(|e| CliError::core(context, e))?;
     let patch = child_patch(&parent, net, Some(&f), "subpatch")?;
     Outcome::rendered(
