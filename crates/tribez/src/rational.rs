@@ -20,9 +20,9 @@
 //! infinity, so the patch is undefined there.
 //!
 //! ```
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::{ControlNet, BezierPatch};
-//! use tribez::rational::RationalPatch;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::{ControlNet, BezierPatch};
+//! use tribez::hazmat::rational::RationalPatch;
 //! // the quarter circle as a rational quadratic curve: (1,0), (1,1), (0,1) with weights 1, 1, 2
 //! let pts: Vec<Vec<_>> = [["1", "0"], ["1", "1"], ["0", "1"]].iter().map(|p| p.iter().map(|x| q(x).unwrap()).collect()).collect();
 //! let r = RationalPatch::new(BezierPatch::new(ControlNet::from_points(1, 2, &pts)), ["1", "1", "2"].map(|w| q(w).unwrap()).to_vec());
@@ -351,7 +351,7 @@ impl RationalPatch {
     /// only with weights of both signs).
     pub fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError> {
         RationalPatch::from_homogeneous(
-            &crate::elevate::elevate_exact(&self.homogeneous(), r),
+            &crate::elevate::elevate(&self.homogeneous(), r),
             &self.patch,
         )
     }
@@ -361,7 +361,7 @@ impl RationalPatch {
     /// The result keeps the parent's name and domain.
     pub fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError> {
         RationalPatch::from_homogeneous(
-            &crate::blossom::subpatch_exact(&self.homogeneous(), f)?,
+            &crate::blossom::subpatch(&self.homogeneous(), f)?,
             &self.patch,
         )
     }
@@ -374,9 +374,9 @@ impl RationalPatch {
     /// weight blossom `W[u_1, …, u_n]` is 0.
     ///
     /// ```
-    /// use tribez::number::parse_rational as q;
-    /// use tribez::patch::{ControlNet, BezierPatch};
-    /// use tribez::rational::RationalPatch;
+    /// use tribez::hazmat::number::parse_rational as q;
+    /// use tribez::hazmat::patch::{ControlNet, BezierPatch};
+    /// use tribez::hazmat::rational::RationalPatch;
     /// let v = |t: &[&str]| t.iter().map(|x| q(x).unwrap()).collect::<Vec<_>>();
     /// // the quarter circle (1,0), (1,1), (0,1), weights 1, 1, 2 (as in the module example)
     /// let pts = vec![v(&["1", "0"]), v(&["1", "1"]), v(&["0", "1"])];
@@ -403,7 +403,7 @@ impl RationalPatch {
     /// Split at `t` into `m + 1` pieces (piece `s`: vertex `s` replaced by `t`), on the
     /// homogeneous net.
     pub fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError> {
-        crate::blossom::split_at_exact(&self.homogeneous(), t)
+        crate::subdivide::split_at(&self.homogeneous(), t)
             .iter()
             .map(|h| RationalPatch::from_homogeneous(h, &self.patch))
             .collect()

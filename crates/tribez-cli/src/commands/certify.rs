@@ -2,7 +2,7 @@
 //! Casteljau and the direct Bernstein form; homogeneous de Casteljau and one division for
 //! rational patches; float Wachspress coordinates and de Casteljau for S-patches) in f64 and f32
 //! and judge it against the exact values and its proven error bound
-//! ([`tribez::certify::bound`]).
+//! ([`tribez::hazmat::certify::bound`]).
 //!
 //! One code path for every kind: the kind's [`tribez::FloatEval`] and [`tribez::ErrorBound`]
 //! give the float program, the per-point case and the bound's explanation.
@@ -18,14 +18,14 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::{Exporter, JunitCase, Render, junit_xml};
 use tribez::capability::{FloatCase, FloatProgram, InputSpace};
-use tribez::certify::bound::roundings;
-use tribez::certify::measures::{Measures, sci};
-use tribez::certify::sample::{random_points, random_polygon_points};
-use tribez::exact::Algorithm;
-use tribez::float::Precision;
-use tribez::io::patch_file::read_any_patch;
-use tribez::io::points::read_points;
-use tribez::number::{round_f32, round_f64};
+use tribez::hazmat::certify::bound::roundings;
+use tribez::hazmat::certify::measures::{Measures, sci};
+use tribez::hazmat::certify::sample::{random_points, random_polygon_points};
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::io::points::read_points;
+use tribez::hazmat::number::{round_f32, round_f64};
 use tribez::{FloatEval, Patch};
 
 /// Arguments of `tribez certify`.
@@ -156,7 +156,7 @@ impl Acc {
     /// `None` measures of a non-finite value count as an infinite error.
     fn measure(&mut self, precision: Precision, y: &[f64], exact: &[BigRational]) {
         for (v, q) in y.iter().zip(exact) {
-            let Some(yq) = tribez::number::exact_f64(*v) else {
+            let Some(yq) = tribez::hazmat::number::exact_f64(*v) else {
                 continue;
             };
             let meas = Measures::new(&yq, q, Some(precision));
@@ -179,7 +179,7 @@ impl Acc {
         what: &str,
     ) {
         for (c, ((v, q), b)) in y.iter().zip(exact).zip(bound).enumerate() {
-            let Some(yq) = tribez::number::exact_f64(*v) else {
+            let Some(yq) = tribez::hazmat::number::exact_f64(*v) else {
                 continue;
             };
             let err = (yq - q).abs();

@@ -17,10 +17,9 @@ use super::construct::{
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::blossom::split_at_exact;
-use tribez::error::CoreError;
-use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{Piece, midpoint_split_exact, replaced, split_at_pieces_exact};
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::subdivide::{Piece, midpoint_split, replaced, split_at, split_at_pieces};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]
@@ -52,8 +51,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 (pieces, numbers, m + 1, note)
             }
             None => {
-                let pieces =
-                    midpoint_split_exact(&parent.net).map_err(|e| CliError::core(&file, e))?;
+                let pieces = midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?;
                 let n = pieces.len();
                 (pieces, (1..=n).collect(), n, None)
             }
@@ -94,14 +92,14 @@ type Split = (Vec<Piece<BigRational>>, Vec<usize>, Option<String>);
 /// The pieces of a split at `t` with their numbers (1-based: piece k replaces corner k), and a
 /// note naming the degenerate pieces omitted when `t` lies on a facet. A corner is an error.
 fn split_at_point(
-    net: &tribez::patch::ControlNet<BigRational>,
+    net: &tribez::hazmat::patch::ControlNet<BigRational>,
     t: &[BigRational],
     text: &str,
 ) -> Result<Split, CliError> {
     let what = || format!("--at {text}");
     let zero: Vec<usize> = (0..t.len()).filter(|&k| t[k].is_zero()).collect();
     if zero.is_empty() {
-        let pieces = split_at_pieces_exact(net, t).map_err(|e| CliError::core(what(), e))?;
+        let pieces = split_at_pieces(net, t).map_err(|e| CliError::core(what(), e))?;
         let n = pieces.len();
         return Ok((pieces, (1..=n).collect(), None));
     }
@@ -115,7 +113,7 @@ fn split_at_point(
         ));
     }
     let m = net.m();
-    let (pieces, numbers): (Vec<_>, Vec<_>) = split_at_exact(net, t)
+    let (pieces, numbers): (Vec<_>, Vec<_>) = split_at(net, t)
         .into_iter()
         .enumerate()
         .filter(|(s, _)| !t[*s].is_zero())

@@ -49,7 +49,7 @@ impl ExactEval for RationalPatch {
         Box::new(Exact(self))
     }
 
-    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
+    fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         self.patch.domain_or_reference().barycentric(x)
     }
 }

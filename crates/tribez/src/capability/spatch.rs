@@ -55,7 +55,7 @@ impl ExactEval for SPatch {
         Box::new(Exact(self))
     }
 
-    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
+    fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         check_len(x, 2)?;
         Ok(x.to_vec())
     }
