@@ -18,7 +18,8 @@ use tribez::io::patch_file::{
 };
 use tribez::io::tree::Document;
 use tribez::number::{format_rational, parse_rational};
-use tribez::patch::{AnyPatch, ControlNet, Patch};
+use tribez::any_patch::AnyPatch;
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 use tribez::rational::RationalPatch;
 use tribez::simplex::{Simplex, binomial};
 

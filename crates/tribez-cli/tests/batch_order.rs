@@ -49,7 +49,8 @@ fn eval_points_keeps_input_order() {
 #[test]
 fn line_numbers_across_chunks() {
     let dir = tempfile::tempdir().unwrap();
-    let patch = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/finn_day30.toml");
+    let patch =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/finn_day30.toml");
     // At the corner (1, 0, 0) the patch is c200 = (0, 0, 0) exactly (corner interpolation).
     let good = "1,0,0,0,0,0\n";
     let mut text = good.repeat(69_999);
@@ -90,7 +91,8 @@ fn line_numbers_across_chunks() {
 #[test]
 fn json_array_rows_across_chunks() {
     let dir = tempfile::tempdir().unwrap();
-    let patch = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/finn_day30.toml");
+    let patch =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/finn_day30.toml");
     // At the corner (1, 0, 0) the patch is c200 = (0, 0, 0) exactly (corner interpolation).
     let mut rows = vec!["  [1, 0, 0,\n   0, 0, 0]"; 70_001];
     rows[69_999] = "  [1, 0, 0,\n   0, 0, 0.5]"; // row 69,999 (0-based): line 2 + 2·69,999

@@ -19,7 +19,8 @@ use tribez::certify::beyond::{RationalCertifier, SPatchCertifier};
 use tribez::certify::sample::{SplitMix, random_points, random_polygon_points};
 use tribez::float::Float;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::{AnyPatch, ControlNet, Patch};
+use tribez::any_patch::AnyPatch;
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 use tribez::rational::RationalPatch;
 use tribez::simplex::Simplex;
 

@@ -31,7 +31,7 @@ use num_traits::Zero;
 
 use crate::domain::Domain;
 use crate::error::CoreError;
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{ControlNet, BezierPatch};
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::Polynomial;
 
@@ -63,7 +63,7 @@ pub fn abscissae(domain: &Domain, n: usize) -> Vec<Vec<BigRational>> {
 
 /// The graph of a functional patch (`d = 1`): the parametric patch with control points
 /// `(ξ_α, b_α) ∈ ℚ^{m+1}` over the same domain.
-pub fn graph(patch: &Patch) -> Result<Patch, CoreError> {
+pub fn graph(patch: &BezierPatch) -> Result<BezierPatch, CoreError> {
     if patch.net.dim() != 1 {
         return Err(CoreError::Invalid(format!(
             "a functional patch has one ordinate per control point, this one has {} coordinates",
@@ -80,7 +80,7 @@ pub fn graph(patch: &Patch) -> Result<Patch, CoreError> {
             x
         })
         .collect();
-    Ok(Patch {
+    Ok(BezierPatch {
         name: patch.name.as_ref().map(|n| format!("graph of {n}")),
         net: ControlNet::from_points(patch.net.m(), patch.net.degree(), &points),
         domain: patch.domain.clone(),
@@ -170,7 +170,7 @@ mod tests {
             assert_eq!(*bi, l.evaluate(&xi));
         }
         // the functional patch reproduces ℓ identically (symbolic), and its graph is (x, y, ℓ)
-        let mut p = Patch::new(ControlNet::new(Simplex::new(2, 3), 1, b));
+        let mut p = BezierPatch::new(ControlNet::new(Simplex::new(2, 3), 1, b));
         p.domain = Some(tri());
         assert_eq!(cartesian_form(&p.net, &tri()), vec![l.clone()]);
         let g = graph(&p).unwrap();
@@ -198,7 +198,7 @@ mod tests {
 
     #[test]
     fn graph_needs_one_coordinate() {
-        let p = Patch::new(ControlNet::new(
+        let p = BezierPatch::new(ControlNet::new(
             Simplex::new(2, 1),
             2,
             r(&["1", "2", "3", "4", "5", "6"]),

@@ -42,7 +42,7 @@
 //! use tribez::domain::Domain;
 //! use tribez::join::analyse;
 //! use tribez::number::parse_rational as q;
-//! use tribez::patch::{ControlNet, Patch};
+//! use tribez::patch::{BezierPatch as Patch, ControlNet};
 //! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
 //! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
 //! // docs/theory.md §8: planar quadrilaterals, C0, yet not G1
@@ -62,7 +62,7 @@ use num_traits::{One, Signed, Zero};
 use crate::casteljau;
 use crate::domain::{Domain, determinant};
 use crate::error::CoreError;
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{BezierPatch as Patch, ControlNet};
 use crate::simplex::Simplex;
 use crate::symbolic::Polynomial;
 #[cfg(test)]

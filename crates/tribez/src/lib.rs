@@ -22,8 +22,11 @@
 //! [`casteljau`], [`exact`], [`float`]) never depends on the outer layers: files ([`io`]) and the
 //! command line.
 
+pub mod any_patch;
+pub mod api_error;
 pub mod bernstein;
 pub mod blossom;
+pub mod capability;
 pub mod casteljau;
 pub mod certify;
 pub mod claims;
@@ -36,8 +39,10 @@ pub mod float;
 pub mod functional;
 pub mod io;
 pub mod join;
+pub mod judge;
 pub mod number;
 pub mod patch;
+pub mod patch_type;
 pub mod rational;
 pub mod scalar;
 pub mod simplex;
@@ -46,3 +51,13 @@ pub mod subdivide;
 pub mod symbolic;
 #[cfg(test)]
 mod testing;
+
+pub use api_error::Error;
+pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
+pub use certify::measures::Tolerance;
+pub use exact::Algorithm;
+pub use float::Precision;
+pub use judge::{CoordinateJudgement, Judgement, judge, judge_algorithm, judge_with};
+pub use num_rational::BigRational as Rational;
+pub use number::parse_rational;
+pub use patch_type::{Degree, Patch, PatchKind, SimplexDim};

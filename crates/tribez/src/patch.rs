@@ -1,4 +1,4 @@
-//! Control nets of Bézier simplices, and the `Patch` a file describes.
+//! Control nets of Bézier simplices, and the polynomial [`BezierPatch`] a file describes.
 //!
 //! A [`ControlNet<T>`] of degree `n` over the `m`-simplex holds one point of `ℝ^d` (`d >= 1`)
 //! for every multi-index `|α| = n`, stored in the canonical order of [`crate::simplex`]. It
@@ -142,7 +142,7 @@ impl<T: Clone> ControlNet<T> {
 
 /// A Bézier simplex with exact rational control points, as read from a patch file.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Patch {
+pub struct BezierPatch {
     /// Free-form name from the file.
     pub name: Option<String>,
     /// The control net.
@@ -151,10 +151,10 @@ pub struct Patch {
     pub domain: Option<Domain>,
 }
 
-impl Patch {
+impl BezierPatch {
     /// A patch over the reference domain.
     pub fn new(net: ControlNet<BigRational>) -> Self {
-        Patch {
+        BezierPatch {
             name: None,
             net,
             domain: None,
@@ -166,51 +166,5 @@ impl Patch {
         self.domain
             .clone()
             .unwrap_or_else(|| Domain::reference(self.net.m()))
-    }
-}
-
-/// Any kind of patch a patch file can describe (docs/guide.md §3: `[weights]`, `polygon`,
-/// `kind = "functional"`). Plain Bézier simplices stay [`Patch`], so code that takes a `Patch`
-/// keeps working; the other kinds wrap one or carry their own net.
-#[derive(Clone, Debug, PartialEq)]
-pub enum AnyPatch {
-    /// A polynomial Bézier simplex.
-    Bezier(Patch),
-    /// A rational Bézier simplex (`[weights]`).
-    Rational(crate::rational::RationalPatch),
-    /// A functional (nonparametric) patch: one ordinate per control point (`d = 1`) over a
-    /// domain simplex (`kind = "functional"`).
-    Functional(Patch),
-    /// An S-patch over a convex polygon (`polygon = [...]`).
-    SPatch(crate::spatch::SPatch),
-}
-
-impl AnyPatch {
-    /// `"a rational patch"`, `"an S-patch"`, …: the kind with its article, for messages.
-    pub fn described(&self) -> &'static str {
-        match self {
-            AnyPatch::Bezier(_) => "a Bézier patch",
-            AnyPatch::Rational(_) => "a rational patch",
-            AnyPatch::Functional(_) => "a functional patch",
-            AnyPatch::SPatch(_) => "an S-patch",
-        }
-    }
-
-    /// `"Bézier"`, `"rational"`, `"functional"` or `"S-patch"`.
-    pub fn kind_name(&self) -> &'static str {
-        match self {
-            AnyPatch::Bezier(_) => "Bézier",
-            AnyPatch::Rational(_) => "rational",
-            AnyPatch::Functional(_) => "functional",
-            AnyPatch::SPatch(_) => "S-patch",
-        }
-    }
-
-    /// The polynomial patch, for the kinds that are one (Bézier and functional).
-    pub fn polynomial(&self) -> Option<&Patch> {
-        match self {
-            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Some(p),
-            _ => None,
-        }
     }
 }

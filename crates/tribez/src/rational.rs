@@ -21,11 +21,11 @@
 //!
 //! ```
 //! use tribez::number::parse_rational as q;
-//! use tribez::patch::{ControlNet, Patch};
+//! use tribez::patch::{ControlNet, BezierPatch};
 //! use tribez::rational::RationalPatch;
 //! // the quarter circle as a rational quadratic curve: (1,0), (1,1), (0,1) with weights 1, 1, 2
 //! let pts: Vec<Vec<_>> = [["1", "0"], ["1", "1"], ["0", "1"]].iter().map(|p| p.iter().map(|x| q(x).unwrap()).collect()).collect();
-//! let r = RationalPatch::new(Patch::new(ControlNet::from_points(1, 2, &pts)), ["1", "1", "2"].map(|w| q(w).unwrap()).to_vec());
+//! let r = RationalPatch::new(BezierPatch::new(ControlNet::from_points(1, 2, &pts)), ["1", "1", "2"].map(|w| q(w).unwrap()).to_vec());
 //! let p = r.evaluate(&[q("1/2").unwrap(), q("1/2").unwrap()]).unwrap();
 //! assert_eq!(p, [q("3/5").unwrap(), q("4/5").unwrap()]); // 9/25 + 16/25 = 1
 //! ```
@@ -36,16 +36,16 @@ use num_traits::{One, Zero};
 use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
-use crate::patch::{ControlNet, Patch};
+use crate::patch::{ControlNet, BezierPatch};
 use crate::symbolic::{Polynomial, barycentric_form};
 use crate::{casteljau, float::Float};
 
-/// A rational Bézier simplex: the points (with domain and name) of [`Patch`] and one weight per
+/// A rational Bézier simplex: the points (with domain and name) of [`BezierPatch`] and one weight per
 /// control point, in the canonical order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RationalPatch {
     /// Points `c_α`, domain and name.
-    pub patch: Patch,
+    pub patch: BezierPatch,
     /// Weights `w_α`, canonical order.
     pub weights: Vec<BigRational>,
 }
@@ -59,7 +59,7 @@ fn undefined(lambda: &[BigRational]) -> CoreError {
 
 impl RationalPatch {
     /// A rational patch; `weights` has one entry per control point.
-    pub fn new(patch: Patch, weights: Vec<BigRational>) -> Self {
+    pub fn new(patch: BezierPatch, weights: Vec<BigRational>) -> Self {
         assert_eq!(
             weights.len(),
             patch.net.len(),
@@ -88,7 +88,7 @@ impl RationalPatch {
     /// zero (that control point is at infinity).
     pub fn from_homogeneous(
         net: &ControlNet<BigRational>,
-        like: &Patch,
+        like: &BezierPatch,
     ) -> Result<Self, CoreError> {
         assert!(
             net.dim() >= 2,
@@ -375,12 +375,12 @@ impl RationalPatch {
     ///
     /// ```
     /// use tribez::number::parse_rational as q;
-    /// use tribez::patch::{ControlNet, Patch};
+    /// use tribez::patch::{ControlNet, BezierPatch};
     /// use tribez::rational::RationalPatch;
     /// let v = |t: &[&str]| t.iter().map(|x| q(x).unwrap()).collect::<Vec<_>>();
     /// // the quarter circle (1,0), (1,1), (0,1), weights 1, 1, 2 (as in the module example)
     /// let pts = vec![v(&["1", "0"]), v(&["1", "1"]), v(&["0", "1"])];
-    /// let r = RationalPatch::new(Patch::new(ControlNet::from_points(1, 2, &pts)), v(&["1", "1", "2"]));
+    /// let r = RationalPatch::new(BezierPatch::new(ControlNet::from_points(1, 2, &pts)), v(&["1", "1", "2"]));
     /// let h = v(&["1/2", "1/2"]);
     /// assert_eq!(r.blossom(&[h.clone(), h]).unwrap(), v(&["3/5", "4/5"])); // the diagonal: p(1/2, 1/2)
     /// // b[e_0, e_1] = X_1 / W_1 = c_1
@@ -412,7 +412,7 @@ impl RationalPatch {
 
 impl RationalPatch {
     /// All weights equal to one: the polynomial patch.
-    pub fn polynomial(patch: Patch) -> Self {
+    pub fn polynomial(patch: BezierPatch) -> Self {
         let n = patch.net.len();
         RationalPatch {
             patch,
@@ -455,7 +455,7 @@ mod tests {
             .map(|p| p.iter().map(|x| q(x).unwrap()).collect())
             .collect();
         RationalPatch::new(
-            Patch::new(ControlNet::from_points(2, 4, &pts)),
+            BezierPatch::new(ControlNet::from_points(2, 4, &pts)),
             w.iter().map(|x| q(x).unwrap()).collect(),
         )
     }
@@ -537,7 +537,7 @@ mod tests {
             .map(|p| r(p))
             .collect();
         let rp = RationalPatch::new(
-            Patch::new(ControlNet::from_points(1, 2, &pts)),
+            BezierPatch::new(ControlNet::from_points(1, 2, &pts)),
             r(&["1", "1", "2"]),
         );
         assert_eq!(
@@ -738,7 +738,7 @@ mod tests {
         // weights 1, -1 on a linear curve: the elevated middle weight is (1 + -1)/2 = 0
         let pts: Vec<Vec<BigRational>> = [["0"], ["1"]].iter().map(|p| r(p)).collect();
         let rp = RationalPatch::new(
-            Patch::new(ControlNet::from_points(1, 1, &pts)),
+            BezierPatch::new(ControlNet::from_points(1, 1, &pts)),
             r(&["1", "-1"]),
         );
         let e = rp.elevate(1).unwrap_err().to_string();
@@ -751,7 +751,7 @@ mod tests {
         // agree, and vanish above the degree.
         let poly = crate::testing::finn();
         let r = RationalPatch::new(
-            Patch {
+            BezierPatch {
                 name: None,
                 net: poly.clone(),
                 domain: None,

@@ -245,37 +245,158 @@ impl Polynomial {
         out
     }
 
-    /// Parse a polynomial: a sum of terms, each an optional sign, an optional rational or
-    /// decimal coefficient and factors `x`, `x^k` (or `x²`, `x³`), separated by `*`, spaces or
-    /// nothing (`2uv + v^2 + vw`). Variables are the given single-token names.
+    /// Parse polynomial text, as tribez prints it ([`Polynomial::to_text`]) or as SymPy and
+    /// Python print it (`x**2/4 - 3*x*y/2 + 1`, `(x + 1)**3/4`), so that SymPy's output can be
+    /// pasted. Every error is one line.
+    ///
+    /// Grammar (whitespace is allowed between tokens):
+    ///
+    /// ```text
+    /// expr     := term (("+" | "-") term)*
+    /// term     := unary (("*" | "/") unary | unary)*    juxtaposition multiplies: 2uv, 2(u+v)
+    /// unary    := ("+" | "-") unary | power             so -x**2 is -(x**2), as in Python
+    /// power    := primary [("^" | "**") digits | "²" | "³"]
+    /// primary  := number | variable | "(" expr ")"
+    /// number   := digits ["." digits] [("e" | "E") ["+" | "-"] digits]   (also ".5", "5.")
+    /// ```
+    ///
+    /// * `*` and `/` are left-associative: `3/4*u` is `(3/4)·u`, `x/2*y` is `x·y/2`. The divisor
+    ///   of `/` must be a non-zero constant (`t/2`, `x/(2/3)`); dividing by a variable is an error.
+    /// * `**` is the power (as in Python), never two multiplications; a chained power
+    ///   (`x**2**3`, right-associative in Python) must be written with parentheses; exponents are
+    ///   non-negative integers.
+    /// * A number stands first in a term or after an explicit `*` or `/`: `x2`, `x 2`, `(u)2` and
+    ///   `2 3` are errors (is `x2` meant as `x·2`, `x^2` or a variable?). `−` (U+2212) is a minus.
+    /// * Variables are the given names, matched longest first (`u1` before `u`). A name must be
+    ///   non-empty, start with a letter and continue with letters, digits or `_`
+    ///   ([`check_names`]); names are not case-folded.
+    ///
+    /// Limits, checked BEFORE each power, product or division is computed (so hostile text
+    /// cannot run for long or allocate much): total degree at most [`MAX_DEGREE`] (also for any
+    /// intermediate product and any exponent), coefficient size (numerator plus denominator
+    /// bits) at most [`MAX_COEFFICIENT_BITS`], at most [`MAX_TERM_PRODUCTS`] term products in
+    /// one multiplication, and parentheses nested at most [`MAX_NESTING`] deep. Numbers obey the
+    /// limits of [`crate::number::parse_rational`].
+    ///
+    /// ```
+    /// use tribez::symbolic::Polynomial;
+    /// let xy = ["x", "y"];
+    /// let p = |s| Polynomial::parse(s, &xy).unwrap();
+    /// assert_eq!(p("x**2 - 2*x"), p("x^2 - 2x"));
+    /// assert_eq!(p("(x + 1)**3/4").to_text(&xy), "1/4*x^3 + 3/4*x^2 + 3/4*x + 1/4");
+    /// assert_eq!(p("3*x*y/2"), p("3/2 x y"));
+    /// assert!(Polynomial::parse("x^4294967296", &xy).unwrap_err().contains("200"));
+    /// assert!(Polynomial::parse("x/y", &xy).is_err());
+    /// ```
     pub fn parse(text: &str, names: &[&str]) -> Result<Polynomial, String> {
-        PolyParser {
+        check_names(names)?;
+        let mut p = PolyParser {
             s: text.chars().collect(),
             pos: 0,
             names,
+            depth: 0,
+        };
+        if p.peek().is_none() {
+            return Err("empty polynomial".into());
         }
-        .parse()
+        let out = p.expr()?;
+        match p.peek() {
+            None => Ok(out),
+            Some(')') => Err(format!("unmatched `)` at character {}", p.pos + 1)),
+            Some(c) => Err(format!("unexpected `{c}` at character {}", p.pos + 1)),
+        }
     }
+
+    /// `−self`.
+    fn negated(mut self) -> Polynomial {
+        for c in self.terms.values_mut() {
+            let x = std::mem::take(c);
+            *c = -x;
+        }
+        self
+    }
+
+    /// `self += other`, in place.
+    fn add_assign(&mut self, other: Polynomial) {
+        for (e, c) in other.terms {
+            self.add_term(e, c);
+        }
+    }
+
+    /// The largest coefficient size, numerator plus denominator bits (0 for zero).
+    fn max_coefficient_bits(&self) -> u64 {
+        self.terms.values().map(coefficient_bits).max().unwrap_or(0)
+    }
+}
+
+/// The largest total degree polynomial text may have, also for an exponent or an intermediate
+/// product while it is read (the largest patch degree tribez reads is 200 as well).
+pub const MAX_DEGREE: u32 = 200;
+
+/// The largest coefficient size (bits of the numerator plus bits of the denominator) polynomial
+/// text may produce while it is read: 2^20 bits, about 315,000 decimal digits (a number of
+/// 100,000 digits, or `1e100000`, is 332,193 bits: three such factors fit, four do not).
+pub const MAX_COEFFICIENT_BITS: u64 = 1 << 20;
+
+/// The most term-by-term products one multiplication in polynomial text may take
+/// (`(number of terms of a) · (number of terms of b)`).
+pub const MAX_TERM_PRODUCTS: usize = 1_000_000;
+
+/// The deepest nesting of parentheses in polynomial text.
+pub const MAX_NESTING: usize = 64;
+
+fn coefficient_bits(c: &BigRational) -> u64 {
+    c.numer().bits() + c.denom().bits()
+}
+
+/// Checks variable names for [`Polynomial::parse`]: each non-empty, starting with a letter,
+/// then letters, digits or `_`, and no name twice. The error names the offending name and its
+/// position (from 1).
+pub fn check_names(names: &[&str]) -> Result<(), String> {
+    for (i, name) in names.iter().enumerate() {
+        let mut chars = name.chars();
+        match chars.next() {
+            None => return Err(format!("variable name {} is empty", i + 1)),
+            Some(c) if !c.is_alphabetic() => {
+                return Err(format!(
+                    "variable name {} `{name}` must start with a letter",
+                    i + 1
+                ));
+            }
+            Some(_) => {}
+        }
+        if !chars.all(|c| c.is_alphanumeric() || c == '_') {
+            return Err(format!(
+                "variable name {} `{name}` may hold only letters, digits and `_`",
+                i + 1
+            ));
+        }
+        if names[..i].contains(name) {
+            return Err(format!("variable name `{name}` is given twice"));
+        }
+    }
+    Ok(())
 }
 
 struct PolyParser<'a> {
     s: Vec<char>,
     pos: usize,
     names: &'a [&'a str],
+    depth: usize,
+}
+
+/// What a factor of a term was, for the rule "a number only first or after `*` or `/`".
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Juxtaposed {
+    /// First factor of the term, or after an explicit `*` or `/`.
+    Operator,
+    /// After another factor with nothing (or only spaces) between.
+    Nothing,
 }
 
 impl PolyParser<'_> {
-    /// Is the character at `i` part of a number? Digits, `.`, `/`, and `e`/`E` only when an
-    /// exponent follows (so that a variable named `e` is not swallowed).
-    fn number_char_at(&self, i: usize) -> bool {
-        match self.s.get(i) {
-            Some(c) if c.is_ascii_digit() || matches!(c, '.' | '/') => true,
-            Some('e' | 'E') => self
-                .s
-                .get(i + 1)
-                .is_some_and(|c| c.is_ascii_digit() || *c == '-'),
-            _ => false,
-        }
+    fn nv(&self) -> usize {
+        self.names.len()
     }
 
     fn peek(&mut self) -> Option<char> {
@@ -285,115 +406,356 @@ impl PolyParser<'_> {
         self.s.get(self.pos).copied()
     }
 
-    fn parse(mut self) -> Result<Polynomial, String> {
-        let nv = self.names.len();
-        let mut out = Polynomial::zero(nv);
-        if self.peek().is_none() {
-            return Err("empty polynomial".into());
+    fn at(&self, i: usize) -> Option<char> {
+        self.s.get(i).copied()
+    }
+
+    fn err<T>(&self, what: impl std::fmt::Display) -> Result<T, String> {
+        Err(format!("{what} at character {}", self.pos + 1))
+    }
+
+    /// Is `**` (or `^`) next?
+    fn power_operator(&mut self) -> Option<usize> {
+        match (self.peek(), self.at(self.pos + 1)) {
+            (Some('*'), Some('*')) => Some(2),
+            (Some('^'), _) => Some(1),
+            _ => None,
         }
-        let mut first = true;
-        while self.peek().is_some() {
-            let mut sign = BigRational::one();
-            match self.peek() {
-                Some('+') => self.pos += 1,
-                Some('-' | '−') => {
-                    self.pos += 1;
-                    sign = -sign;
-                }
-                _ if !first => {
-                    return Err(format!("expected + or - at character {}", self.pos + 1));
-                }
-                _ => {}
-            }
-            first = false;
-            let term = self.term()?;
-            out = out.add(&term.scale(&sign));
+    }
+
+    fn expr(&mut self) -> Result<Polynomial, String> {
+        let mut out = self.term()?;
+        loop {
+            let negate = match self.peek() {
+                Some('+') => false,
+                Some('-' | '−') => true,
+                _ => return Ok(out),
+            };
+            self.pos += 1;
+            let t = self.term()?;
+            check_sum(&out, &t)?;
+            out.add_assign(if negate { t.negated() } else { t });
         }
-        Ok(out)
     }
 
     fn term(&mut self) -> Result<Polynomial, String> {
-        let nv = self.names.len();
-        let mut coef = BigRational::one();
-        let mut exps = vec![0u32; nv];
-        let mut any = false;
+        let mut out = self.unary(Juxtaposed::Operator)?;
         loop {
             match self.peek() {
-                Some(c) if c.is_ascii_digit() || c == '.' => {
+                Some('*') if self.at(self.pos + 1) != Some('*') => {
+                    self.pos += 1;
+                    let f = self.unary(Juxtaposed::Operator)?;
+                    out = checked_mul(&out, &f)?;
+                }
+                Some('/') => {
+                    self.pos += 1;
                     let start = self.pos;
-                    while self.number_char_at(self.pos) {
-                        self.pos += 1;
-                    }
-                    let text: String = self.s[start..self.pos].iter().collect();
-                    let q = crate::number::parse_rational(&text).map_err(|e| e.to_string())?;
-                    coef *= q;
-                    any = true;
+                    let f = self.unary(Juxtaposed::Operator)?;
+                    out = checked_div(&out, &f)
+                        .map_err(|e| format!("{e} at character {}", start + 1))?;
                 }
-                Some('*') if any => self.pos += 1,
-                Some('(') => {
-                    // A parenthesised rational coefficient such as (1/2).
-                    let close = self.s[self.pos..]
-                        .iter()
-                        .position(|&c| c == ')')
-                        .ok_or("unclosed parenthesis")?;
-                    let text: String = self.s[self.pos + 1..self.pos + close].iter().collect();
-                    let q = crate::number::parse_rational(&text).map_err(|_| {
-                        format!("only a number may stand in parentheses, not `{text}`")
-                    })?;
-                    coef *= q;
-                    self.pos += close + 1;
-                    any = true;
+                Some(c) if c.is_alphabetic() || c.is_ascii_digit() || c == '.' || c == '(' => {
+                    let f = self.unary(Juxtaposed::Nothing)?;
+                    out = checked_mul(&out, &f)?;
                 }
-                Some(c) if c.is_alphabetic() => {
-                    let rest: String = self.s[self.pos..].iter().collect();
-                    let (i, name) = self
-                        .names
-                        .iter()
-                        .enumerate()
-                        .filter(|(_, n)| rest.starts_with(**n))
-                        .max_by_key(|(_, n)| n.len())
-                        .ok_or_else(|| {
-                            format!(
-                                "unknown variable at `{}` (expected one of {})",
-                                rest.chars().take(8).collect::<String>(),
-                                self.names.join(", ")
-                            )
-                        })?;
-                    self.pos += name.chars().count();
-                    let mut k = 1u32;
-                    match self.s.get(self.pos) {
-                        Some('^') => {
-                            self.pos += 1;
-                            let start = self.pos;
-                            while self.s.get(self.pos).is_some_and(char::is_ascii_digit) {
-                                self.pos += 1;
-                            }
-                            let t: String = self.s[start..self.pos].iter().collect();
-                            k = t
-                                .parse()
-                                .map_err(|_| "expected an exponent after ^".to_string())?;
-                        }
-                        Some('²') => {
-                            self.pos += 1;
-                            k = 2;
-                        }
-                        Some('³') => {
-                            self.pos += 1;
-                            k = 3;
-                        }
-                        _ => {}
-                    }
-                    exps[i] += k;
-                    any = true;
-                }
-                _ => break,
+                Some('*') => return self.err("`**` without a base"),
+                _ => return Ok(out),
             }
         }
-        if !any {
-            return Err(format!("expected a term at character {}", self.pos + 1));
-        }
-        Ok(Polynomial::monomial(nv, exps, coef))
     }
+
+    fn unary(&mut self, after: Juxtaposed) -> Result<Polynomial, String> {
+        match self.peek() {
+            Some('+') => {
+                self.pos += 1;
+                self.unary(Juxtaposed::Operator)
+            }
+            Some('-' | '−') => {
+                self.pos += 1;
+                Ok(self.unary(Juxtaposed::Operator)?.negated())
+            }
+            _ => self.power(after),
+        }
+    }
+
+    fn power(&mut self, after: Juxtaposed) -> Result<Polynomial, String> {
+        let base = self.primary(after)?;
+        let k: u64 = match self.power_operator() {
+            Some(len) => {
+                self.pos += len;
+                self.exponent()?
+            }
+            None => match self.at(self.pos) {
+                Some('²') => {
+                    self.pos += 1;
+                    2
+                }
+                Some('³') => {
+                    self.pos += 1;
+                    3
+                }
+                _ => return Ok(base),
+            },
+        };
+        if self.power_operator().is_some() || matches!(self.at(self.pos), Some('²' | '³')) {
+            return self
+                .err("a chained power is ambiguous (write x**(2*3) as x**6, or use parentheses)");
+        }
+        checked_pow(&base, k)
+    }
+
+    /// The digits of an exponent, as a number (values above [`MAX_DEGREE`] are reported whole).
+    fn exponent(&mut self) -> Result<u64, String> {
+        match self.peek() {
+            Some('-' | '−') => return self.err("a negative exponent is not a polynomial"),
+            Some(c) if c.is_ascii_digit() => {}
+            _ => return self.err("expected an exponent (a non-negative integer) after the power"),
+        }
+        let start = self.pos;
+        while self.at(self.pos).is_some_and(|c| c.is_ascii_digit()) {
+            self.pos += 1;
+        }
+        let digits: String = self.s[start..self.pos].iter().collect();
+        if matches!(self.at(self.pos), Some('.' | 'e' | 'E')) {
+            return self.err("an exponent must be a non-negative integer");
+        }
+        let trimmed = digits.trim_start_matches('0');
+        // Anything that does not fit a u64 is above every limit; say so with its digits.
+        trimmed.parse::<u64>().or_else(|_| {
+            if trimmed.is_empty() {
+                Ok(0)
+            } else {
+                Err(format!(
+                    "exponent {} is above the maximum degree {MAX_DEGREE} at character {}",
+                    abbreviate(&digits),
+                    start + 1
+                ))
+            }
+        })
+    }
+
+    fn primary(&mut self, after: Juxtaposed) -> Result<Polynomial, String> {
+        let nv = self.nv();
+        match self.peek() {
+            Some(c) if c.is_ascii_digit() || c == '.' => {
+                if after == Juxtaposed::Nothing {
+                    return self.err(format!(
+                        "a number after a factor needs an explicit `*` (is `{}` meant as a product or a power?)",
+                        self.context()
+                    ));
+                }
+                let q = self.number()?;
+                Ok(Polynomial::constant(nv, q))
+            }
+            Some('(') => {
+                if self.depth >= MAX_NESTING {
+                    return self.err(format!("parentheses nested deeper than {MAX_NESTING}"));
+                }
+                let open = self.pos;
+                self.pos += 1;
+                self.depth += 1;
+                if self.peek() == Some(')') {
+                    return self.err("empty parentheses");
+                }
+                let inner = self.expr()?;
+                self.depth -= 1;
+                if self.peek() != Some(')') {
+                    return Err(format!("unclosed `(` at character {}", open + 1));
+                }
+                self.pos += 1;
+                Ok(inner)
+            }
+            Some(c) if c.is_alphabetic() => self.variable(),
+            None => Err("expected a term at the end of the text".into()),
+            Some(c) => self.err(format!("expected a term, found `{c}`")),
+        }
+    }
+
+    /// A few characters from the current position, for error messages.
+    fn context(&self) -> String {
+        let from = self.pos.saturating_sub(3);
+        self.s[from..(self.pos + 3).min(self.s.len())]
+            .iter()
+            .collect()
+    }
+
+    fn number(&mut self) -> Result<BigRational, String> {
+        let start = self.pos;
+        let digits = |p: &mut Self| {
+            let from = p.pos;
+            while p.at(p.pos).is_some_and(|c| c.is_ascii_digit()) {
+                p.pos += 1;
+            }
+            p.pos > from
+        };
+        digits(self);
+        if self.at(self.pos) == Some('.') {
+            self.pos += 1;
+            digits(self);
+        }
+        if let Some('e' | 'E') = self.at(self.pos) {
+            // An exponent only when digits follow (so that a variable named `e` is not swallowed).
+            let sign = usize::from(matches!(self.at(self.pos + 1), Some('+' | '-')));
+            if self
+                .at(self.pos + 1 + sign)
+                .is_some_and(|c| c.is_ascii_digit())
+            {
+                self.pos += 1 + sign;
+                digits(self);
+            }
+        }
+        let text: String = self.s[start..self.pos].iter().collect();
+        let q = crate::number::parse_rational(&text)
+            .map_err(|e| format!("{e} at character {}", start + 1))?;
+        if coefficient_bits(&q) > MAX_COEFFICIENT_BITS {
+            return Err(format!(
+                "the number at character {} has more than {MAX_COEFFICIENT_BITS} bits (the coefficient size limit)",
+                start + 1
+            ));
+        }
+        Ok(q)
+    }
+
+    fn variable(&mut self) -> Result<Polynomial, String> {
+        let nv = self.nv();
+        let rest = &self.s[self.pos..];
+        let matches = |n: &str| {
+            let len = n.chars().count();
+            rest.len() >= len && rest.iter().zip(n.chars()).all(|(a, b)| *a == b)
+        };
+        let Some((i, name)) = self
+            .names
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| matches(n))
+            .max_by_key(|(_, n)| n.len())
+        else {
+            return self.err(format!(
+                "unknown variable `{}` (expected one of {})",
+                self.word(),
+                self.names.join(", ")
+            ));
+        };
+        let len = name.chars().count();
+        if self
+            .at(self.pos + len)
+            .is_some_and(|c| c.is_ascii_digit() || c == '_')
+        {
+            return self.err(format!(
+                "unknown variable `{}` (expected one of {}; write a product with `*`, a power with `**` or `^`)",
+                self.word(),
+                self.names.join(", ")
+            ));
+        }
+        self.pos += len;
+        Ok(Polynomial::variable(nv, i))
+    }
+
+    /// The run of letters, digits and `_` at the current position (abbreviated).
+    fn word(&self) -> String {
+        let w: String = self.s[self.pos..]
+            .iter()
+            .take_while(|c| c.is_alphanumeric() || **c == '_')
+            .collect();
+        abbreviate(&w)
+    }
+}
+
+/// At most 24 characters of `s`, with `…` when cut.
+fn abbreviate(s: &str) -> String {
+    if s.chars().count() <= 24 {
+        s.to_owned()
+    } else {
+        format!("{}…", s.chars().take(24).collect::<String>())
+    }
+}
+
+fn check_degree(d: u64) -> Result<(), String> {
+    if d > u64::from(MAX_DEGREE) {
+        return Err(format!(
+            "degree {d} is above the maximum degree {MAX_DEGREE} of polynomial text"
+        ));
+    }
+    Ok(())
+}
+
+fn check_bits(bits: u64) -> Result<(), String> {
+    if bits > MAX_COEFFICIENT_BITS {
+        return Err(format!(
+            "a coefficient would have about {bits} bits, above the limit of {MAX_COEFFICIENT_BITS} bits"
+        ));
+    }
+    Ok(())
+}
+
+/// A sum adds at most one bit to the larger numerator, and multiplies denominators.
+fn check_sum(a: &Polynomial, b: &Polynomial) -> Result<(), String> {
+    check_bits(a.max_coefficient_bits() + b.max_coefficient_bits() + 1)
+}
+
+/// `a · b`, after checking the degree, the number of term products and the coefficient size.
+fn checked_mul(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
+    if a.is_zero() || b.is_zero() {
+        return Ok(Polynomial::zero(a.nvars));
+    }
+    let deg = |p: &Polynomial| u64::from(p.degree().unwrap_or(0));
+    check_degree(deg(a) + deg(b))?;
+    let pairs = a.terms.len().saturating_mul(b.terms.len());
+    if pairs > MAX_TERM_PRODUCTS {
+        return Err(format!(
+            "a product of {} by {} terms is above the limit of {MAX_TERM_PRODUCTS} term products",
+            a.terms.len(),
+            b.terms.len()
+        ));
+    }
+    // Each coefficient of the product is a sum of at most min(|a|, |b|) products.
+    let sum_bits = u64::BITS - (a.terms.len().min(b.terms.len()) as u64).leading_zeros();
+    check_bits(a.max_coefficient_bits() + b.max_coefficient_bits() + u64::from(sum_bits))?;
+    Ok(a.mul(b))
+}
+
+/// `a / b` for a non-zero constant `b`.
+fn checked_div(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
+    if b.degree().unwrap_or(0) > 0 {
+        return Err(
+            "the divisor is not a constant (only division by a number is a polynomial)".into(),
+        );
+    }
+    let c = b
+        .terms
+        .values()
+        .next()
+        .ok_or_else(|| "division by zero".to_string())?;
+    check_bits(a.max_coefficient_bits() + coefficient_bits(c))?;
+    Ok(a.scale(&c.recip()))
+}
+
+/// `p^k`, after checking the degree `deg(p)·k` and the coefficient size `bits(p)·k`.
+fn checked_pow(p: &Polynomial, k: u64) -> Result<Polynomial, String> {
+    if k == 0 {
+        return Ok(Polynomial::constant(p.nvars, BigRational::one()));
+    }
+    if p.is_zero() {
+        return Ok(p.clone());
+    }
+    let deg = u64::from(p.degree().unwrap_or(0));
+    if deg.saturating_mul(k) > u64::from(MAX_DEGREE) {
+        return Err(format!(
+            "exponent {k} gives degree {}, above the maximum degree {MAX_DEGREE} of polynomial text",
+            deg.saturating_mul(k)
+        ));
+    }
+    check_bits(p.max_coefficient_bits().saturating_mul(k))?;
+    if deg == 0 {
+        let c = p.terms.values().next().expect("non-zero");
+        let k = usize::try_from(k).map_err(|_| "exponent too large".to_string())?;
+        return Ok(Polynomial::constant(p.nvars, num_traits::pow(c.clone(), k)));
+    }
+    let mut out = p.clone();
+    for _ in 1..k {
+        out = checked_mul(&out, p)?;
+    }
+    Ok(out)
 }
 
 /// Default variable names for `m + 1` barycentric coordinates: `u, v, w` for triangles, `u, v`
@@ -465,6 +827,7 @@ pub fn cartesian_form(net: &ControlNet<BigRational>, domain: &Domain) -> Vec<Pol
 mod tests {
     use super::*;
     use crate::number::parse_rational;
+    use proptest::prelude::*;
 
     fn names3() -> [&'static str; 3] {
         ["u", "v", "w"]
@@ -492,6 +855,269 @@ mod tests {
         assert!(Polynomial::parse("", &names3()).is_err());
         assert!(Polynomial::parse("2q", &names3()).is_err());
         assert!(Polynomial::parse("u v + ", &names3()).is_err());
+    }
+
+    /// `c · x^e` in the variables of `names3()`, from a hand-written coefficient.
+    fn mono(e: [u32; 3], c: &str) -> Polynomial {
+        Polynomial::monomial(3, e.to_vec(), parse_rational(c).unwrap())
+    }
+
+    fn sum(terms: &[Polynomial]) -> Polynomial {
+        terms.iter().fold(Polynomial::zero(3), |a, t| a.add(t))
+    }
+
+    #[test]
+    fn double_star_is_the_power_not_two_products() {
+        // x**2 - 2*x was read as x*2 - 2*x = 0: a false pass of `symbolic` claims.
+        let p = Polynomial::parse("u**2 - 2*u", &names3()).unwrap();
+        assert_eq!(p, sum(&[mono([2, 0, 0], "1"), mono([1, 0, 0], "-2")]));
+        assert!(!p.is_zero());
+        assert_eq!(p, Polynomial::parse("u^2 - 2u", &names3()).unwrap());
+        assert_eq!(p, Polynomial::parse("u ** 2 - 2 * u", &names3()).unwrap());
+    }
+
+    #[test]
+    fn parentheses_and_division_by_numbers() {
+        let p = |s: &str| Polynomial::parse(s, &names3()).unwrap();
+        // (u+v)^2 = u^2 + 2uv + v^2
+        let square = sum(&[
+            mono([2, 0, 0], "1"),
+            mono([1, 1, 0], "2"),
+            mono([0, 2, 0], "1"),
+        ]);
+        assert_eq!(p("(u+v)^2"), square);
+        assert_eq!(p("(u + v)**2"), square);
+        assert_eq!(p("(u+v)(u+v)"), square);
+        assert_eq!(p("w/2"), mono([0, 0, 1], "1/2"));
+        assert_eq!(p("3*w/4"), mono([0, 0, 1], "3/4"));
+        assert_eq!(p("3/4*w"), mono([0, 0, 1], "3/4"));
+        assert_eq!(p("u/(2/3)"), mono([1, 0, 0], "3/2"));
+        assert_eq!(p("u/2/3"), mono([1, 0, 0], "1/6"));
+        // (u+1)^3/4 = (u^3 + 3u^2 + 3u + 1)/4
+        assert_eq!(
+            p("(u+1)**3/4"),
+            sum(&[
+                mono([3, 0, 0], "1/4"),
+                mono([2, 0, 0], "3/4"),
+                mono([1, 0, 0], "3/4"),
+                mono([0, 0, 0], "1/4"),
+            ])
+        );
+        // Python's precedence: -u**2 is -(u**2); 2*(u - (v - w)) nests.
+        assert_eq!(p("-u**2"), mono([2, 0, 0], "-1"));
+        assert_eq!(
+            p("2*(u - (v - w))"),
+            sum(&[
+                mono([1, 0, 0], "2"),
+                mono([0, 1, 0], "-2"),
+                mono([0, 0, 1], "2")
+            ])
+        );
+        assert_eq!(p("u*-v"), mono([1, 1, 0], "-1"));
+        assert_eq!(
+            p("1.5e1*u + 2E-1"),
+            sum(&[mono([1, 0, 0], "15"), mono([0, 0, 0], "1/5")])
+        );
+        assert_eq!(p("(2)^3"), mono([0, 0, 0], "8"));
+        assert_eq!(p("u^0"), mono([0, 0, 0], "1"));
+    }
+
+    #[test]
+    fn exponents_too_large_say_so() {
+        let err = |s: &str| Polynomial::parse(s, &names3()).unwrap_err();
+        // u^4294967296 was read as u^0 (u32 wrap): a false pass.
+        for s in ["u^4294967296", "u**4294967296", "u^4294967295", "u^201"] {
+            let e = err(s);
+            assert!(e.contains("maximum degree 200"), "{s}: {e}");
+            assert!(e.contains("exponent"), "{s}: {e}");
+        }
+        let e = err("u^99999999999999999999999999999999");
+        assert!(e.contains("exponent 999999999999999999999999…"), "{e}");
+        assert!(e.contains("maximum degree 200"), "{e}");
+        // the exponents of one term summed past u32 (an overflow before)
+        let e = err("v^4294967295v");
+        assert!(e.contains("maximum degree 200"), "{e}");
+        let e = err("u^150 v^51");
+        assert_eq!(
+            e,
+            "degree 201 is above the maximum degree 200 of polynomial text"
+        );
+        assert_eq!(
+            Polynomial::parse("u^200", &names3()).unwrap().degree(),
+            Some(200)
+        );
+        assert_eq!(
+            Polynomial::parse("u^100 v^100", &names3())
+                .unwrap()
+                .degree(),
+            Some(200)
+        );
+        assert!(err("u^-1").contains("negative exponent"));
+        assert!(err("u^").contains("expected an exponent"));
+        assert!(err("u^1.5").contains("non-negative integer"));
+        assert!(err("u**2**3").contains("chained power"));
+        assert!(err("u^2^3").contains("chained power"));
+    }
+
+    #[test]
+    fn empty_or_bad_variable_names_are_rejected() {
+        // Used to loop forever: the empty name matched everywhere without advancing.
+        assert_eq!(
+            Polynomial::parse("v + w", &["", "v", "w"]).unwrap_err(),
+            "variable name 1 is empty"
+        );
+        assert_eq!(
+            Polynomial::parse("x + y", &["", "y", "z"]).unwrap_err(),
+            "variable name 1 is empty"
+        );
+        assert_eq!(
+            check_names(&["u", "v", ""]).unwrap_err(),
+            "variable name 3 is empty"
+        );
+        assert!(check_names(&["u", "u"]).unwrap_err().contains("twice"));
+        assert!(
+            check_names(&["2u"])
+                .unwrap_err()
+                .contains("start with a letter")
+        );
+        assert!(check_names(&["u v"]).unwrap_err().contains("only letters"));
+        assert!(check_names(&["u*v"]).unwrap_err().contains("only letters"));
+        assert!(check_names(&["u", "u1", "λ_2"]).is_ok());
+        let p = Polynomial::parse("u1 u + λ_2", &["u", "u1", "λ_2"]).unwrap();
+        assert_eq!(p.to_text(&["u", "u1", "λ_2"]), "u*u1 + λ_2");
+    }
+
+    #[test]
+    fn ambiguous_juxtapositions_are_errors() {
+        let err = |s: &str| Polynomial::parse(s, &names3()).unwrap_err();
+        // `u2` could be u·2, u^2 or a variable u2.
+        assert!(err("u2").contains("unknown variable `u2`"), "{}", err("u2"));
+        assert!(err("u 2").contains("explicit `*`"));
+        assert!(err("2 3").contains("explicit `*`"));
+        assert!(err("(u)2").contains("explicit `*`"));
+        assert!(err("u* *v").contains("expected a term"));
+        assert!(err("u + ").contains("expected a term"));
+        assert!(err("(u + v").contains("unclosed `(` at character 1"));
+        assert!(err("u + v)").contains("unmatched `)` at character 6"));
+        assert!(err("()").contains("empty parentheses"));
+        assert!(err("u @ v").contains("unexpected `@`"));
+        assert!(err("u/v").contains("not a constant"));
+        assert!(err("u/(v - v)").contains("division by zero"));
+        assert!(err("u/0").contains("division by zero"));
+        let deep = format!("{}u{}", "(".repeat(65), ")".repeat(65));
+        assert!(err(&deep).contains("nested deeper than 64"));
+        let ok = format!("{}u{}", "(".repeat(64), ")".repeat(64));
+        assert_eq!(
+            Polynomial::parse(&ok, &names3()).unwrap(),
+            mono([1, 0, 0], "1")
+        );
+        // Numbers obey the number syntax and its limits.
+        assert!(err("1e100001 u").contains("exponent"));
+    }
+
+    #[test]
+    fn coefficient_and_product_sizes_are_capped_before_computing() {
+        // Ten factors 1e100000 took 46 s: the fourth is refused before it is multiplied.
+        let ten = vec!["1e100000"; 10].join("*");
+        let e = Polynomial::parse(&ten, &names3()).unwrap_err();
+        assert!(e.contains("limit of 1048576 bits"), "{e}");
+        let three = Polynomial::parse("1e100000*1e100000*1e100000 u", &names3()).unwrap();
+        let big = BigRational::from_integer(BigInt::from(10u32).pow(300_000u32));
+        assert_eq!(three, Polynomial::monomial(3, vec![1, 0, 0], big));
+        let e = Polynomial::parse("2^4294967295", &names3()).unwrap_err();
+        assert!(e.contains("bits"), "{e}");
+        assert_eq!(
+            Polynomial::parse("2^1000", &names3()).unwrap(),
+            Polynomial::constant(3, BigRational::from_integer(BigInt::one() << 1000usize))
+        );
+        // (u+v+w+1)^20 has C(23,3) = 1771 terms; times itself: 3136441 term products.
+        let e = Polynomial::parse("(u+v+w+1)^20 * (u+v+w+1)^20", &names3()).unwrap_err();
+        assert!(e.contains("limit of 1000000 term products"), "{e}");
+    }
+
+    #[test]
+    fn sympy_printed_polynomials() {
+        // fixtures/polynomials/sympy_printed.txt: SymPy's printing of a product of powers and
+        // SymPy's own expansion of it (made by sympy_printed.py beside it).
+        let xyz = ["x", "y", "z"];
+        let text = include_str!("../../../fixtures/polynomials/sympy_printed.txt");
+        let mut n = 0;
+        for line in text.lines().filter(|l| !l.trim().is_empty()) {
+            let (printed, expanded) = line.split_once(" ; ").expect("two sides");
+            let a = Polynomial::parse(printed, &xyz).unwrap_or_else(|e| panic!("{printed}: {e}"));
+            let b = Polynomial::parse(expanded, &xyz).unwrap_or_else(|e| panic!("{expanded}: {e}"));
+            assert_eq!(a, b, "{line}");
+            n += 1;
+        }
+        assert!(n >= 50);
+    }
+
+    /// SymPy's printing of a polynomial (`3*x**2*y/4`, `-x/2`, `x**3`, `-7/2`): written here
+    /// independently of `to_text`.
+    fn sympy_style(p: &Polynomial, names: &[&str]) -> String {
+        let mut out = String::new();
+        for (i, (e, c)) in p.terms().into_iter().enumerate() {
+            let sign = if c.is_negative() { "-" } else { "+" };
+            out.push_str(match (i, sign) {
+                (0, "+") => "",
+                (0, _) => "-",
+                (_, "+") => " + ",
+                _ => " - ",
+            });
+            let mut factors: Vec<String> = e
+                .iter()
+                .zip(names)
+                .filter(|(k, _)| **k > 0)
+                .map(|(k, n)| {
+                    if *k == 1 {
+                        n.to_string()
+                    } else {
+                        format!("{n}**{k}")
+                    }
+                })
+                .collect();
+            let (num, den) = (c.numer().abs(), c.denom().clone());
+            if !num.is_one() || factors.is_empty() {
+                factors.insert(0, num.to_string());
+            }
+            out.push_str(&factors.join("*"));
+            if !den.is_one() {
+                out.push_str(&format!("/{den}"));
+            }
+        }
+        if out.is_empty() { "0".into() } else { out }
+    }
+
+    fn poly_strategy() -> impl Strategy<Value = Polynomial> {
+        proptest::collection::vec(
+            (proptest::collection::vec(0u32..5, 3), -30i64..30, 1i64..12),
+            0..8,
+        )
+        .prop_map(|terms| {
+            let mut p = Polynomial::zero(3);
+            for (e, a, b) in terms {
+                p.add_term(e, BigRational::new(a.into(), b.into()));
+            }
+            p
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn sympy_printing_round_trips(p in poly_strategy()) {
+            let names = ["x", "y", "z"];
+            let text = sympy_style(&p, &names);
+            prop_assert_eq!(&Polynomial::parse(&text, &names).unwrap(), &p, "{}", text);
+            prop_assert_eq!(&Polynomial::parse(&p.to_text(&names), &names).unwrap(), &p);
+            // the power operator and (a+b)**2 in SymPy's unexpanded style
+            let sq = format!("({text})**2");
+            prop_assert_eq!(Polynomial::parse(&sq, &names).unwrap(), p.mul(&p));
+        }
+
+        #[test]
+        fn parse_never_panics(s in "[uvw0-9.*^/+()e -]{0,40}") {
+            let _ = Polynomial::parse(&s, &names3());
+        }
     }
 
     #[test]

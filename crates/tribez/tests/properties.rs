@@ -10,7 +10,7 @@ use num_traits::{One, Zero};
 use proptest::prelude::*;
 
 use tribez::exact::{Algorithm, ExactEvaluator, evaluate_rational};
-use tribez::patch::{ControlNet, Patch};
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 use tribez::rational::RationalPatch;
 use tribez::simplex::Simplex;
 use tribez::symbolic::barycentric_form;

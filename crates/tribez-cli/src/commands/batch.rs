@@ -32,12 +32,12 @@ pub use report::{BatchReport, FailedRow};
 
 use super::check::Args;
 use super::{CliError, Outcome};
-use tribez::exact::Algorithm;
-use tribez::io::InputError;
-use tribez::io::patch_file::read_patch;
 use crate::report::{Exporter, UlpHistogram};
 use judge::{Prepared, RowOutcome, RowScratch};
 use parse::{Chunk, Format, Num, RowReader, parse_row, texts_of};
+use tribez::exact::Algorithm;
+use tribez::io::InputError;
+use tribez::io::patch_file::read_patch;
 
 /// Rows judged per chunk (the memory bound: one chunk of lines is held at a time).
 pub const CHUNK: usize = 1 << 16;

@@ -12,9 +12,9 @@ use serde_json::{Value as Json, json};
 use super::construct::barycentric_points;
 use super::{CliError, Outcome, points_patch};
 use crate::cli::OutputArgs;
+use crate::report::{Render, json_rationals, tuple};
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez blossom`.
 #[derive(Debug, clap::Args)]

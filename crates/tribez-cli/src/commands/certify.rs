@@ -1,28 +1,32 @@
-//! `tribez certify`: run tribez's own float algorithms (de Casteljau and the direct Bernstein
-//! form, generic code in f64 and f32) and judge them against the exact values and their proven
-//! a-priori error bounds ([`tribez::certify::bound`]). Rational patches and S-patches:
-//! [`super::certify_beyond`].
+//! `tribez certify`: run the float program of a patch of any kind (for polynomial patches de
+//! Casteljau and the direct Bernstein form; homogeneous de Casteljau and one division for
+//! rational patches; float Wachspress coordinates and de Casteljau for S-patches) in f64 and f32
+//! and judge it against the exact values and its proven error bound
+//! ([`tribez::certify::bound`]).
+//!
+//! One code path for every kind: the kind's [`tribez::FloatEval`] and [`tribez::ErrorBound`]
+//! give the float program, the per-point case and the bound's explanation.
 
-use tribez::certify::sample::random_points;
 use std::path::PathBuf;
 
-use tribez::number::round_f64;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome};
-use tribez::certify::Certifier;
-use tribez::certify::bound::{a_priori, condition, roundings};
-use tribez::certify::measures::Measures;
 use crate::cli::OutputArgs;
+use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use tribez::capability::{FloatCase, FloatProgram, InputSpace};
+use tribez::certify::bound::roundings;
+use tribez::certify::measures::{Measures, sci};
+use tribez::certify::sample::{random_points, random_polygon_points};
 use tribez::exact::Algorithm;
-use tribez::float::{Float, Precision};
+use tribez::float::Precision;
 use tribez::io::patch_file::read_any_patch;
 use tribez::io::points::read_points;
-use tribez::patch::{AnyPatch, Patch};
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use tribez::number::{round_f32, round_f64};
+use tribez::{FloatEval, Patch};
 
 /// Arguments of `tribez certify`.
 #[derive(Debug, clap::Args)]
@@ -148,12 +152,14 @@ pub(super) struct Acc {
 }
 
 impl Acc {
-    /// Measure `y` against `exact` (ULPs, correct rounding); `None` measures of a non-finite
-    /// value count as an infinite error.
-    pub(super) fn measure<F: Float>(&mut self, y: &[F], exact: &[BigRational]) {
+    /// Measure `y` (floats of `precision`, as f64) against `exact` (ULPs, correct rounding);
+    /// `None` measures of a non-finite value count as an infinite error.
+    fn measure(&mut self, precision: Precision, y: &[f64], exact: &[BigRational]) {
         for (v, q) in y.iter().zip(exact) {
-            let Some(yq) = v.exact() else { continue };
-            let meas = Measures::new(&yq, q, Some(F::PRECISION));
+            let Some(yq) = tribez::number::exact_f64(*v) else {
+                continue;
+            };
+            let meas = Measures::new(&yq, q, Some(precision));
             self.ulps = self
                 .ulps
                 .max(meas.ulps.as_ref().map_or(f64::INFINITY, round_f64));
@@ -161,6 +167,72 @@ impl Acc {
                 self.cr += 1;
             }
         }
+    }
+
+    /// Judge `|y − exact| ≤ bound` per coordinate (`what` names the quantity in a violation).
+    fn judge(
+        &mut self,
+        y: &[f64],
+        exact: &[BigRational],
+        bound: &[BigRational],
+        at: &[BigRational],
+        what: &str,
+    ) {
+        for (c, ((v, q), b)) in y.iter().zip(exact).zip(bound).enumerate() {
+            let Some(yq) = tribez::number::exact_f64(*v) else {
+                continue;
+            };
+            let err = (yq - q).abs();
+            if !b.is_zero() {
+                self.ratio = self.ratio.max(round_f64(&(&err / b)));
+            }
+            if err > *b {
+                self.violation = Some(format!(
+                    "at {} coordinate {c}: {what}error {} exceeds the bound {}",
+                    crate::report::tuple(at),
+                    sci(&err),
+                    sci(b)
+                ));
+            }
+        }
+    }
+
+    /// One point's certified case ([`tribez::ErrorBound::certify`]), folded; `coordinate` names
+    /// one intermediate coordinate in a violation.
+    fn of_case(precision: Precision, case: FloatCase, coordinate: &str) -> Acc {
+        let mut acc = Acc {
+            coords: case.y.len(),
+            outside: case.outside,
+            ..Acc::default()
+        };
+        if let Some(q) = &case.exact {
+            acc.measure(precision, &case.y, q);
+        }
+        if let Some(k) = &case.condition {
+            for (c, kc) in k.iter().enumerate() {
+                acc.cond = acc.cond.max(round_f64(kc));
+                if let Some(q) = case.exact.as_ref().filter(|q| !q[c].is_zero()) {
+                    acc.rel_cond = acc.rel_cond.max(round_f64(&(kc / q[c].abs())));
+                }
+            }
+        }
+        if let Some(cc) = &case.coordinates {
+            let mut lacc = Acc::default();
+            lacc.measure(precision, &cc.values, &cc.exact);
+            acc.lambda_ulps = lacc.ulps;
+        }
+        if !case.outside {
+            if let (Some(q), Some(b)) = (&case.exact, &case.bound) {
+                acc.judge(&case.y, q, b, &case.input, "");
+            }
+            if let Some((cc, b)) = case.coordinates.as_ref().and_then(|cc| Some((cc, cc.bound.as_ref()?))) {
+                acc.judge(&cc.values, &cc.exact, b, &case.input, coordinate);
+            }
+        }
+        if let Some(f) = case.failure {
+            acc.violation = Some(f);
+        }
+        acc
     }
 }
 
@@ -182,62 +254,76 @@ fn alg_name(a: Algorithm) -> &'static str {
     }
 }
 
-fn certify_one<F: Float>(patch: &Patch, algorithm: Algorithm, points: &[Vec<BigRational>]) -> Row {
-    let cert = Certifier::<F>::new(&patch.net);
-    let (m, n) = (patch.net.m(), patch.net.degree());
-    let cases: Vec<Acc> = points
+/// One algorithm of the float program `program`, over all points.
+fn certify_row(
+    program: &dyn FloatProgram,
+    algorithm: Algorithm,
+    points: &[Vec<BigRational>],
+    (m, n): (usize, usize),
+) -> Result<Row, CliError> {
+    let precision = program.precision();
+    let bound = program.error_bound().ok_or_else(|| {
+        CliError::Usage(format!("{}: the float program has no proven bound", precision.name()))
+    })?;
+    let text = bound.text(algorithm);
+    let coordinate = text.coordinates.as_ref().map_or("", |c| c.one);
+    let accs: Vec<Acc> = points
         .par_iter()
         .map(|point| {
-            let lam: Vec<F> = point.iter().map(F::round).collect();
-            let y = tribez::certify::run(algorithm, &cert.net, &lam);
-            let lam_q: Vec<BigRational> =
-                lam.iter().map(|x| x.exact().unwrap_or_default()).collect();
-            let outside = y.iter().any(|v| !v.finite())
-                || (algorithm == Algorithm::Bernstein
-                    && tribez::certify::bernstein_may_underflow(&cert.net, &lam));
-            let p = cert.exact.evaluate_fast(&lam_q);
-            let cond = condition(&cert.exact_net, &lam_q);
-            let mut case = Acc {
-                coords: y.len(),
-                outside,
-                ..Acc::default()
-            };
-            case.measure(&y, &p);
-            for (c, v) in y.iter().enumerate() {
-                case.cond = case.cond.max(round_f64(&cond[c]));
-                if !p[c].is_zero() {
-                    case.rel_cond = case.rel_cond.max(round_f64(&(&cond[c] / p[c].abs())));
-                }
-                let Some(yq) = v.exact() else { continue };
-                if outside {
-                    continue;
-                }
-                let abs = (&yq - &p[c]).abs();
-                if let Some(b) = a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam_q) {
-                    if !b.is_zero() {
-                        case.ratio = case.ratio.max(round_f64(&(&abs / &b)));
-                    }
-                    if abs > b {
-                        case.violation = Some(format!(
-                            "at {} coordinate {c}: error {} exceeds the bound {}",
-                            crate::report::tuple(&lam_q),
-                            tribez::certify::measures::sci(&abs),
-                            tribez::certify::measures::sci(&b)
-                        ));
-                    }
-                }
-            }
-            case
+            // rounded as the float code rounds (an overflow is an infinite input)
+            let input: Vec<f64> = point
+                .iter()
+                .map(|x| match precision {
+                    Precision::F64 => round_f64(x),
+                    Precision::F32 => f64::from(round_f32(x)),
+                })
+                .collect();
+            Acc::of_case(precision, bound.certify(algorithm, &input), coordinate)
         })
         .collect();
-    let mut row = Row::new(algorithm, F::PRECISION, roundings(algorithm, m, n), None);
-    row.fold(cases, points);
-    row
+    let mut row = Row::new(algorithm, precision, roundings(algorithm, m, n), text.label);
+    let lambda_ulps = row.fold(accs, points);
+    if let Some(c) = &text.coordinates {
+        row.notes.push(format!(
+            "{}: max error {} ulp (within the relative bound θ wherever judged)",
+            c.all,
+            g(lambda_ulps)
+        ));
+    }
+    if let Some(outside) = text.outside.filter(|_| row.outside_hypothesis > 0) {
+        row.notes.push(format!(
+            "{} points not judged: {outside}",
+            row.outside_hypothesis
+        ));
+    }
+    Ok(row)
+}
+
+/// The algorithms of `--algorithm` among those of the kind's float program.
+fn algorithms(args: &Args, patch: &Patch, float: &dyn FloatEval) -> Result<Vec<Algorithm>, CliError> {
+    let offered = float.float_algorithms();
+    if let [only] = offered {
+        return match args.algorithm.as_str() {
+            "all" | "casteljau" => Ok(vec![*only]),
+            other => Err(CliError::Usage(format!(
+                "--algorithm {other}: {} are certified with de Casteljau only (--algorithm casteljau or all)",
+                patch.kind().plural()
+            ))),
+        };
+    }
+    match args.algorithm.as_str() {
+        "all" => Ok(offered.to_vec()),
+        "casteljau" => Ok(vec![Algorithm::Casteljau]),
+        "bernstein" => Ok(vec![Algorithm::Bernstein]),
+        other => Err(CliError::Usage(format!(
+            "--algorithm: unknown algorithm `{other}` (known: casteljau, bernstein, all)"
+        ))),
+    }
 }
 
 /// Run `tribez certify`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let any = read_any_patch(&args.patch)?;
+    let patch = Patch::from(read_any_patch(&args.patch)?);
     let precisions = match args.precision.as_str() {
         "all" => vec![Precision::F64, Precision::F32],
         p => vec![
@@ -245,77 +331,84 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
         ],
     };
-    let patch = match any {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
-        AnyPatch::Rational(r) => {
-            let (rows, points, random) = super::certify_beyond::rational(args, &r, &precisions)?;
-            return finish(
-                args,
-                rows,
-                points,
-                random,
-                super::certify_beyond::RATIONAL_NOTE,
-            );
-        }
-        AnyPatch::SPatch(sp) => {
-            let (rows, points, random) = super::certify_beyond::spatch(args, &sp, &precisions)?;
-            return finish(
-                args,
-                rows,
-                points,
-                random,
-                super::certify_beyond::SPATCH_NOTE,
-            );
-        }
-    };
-    let m = patch.net.m();
-    let algorithms = match args.algorithm.as_str() {
-        "all" => vec![Algorithm::Casteljau, Algorithm::Bernstein],
-        "casteljau" => vec![Algorithm::Casteljau],
-        "bernstein" => vec![Algorithm::Bernstein],
-        other => {
-            return Err(CliError::Usage(format!(
-                "--algorithm: unknown algorithm `{other}` (known: casteljau, bernstein, all)"
-            )));
-        }
-    };
-    let (points, random) = points_of(args, m)?;
+    let float = patch.float().ok_or_else(|| {
+        CliError::Usage(format!(
+            "{}: {} have no float program to certify",
+            args.patch.display(),
+            patch.kind().plural()
+        ))
+    })?;
+    let algorithms = algorithms(args, &patch, float)?;
+    let (points, random) = points_of(args, &patch)?;
+    let shape = patch.shape();
     let mut rows = Vec::new();
+    let mut note = "";
     for &p in &precisions {
+        let program = float
+            .float_program(p)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", p.name())))?;
         for &a in &algorithms {
-            rows.push(match p {
-                Precision::F64 => certify_one::<f64>(&patch, a, &points),
-                Precision::F32 => certify_one::<f32>(&patch, a, &points),
-            });
+            if let Some(b) = program.error_bound() {
+                note = b.text(a).note;
+            }
+            rows.push(certify_row(
+                program.as_ref(),
+                a,
+                &points,
+                (shape.simplex_dim, shape.degree),
+            )?);
         }
     }
-    finish(args, rows, points.len(), random, POLYNOMIAL_NOTE)
+    finish(args, rows, points.len(), random, note)
 }
-
-const POLYNOMIAL_NOTE: &str = "bound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i(|λ|) (γ_K = Kε/(1−Kε)); cond = Σ|c_i|B_i(|λ|), relcond = cond/|P|; err/bound = largest observed error over its bound";
 
 /// `--random N` (with its reproducing command) or `--points FILE` (barycentric, `m + 1`
 /// coordinates).
-pub(super) type RandomInfo = Option<(usize, u64, String)>;
+type RandomInfo = Option<(usize, u64, String)>;
 
-pub(super) fn points_of(
-    args: &Args,
-    m: usize,
-) -> Result<(Vec<Vec<BigRational>>, RandomInfo), CliError> {
+/// The points of `--points FILE` or `--random N`, in the kind's coordinates: barycentric
+/// (`m + 1`; random points inside, near the edges and outside the simplex) or Cartesian in an
+/// S-patch's polygon (random points inside it, near its edges and vertices; a point of the file
+/// outside it is an error, a random one rounded onto the wrong side of an edge is dropped).
+fn points_of(args: &Args, patch: &Patch) -> Result<(Vec<Vec<BigRational>>, RandomInfo), CliError> {
+    let input = patch.shape().input;
+    let exact = patch.exact().exact_evaluator();
+    let rational = |x: f64| BigRational::from_float(x).expect("finite");
     Ok(match (&args.points, args.random) {
-        (Some(path), None) => (read_points(path, m + 1)?, None),
+        (Some(path), None) => {
+            let points = read_points(path, input.len())?;
+            for (i, p) in points.iter().enumerate() {
+                if let Err(e) = exact.coordinates(p) {
+                    return Err(CliError::Usage(format!(
+                        "{}: point {}: {e}",
+                        path.display(),
+                        i + 1
+                    )));
+                }
+            }
+            (points, None)
+        }
         (None, Some(n)) => {
             if n == 0 {
                 return Err(CliError::Usage("--random needs at least one point".into()));
             }
-            let pts: Vec<Vec<BigRational>> = random_points(m, n, args.seed)
-                .into_iter()
-                .map(|p| {
-                    p.into_iter()
-                        .map(|x| BigRational::from_float(x).expect("finite"))
+            let pts: Vec<Vec<BigRational>> = match &input {
+                InputSpace::Barycentric { m } => random_points(*m, n, args.seed)
+                    .into_iter()
+                    .map(|p| p.into_iter().map(rational).collect())
+                    .collect(),
+                InputSpace::Polygon { vertices } => {
+                    let verts: Vec<[f64; 2]> = vertices
+                        .iter()
+                        .map(|v| [round_f64(&v[0]), round_f64(&v[1])])
+                        .collect();
+                    random_polygon_points(&verts, n, args.seed)
+                        .into_iter()
+                        .map(|p| p.into_iter().map(rational).collect::<Vec<_>>())
+                        .filter(|p| exact.coordinates(p).is_ok())
                         .collect()
-                })
-                .collect();
+                }
+            };
             (pts, Some((n, args.seed, reproduce(args, n))))
         }
         (None, None) => {
@@ -328,7 +421,7 @@ pub(super) fn points_of(
 }
 
 /// The reproducing command of a `--random` run.
-pub(super) fn reproduce(args: &Args, n: usize) -> String {
+fn reproduce(args: &Args, n: usize) -> String {
     format!(
         "tribez certify {} --random {n} --seed {} --precision {} --algorithm {}",
         args.patch.display(),
@@ -382,7 +475,7 @@ fn finish(
     Outcome::rendered(&report, args.out.format, success)
 }
 
-pub(super) fn g(x: f64) -> String {
+fn g(x: f64) -> String {
     if x == 0.0 {
         "0".into()
     } else if (1e-3..1e6).contains(&x.abs()) {

@@ -7,10 +7,10 @@ use num_traits::ToPrimitive;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome};
-use tribez::claims::{ClaimFile, Judged, Verdict, find_claim_files};
 use crate::cli::OutputArgs;
-use tribez::number::to_decimal_string;
 use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
+use tribez::claims::{ClaimFile, Judged, Verdict, find_claim_files};
+use tribez::number::to_decimal_string;
 
 /// Arguments of `tribez check`.
 #[derive(Debug, clap::Args)]

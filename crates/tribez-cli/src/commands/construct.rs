@@ -6,11 +6,11 @@ use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, check_barycentric, parse_list};
+use crate::report::Render;
 use tribez::domain::Domain;
 use tribez::error::CoreError;
 use tribez::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, patch_to_json, patch_to_toml};
-use tribez::patch::{ControlNet, Patch};
-use crate::report::Render;
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 use tribez::simplex;
 
 /// Parse barycentric points given as `--{flag} a,b,c`, each with `m + 1` coordinates summing to 1.
@@ -91,7 +91,7 @@ pub fn child_patch(
 pub fn construction_net(
     file: &str,
     command: &str,
-    patch: tribez::patch::AnyPatch,
+    patch: tribez::any_patch::AnyPatch,
 ) -> Result<(Patch, Option<tribez::rational::RationalPatch>), CliError> {
     let (mut p, rational) = super::points_patch(file, command, patch)?;
     if let Some(r) = &rational {
@@ -118,7 +118,7 @@ pub fn rational_pieces(
             Some(&p.domain_in_parent),
             &label(k),
         )?;
-        out.push((p.domain_in_parent, tribez::patch::AnyPatch::Rational(piece)));
+        out.push((p.domain_in_parent, tribez::any_patch::AnyPatch::Rational(piece)));
     }
     Ok(super::graph::AnyPiecesReport(out))
 }

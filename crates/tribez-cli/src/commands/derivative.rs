@@ -7,9 +7,9 @@ use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
 use crate::cli::OutputArgs;
+use crate::report::{Render, json_rationals, tuple};
 use tribez::derivative::{check_order, directional_derivative};
 use tribez::io::patch_file::read_any_patch;
-use crate::report::{Render, json_rationals, tuple};
 
 /// Arguments of `tribez derivative`.
 #[derive(Debug, clap::Args)]

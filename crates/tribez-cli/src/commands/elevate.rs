@@ -8,7 +8,7 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
+use tribez::any_patch::AnyPatch;
 
 /// Arguments of `tribez elevate`.
 #[derive(Debug, clap::Args)]

@@ -1,4 +1,9 @@
-//! `tribez eval`: exact values of a patch at points, with the float paths beside them.
+//! `tribez eval`: exact values of a patch of any kind at points, with its float program beside
+//! them (every precision asked for, every algorithm of the kind), judged in ULPs against the
+//! exact values at the inputs as the code saw them and at the intended inputs.
+//!
+//! One code path for every kind: the kind's capabilities ([`tribez::ExactEval`],
+//! [`tribez::FloatEval`]) do the kind-specific work.
 
 use std::path::PathBuf;
 
@@ -6,15 +11,16 @@ use num_rational::BigRational;
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
-use super::{CliError, Outcome, check_barycentric};
-use tribez::bernstein;
+use super::{CliError, Outcome, check_barycentric, parse_list};
 use crate::cli::OutputArgs;
-use tribez::exact::ExactEvaluator;
-use tribez::float::{Float, Precision, net_to};
-use tribez::io::patch_file::read_any_patch;
-use tribez::number::to_decimal_string;
-use tribez::patch::{AnyPatch, ControlNet, Patch};
 use crate::report::{Render, json_rationals, tuple};
+use tribez::capability::{FloatProgram, InputSpace};
+use tribez::error::CoreError;
+use tribez::float::Precision;
+use tribez::io::patch_file::read_any_patch;
+use tribez::io::points::read_points;
+use tribez::number::to_decimal_string;
+use tribez::{Patch, PatchKind};
 
 /// Arguments of `tribez eval`.
 #[derive(Debug, clap::Args)]
@@ -78,7 +84,8 @@ pub struct FloatResult {
     algorithm: &'static str,
     /// The exact values of the rounded inputs.
     inputs: Vec<BigRational>,
-    exact_at_inputs: Vec<BigRational>,
+    /// The exact value at those inputs (`None`: undefined there).
+    exact_at_inputs: Option<Vec<BigRational>>,
     coords: Vec<FloatCoordinate>,
 }
 
@@ -86,6 +93,9 @@ pub struct FloatResult {
 pub struct PointResult {
     at: Vec<BigRational>,
     cartesian: Option<Vec<BigRational>>,
+    /// The barycentric coordinates the kind computed on its way (an S-patch's Wachspress
+    /// coordinates).
+    lambda: Option<Vec<BigRational>>,
     point: Vec<BigRational>,
     floats: Vec<FloatResult>,
 }
@@ -93,144 +103,213 @@ pub struct PointResult {
 /// The whole evaluation report.
 pub struct EvalReport {
     file: String,
-    patch: Patch,
+    /// `"rational"`, `"s-patch"`; `None` for polynomial patches.
+    kind: Option<&'static str>,
+    header: String,
     results: Vec<PointResult>,
 }
 
-fn judge<F: Float>(
-    value: F,
-    exact_inputs: &BigRational,
+/// A float of `precision` (carried as f64), judged against the exact values at the inputs as
+/// seen and as intended.
+fn judge(
+    precision: Precision,
+    value: f64,
+    exact_inputs: Option<&BigRational>,
     intended: &BigRational,
 ) -> FloatCoordinate {
-    let exact = value.exact();
+    use tribez::number as n;
+    let exact = n::exact_f64(value);
+    let ulps = |x: &BigRational, q: &BigRational| match precision {
+        Precision::F64 => n::ulps_error_f64(x, q),
+        Precision::F32 => n::ulps_error_f32(x, q),
+    };
+    let (decimal, hex) = match precision {
+        Precision::F64 => (n::display_f64(value), n::hex_f64(value)),
+        Precision::F32 => (n::display_f32(value as f32), n::hex_f32(value as f32)),
+    };
     FloatCoordinate {
-        decimal: value.decimal(),
-        hex: value.hex(),
-        ulps_algorithm: exact.as_ref().map(|x| F::ulps(x, exact_inputs)),
-        ulps_total: exact.as_ref().map(|x| F::ulps(x, intended)),
+        decimal,
+        hex,
+        ulps_algorithm: exact.as_ref().zip(exact_inputs).map(|(x, e)| ulps(x, e)),
+        ulps_total: exact.as_ref().map(|x| ulps(x, intended)),
         exact,
     }
 }
 
-/// The float results of both algorithms at `lambda`, judged against exact values.
-/// A float path prepared once per patch: the rounded net, and the exact evaluator of its exact
-/// values (shared by every point, so the per-patch precomputation is not repeated per point).
-struct FloatPath<F> {
-    fnet: ControlNet<F>,
-    exact: ExactEvaluator,
+/// Every algorithm of the float program `program` at `at`, judged.
+fn float_results(
+    patch: &Patch,
+    program: &dyn FloatProgram,
+    at: &[BigRational],
+    intended: &[BigRational],
+) -> Result<Vec<FloatResult>, CoreError> {
+    let float = patch.float().expect("a float program was prepared");
+    let input = program.round_input(at)?;
+    let inputs: Vec<BigRational> = input
+        .iter()
+        .map(|&x| BigRational::from_float(x).expect("rounded inputs are finite"))
+        .collect();
+    let exact_at_inputs = program.exact_seen(&input);
+    Ok(float
+        .float_algorithms()
+        .iter()
+        .map(|&algorithm| FloatResult {
+            precision: program.precision(),
+            algorithm: float.algorithm_name(algorithm),
+            inputs: inputs.clone(),
+            coords: program
+                .run(algorithm, &input)
+                .iter()
+                .enumerate()
+                .map(|(c, &v)| {
+                    judge(
+                        program.precision(),
+                        v,
+                        exact_at_inputs.as_ref().map(|e| &e[c]),
+                        &intended[c],
+                    )
+                })
+                .collect(),
+            exact_at_inputs: exact_at_inputs.clone(),
+        })
+        .collect())
 }
 
-impl<F: Float> FloatPath<F> {
-    fn new(net: &ControlNet<BigRational>) -> Self {
-        let fnet: ControlNet<F> = net_to(net);
-        let exact = ExactEvaluator::new(&fnet.map(|x| x.exact().unwrap_or_default()));
-        FloatPath { fnet, exact }
+/// The points of `--at` and `--points`, with a description each.
+fn raw_points(args: &Args, width: usize) -> Result<Vec<(String, Vec<BigRational>)>, CliError> {
+    let mut raw = Vec::new();
+    for a in &args.at {
+        raw.push((format!("--at {a}"), parse_list(a, "--at")?));
+    }
+    if let Some(path) = &args.points {
+        for (i, p) in read_points(path, width)?.into_iter().enumerate() {
+            raw.push((format!("{}: point {}", path.display(), i + 1), p));
+        }
+    }
+    if raw.is_empty() {
+        return Err(CliError::Usage(
+            "give at least one point with --at or --points".into(),
+        ));
+    }
+    Ok(raw)
+}
+
+/// The kind's input of one point (`at`), and its Cartesian coordinates if given so.
+type Input = (Vec<BigRational>, Option<Vec<BigRational>>);
+
+/// One raw point as the kind's input, checked.
+fn input_of(args: &Args, patch: &Patch, p: Vec<BigRational>) -> Result<Input, CoreError> {
+    let exact = patch.exact();
+    match patch.shape().input {
+        InputSpace::Polygon { .. } => {
+            let at = exact.from_cartesian(&p)?;
+            Ok((at, Some(p)))
+        }
+        InputSpace::Barycentric { m } => {
+            if args.cartesian {
+                Ok((exact.from_cartesian(&p)?, Some(p)))
+            } else {
+                if args.homogeneous {
+                    if p.len() != m + 1 {
+                        return Err(CoreError::WrongLength {
+                            what: "point".into(),
+                            expected: m + 1,
+                            found: p.len(),
+                        });
+                    }
+                } else {
+                    check_barycentric(&p, m, "point")?;
+                }
+                Ok((p, None))
+            }
+        }
     }
 }
 
-fn float_results<F: Float>(
-    path: &FloatPath<F>,
-    lambda: &[BigRational],
-    intended: &[BigRational],
-) -> Vec<FloatResult> {
-    let fnet = &path.fnet;
-    let lam: Vec<F> = lambda.iter().map(F::round).collect();
-    let lam_exact: Vec<BigRational> = lam
-        .iter()
-        .map(|x| x.exact().expect("rounded coordinates are finite"))
-        .collect();
-    let exact_at_inputs = path.exact.evaluate_fast(&lam_exact);
-    [
-        ("casteljau", tribez::float::casteljau(fnet, &lam)),
-        ("bernstein", bernstein::evaluate(fnet, &lam)),
-    ]
-    .into_iter()
-    .map(|(algorithm, values)| FloatResult {
-        precision: F::PRECISION,
-        algorithm,
-        inputs: lam_exact.clone(),
-        exact_at_inputs: exact_at_inputs.clone(),
-        coords: values
-            .iter()
-            .zip(&exact_at_inputs)
-            .zip(intended)
-            .map(|((&v, e), i)| judge(v, e, i))
-            .collect(),
-    })
-    .collect()
+/// The first line's description of the patch, and the report's `kind` (none for polynomial
+/// patches).
+fn header(patch: &Patch) -> (String, Option<&'static str>) {
+    let s = patch.shape();
+    let simplex = format!(
+        "degree {} over the {}-simplex, points in R^{}",
+        s.degree, s.simplex_dim, s.dimension
+    );
+    match (patch.kind(), &s.input) {
+        (PatchKind::Bezier | PatchKind::Functional, _) => (simplex, None),
+        (PatchKind::Rational, _) => (format!("rational, {simplex}"), Some("rational")),
+        (PatchKind::SPatch, InputSpace::Polygon { vertices }) => (
+            format!(
+                "S-patch, depth {} over a {}-gon, points in R^{}",
+                s.degree,
+                vertices.len(),
+                s.dimension
+            ),
+            Some("s-patch"),
+        ),
+        (PatchKind::SPatch, InputSpace::Barycentric { .. }) => {
+            unreachable!("an S-patch takes Cartesian points")
+        }
+    }
 }
 
 /// Run `tribez eval`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
-        AnyPatch::Rational(r) => return super::eval_beyond::rational(args, file, r),
-        AnyPatch::SPatch(s) => return super::eval_beyond::spatch(args, file, s),
-    };
-    let m = patch.net.m();
-    let width = if args.cartesian { m } else { m + 1 };
-    let raw = super::eval_beyond::raw_points(args, width)?;
-    let domain = patch.domain_or_reference();
-    let mut points = Vec::with_capacity(raw.len());
-    for (what, p) in raw {
-        if args.cartesian {
-            let lambda = domain
-                .barycentric(&p)
-                .map_err(|e| CliError::core(&what, e))?;
-            points.push((lambda, Some(p)));
-        } else {
-            if args.homogeneous {
-                if p.len() != m + 1 {
-                    return Err(CliError::core(
-                        &what,
-                        tribez::error::CoreError::WrongLength {
-                            what: "point".into(),
-                            expected: m + 1,
-                            found: p.len(),
-                        },
-                    ));
-                }
-            } else {
-                check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let shape = patch.shape();
+    let width = match shape.input {
+        InputSpace::Polygon { .. } => {
+            if !args.cartesian {
+                return Err(CliError::Usage(format!(
+                    "{file} is an S-patch: give Cartesian points of its polygon with --cartesian --at x,y"
+                )));
             }
-            points.push((p, None));
+            2
         }
-    }
-    let evaluator = ExactEvaluator::new(&patch.net);
+        InputSpace::Barycentric { m } if args.cartesian => m,
+        InputSpace::Barycentric { m } => m + 1,
+    };
+    let raw = raw_points(args, width)?;
     let precisions = args.float.map(FloatChoice::precisions).unwrap_or_default();
-    let path64 = precisions
-        .contains(&Precision::F64)
-        .then(|| FloatPath::<f64>::new(&patch.net));
-    let path32 = precisions
-        .contains(&Precision::F32)
-        .then(|| FloatPath::<f32>::new(&patch.net));
-    let results = points
+    let programs: Vec<Box<dyn FloatProgram + '_>> = match patch.float() {
+        Some(float) => precisions
+            .iter()
+            .map(|&p| {
+                float
+                    .float_program(p)
+                    .map_err(|e| CliError::core(format!("{file}: {}", p.name()), e))
+            })
+            .collect::<Result<_, _>>()?,
+        None => Vec::new(),
+    };
+    let exact = patch.exact().exact_evaluator();
+    // every point's result or error; the first error in the order of the points is reported
+    let results: Vec<Result<PointResult, CliError>> = raw
         .into_par_iter()
-        .map(|(at, cartesian)| {
-            let point = evaluator.evaluate_fast(&at);
+        .map(|(what, p)| {
+            let fail = |e| CliError::core(&what, e);
+            let (at, cartesian) = input_of(args, &patch, p).map_err(fail)?;
+            let point = exact.evaluate(&at).map_err(fail)?;
+            let lambda = exact.coordinates(&at).map_err(fail)?;
             let mut floats = Vec::new();
-            for p in &precisions {
-                floats.extend(match p {
-                    Precision::F64 => {
-                        float_results(path64.as_ref().expect("prepared"), &at, &point)
-                    }
-                    Precision::F32 => {
-                        float_results(path32.as_ref().expect("prepared"), &at, &point)
-                    }
-                });
+            for program in &programs {
+                floats.extend(float_results(&patch, program.as_ref(), &at, &point).map_err(fail)?);
             }
-            PointResult {
+            Ok(PointResult {
                 at,
                 cartesian,
+                lambda,
                 point,
                 floats,
-            }
+            })
         })
         .collect();
+    let results = results.into_iter().collect::<Result<_, _>>()?;
+    let (header, kind) = header(&patch);
     let report = EvalReport {
         file,
-        patch,
+        kind,
+        header,
         results,
     };
     Outcome::rendered(&report, args.out.format, true)
@@ -246,18 +325,14 @@ fn ulps_text(q: &Option<BigRational>) -> String {
 
 impl Render for EvalReport {
     fn text(&self) -> String {
-        let net = &self.patch.net;
-        let mut out = format!(
-            "{}: degree {} over the {}-simplex, points in R^{}\n",
-            self.file,
-            net.degree(),
-            net.m(),
-            net.dim()
-        );
+        let mut out = format!("{}: {}\n", self.file, self.header);
         for r in &self.results {
-            out += &format!("at {}", tuple(&r.at));
-            if let Some(c) = &r.cartesian {
-                out += &format!(" (Cartesian {})", tuple(c));
+            match (&r.cartesian, &r.lambda) {
+                (Some(c), Some(l)) => {
+                    out += &format!("at {} (Wachspress {})", tuple(c), tuple(l));
+                }
+                (Some(c), None) => out += &format!("at {} (Cartesian {})", tuple(&r.at), tuple(c)),
+                (None, _) => out += &format!("at {}", tuple(&r.at)),
             }
             out += &format!(": {}\n", tuple(&r.point));
             for f in &r.floats {
@@ -276,7 +351,9 @@ impl Render for EvalReport {
                             .as_ref()
                             .map_or("not finite".into(), ToString::to_string),
                         ulps_text(&fc.ulps_algorithm),
-                        f.exact_at_inputs[c],
+                        f.exact_at_inputs
+                            .as_ref()
+                            .map_or("undefined".into(), |e| e[c].to_string()),
                         ulps_text(&fc.ulps_total),
                     );
                 }
@@ -295,6 +372,9 @@ impl Render for EvalReport {
                 if let Some(c) = &r.cartesian {
                     o["cartesian"] = json_rationals(c);
                 }
+                if let Some(l) = &r.lambda {
+                    o["wachspress"] = json_rationals(l);
+                }
                 if !r.floats.is_empty() {
                     o["float"] = Json::Array(
                         r.floats
@@ -304,7 +384,7 @@ impl Render for EvalReport {
                                     "precision": f.precision.name(),
                                     "algorithm": f.algorithm,
                                     "inputs": json_rationals(&f.inputs),
-                                    "exact_at_inputs": json_rationals(&f.exact_at_inputs),
+                                    "exact_at_inputs": f.exact_at_inputs.as_ref().map_or(Json::Null, |e| json_rationals(e)),
                                     "value": f.coords.iter().map(|c| json!({
                                         "decimal": c.decimal,
                                         "hex": c.hex,
@@ -320,6 +400,11 @@ impl Render for EvalReport {
                 o
             })
             .collect();
-        json!({ "patch": self.file, "results": results })
+        let mut o = json!({ "patch": self.file });
+        if let Some(kind) = self.kind {
+            o["kind"] = json!(kind);
+        }
+        o["results"] = Json::Array(results);
+        o
     }
 }

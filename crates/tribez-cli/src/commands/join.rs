@@ -9,7 +9,7 @@ use crate::cli::OutputArgs;
 use crate::report::{Format, Render, json_rationals, tuple};
 use tribez::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
 use tribez::join::{Join, Violation, analyse, c1_neighbour};
-use tribez::patch::Patch;
+use tribez::patch::BezierPatch as Patch;
 
 /// Arguments of `tribez join`.
 #[derive(Debug, clap::Args)]

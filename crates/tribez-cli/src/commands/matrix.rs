@@ -7,10 +7,10 @@ use serde_json::{Value as Json, json};
 
 use super::construct::{barycentric_points, parse_edge};
 use super::{CliError, Outcome};
-use tribez::blossom::subpatch_matrix;
 use crate::cli::OutputArgs;
-use tribez::error::CoreError;
 use crate::report::Render;
+use tribez::blossom::subpatch_matrix;
+use tribez::error::CoreError;
 use tribez::simplex::{self, Simplex};
 use tribez::subdivide::halve_domains;
 

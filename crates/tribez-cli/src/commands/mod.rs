@@ -4,13 +4,11 @@ pub mod baseline;
 pub mod batch;
 pub mod blossom;
 pub mod certify;
-pub mod certify_beyond;
 pub mod check;
 pub mod construct;
 pub mod derivative;
 pub mod elevate;
 pub mod eval;
-pub mod eval_beyond;
 pub mod graph;
 pub mod halve;
 pub mod join;
@@ -178,15 +176,9 @@ pub fn at_point(
 pub fn points_patch(
     file: &str,
     command: &str,
-    any: tribez::patch::AnyPatch,
-) -> Result<
-    (
-        tribez::patch::Patch,
-        Option<tribez::rational::RationalPatch>,
-    ),
-    CliError,
-> {
-    use tribez::patch::AnyPatch;
+    any: tribez::any_patch::AnyPatch,
+) -> Result<(tribez::patch::BezierPatch, Option<tribez::rational::RationalPatch>), CliError> {
+    use tribez::any_patch::AnyPatch;
     match any {
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),
         AnyPatch::Rational(r) => Ok((r.patch.clone(), Some(r))),

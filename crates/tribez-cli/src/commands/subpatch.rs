@@ -11,9 +11,9 @@ use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
+use tribez::any_patch::AnyPatch;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]

@@ -10,9 +10,9 @@ use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::io::patch_file::read_any_patch;
-use tribez::patch::AnyPatch;
 use crate::report::Render;
+use tribez::io::patch_file::read_any_patch;
+use tribez::any_patch::AnyPatch;
 use tribez::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
 };

@@ -65,6 +65,15 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
         })
     }
 
+    /// The exact quotient `N/D` of the rounded homogeneous net at the float inputs `lambda`
+    /// (`None` where `D = 0` or an input is not finite).
+    pub fn exact_at(&self, lambda: &[F]) -> Option<Vec<BigRational>> {
+        let lam: Vec<BigRational> = lambda.iter().map(|x| x.exact()).collect::<Option<_>>()?;
+        let h = self.exact.evaluate(&lam, Algorithm::Casteljau);
+        let (w, x) = h.split_last().expect("d + 1 coordinates");
+        (!w.is_zero()).then(|| x.iter().map(|c| c / w).collect())
+    }
+
     /// Evaluate in `F` at `lambda` (the code of [`RationalPatch::evaluate_float`]) and judge.
     pub fn check(&self, lambda: &[F]) -> RationalCase<F> {
         let v = casteljau::evaluate(&self.net, lambda);
@@ -119,6 +128,44 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
         );
         case.exact = Some(q);
         case
+    }
+}
+
+/// The exact side of one float evaluation at the inputs as seen: exact value, condition numbers
+/// and the a-priori bound per coordinate (`None` where undefined or outside the hypotheses).
+pub type SeenParts = (
+    Option<Vec<BigRational>>,
+    Option<Vec<BigRational>>,
+    Option<Vec<BigRational>>,
+);
+
+impl<F: Float + Div<Output = F>> RationalCertifier<F> {
+    /// At the float inputs `lambda`: the exact quotient `q = N/D` of the rounded homogeneous net
+    /// (`None` where `D = 0`), the condition numbers `κ_c` ([`bound::rational_condition`]) and
+    /// the a-priori bound [`bound::rational_a_priori`] (`None` where `|D| ≤ e_D`), the bound a
+    /// claim is judged against (it does not need the computed denominator).
+    pub fn seen(&self, lambda: &[F]) -> SeenParts {
+        let lam: Vec<BigRational> = lambda
+            .iter()
+            .map(|x| x.exact().unwrap_or_default())
+            .collect();
+        let h = self.exact.evaluate(&lam, Algorithm::Casteljau);
+        let (d, num) = h.split_last().expect("d + 1 coordinates");
+        if d.is_zero() {
+            return (None, None, None);
+        }
+        let q: Vec<BigRational> = num.iter().map(|x| x / d).collect();
+        let condition = bound::rational_condition(&self.exact_net, &lam);
+        let (m, n) = (self.net.m(), self.net.degree());
+        let errs: Option<Vec<BigRational>> = bound::condition(&self.exact_net, &lam)
+            .iter()
+            .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam))
+            .collect();
+        let bounds = errs.and_then(|e| {
+            let (e_den, e_num) = e.split_last()?;
+            bound::rational_a_priori(F::PRECISION, e_num, e_den, &q, d)
+        });
+        (Some(q), condition, bounds)
     }
 }
 
@@ -195,6 +242,19 @@ impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
             net,
             vertices,
         })
+    }
+
+    /// At the float point `p`: the exact value `S(p̂)` of the rounded S-patch (`None` outside
+    /// the rounded polygon), the condition numbers `Σ|P_α| B_α(λ(p̂))` at the exact Wachspress
+    /// coordinates, and the proven bound of the whole float path
+    /// ([`SPatchCase::total_bound`]).
+    pub fn seen(&self, p: &[F; 2]) -> SeenParts {
+        let point: Vec<BigRational> = p.iter().map(|x| x.exact().unwrap_or_default()).collect();
+        let Ok((lambda, exact)) = self.seen.evaluate(&point) else {
+            return (None, None, None);
+        };
+        let condition = bound::condition(&self.seen.net, &lambda);
+        (Some(exact), Some(condition), self.check(p).total_bound)
     }
 
     /// Evaluate in `F` at the float point `p` (the code of [`SPatch::evaluate_float`]) and measure.

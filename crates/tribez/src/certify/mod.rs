@@ -128,8 +128,14 @@ impl<F: Float> Certifier<F> {
         )
     }
 
-    /// The exact check: `|y_c − P_c(λ)| ≤ bound_c` for every coordinate.
-    pub fn exact_within(&self, algorithm: Algorithm, lambda: &[F], y: &[F]) -> bool {
+    /// At the float inputs `lambda` (the control points as rounded): the exact value `P(λ)`,
+    /// the condition numbers `Σ|c_i| B_i(|λ|)` and the a-priori bound of `algorithm` per
+    /// coordinate ([`bound::a_priori`]; `None` where `Kε ≥ 1`).
+    pub fn seen(
+        &self,
+        algorithm: Algorithm,
+        lambda: &[F],
+    ) -> (Vec<BigRational>, Vec<BigRational>, Option<Vec<BigRational>>) {
         let lam: Vec<BigRational> = lambda
             .iter()
             .map(|x| x.exact().unwrap_or_default())
@@ -137,11 +143,21 @@ impl<F: Float> Certifier<F> {
         let p = self.exact.evaluate_fast(&lam);
         let cond = bound::condition(&self.exact_net, &lam);
         let (m, n) = (self.net.m(), self.net.degree());
+        let bounds = cond
+            .iter()
+            .map(|s| bound::a_priori(algorithm, F::PRECISION, m, n, s, &lam))
+            .collect();
+        (p, cond, bounds)
+    }
+
+    /// The exact check: `|y_c − P_c(λ)| ≤ bound_c` for every coordinate.
+    pub fn exact_within(&self, algorithm: Algorithm, lambda: &[F], y: &[F]) -> bool {
+        let (p, cond, bounds) = self.seen(algorithm, lambda);
         y.iter().enumerate().all(|(c, v)| {
             let leaf = Leaf {
                 precision: Some(F::PRECISION),
                 condition: Some(cond[c].clone()),
-                bound: bound::a_priori(algorithm, F::PRECISION, m, n, &cond[c], &lam),
+                bound: bounds.as_ref().map(|b| b[c].clone()),
             };
             v.exact()
                 .is_some_and(|yq| Tolerance::Bound.accepts(&yq, &p[c], &leaf).unwrap_or(false))

@@ -45,7 +45,6 @@ pub fn random_points(m: usize, count: usize, seed: u64) -> Vec<Vec<f64>> {
         .collect()
 }
 
-
 /// Random Cartesian points of a convex polygon (vertices in f64): 70% random convex
 /// combinations of the vertices, 15% within about 1e-9 of an edge, 15% near a vertex.
 pub fn random_polygon_points(vertices: &[[f64; 2]], count: usize, seed: u64) -> Vec<[f64; 2]> {

@@ -35,12 +35,13 @@ pub mod value;
 
 use std::path::{Path, PathBuf};
 
+use crate::any_patch::AnyPatch;
 use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::float::Precision;
 use crate::io::InputError;
 use crate::io::patch_file::any_patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::patch::{AnyPatch, Patch};
+use crate::patch::BezierPatch as Patch;
 use value::{Mismatch, Value, compare};
 
 /// Keys a claim file may have at its top level.

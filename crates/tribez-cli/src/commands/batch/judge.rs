@@ -5,14 +5,14 @@ use num_traits::ToPrimitive;
 
 use super::parse::Num;
 use super::report::FailedCoord;
+use crate::commands::CliError;
+use crate::commands::check::Args;
 use tribez::certify::bound::{a_priori, condition};
 use tribez::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
 use tribez::certify::measures::{Leaf, Measures, Tolerance, as_float};
-use crate::commands::CliError;
-use crate::commands::check::Args;
 use tribez::exact::{Algorithm, ExactEvaluator};
 use tribez::float::Precision;
-use tribez::patch::{ControlNet, Patch};
+use tribez::patch::{BezierPatch as Patch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {

@@ -3,11 +3,11 @@
 use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
+use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
 use tribez::certify::measures::{Measures, Tolerance};
 use tribez::exact::Algorithm;
 use tribez::float::Precision;
 use tribez::number::to_decimal_string;
-use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
 
 /// A failed row, in full.
 #[derive(Clone, Debug)]

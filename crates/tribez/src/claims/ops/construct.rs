@@ -8,9 +8,10 @@ use num_rational::BigRational;
 
 use super::inputs::Inputs;
 use super::{OpName, Value, keyed, net_value, seen};
+use crate::any_patch::AnyPatch;
 use crate::io::InputError;
 use crate::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION};
-use crate::patch::{AnyPatch, Patch};
+use crate::patch::BezierPatch as Patch;
 use crate::subdivide::HalvingOrder;
 
 type Q = BigRational;

@@ -8,10 +8,11 @@ use num_rational::BigRational;
 use super::construct::check_count;
 use super::inputs::Inputs;
 use super::{OpName, Value, keyed, seen};
+use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
 use crate::io::InputError;
 use crate::io::patch_file::{MAX_DEGREE, MAX_SIMPLEX_DIMENSION, index_key};
-use crate::patch::{AnyPatch, Patch};
+use crate::patch::BezierPatch as Patch;
 use crate::rational::homogenised_residual;
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{

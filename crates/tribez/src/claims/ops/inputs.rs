@@ -6,9 +6,10 @@ use std::borrow::Cow;
 use num_rational::BigRational;
 
 use super::super::{Claim, ClaimFile};
+use crate::any_patch::AnyPatch;
 use crate::io::InputError;
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::patch::{AnyPatch, Patch};
+use crate::patch::BezierPatch as Patch;
 
 type Q = BigRational;
 

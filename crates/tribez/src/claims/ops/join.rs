@@ -7,7 +7,7 @@ use super::inputs::{Inputs, select_part};
 use super::{Value, seen};
 use crate::io::InputError;
 use crate::io::patch_file::index_key;
-use crate::patch::Patch;
+use crate::patch::BezierPatch as Patch;
 
 /// `join` with its parsed inputs.
 #[derive(Clone, Debug)]

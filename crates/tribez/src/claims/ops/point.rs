@@ -8,10 +8,10 @@ use num_traits::Zero;
 
 use super::inputs::{Inputs, Point, select_part};
 use super::{OpName, Value, seen};
+use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
-use crate::patch::AnyPatch;
 use crate::spatch::SPatch;
 
 type Q = BigRational;

@@ -5,10 +5,11 @@
 use num_rational::BigRational;
 
 use super::inputs::{Inputs, Point};
+use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
 use crate::float::Precision;
 use crate::io::InputError;
-use crate::patch::{AnyPatch, Patch};
+use crate::patch::BezierPatch as Patch;
 use crate::rational::RationalPatch;
 use crate::spatch::SPatch;
 

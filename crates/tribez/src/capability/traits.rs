@@ -1,0 +1,275 @@
+//! The capability traits: what a kind of patch can do.
+//!
+//! | trait | what | implemented by |
+//! |---|---|---|
+//! | [`ExactEval`] | its shape, and exact evaluation at a point of its domain | every kind |
+//! | [`FloatEval`] | the float program a float implementation runs, in f64 or f32 ([`FloatProgram`]) | every kind |
+//! | [`ErrorBound`] | the exact value at the inputs as the float code saw them, the condition number and the proven bound of that float program | every kind |
+//! | [`Constructions`] | degree elevation, subpatches, blossoms, splitting | Bézier, functional, rational |
+//!
+//! A kind is one file in this folder that implements these traits for its type; the commands
+//! and [`crate::judge`] work through the traits and never name a kind.
+//!
+//! Floats cross these traits as `f64`: an `f32` value widens exactly, and a precision says which
+//! format the numbers belong to.
+
+use num_rational::BigRational;
+
+use crate::any_patch::AnyPatch;
+use crate::error::CoreError;
+use crate::exact::Algorithm;
+use crate::float::Precision;
+
+/// How a point of a kind's domain is given.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum InputSpace {
+    /// `m + 1` barycentric coordinates (summing to 1; any sum evaluates the homogeneous form).
+    Barycentric {
+        /// The simplex dimension `m`.
+        m: usize,
+    },
+    /// Cartesian coordinates `(x, y)` in a convex polygon (S-patches).
+    Polygon {
+        /// The polygon's vertices, counter-clockwise.
+        vertices: Vec<[BigRational; 2]>,
+    },
+}
+
+impl InputSpace {
+    /// How many numbers one point has.
+    pub fn len(&self) -> usize {
+        match self {
+            InputSpace::Barycentric { m } => m + 1,
+            InputSpace::Polygon { .. } => 2,
+        }
+    }
+
+    /// Never true (a point has at least one coordinate).
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+}
+
+/// The sizes of a patch.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Shape {
+    /// Dimension `m` of the simplex of the control net (`N − 1` for an S-patch over an `N`-gon).
+    pub simplex_dim: usize,
+    /// Degree `n` (an S-patch's depth).
+    pub degree: usize,
+    /// Dimension `d` of the points.
+    pub dimension: usize,
+    /// How a point of the domain is given.
+    pub input: InputSpace,
+}
+
+/// Exact evaluation, prepared once for many points.
+pub trait PointEvaluator: Send + Sync {
+    /// The exact value at `input` (the kind's coordinates, [`InputSpace`]). Barycentric
+    /// coordinates that do not sum to 1 evaluate the homogeneous form.
+    fn evaluate(&self, input: &[BigRational]) -> Result<Vec<BigRational>, CoreError>;
+
+    /// The barycentric coordinates the kind computes from `input` on its way (an S-patch's
+    /// Wachspress coordinates `λ(p)`); `None` when the input already is barycentric.
+    fn coordinates(&self, _input: &[BigRational]) -> Result<Option<Vec<BigRational>>, CoreError> {
+        Ok(None)
+    }
+}
+
+/// Capability: exact evaluation.
+pub trait ExactEval {
+    /// The sizes.
+    fn shape(&self) -> Shape;
+    /// An exact evaluator (the per-patch precomputation done once).
+    fn exact_evaluator(&self) -> Box<dyn PointEvaluator + '_>;
+    /// The kind's input at a Cartesian point of its domain (`m` coordinates for a simplex,
+    /// converted to barycentric coordinates by Cramer's rule; `(x, y)` for an S-patch).
+    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError>;
+}
+
+/// Capability: the float program of a kind, as a float implementation runs it.
+pub trait FloatEval {
+    /// The algorithms of the float program (the first is the default).
+    fn float_algorithms(&self) -> &'static [Algorithm];
+    /// The name of an algorithm in reports (`"casteljau"`, `"homogeneous de Casteljau"`, …).
+    fn algorithm_name(&self, algorithm: Algorithm) -> &'static str;
+    /// The patch as a float program of `precision` holds it: its numbers rounded to the nearest
+    /// float. An error where a rounded number overflows or the rounded data is no longer valid
+    /// (a polygon no longer convex), for the kinds whose bound needs it.
+    fn float_program(&self, precision: Precision) -> Result<Box<dyn FloatProgram + '_>, CoreError>;
+}
+
+/// A kind's float program in one precision ([`FloatEval::float_program`]).
+pub trait FloatProgram: Send + Sync {
+    /// The precision.
+    fn precision(&self) -> Precision;
+    /// The input as the float code sees it: every coordinate rounded to the precision (nearest,
+    /// ties to even), returned as f64 (exact). An error if one overflows.
+    fn round_input(&self, input: &[BigRational]) -> Result<Vec<f64>, CoreError>;
+    /// Run `algorithm` at `input` (floats of the precision): the result, coordinate by
+    /// coordinate, as f64 (exact).
+    fn run(&self, algorithm: Algorithm, input: &[f64]) -> Vec<f64>;
+    /// The exact value at the input as seen with the patch's numbers as seen (`None` where it is
+    /// undefined: a vanishing denominator, a point outside the rounded polygon, a non-finite
+    /// input).
+    fn exact_seen(&self, input: &[f64]) -> Option<Vec<BigRational>>;
+    /// The error bound of this float program, where the kind has one.
+    fn error_bound(&self) -> Option<&dyn ErrorBound>;
+}
+
+/// The exact side of one float evaluation ([`ErrorBound::seen`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Seen {
+    /// The exact values of the input as the float code saw it.
+    pub input: Vec<BigRational>,
+    /// The exact value there, with the patch's numbers as seen (`None`: undefined).
+    pub exact: Option<Vec<BigRational>>,
+    /// The condition number per coordinate (`None`: undefined there).
+    pub condition: Option<Vec<BigRational>>,
+    /// The proven a-priori bound of the absolute error per coordinate (`None`: the point lies
+    /// outside the bound's hypotheses).
+    pub bound: Option<Vec<BigRational>>,
+    /// Does the tolerance `cond=K` mean anything for this kind (`K ε κ` with [`Self::condition`])?
+    pub cond_tolerance: bool,
+}
+
+/// One float evaluation, certified ([`ErrorBound::certify`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FloatCase {
+    /// The exact values of the input as the float code saw it.
+    pub input: Vec<BigRational>,
+    /// The float result (as f64, exact).
+    pub y: Vec<f64>,
+    /// The exact value at the input as seen (`None`: not measured).
+    pub exact: Option<Vec<BigRational>>,
+    /// The condition number per coordinate (`None`: not measured).
+    pub condition: Option<Vec<BigRational>>,
+    /// The proven bound per coordinate against which `y` is judged (`None`: not judged).
+    pub bound: Option<Vec<BigRational>>,
+    /// Outside the bound's hypotheses (overflow, underflow, an uncertain denominator sign):
+    /// counted, not judged.
+    pub outside: bool,
+    /// A failure the kind found itself (a case its proven bound rules out).
+    pub failure: Option<String>,
+    /// The intermediate coordinates the float program computes (an S-patch's `λ̂`), measured.
+    pub coordinates: Option<CoordinateCase>,
+}
+
+/// Intermediate float coordinates, their exact values and their proven bound.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoordinateCase {
+    /// The float coordinates (as f64).
+    pub values: Vec<f64>,
+    /// Their exact values.
+    pub exact: Vec<BigRational>,
+    /// Their proven absolute bound, where judged.
+    pub bound: Option<Vec<BigRational>>,
+}
+
+/// How a kind's bound is explained in a certification report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BoundText {
+    /// The bound column's label (`None`: `γ_K` with `K` the algorithm's roundings).
+    pub label: Option<String>,
+    /// The explanation line under the table.
+    pub note: &'static str,
+    /// What the points not judged are (`"{count} points not judged: {outside}"`); `None`: the
+    /// generic sentence.
+    pub outside: Option<&'static str>,
+    /// The intermediate coordinates ([`FloatCase::coordinates`]), if any.
+    pub coordinates: Option<CoordinateText>,
+}
+
+/// How intermediate coordinates are named in a certification report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoordinateText {
+    /// All of them (`"Wachspress coordinates λ̂"`).
+    pub all: &'static str,
+    /// One of them, before "error" in a violation (`"Wachspress coordinate "`).
+    pub one: &'static str,
+}
+
+/// Capability: the proven error bound of a float program.
+pub trait ErrorBound: Send + Sync {
+    /// The exact value at `input` as seen, the condition numbers and the a-priori bound of
+    /// `algorithm` there.
+    fn seen(&self, algorithm: Algorithm, input: &[f64]) -> Seen;
+    /// Run `algorithm` at `input` and judge its result against the proven bound.
+    fn certify(&self, algorithm: Algorithm, input: &[f64]) -> FloatCase;
+    /// The bound explained, for `algorithm`.
+    fn text(&self, algorithm: Algorithm) -> BoundText;
+}
+
+/// Capability: the constructions, exact, returning patches of the same kind.
+pub trait Constructions {
+    /// Degree elevation by `r`.
+    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError>;
+    /// The subpatch over the simplex with the given barycentric vertices.
+    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError>;
+    /// The blossom `b[u_1, …, u_n]` at `n` barycentric arguments.
+    fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError>;
+    /// Split at the barycentric point `t` into `m + 1` pieces.
+    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError>;
+}
+
+impl<T: Constructions + ?Sized> Constructions for &T {
+    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
+        (**self).elevate(r)
+    }
+    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
+        (**self).subpatch(vertices)
+    }
+    fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
+        (**self).blossom(args)
+    }
+    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
+        (**self).split_at(t)
+    }
+}
+
+/// The floats of a precision, narrowed from the f64 that carries them across these traits.
+pub(crate) trait Narrow: crate::float::Float + std::ops::Div<Output = Self> {
+    /// `x` as this float (exact for a value of this precision; else rounded to nearest).
+    fn narrow(x: f64) -> Self;
+}
+
+impl Narrow for f64 {
+    fn narrow(x: f64) -> Self {
+        x
+    }
+}
+
+impl Narrow for f32 {
+    fn narrow(x: f64) -> Self {
+        x as f32
+    }
+}
+
+/// Round `input` to `F` (nearest, ties to even) as f64; an error naming the precision if one
+/// overflows.
+pub(crate) fn round_input<F: Narrow>(input: &[BigRational]) -> Result<Vec<f64>, CoreError> {
+    input
+        .iter()
+        .map(|q| {
+            let x = F::round(q);
+            if x.finite() {
+                Ok(x.widen())
+            } else {
+                Err(CoreError::Invalid(format!(
+                    "an input overflows {}",
+                    F::PRECISION.name()
+                )))
+            }
+        })
+        .collect()
+}
+
+/// The floats `input` (f64 carriers) as `F`.
+pub(crate) fn narrowed<F: Narrow>(input: &[f64]) -> Vec<F> {
+    input.iter().map(|&x| F::narrow(x)).collect()
+}
+
+/// The exact values of floats (`None` if one is not finite).
+pub(crate) fn exact_values<F: crate::float::Float>(xs: &[F]) -> Option<Vec<BigRational>> {
+    xs.iter().map(|x| x.exact()).collect()
+}

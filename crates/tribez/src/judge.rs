@@ -1,0 +1,349 @@
+//! [`judge`]: one call that judges a float result.
+//!
+//! Given a patch, the input as the float program saw it, the values it claims and a tolerance,
+//! the judge does what certification does (docs/theory.md §14):
+//!
+//! 1. rounds the patch's numbers to the precision, as the float code holds them (control
+//!    points; for a rational patch the homogeneous net `(w c, w)`; for an S-patch the polygon
+//!    too), and the input to the precision (a no-op for floats of that precision);
+//! 2. evaluates exactly at the input as seen, with the numbers as seen (barycentric coordinates
+//!    that do not sum to 1, as `(0.5, 0.1, 0.4)` in binary does not, evaluate the homogeneous
+//!    form, which is what the float code computes);
+//! 3. measures each claimed value against that exact value: the error in ULPs of the precision
+//!    (binade ULP, docs/theory.md §14.4), correct rounding, and with the intended exact input
+//!    ([`judge_with`]) the error against the exact value there;
+//! 4. gives the condition number and the proven a-priori bound of the float program, and the
+//!    verdict of the tolerance ([`Tolerance::accepts`], one comparison path for every
+//!    tolerance).
+//!
+//! ```
+//! use tribez::{Degree, Patch, Precision, SimplexDim, Tolerance, judge, parse_rational};
+//! let q = |s: &str| parse_rational(s).unwrap();
+//! let p = |xs: [&str; 3]| xs.map(q).to_vec();
+//! let patch = Patch::bezier(SimplexDim(2), Degree(2), vec![
+//!     p(["0", "0", "0"]), p(["1", "0", "2"]), p(["0", "2", "0"]),
+//!     p(["0", "1", "0"]), p(["1", "1", "1"]), p(["0", "2", "1"]),
+//! ]).unwrap();
+//! // a float program evaluated it at (0.5, 1/3, 1/6) in f64 and got the nearest floats of the
+//! // exact values at what it saw (computed with Python's fractions: fixtures/judge/derive.py)
+//! let input = [0.5, 1.0 / 3.0, 1.0 / 6.0];
+//! let claimed = [0.4444444444444444, 0.5555555555555555, 0.8055555555555555];
+//! let tol = Tolerance::parse("correctly_rounded").unwrap();
+//! let j = judge(&patch, &input, &claimed, &tol, Precision::F64).unwrap();
+//! assert!(j.passed);
+//! // one ULP off in the first coordinate is not correctly rounded
+//! let off = [0.4444444444444445, 0.5555555555555555, 0.8055555555555555];
+//! assert!(!judge(&patch, &input, &off, &tol, Precision::F64).unwrap().passed);
+//! ```
+
+use num_rational::BigRational;
+use serde::Serialize;
+
+use crate::api_error::Error;
+use crate::capability::InputSpace;
+use crate::certify::measures::{Leaf, Measures, Tolerance};
+use crate::error::CoreError;
+use crate::exact::Algorithm;
+use crate::float::Precision;
+use crate::patch_type::{Patch, PatchKind};
+
+/// One claimed coordinate, judged.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CoordinateJudgement {
+    /// The claimed value.
+    pub claimed: f64,
+    /// The exact value at the input as seen (patch numbers as seen).
+    #[serde(serialize_with = "ser::rational")]
+    pub exact: BigRational,
+    /// The exact value at the intended input (the exact patch), when given.
+    #[serde(serialize_with = "ser::opt_rational")]
+    pub exact_intended: Option<BigRational>,
+    /// `|claimed − exact| / ulp(exact)` at the input as seen (`None`: the claim is not finite).
+    #[serde(serialize_with = "ser::opt_rational")]
+    pub ulps: Option<BigRational>,
+    /// The same against the exact value at the intended input.
+    #[serde(serialize_with = "ser::opt_rational")]
+    pub ulps_intended: Option<BigRational>,
+    /// Is the claim the nearest float (ties to even) to the exact value at the input as seen?
+    pub correctly_rounded: bool,
+    /// The condition number of this coordinate at the input as seen (`Σ|c_i| B_i(|λ|)` for a
+    /// polynomial patch).
+    #[serde(serialize_with = "ser::opt_rational")]
+    pub condition: Option<BigRational>,
+    /// The proven a-priori bound of the float program's absolute error (`None`: outside its
+    /// hypotheses).
+    #[serde(serialize_with = "ser::opt_rational")]
+    pub bound: Option<BigRational>,
+    /// The tolerance accepts this coordinate.
+    pub passed: bool,
+}
+
+/// The verdict of [`judge`] on one float result.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Judgement {
+    /// Every coordinate passed.
+    pub passed: bool,
+    /// The kind of patch.
+    pub kind: PatchKind,
+    /// The precision (`"f64"`, `"f32"`).
+    #[serde(serialize_with = "ser::precision")]
+    pub precision: Precision,
+    /// The tolerance as written.
+    #[serde(serialize_with = "ser::display")]
+    pub tolerance: Tolerance,
+    /// The float algorithm whose bound is given.
+    pub algorithm: &'static str,
+    /// The exact values of the input as seen.
+    #[serde(serialize_with = "ser::rationals")]
+    pub input_seen: Vec<BigRational>,
+    /// Per coordinate.
+    pub coordinates: Vec<CoordinateJudgement>,
+}
+
+impl std::fmt::Display for Judgement {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let d = |x: &BigRational| crate::number::to_decimal_string(x, 4);
+        let o = |x: &Option<BigRational>| x.as_ref().map_or("n/a".to_string(), d);
+        writeln!(
+            f,
+            "{} under {} ({} {}, input as seen {})",
+            if self.passed { "passed" } else { "FAILED" },
+            self.tolerance,
+            self.precision.name(),
+            self.algorithm,
+            crate::domain::format_tuple(&self.input_seen),
+        )?;
+        for (c, j) in self.coordinates.iter().enumerate() {
+            write!(
+                f,
+                "  [{c}] {} vs exact {}: {} ulp as seen",
+                j.claimed,
+                j.exact,
+                o(&j.ulps)
+            )?;
+            if j.exact_intended.is_some() {
+                write!(f, ", {} ulp as intended", o(&j.ulps_intended))?;
+            }
+            writeln!(
+                f,
+                ", {}, cond {}, bound {}: {}",
+                if j.correctly_rounded {
+                    "correctly rounded"
+                } else {
+                    "not correctly rounded"
+                },
+                j.condition
+                    .as_ref()
+                    .map_or("n/a".into(), crate::certify::measures::sci),
+                j.bound
+                    .as_ref()
+                    .map_or("n/a".into(), crate::certify::measures::sci),
+                if j.passed { "ok" } else { "FAILS" }
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// Judge a float result: `patch` evaluated by a float program of `precision` at `input` (as the
+/// program saw it: floats of the precision) gave `claimed`; does `tolerance` accept it? The
+/// float program is the kind's default (de Casteljau); see the module documentation.
+pub fn judge(
+    patch: &Patch,
+    input: &[f64],
+    claimed: &[f64],
+    tolerance: &Tolerance,
+    precision: Precision,
+) -> Result<Judgement, Error> {
+    judge_with(patch, input, claimed, tolerance, precision, None)
+}
+
+/// [`judge`], also measuring the claim against the exact value at the `intended` exact input
+/// (the point the program was meant to evaluate at, before its input was rounded).
+pub fn judge_with(
+    patch: &Patch,
+    input: &[f64],
+    claimed: &[f64],
+    tolerance: &Tolerance,
+    precision: Precision,
+    intended: Option<&[BigRational]>,
+) -> Result<Judgement, Error> {
+    let algorithm = patch
+        .float()
+        .map_or(Algorithm::Casteljau, |f| f.float_algorithms()[0]);
+    judge_algorithm(
+        patch, algorithm, input, claimed, tolerance, precision, intended,
+    )
+}
+
+/// [`judge_with`] for a named float `algorithm` of the kind (a polynomial patch also has the
+/// direct Bernstein form, [`Algorithm::Bernstein`], whose bound differs).
+pub fn judge_algorithm(
+    patch: &Patch,
+    algorithm: Algorithm,
+    input: &[f64],
+    claimed: &[f64],
+    tolerance: &Tolerance,
+    precision: Precision,
+    intended: Option<&[BigRational]>,
+) -> Result<Judgement, Error> {
+    let described = patch.as_any().described();
+    let float = patch.float().ok_or_else(|| Error::Unsupported {
+        kind: described,
+        what: "it has no float program".into(),
+    })?;
+    if !float.float_algorithms().contains(&algorithm) {
+        return Err(Error::Unsupported {
+            kind: described,
+            what: format!(
+                "its float program has no algorithm {algorithm:?} (it has {:?})",
+                float.float_algorithms()
+            ),
+        });
+    }
+    let shape = patch.shape();
+    let width = shape.input.len();
+    if input.len() != width {
+        return Err(Error::Size {
+            what: match shape.input {
+                InputSpace::Barycentric { .. } => "barycentric coordinates of the input",
+                InputSpace::Polygon { .. } => "Cartesian coordinates of the input",
+            },
+            expected: width,
+            found: input.len(),
+        });
+    }
+    if claimed.len() != shape.dimension {
+        return Err(Error::Size {
+            what: "claimed coordinates",
+            expected: shape.dimension,
+            found: claimed.len(),
+        });
+    }
+    if let Some(i) = intended.filter(|i| i.len() != width) {
+        return Err(Error::Size {
+            what: "coordinates of the intended input",
+            expected: width,
+            found: i.len(),
+        });
+    }
+    let exact_input: Vec<BigRational> = input
+        .iter()
+        .map(|&x| {
+            crate::number::exact_f64(x).ok_or_else(|| {
+                Error::Core(CoreError::Invalid(format!(
+                    "the input {x} is not a finite number"
+                )))
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let program = float.float_program(precision)?;
+    let seen_input = program.round_input(&exact_input)?;
+    let bounds = program.error_bound().ok_or_else(|| Error::Unsupported {
+        kind: described,
+        what: "its float program has no error bound".into(),
+    })?;
+    let seen = bounds.seen(algorithm, &seen_input);
+    if matches!(tolerance, Tolerance::Cond(_)) && !seen.cond_tolerance {
+        return Err(Error::Unsupported {
+            kind: described,
+            what: format!("tolerance `{tolerance}` is not defined (its float program adds an error the condition number does not measure): use `bound`"),
+        });
+    }
+    let exact = seen.exact.clone().ok_or_else(|| {
+        Error::Core(CoreError::Invalid(format!(
+            "{described} is undefined at the input as seen {} (in {})",
+            crate::domain::format_tuple(&seen.input),
+            precision.name()
+        )))
+    })?;
+    let exact_intended = match intended {
+        Some(i) => Some(patch.exact().exact_evaluator().evaluate(i)?),
+        None => None,
+    };
+    let mut coordinates = Vec::with_capacity(claimed.len());
+    for (c, &y) in claimed.iter().enumerate() {
+        let condition = seen.condition.as_ref().map(|k| k[c].clone());
+        let bound = seen.bound.as_ref().map(|b| b[c].clone());
+        let intended_c = exact_intended.as_ref().map(|e| e[c].clone());
+        let judged = match crate::number::exact_f64(y) {
+            None => CoordinateJudgement {
+                claimed: y,
+                exact: exact[c].clone(),
+                exact_intended: intended_c,
+                ulps: None,
+                ulps_intended: None,
+                correctly_rounded: false,
+                condition,
+                bound,
+                passed: false,
+            },
+            Some(yq) => {
+                let m = Measures::new(&yq, &exact[c], Some(precision));
+                let leaf = Leaf {
+                    precision: Some(precision),
+                    condition: condition.clone().filter(|_| seen.cond_tolerance),
+                    bound: bound.clone(),
+                };
+                let passed = tolerance
+                    .accepts(&yq, &exact[c], &leaf)
+                    .map_err(|message| Error::Tolerance {
+                        coordinate: c,
+                        message,
+                    })?;
+                CoordinateJudgement {
+                    claimed: y,
+                    exact: exact[c].clone(),
+                    ulps_intended: intended_c
+                        .as_ref()
+                        .and_then(|i| Measures::new(&yq, i, Some(precision)).ulps),
+                    exact_intended: intended_c,
+                    ulps: m.ulps,
+                    correctly_rounded: m.correctly_rounded == Some(true),
+                    condition,
+                    bound,
+                    passed,
+                }
+            }
+        };
+        coordinates.push(judged);
+    }
+    Ok(Judgement {
+        passed: coordinates.iter().all(|c| c.passed),
+        kind: patch.kind(),
+        precision,
+        tolerance: tolerance.clone(),
+        algorithm: float.algorithm_name(algorithm),
+        input_seen: seen.input,
+        coordinates,
+    })
+}
+
+/// Serialisation of exact numbers as their exact text (`"4/9"`).
+mod ser {
+    use num_rational::BigRational;
+    use serde::Serializer;
+
+    pub fn rational<S: Serializer>(q: &BigRational, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(q)
+    }
+
+    pub fn opt_rational<S: Serializer>(q: &Option<BigRational>, s: S) -> Result<S::Ok, S::Error> {
+        match q {
+            Some(q) => s.collect_str(q),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub fn rationals<S: Serializer>(qs: &[BigRational], s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(qs.iter().map(ToString::to_string))
+    }
+
+    pub fn precision<S: Serializer>(p: &crate::float::Precision, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(p.name())
+    }
+
+    pub fn display<S: Serializer, T: std::fmt::Display>(t: &T, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(t)
+    }
+}
