@@ -24,6 +24,7 @@
 
 pub mod any_patch;
 pub mod api_error;
+pub mod batch;
 pub mod bernstein;
 pub mod blossom;
 pub mod capability;

@@ -9,7 +9,7 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
-use tribez::claims::{ClaimFile, Judged, Verdict, find_claim_files};
+use tribez::claims::{ClaimFile, Judged, Verdict};
 use tribez::number::to_decimal_string;
 
 /// Arguments of `tribez check`.
@@ -65,7 +65,11 @@ pub fn judge_paths(paths: &[PathBuf]) -> Result<Vec<(String, Vec<Judged>)>, CliE
     let mut files = Vec::new();
     for p in paths {
         if p.is_dir() {
-            let found = find_claim_files(p)?;
+            let walk = tribez::io::walk::claim_files(p)?;
+            for note in &walk.notes {
+                eprintln!("note: {note}");
+            }
+            let found = walk.files;
             if found.is_empty() {
                 return Err(CliError::Usage(format!(
                     "{}: no claim files (*.claims.toml, *.claims.json)",

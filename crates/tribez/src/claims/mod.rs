@@ -459,27 +459,10 @@ impl ClaimFile {
     }
 }
 
-/// The claim files under `dir` (recursively): `*.claims.toml` and `*.claims.json`, sorted.
+/// The claim files under `dir` (recursively): `*.claims.toml` and `*.claims.json`, sorted;
+/// symbolic links to directories are not followed, each file counts once, and anything that is
+/// not a regular file is skipped ([`crate::io::walk::claim_files`] also returns notes on what
+/// was skipped).
 pub fn find_claim_files(dir: &Path) -> Result<Vec<PathBuf>, InputError> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let entries = std::fs::read_dir(&d).map_err(|e| {
-            InputError::file(
-                d.display().to_string(),
-                format!("cannot read directory: {e}"),
-            )
-        })?;
-        for entry in entries.flatten() {
-            let p = entry.path();
-            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
-            if p.is_dir() {
-                stack.push(p);
-            } else if name.ends_with(".claims.toml") || name.ends_with(".claims.json") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    Ok(out)
+    Ok(crate::io::walk::claim_files(dir)?.files)
 }

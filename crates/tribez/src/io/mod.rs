@@ -2,9 +2,12 @@
 //!
 //! This layer depends on the core and never the reverse.
 
+pub mod fuzz;
 pub mod patch_file;
 pub mod points;
+pub mod text;
 pub mod tree;
+pub mod walk;
 
 use std::fmt;
 

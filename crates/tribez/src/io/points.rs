@@ -1,11 +1,17 @@
 //! Lists of points: CSV (one point per line, numbers separated by commas; `#` starts a comment
 //! line) or JSON (an array of arrays), numbers read exactly from their text.
+//!
+//! A CSV file may start with one header line of column names (`u,v,w`, as other tools write
+//! it): the first line that is neither blank nor a comment is a header when every field is a
+//! name (see [`csv_header`]); it must then have one name per column. A UTF-8 byte-order mark is
+//! ignored. Both kinds are read whole (at most [`super::text::MAX_FILE_BYTES`]).
 
 use std::path::Path;
 
 use num_rational::BigRational;
 
 use super::InputError;
+use super::text::read_text;
 use super::tree::Document;
 use crate::number::parse_rational;
 
@@ -19,34 +25,68 @@ pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, I
         .to_ascii_lowercase();
     if ext == "json" {
         let doc = Document::read(path)?;
-        let rows = doc.array(&doc.root, "")?;
-        let mut out = Vec::with_capacity(rows.len());
-        for (i, row) in rows.iter().enumerate() {
-            let key = format!("[{i}]");
-            let p = doc.rationals(row, &key)?;
-            if p.len() != width {
-                return Err(doc.error(
-                    row,
-                    &key,
-                    format!("point has {} coordinates, expected {width}", p.len()),
-                ));
-            }
-            out.push(p);
-        }
-        if out.is_empty() {
-            return Err(InputError::file(file, "no points"));
-        }
-        return Ok(out);
+        return points_from_document(&doc, width);
     }
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+    let text = read_text(path)?;
+    parse_csv_points(&text, width, &file)
+}
+
+/// The points of a JSON document: an array of arrays of `width` numbers each.
+pub fn points_from_document(
+    doc: &Document,
+    width: usize,
+) -> Result<Vec<Vec<BigRational>>, InputError> {
+    let rows = doc.array(&doc.root, "")?;
+    let mut out = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        let key = format!("[{i}]");
+        let p = doc.rationals(row, &key)?;
+        if p.len() != width {
+            return Err(doc.error(
+                row,
+                &key,
+                format!("point has {} coordinates, expected {width}", p.len()),
+            ));
+        }
+        out.push(p);
+    }
+    if out.is_empty() {
+        return Err(InputError::file(&doc.file, "no points"));
+    }
+    Ok(out)
+}
+
+/// The points of CSV text (see the module documentation); every point has `width` coordinates.
+pub fn parse_csv_points(
+    text: &str,
+    width: usize,
+    file: &str,
+) -> Result<Vec<Vec<BigRational>>, InputError> {
+    let text = super::text::strip_bom(text);
     let mut out = Vec::new();
+    let mut first = true;
     for (i, line) in text.lines().enumerate() {
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') {
             continue;
         }
-        out.push(parse_csv_row(t, width, &file, i + 1)?);
+        if std::mem::take(&mut first)
+            && let Some(names) = csv_header(t)
+        {
+            if names != width {
+                return Err(InputError {
+                    file: file.into(),
+                    line: Some(i + 1),
+                    column: None,
+                    key: None,
+                    message: format!(
+                        "a header line of {names} names, expected {width} (one per column)"
+                    ),
+                });
+            }
+            continue;
+        }
+        out.push(parse_csv_row(t, width, file, i + 1)?);
     }
     if out.is_empty() {
         return Err(InputError::file(file, "no points"));
@@ -84,4 +124,69 @@ pub fn parse_csv_row(
         column += f.chars().count() + 1;
     }
     Ok(out)
+}
+
+/// If `line` is a CSV header line, its number of names. A header is a line whose every field
+/// (trimmed, without surrounding double quotes) is a name: a letter or `_`, then letters,
+/// digits, `_`, `.`, `-`, `[`, `]`, `(` or `)`; and not a line of `nan`/`inf` fields only
+/// (those are failed values in a results file, never names).
+pub fn csv_header(line: &str) -> Option<usize> {
+    let fields: Vec<&str> = line
+        .split(',')
+        .map(|f| {
+            let f = f.trim();
+            f.strip_prefix('"')
+                .and_then(|g| g.strip_suffix('"'))
+                .unwrap_or(f)
+                .trim()
+        })
+        .collect();
+    let is_name = |f: &str| {
+        let mut chars = f.chars();
+        chars
+            .next()
+            .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && chars.all(|c| c.is_ascii_alphanumeric() || "_.-[]()".contains(c))
+    };
+    let not_finite =
+        |f: &str| matches!(f.to_ascii_lowercase().as_str(), "nan" | "inf" | "infinity");
+    (fields.iter().all(|f| is_name(f)) && !fields.iter().all(|f| not_finite(f)))
+        .then_some(fields.len())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_header_line_of_names_is_skipped() {
+        let pts = parse_csv_points("\u{feff}u,v,w\n1/2,1/4,1/4\n", 3, "p.csv").unwrap();
+        assert_eq!(pts.len(), 1);
+        assert_eq!(pts[0][0].to_string(), "1/2");
+        let pts = parse_csv_points("# comment\n\"u\", \"v\", \"w\"\n0,0,1\n", 3, "p.csv").unwrap();
+        assert_eq!(pts.len(), 1);
+        // a second line of names is a bad row
+        let e = parse_csv_points("u,v,w\nu,v,w\n", 3, "p.csv").unwrap_err();
+        assert_eq!(e.line, Some(2));
+        // a header with the wrong number of names
+        let e = parse_csv_points("u,v\n0,0,1\n", 3, "p.csv").unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("p.csv:1: a header line of 2 names, expected 3"),
+            "{e}"
+        );
+        // names after data are bad rows
+        let e = parse_csv_points("0,0,1\nu,v,w\n", 3, "p.csv").unwrap_err();
+        assert_eq!(e.line, Some(2));
+    }
+
+    #[test]
+    fn what_is_a_header() {
+        assert_eq!(csv_header("u,v,w,x,y,z"), Some(6));
+        assert_eq!(csv_header("x_0, y.1 ,\"z[2]\""), Some(3));
+        assert_eq!(csv_header("u,v,1"), None);
+        assert_eq!(csv_header("nan,inf,Infinity"), None);
+        assert_eq!(csv_header("u,,w"), None);
+        assert_eq!(csv_header("1e5,2"), None);
+    }
 }

@@ -10,6 +10,7 @@ use std::path::Path;
 use num_rational::BigRational;
 
 use super::InputError;
+use super::text::{LineIndex, read_text, strip_bom};
 use crate::number::parse_rational;
 
 /// A value with the line it starts on.
@@ -73,33 +74,38 @@ impl Document {
         }
     }
 
-    /// Read and parse a `.toml` or `.json` file (by extension).
+    /// Read and parse a `.toml` or `.json` file (by extension): a regular file of at most
+    /// [`super::text::MAX_FILE_BYTES`], UTF-8, with or without a byte-order mark.
     pub fn read(path: &Path) -> Result<Self, InputError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
         let ext = path
             .extension()
             .and_then(|e| e.to_str())
             .unwrap_or("")
             .to_ascii_lowercase();
-        match ext.as_str() {
-            "toml" => Document::parse_toml(&file, &text),
-            "json" => Document::parse_json(&file, &text),
-            _ => Err(InputError::file(
+        if !matches!(ext.as_str(), "toml" | "json") {
+            return Err(InputError::file(
                 &file,
                 "unknown file type (expected a .toml or .json extension)",
-            )),
+            ));
+        }
+        let text = read_text(path)?;
+        if ext == "toml" {
+            Document::parse_toml(&file, &text)
+        } else {
+            Document::parse_json(&file, &text)
         }
     }
 
-    /// Parse TOML text.
+    /// Parse TOML text (a leading byte-order mark is ignored). Linear in the text's length.
     pub fn parse_toml(file: &str, text: &str) -> Result<Self, InputError> {
+        let text = strip_bom(text);
         if text.trim().is_empty() {
             return Err(InputError::file(file, "the file is empty"));
         }
+        let lines = LineIndex::new(text.as_bytes());
         let doc = toml_edit::Document::parse(text).map_err(|e| {
-            let (line, column) = e.span().map(|s| line_col(text, s.start)).unzip();
+            let (line, column) = e.span().map(|s| lines.line_col(s.start)).unzip();
             let msg = e.message().trim().to_string();
             InputError {
                 file: file.into(),
@@ -109,15 +115,16 @@ impl Document {
                 message: format!("invalid TOML: {msg}"),
             }
         })?;
-        let root = toml_table(text, doc.as_table(), 1);
+        let root = Toml { text, lines }.table(doc.as_table(), 1);
         Ok(Document {
             file: file.into(),
             root,
         })
     }
 
-    /// Parse JSON text.
+    /// Parse JSON text (a leading byte-order mark is ignored). Linear in the text's length.
     pub fn parse_json(file: &str, text: &str) -> Result<Self, InputError> {
+        let text = strip_bom(text);
         if text.trim().is_empty() {
             return Err(InputError::file(file, "the file is empty"));
         }
@@ -125,6 +132,7 @@ impl Document {
             text: text.as_bytes(),
             pos: 0,
             file,
+            lines: LineIndex::new(text.as_bytes()),
         };
         p.skip_ws();
         let root = p.value(0)?;
@@ -139,102 +147,100 @@ impl Document {
     }
 }
 
-/// 1-based (line, column) of a byte offset.
+/// 1-based (line, column) of a byte offset (the column counts bytes). Linear in `offset`: to
+/// locate many offsets of one text, build a [`LineIndex`] once.
 pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text.as_bytes()[..offset.min(text.len())];
-    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-    let col = before.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-    (line, col)
+    LineIndex::new(&text.as_bytes()[..offset.min(text.len())]).line_col(offset.min(text.len()))
 }
 
-fn span_line(text: &str, span: Option<std::ops::Range<usize>>, fallback: usize) -> usize {
-    span.map_or(fallback, |s| line_col(text, s.start).0)
+/// A TOML document's text and its line index, to locate every value in `O(log lines)`.
+struct Toml<'a> {
+    text: &'a str,
+    lines: LineIndex,
 }
 
-fn toml_table(text: &str, table: &toml_edit::Table, line: usize) -> Node {
-    let line = span_line(text, table.span(), line);
-    let entries = table
-        .iter()
-        .map(|(k, item)| {
-            let key_line = table
-                .key(k)
-                .and_then(|key| key.span())
-                .map_or(line, |s| line_col(text, s.start).0);
-            (k.to_string(), toml_item(text, item, key_line))
-        })
-        .collect();
-    Node {
-        value: Value::Table(entries),
-        line,
+impl Toml<'_> {
+    fn span_line(&self, span: Option<std::ops::Range<usize>>, fallback: usize) -> usize {
+        span.map_or(fallback, |s| self.lines.line(s.start))
     }
-}
 
-fn toml_item(text: &str, item: &toml_edit::Item, line: usize) -> Node {
-    match item {
-        toml_edit::Item::None => Node {
-            value: Value::Null,
+    fn table(&self, table: &toml_edit::Table, line: usize) -> Node {
+        let line = self.span_line(table.span(), line);
+        let entries = table
+            .iter()
+            .map(|(k, item)| {
+                let key_line = self.span_line(table.key(k).and_then(|key| key.span()), line);
+                (k.to_string(), self.item(item, key_line))
+            })
+            .collect();
+        Node {
+            value: Value::Table(entries),
             line,
-        },
-        toml_edit::Item::Value(v) => toml_value(text, v, line),
-        toml_edit::Item::Table(t) => toml_table(text, t, line),
-        toml_edit::Item::ArrayOfTables(a) => {
-            let items = a.iter().map(|t| toml_table(text, t, line)).collect();
-            Node {
-                value: Value::Array(items),
+        }
+    }
+
+    fn item(&self, item: &toml_edit::Item, line: usize) -> Node {
+        match item {
+            toml_edit::Item::None => Node {
+                value: Value::Null,
                 line,
+            },
+            toml_edit::Item::Value(v) => self.value(v, line),
+            toml_edit::Item::Table(t) => self.table(t, line),
+            toml_edit::Item::ArrayOfTables(a) => {
+                let items = a.iter().map(|t| self.table(t, line)).collect();
+                Node {
+                    value: Value::Array(items),
+                    line,
+                }
             }
         }
     }
-}
 
-fn toml_value(text: &str, v: &toml_edit::Value, line: usize) -> Node {
-    use toml_edit::Value as V;
-    let line = span_line(text, v.span(), line);
-    let raw = || {
-        v.span()
-            .map(|s| text[s].trim().to_string())
-            .unwrap_or_else(|| v.to_string().trim().to_string())
-    };
-    let value = match v {
-        V::String(s) => Value::String(s.value().clone()),
-        V::Integer(_) | V::Float(_) => Value::Number(raw().replace('_', "")),
-        V::Boolean(b) => Value::Bool(*b.value()),
-        V::Datetime(_) => Value::String(raw()),
-        V::Array(a) => Value::Array(a.iter().map(|x| toml_value(text, x, line)).collect()),
-        V::InlineTable(t) => Value::Table(
-            t.iter()
-                .map(|(k, x)| {
-                    let key_line = t
-                        .key(k)
-                        .and_then(|key| key.span())
-                        .map_or(line, |s| line_col(text, s.start).0);
-                    (k.to_string(), toml_value(text, x, key_line))
-                })
-                .collect(),
-        ),
-    };
-    Node { value, line }
+    fn value(&self, v: &toml_edit::Value, line: usize) -> Node {
+        use toml_edit::Value as V;
+        let line = self.span_line(v.span(), line);
+        let raw = || {
+            v.span()
+                .and_then(|s| self.text.get(s))
+                .map(|t| t.trim().to_string())
+                .unwrap_or_else(|| v.to_string().trim().to_string())
+        };
+        let value = match v {
+            V::String(s) => Value::String(s.value().clone()),
+            V::Integer(_) | V::Float(_) => Value::Number(raw().replace('_', "")),
+            V::Boolean(b) => Value::Bool(*b.value()),
+            V::Datetime(_) => Value::String(raw()),
+            V::Array(a) => Value::Array(a.iter().map(|x| self.value(x, line)).collect()),
+            V::InlineTable(t) => Value::Table(
+                t.iter()
+                    .map(|(k, x)| {
+                        let key_line = self.span_line(t.key(k).and_then(|key| key.span()), line);
+                        (k.to_string(), self.value(x, key_line))
+                    })
+                    .collect(),
+            ),
+        };
+        Node { value, line }
+    }
 }
 
 struct JsonParser<'a> {
     text: &'a [u8],
     pos: usize,
     file: &'a str,
+    lines: LineIndex,
 }
 
 const MAX_DEPTH: usize = 128;
 
 impl JsonParser<'_> {
     fn line(&self) -> usize {
-        self.text[..self.pos]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
-            + 1
+        self.lines.line(self.pos)
     }
 
     fn err(&self, message: &str) -> InputError {
-        let (line, col) = line_col(std::str::from_utf8(self.text).unwrap_or(""), self.pos);
+        let (line, col) = self.lines.line_col(self.pos);
         InputError {
             file: self.file.into(),
             line: Some(line),
@@ -273,12 +279,13 @@ impl JsonParser<'_> {
             Some(b'{') => {
                 self.pos += 1;
                 let mut entries: Vec<(String, Node)> = Vec::new();
+                let mut seen = std::collections::HashSet::new();
                 if !self.eat(b'}') {
                     loop {
                         self.skip_ws();
                         let key_pos = self.pos;
                         let key = self.string()?;
-                        if entries.iter().any(|(k, _)| *k == key) {
+                        if !seen.insert(key.clone()) {
                             self.pos = key_pos;
                             return Err(self.err(&format!("duplicate key \"{key}\"")));
                         }

@@ -1,74 +1,54 @@
-//! The batch report: text, JSON and JUnit.
+//! The batch report: text and JSON (the command line adds JUnit).
 
 use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
-use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
-use tribez::certify::measures::{Measures, Tolerance};
-use tribez::exact::Algorithm;
-use tribez::float::Precision;
-use tribez::number::to_decimal_string;
+use super::UlpHistogram;
+use crate::certify::measures::{Measures, Tolerance};
+use crate::float::Precision;
+use crate::number::to_decimal_string;
 
 /// A failed row, in full.
 #[derive(Clone, Debug)]
 pub struct FailedRow {
-    pub(super) line: usize,
-    pub(super) reason: String,
-    pub(super) coords: Vec<FailedCoord>,
+    pub line: usize,
+    pub reason: String,
+    pub coords: Vec<FailedCoord>,
 }
 
 #[derive(Clone, Debug)]
-pub(super) struct FailedCoord {
-    pub(super) index: usize,
-    pub(super) decimal: String,
-    pub(super) hex: String,
-    pub(super) exact_seen: BigRational,
-    pub(super) seen: Measures,
-    pub(super) exact_intended: Option<BigRational>,
-    pub(super) intended: Option<Measures>,
+pub struct FailedCoord {
+    pub index: usize,
+    pub decimal: String,
+    pub hex: String,
+    pub exact_seen: BigRational,
+    pub seen: Measures,
+    pub exact_intended: Option<BigRational>,
+    pub intended: Option<Measures>,
 }
 
 /// The batch report.
 pub struct BatchReport {
-    pub(super) file: String,
-    pub(super) patch: String,
-    pub(super) tolerance: Tolerance,
-    pub(super) precision: Option<Precision>,
-    pub(super) rows: u64,
-    pub(super) passed: u64,
-    pub(super) failed: u64,
-    pub(super) fell_back: u64,
-    pub(super) histogram: UlpHistogram,
+    pub file: String,
+    pub patch: String,
+    pub tolerance: Tolerance,
+    pub precision: Option<Precision>,
+    pub rows: u64,
+    pub passed: u64,
+    pub failed: u64,
+    pub fell_back: u64,
+    pub histogram: UlpHistogram,
     /// Errors of filter-decided rows enter the histogram as the upper ends of their compensated
     /// enclosures.
-    pub(super) histogram_upper_bounds: bool,
+    pub histogram_upper_bounds: bool,
     /// Filter-decided rows whose error was computed exactly for the histogram (its enclosure
     /// straddled a bucket boundary).
-    pub(super) histogram_exact: usize,
-    pub(super) worst: Option<(f64, usize, Vec<FailedCoord>)>,
-    pub(super) failures: Vec<FailedRow>,
+    pub histogram_exact: usize,
+    pub worst: Option<(f64, usize, Vec<FailedCoord>)>,
+    pub failures: Vec<FailedRow>,
 }
 
-impl BatchReport {
-    /// The worst error for baselines: (eval, claimed, precision).
-    pub(super) fn worst_errors(
-        &self,
-        _algorithm: Algorithm,
-    ) -> Vec<crate::commands::baseline::Worst> {
-        self.worst
-            .iter()
-            .map(|(u, line, _)| crate::commands::baseline::Worst {
-                op: "eval".into(),
-                algorithm: "claimed".into(),
-                precision: self.precision.map_or("exact", |p| p.name()).into(),
-                ulps: *u,
-                at: format!("{}:{line}", self.file),
-            })
-            .collect()
-    }
-}
-
-pub(super) fn coord_text(c: &FailedCoord) -> String {
+fn coord_text(c: &FailedCoord) -> String {
     let mut s = format!(
         "claimed {} = {}; exact at the inputs as seen {} ({})",
         c.decimal,
@@ -86,7 +66,7 @@ pub(super) fn coord_text(c: &FailedCoord) -> String {
     s
 }
 
-pub(super) fn coord_json(c: &FailedCoord) -> Json {
+fn coord_json(c: &FailedCoord) -> Json {
     json!({
         "coordinate": c.index,
         "claimed": {"decimal": c.decimal, "hex": c.hex},
@@ -97,8 +77,9 @@ pub(super) fn coord_json(c: &FailedCoord) -> Json {
     })
 }
 
-impl Render for BatchReport {
-    fn text(&self) -> String {
+impl BatchReport {
+    /// The report for people.
+    pub fn text(&self) -> String {
         let mut out = format!(
             "{}: {} rows checked against {} (tolerance {}, {})\n",
             self.file,
@@ -170,7 +151,8 @@ impl Render for BatchReport {
         out
     }
 
-    fn json(&self) -> Json {
+    /// The report for machines.
+    pub fn json(&self) -> Json {
         json!({
             "results": self.file,
             "patch": self.patch,
@@ -186,29 +168,5 @@ impl Render for BatchReport {
             "failures": self.failures.iter().map(|f| json!({"line": f.line, "reason": f.reason, "coordinates": f.coords.iter().map(coord_json).collect::<Vec<_>>()})).collect::<Vec<_>>(),
             "failures_not_listed": self.failed as usize - self.failures.len(),
         })
-    }
-}
-
-impl Exporter for BatchReport {
-    fn junit(&self) -> String {
-        let mut failures: Vec<String> = self
-            .failures
-            .iter()
-            .map(|f| format!("line {}: {}", f.line, f.reason))
-            .collect();
-        if self.failed as usize > self.failures.len() {
-            failures.push(format!(
-                "… and {} more",
-                self.failed as usize - self.failures.len()
-            ));
-        }
-        junit_xml(
-            "check",
-            &[JunitCase {
-                name: self.file.clone(),
-                checks: self.rows as usize,
-                failures,
-            }],
-        )
     }
 }

@@ -11,10 +11,10 @@ use std::io::BufRead;
 use num_rational::BigRational;
 
 use super::CHUNK;
-use tribez::certify::measures::as_float;
-use tribez::float::Precision;
-use tribez::io::InputError;
-use tribez::number::parse_rational;
+use crate::certify::measures::as_float;
+use crate::float::Precision;
+use crate::io::InputError;
+use crate::number::parse_rational;
 
 /// One field of a row: its text and its 1-based column.
 pub(super) struct Field<'a> {
@@ -73,7 +73,7 @@ pub(super) fn parse_num(
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
             match as_float(&q, p) {
                 Some(x) => Ok(Num::Value {
-                    float: tribez::number::round_f64(&x),
+                    float: crate::number::round_f64(&x),
                     text_exact: Some(q),
                 }),
                 None => Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name()))),
@@ -82,7 +82,7 @@ pub(super) fn parse_num(
         None => {
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
             Ok(Num::Value {
-                float: tribez::number::round_f64(&q),
+                float: crate::number::round_f64(&q),
                 text_exact: Some(q),
             })
         }
@@ -178,7 +178,7 @@ pub(super) type Row = (Vec<Num>, Vec<Num>);
 
 /// The layout of a results file (see the module documentation for how it is recognised).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Format {
+pub enum Format {
     /// Comma-separated values, `#` comment lines.
     Csv,
     /// One JSON array per line.
@@ -189,7 +189,7 @@ pub(super) enum Format {
 
 impl Format {
     /// The format of `path`: by extension, then (for JSON) by its first two non-space characters.
-    pub(super) fn of(path: &std::path::Path, file: &str) -> Result<Format, InputError> {
+    pub fn of(path: &std::path::Path, file: &str) -> Result<Format, InputError> {
         let ext = path
             .extension()
             .and_then(|e| e.to_str())

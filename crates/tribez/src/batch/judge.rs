@@ -5,14 +5,13 @@ use num_traits::ToPrimitive;
 
 use super::parse::Num;
 use super::report::FailedCoord;
-use crate::commands::CliError;
-use crate::commands::check::Args;
-use tribez::certify::bound::{a_priori, condition};
-use tribez::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
-use tribez::certify::measures::{Leaf, Measures, Tolerance, as_float};
-use tribez::exact::{Algorithm, ExactEvaluator};
-use tribez::float::Precision;
-use tribez::patch::{BezierPatch as Patch, ControlNet};
+use super::{BatchError, BatchOptions};
+use crate::certify::bound::{a_priori, condition};
+use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
+use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
+use crate::exact::{Algorithm, ExactEvaluator};
+use crate::float::Precision;
+use crate::patch::{BezierPatch as Patch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {
@@ -48,41 +47,28 @@ pub(super) struct Prepared {
 }
 
 impl Prepared {
-    pub(super) fn new(args: &Args, patch: Patch) -> Result<Self, CliError> {
-        let tolerance = match &args.tolerance {
-            Some(t) => {
-                Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?
-            }
-            None => Tolerance::Exact,
-        };
-        let precision = match &args.precision {
-            Some(p) => Some(
-                p.parse::<Precision>()
-                    .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
-            ),
-            None => None,
-        };
+    pub(super) fn new(options: &BatchOptions, patch: Patch) -> Result<Self, BatchError> {
+        let BatchOptions {
+            tolerance,
+            precision,
+            algorithm,
+            cartesian,
+        } = options.clone();
         if tolerance.needs_precision() && precision.is_none() {
-            return Err(CliError::Usage(format!(
-                "--tolerance {tolerance} needs --precision f64 or f32"
-            )));
+            return Err(BatchError::ToleranceNeedsPrecision { tolerance });
         }
-        let algorithm = args.algorithm.algorithm();
         let seen_net = match precision {
             Some(p) => {
                 if patch.net.coords().iter().any(|q| as_float(q, p).is_none()) {
-                    return Err(CliError::Usage(format!(
-                        "a control point of the patch overflows {}",
-                        p.name()
-                    )));
+                    return Err(BatchError::ControlPointOverflows { precision: p });
                 }
                 patch.net.map(|q| as_float(q, p).unwrap_or_default())
             }
             None => patch.net.clone(),
         };
         let (m, n) = (patch.net.m(), patch.net.degree());
-        let filter = precision.filter(|_| !args.cartesian).map(|p| {
-            let fnet = seen_net.map(tribez::number::round_f64);
+        let filter = precision.filter(|_| !cartesian).map(|p| {
+            let fnet = seen_net.map(crate::number::round_f64);
             (
                 Filter::new(&fnet),
                 Thresholds::new(&tolerance, p, algorithm, m, n),
@@ -96,7 +82,7 @@ impl Prepared {
             precision,
             tolerance,
             algorithm,
-            cartesian: args.cartesian,
+            cartesian,
             filter,
         })
     }
@@ -120,7 +106,7 @@ impl Prepared {
     fn seen_value(&self, x: &Num) -> Option<BigRational> {
         match x {
             Num::Value { float, text_exact } => match self.precision {
-                Some(_) => tribez::number::exact_f64(*float),
+                Some(_) => crate::number::exact_f64(*float),
                 None => text_exact.clone(),
             },
             Num::NotFinite(_) => None,
@@ -222,12 +208,12 @@ impl Prepared {
             if detail {
                 let (decimal, hex) = match self.precision {
                     Some(Precision::F32) => (
-                        tribez::number::display_f32(*float as f32),
-                        tribez::number::hex_f32(*float as f32),
+                        crate::number::display_f32(*float as f32),
+                        crate::number::hex_f32(*float as f32),
                     ),
                     _ => (
-                        tribez::number::display_f64(*float),
-                        tribez::number::hex_f64(*float),
+                        crate::number::display_f64(*float),
+                        crate::number::hex_f64(*float),
                     ),
                 };
                 let ei = intended.as_ref().map(|v| v[c].clone());
@@ -341,8 +327,8 @@ impl Prepared {
                 Some(yq) if &yq == q => 0.0,
                 Some(yq) => {
                     let u = match self.precision {
-                        Some(Precision::F32) => tribez::number::ulps_error_f32(&yq, q),
-                        _ => tribez::number::ulps_error_f64(&yq, q),
+                        Some(Precision::F32) => crate::number::ulps_error_f32(&yq, q),
+                        _ => crate::number::ulps_error_f64(&yq, q),
                     };
                     u.to_f64().unwrap_or(f64::INFINITY)
                 }
@@ -369,7 +355,7 @@ impl Prepared {
             o.ulps = o.ulps.min(hi);
             o.loose = false;
         }
-        use crate::report::UlpHistogram;
+        use super::UlpHistogram;
         if UlpHistogram::bucket(o.ulps_lower) != UlpHistogram::bucket(o.ulps) {
             let u = self.exact_ulps(&o.inputs, &o.claimed);
             o.ulps = u;
