@@ -231,7 +231,7 @@ impl<'a> ClaimOp<'a> {
 }
 
 /// The exact value of a claim's operation: parsed, then (with `precision`, for every operation
-/// but `eval`, whose float view is [`point::eval_float`]) rounded as the code saw it, then
+/// but `eval`, whose float view is [`float_view`]) rounded as the code saw it, then
 /// computed.
 pub fn exact_value(file: &ClaimFile, claim: &Claim) -> Result<Value, InputError> {
     let inputs = Inputs::new(file, claim)?;
