@@ -101,8 +101,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             true,
         );
     }
-    let net =
-        tribez::blossom::subpatch_exact(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
+    let net = tribez::blossom::subpatch(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
     let patch = child_patch(&parent, net, Some(&f), "subpatch")?;
     Outcome::rendered(
         &PatchReport {

@@ -28,10 +28,12 @@ mod histogram;
 mod judge;
 mod parse;
 mod report;
+mod rows;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 pub use parse::Format;
 pub use report::{BatchReport, FailedCoord, FailedRow};
+pub use rows::RowVerdict;
 
 use crate::certify::measures::Tolerance;
 use crate::exact::Algorithm;

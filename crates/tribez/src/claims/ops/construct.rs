@@ -365,9 +365,7 @@ impl<'a> Construction<'a> {
 
     /// The exact value.
     pub fn compute(&self, inputs: &Inputs<'_>) -> Result<Value, InputError> {
-        use crate::subdivide::{
-            add_and_halve, halve_exact, midpoint_split_exact, split_at_pieces_exact,
-        };
+        use crate::subdivide::{add_and_halve, halve, midpoint_split, split_at_pieces};
         let pieces = |ps: Vec<crate::subdivide::Piece<Q>>| {
             Value::List(ps.iter().map(|p| net_value(&p.net)).collect())
         };
@@ -409,18 +407,18 @@ impl<'a> Construction<'a> {
                 other => {
                     let p = other.polynomial().expect("checked when parsed");
                     net_value(
-                        &crate::blossom::subpatch_exact(&p.net, vertices)
+                        &crate::blossom::subpatch(&p.net, vertices)
                             .map_err(|e| inputs.error("vertices", e.to_string()))?,
                     )
                 }
             },
             Construction::Subdivide { patch, mode } => match mode {
                 SubdivideMode::At(t) => pieces(
-                    split_at_pieces_exact(&patch.net, t)
+                    split_at_pieces(&patch.net, t)
                         .map_err(|e| inputs.error("at", e.to_string()))?,
                 ),
                 SubdivideMode::Midpoints => pieces(
-                    midpoint_split_exact(&patch.net)
+                    midpoint_split(&patch.net)
                         .map_err(|e| inputs.error("midpoints", e.to_string()))?,
                 ),
             },
@@ -429,14 +427,14 @@ impl<'a> Construction<'a> {
                 edge: (i, j),
                 method,
             } => match method {
-                HalveMethod::Blossom => pieces(halve_exact(&patch.net, *i, *j).to_vec()),
+                HalveMethod::Blossom => pieces(halve(&patch.net, *i, *j).to_vec()),
                 HalveMethod::AddAndHalve(order) => Value::List(vec![
                     net_value(&add_and_halve(&patch.net, *i, *j, *order)),
                     net_value(&add_and_halve(&patch.net, *j, *i, *order)),
                 ]),
             },
             Construction::Elevate { patch, by } => {
-                net_value(&crate::elevate::elevate_exact(&patch.net, *by))
+                net_value(&crate::elevate::elevate(&patch.net, *by))
             }
             Construction::Matrix { degree, kind } => {
                 let (m, f) = match kind {
