@@ -17,7 +17,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// The edge to cut, as two corner numbers (1 to m+1), e.g. `1,2`.
-    #[arg(long, value_name = "I,J")]
+    #[arg(long, value_name = "I,J", allow_hyphen_values = true)]
     pub edge: String,
     /// Compute with the Wikipedia article's additions and divisions by two only (in place, row by row), instead of blossoms; the result is the same.
     #[arg(long)]

@@ -21,7 +21,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// A vertex of the sub-triangle (sub-simplex) in the parent's barycentric coordinates; may lie outside. Give m+1 (3 for a triangle), in order.
-    #[arg(long = "vertex", value_name = "POINT")]
+    #[arg(long = "vertex", value_name = "POINT", allow_hyphen_values = true)]
     pub vertices: Vec<String>,
     #[command(flatten)]
     pub out: OutputArgs,

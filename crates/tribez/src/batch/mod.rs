@@ -28,11 +28,13 @@ mod histogram;
 mod judge;
 mod parse;
 mod report;
+mod rows;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 pub use parse::Format;
 pub(crate) use parse::fuzz_rows;
 pub use report::{BatchReport, FailedCoord, FailedRow};
+pub use rows::RowVerdict;
 
 use crate::certify::measures::Tolerance;
 use crate::exact::Algorithm;

@@ -28,6 +28,7 @@ pub struct FailedCoord {
 }
 
 /// The batch report.
+#[derive(Clone, Debug)]
 pub struct BatchReport {
     pub file: String,
     pub patch: String,
