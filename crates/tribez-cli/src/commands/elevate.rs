@@ -40,7 +40,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let net = tribez::elevate::elevate_exact(&parent.net, args.by);
+    let net = tribez::elevate::elevate(&parent.net, args.by);
     let patch = child_patch(
         &parent,
         net,

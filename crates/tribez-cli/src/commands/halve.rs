@@ -9,7 +9,7 @@ use super::construct::{PiecesReport, child_patch, construction_net, parse_edge, 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{HalvingOrder, Piece, add_and_halve, halve_domains, halve_exact};
+use tribez::subdivide::{HalvingOrder, Piece, add_and_halve, halve, halve_domains};
 
 /// Arguments of `tribez halve`.
 #[derive(Debug, clap::Args)]
@@ -44,7 +44,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             },
         ]
     } else {
-        halve_exact(&parent.net, i, j)
+        halve(&parent.net, i, j)
     };
     let label = |k: usize| format!("half {} of edge {}", k + 1, args.edge);
     if let Some(r) = rational {

@@ -17,10 +17,9 @@ use super::construct::{
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::blossom::split_at_exact;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{Piece, midpoint_split_exact, replaced, split_at_pieces_exact};
+use tribez::subdivide::{Piece, midpoint_split, replaced, split_at, split_at_pieces};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]
@@ -53,7 +52,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             }
             None => {
                 let pieces =
-                    midpoint_split_exact(&parent.net).map_err(|e| CliError::core(&file, e))?;
+                    midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?;
                 let n = pieces.len();
                 (pieces, (1..=n).collect(), n, None)
             }
@@ -98,7 +97,7 @@ fn split_at_point(
     let what = || format!("--at {text}");
     let zero: Vec<usize> = (0..t.len()).filter(|&k| t[k].is_zero()).collect();
     if zero.is_empty() {
-        let pieces = split_at_pieces_exact(net, t).map_err(|e| CliError::core(what(), e))?;
+        let pieces = split_at_pieces(net, t).map_err(|e| CliError::core(what(), e))?;
         let n = pieces.len();
         return Ok((pieces, (1..=n).collect(), None));
     }
@@ -112,7 +111,7 @@ fn split_at_point(
         ));
     }
     let m = net.m();
-    let (pieces, numbers): (Vec<_>, Vec<_>) = split_at_exact(net, t)
+    let (pieces, numbers): (Vec<_>, Vec<_>) = split_at(net, t)
         .into_iter()
         .enumerate()
         .filter(|(s, _)| !t[*s].is_zero())
