@@ -367,6 +367,14 @@ fn json_array_errors_name_file_line_and_column() {
                 let at = full.rfind("0.5555555555555555").unwrap();
                 format!("{}0.55x5{}", &full[..at], &full[at + 18..])
             },
+            "results.json:15:9: invalid JSON: expected `,` or `]`",
+        ),
+        // the same text as a JSON string: valid JSON, a malformed number
+        (
+            {
+                let at = full.rfind("0.5555555555555555").unwrap();
+                format!("{}\"0.55x5\"{}", &full[..at], &full[at + 18..])
+            },
             "results.json:15:5: malformed number: `0.55x5`",
         ),
         // missing entries, commas and text after the array
@@ -380,7 +388,7 @@ fn json_array_errors_name_file_line_and_column() {
         ),
         (
             "[[0.5,,0.5,0,1,2]]".to_string(),
-            "results.json:1:7: invalid JSON: expected a number, a string or null",
+            "results.json:1:7: invalid JSON: expected value",
         ),
         (
             format!("[[{ROW}]]\nx"),

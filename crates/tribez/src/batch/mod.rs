@@ -32,6 +32,7 @@ mod rows;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 pub use parse::Format;
+pub(crate) use parse::fuzz_rows;
 pub use report::{BatchReport, FailedCoord, FailedRow};
 pub use rows::RowVerdict;
 
@@ -152,8 +153,9 @@ fn check_reader<R: Read + Send>(
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<BatchReport, BatchError> {
     let file = file.to_string();
-    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file);
     let (width, dim) = (p.width(), p.patch.net.dim());
+    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file)
+        .expect_columns(width + dim);
     let mut report = BatchReport {
         file: file.clone(),
         patch: patch_name.into(),
