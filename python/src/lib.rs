@@ -17,14 +17,13 @@ use pyo3::sync::PyOnceLock;
 use pyo3::types::PyType;
 
 mod patch;
+mod report;
 
 /// The Python exception classes, defined in `tribez/_errors.py` (so that `InputError` can be
 /// both a `tribez.TribezError` and a `ValueError`), looked up once.
 fn error_class<'py>(py: Python<'py>, name: &'static str) -> PyResult<Bound<'py, PyType>> {
     static MODULE: PyOnceLock<Py<PyModule>> = PyOnceLock::new();
-    let module = MODULE.get_or_try_init(py, || {
-        py.import("tribez._errors").map(Bound::unbind)
-    })?;
+    let module = MODULE.get_or_try_init(py, || py.import("tribez._errors").map(Bound::unbind))?;
     Ok(module.bind(py).getattr(name)?.cast_into::<PyType>()?)
 }
 
@@ -88,6 +87,8 @@ fn threads() -> usize {
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<patch::NativePatch>()?;
+    m.add_class::<report::NativeReport>()?;
+    m.add_function(wrap_pyfunction!(report::check_rows, m)?)?;
     m.add_function(wrap_pyfunction!(patch::parse_number, m)?)?;
     m.add_function(wrap_pyfunction!(threads, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_test, m)?)?;

@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use rayon::prelude::*;
 
+use tribez::any_patch::AnyPatch;
 use tribez::domain::check_barycentric;
 use tribez::error::CoreError;
 use tribez::exact::ExactEvaluator;
@@ -18,7 +19,6 @@ use tribez::io::patch_file::{
 };
 use tribez::io::tree::Document;
 use tribez::number::{format_rational, parse_rational};
-use tribez::any_patch::AnyPatch;
 use tribez::patch::{BezierPatch as Patch, ControlNet};
 use tribez::rational::RationalPatch;
 use tribez::simplex::{Simplex, binomial};
@@ -52,11 +52,7 @@ impl NativePatch {
     }
 }
 
-fn parse_all(
-    py: Python<'_>,
-    rows: &[Vec<String>],
-    what: &str,
-) -> PyResult<Vec<Vec<BigRational>>> {
+fn parse_all(py: Python<'_>, rows: &[Vec<String>], what: &str) -> PyResult<Vec<Vec<BigRational>>> {
     rows.iter()
         .enumerate()
         .map(|(i, row)| {
@@ -374,14 +370,19 @@ impl NativePatch {
             self.degree(),
             self.simplex(),
             self.dimension(),
-            self.name().map(|n| format!(" name={n:?}")).unwrap_or_default()
+            self.name()
+                .map(|n| format!(" name={n:?}"))
+                .unwrap_or_default()
         )
     }
 }
 
 impl NativePatch {
     fn described(&self) -> &'static str {
-        self.patch.described().trim_start_matches("a ").trim_start_matches("an ")
+        self.patch
+            .described()
+            .trim_start_matches("a ")
+            .trim_start_matches("an ")
     }
 }
 

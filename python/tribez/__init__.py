@@ -12,7 +12,7 @@ results against those exact values.
 
 The main entry points: :class:`Patch` (from files, text or ``bezier``-style node arrays; exact
 and float evaluation), :func:`check` (judge many float results at once, from numpy arrays),
-:func:`check_claims` (claim files), :func:`certify` (tribez's own float paths) and
+:class:`Report` (its verdict, the command line's report) and
 :func:`tribez.testing.assert_certified` (for pytest). Bad input raises :class:`InputError`,
 a ``ValueError`` whose message is the one line the command line prints.
 """
@@ -20,6 +20,7 @@ a ``ValueError`` whose message is the one line the command line prints.
 from __future__ import annotations
 
 import os
+import textwrap
 from fractions import Fraction
 from typing import Optional, Sequence
 
@@ -28,9 +29,13 @@ import numpy as np
 from . import _native
 from ._convert import float_rows, matrix_texts, number_text
 from ._errors import CertificationError, InputError, InternalError, TribezError
+from ._report import Report
 
 __all__ = [
     "Patch",
+    "Report",
+    "check",
+    "threads",
     "TribezError",
     "InputError",
     "CertificationError",
@@ -253,3 +258,90 @@ def _precision_name(precision) -> str:
     if precision in ("f64", "f32"):
         return precision
     raise InputError(f"precision: unknown precision `{precision}` (expected \"f64\" or \"f32\")")
+
+
+TOLERANCES = """\
+Tolerances (the strings of the command line's --tolerance; y claimed, q exact, per coordinate):
+
+    exact               y = q
+    ulps=N              |y - q| <= N ulp(q)  (the ulp of q's binade in the precision)
+    abs=E               |y - q| <= E
+    rel=E               |y - q| <= E |q|
+    correctly_rounded   y is the float nearest q (ties to even)
+    faithful            y is one of the two floats bracketing q (q itself if it is a float)
+    cond=K              |y - q| <= K eps sum_i |c_i| B_i(|lambda|)   (eps = 2^-53 in f64, 2^-24 in
+                        f32): for code whose algorithm is unknown; K = 3n accepts anything as
+                        accurate as de Casteljau (the default cond=9 is 3n for cubics)
+    bound               within the proven a-priori bound of `algorithm` ("casteljau":
+                        gamma_{(m+1)n} sum|c_i| B_i(|lambda|); "bernstein": the direct form's)
+
+N, E and K are exact numbers ("1e-12", "1/3"). The exact value q is taken at the inputs as the code
+saw them (the floats in `points`, which need not sum to 1: the homogeneous form is evaluated there),
+so the verdict measures the algorithm's own error; the error at the intended inputs is reported too.
+"""
+
+
+def threads() -> int:
+    """The number of threads judging uses (rayon's pool: one per core; RAYON_NUM_THREADS)."""
+    return _native.threads()
+
+
+def _precision_of(values, precision):
+    if precision is not None:
+        return _precision_name(precision)
+    dtype = getattr(values, "dtype", None)
+    if dtype is not None and np.dtype(dtype) == np.float32:
+        return "f32"
+    return "f64"
+
+
+def check(patch: Patch, points, values, tolerance: str = "cond=9", precision: Optional[str] = None,
+          cartesian: bool = False, *, algorithm: str = "casteljau", first_row: int = 0) -> Report:
+    """Judge float results of another implementation against the exact values of ``patch``.
+
+    ``points``: a numpy array (or nested lists) of floats, one row per result: m + 1 barycentric
+    coordinates (or, with ``cartesian=True``, the m Cartesian coordinates in the patch's domain).
+    ``values``: the claimed results, one row of ``patch.dimension`` floats per point.
+    ``precision``: ``"f64"`` or ``"f32"``; by default that of ``values`` (float32 -> "f32",
+    otherwise "f64"). float32 arrays widen exactly; every number denotes the float it is.
+    ``tolerance``: see below. ``algorithm``: the algorithm whose bound ``tolerance="bound"``
+    uses (``"casteljau"`` or ``"bernstein"``). ``first_row``: the index of the first row in a
+    larger set (for partitions whose reports are merged; row indices in the report count from it).
+
+    Returns a :class:`Report`: the library's batch report, the same as the command line's
+    ``tribez check --patch P --results FILE`` on the same rows (its text is ``str(report)``).
+    NaN and infinite values are failed rows, not errors. The GIL is released while judging,
+    which runs on every core (rayon).
+
+    Rows are judged by a float filter first (an f64 de Casteljau with a rigorous error bound,
+    then a compensated stage); only rows it cannot decide fall back to exact big-integer
+    arithmetic (``report.fell_back``).
+
+    """
+    if not isinstance(patch, Patch):
+        raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
+    prec = _precision_of(values, precision)
+    if not isinstance(tolerance, str):
+        raise InputError(f"tolerance: expected a str such as \"cond=9\", got {tolerance!r}")
+    if algorithm not in ("casteljau", "bernstein"):
+        raise InputError(f"algorithm: unknown algorithm `{algorithm}` (expected casteljau or bernstein)")
+    first_row = _count(first_row, "first_row")
+    width = _native_width(patch, cartesian)
+    pts = float_rows(points, "points", width)
+    vals = float_rows(values, "values", patch.dimension)
+    if pts.shape[0] != vals.shape[0]:
+        raise InputError(f"{pts.shape[0]} rows of points but {vals.shape[0]} rows of values")
+    if pts.shape[0] == 0:
+        raise InputError("points: no rows")
+    native = _native.check_rows(patch._native, pts.tobytes(), vals.tobytes(), width, patch.dimension,
+                                tolerance, prec, bool(cartesian), algorithm, first_row)
+    return Report(native)
+
+
+check.__doc__ = (check.__doc__ or "") + textwrap.indent(TOLERANCES, "    ")
+
+
+def _native_width(patch: Patch, cartesian: bool) -> int:
+    if patch.kind == "s-patch":
+        return 2
+    return patch.simplex if cartesian else patch.simplex + 1

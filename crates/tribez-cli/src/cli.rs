@@ -1,64 +1,220 @@
-//! Command-line arguments (clap derive). Each subcommand's arguments live beside its code in
-//! [`crate::commands`].
+//! The argument pieces every command shares: output options, the formats each command offers,
+//! parsers for numbers given on the command line (negative values reach them and get a clear
+//! error, never clap's "unexpected argument"), and the examples each `--help` shows.
+//!
+//! This module depends on nothing in [`crate::commands`]; each command's own arguments live
+//! beside its code there and use what is defined here, and the list of commands
+//! ([`crate::commands::Command`]) is assembled in `commands`.
 
 use std::path::PathBuf;
 
-use clap::{Parser, Subcommand};
-
-use crate::commands;
 use crate::report::Format;
 
-/// Exact computations on Bézier triangles (and simplices), used to certify floating-point code.
-#[derive(Debug, Parser)]
-#[command(name = "tribez", version, about, long_about = None, propagate_version = true)]
-pub struct Cli {
-    /// What to do.
-    #[command(subcommand)]
-    pub command: Command,
-}
-
-/// The subcommands; each maps to one function in `src/commands/<name>.rs`.
-#[derive(Debug, Subcommand)]
-pub enum Command {
-    /// Check every claim of the built-in fixtures (or of DIR) and list errata separately.
-    Reproduce(commands::reproduce::Args),
-    /// Evaluate a patch exactly at barycentric (or Cartesian) points; optionally show f64/f32 results and their errors.
-    Eval(commands::eval::Args),
-    /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
-    Symbolic(commands::symbolic::Args),
-    /// Write the graph (x, y, f(x, y)) of a functional patch as a parametric patch file.
-    Graph(commands::graph::Args),
-    /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
-    Check(commands::check::Args),
-    /// Run tribez's own float algorithms (Bézier, rational, S-patch) and judge their errors against proven bounds.
-    Certify(commands::certify::Args),
-    /// The blossom (polar form) b[u1, ..., un] of a patch (rational: X[..]/W[..]): exactly n barycentric arguments.
-    Blossom(commands::blossom::Args),
-    /// The same polynomial over any sub-triangle (sub-simplex), as a patch file.
-    Subpatch(commands::subpatch::Args),
-    /// Split a patch at a point (m+1 pieces) or at the edge midpoints (four pieces).
-    Subdivide(commands::subdivide::Args),
-    /// Cut a patch in two from the midpoint of an edge to the opposite corner.
-    Halve(commands::halve::Args),
-    /// Raise the degree of a patch (the same surface), as a patch file.
-    Elevate(commands::elevate::Args),
-    /// The exact matrix mapping parent control points to a half's or a subpatch's.
-    Matrix(commands::matrix::Args),
-    /// Directional derivative of any order r <= n at a point (barycentric --dir or Cartesian --vector directions).
-    Derivative(commands::derivative::Args),
-    /// Tangent plane at a point: the de Casteljau intermediate points, the partial derivatives and the normal.
-    Tangent(commands::tangent::Args),
-    /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, Finn's coplanarity), or build a C1 neighbour.
-    Join(commands::join::Args),
-}
-
-/// Output options shared by every command.
+/// Output options of a command whose result is text or JSON.
 #[derive(Debug, Clone, clap::Args)]
 pub struct OutputArgs {
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
-    /// Write the output to FILE (whole or not at all) instead of standard output.
+    #[arg(long, value_enum, default_value_t = TextOrJson::Text)]
+    pub format: TextOrJson,
+    /// Write the output to FILE (whole or not at all; a regular file, its permissions kept) instead of standard output.
     #[arg(long, short = 'o', value_name = "FILE")]
     pub output: Option<PathBuf>,
+}
+
+/// Output options of a command whose result is also a formula or a matrix (LaTeX).
+#[derive(Debug, Clone, clap::Args)]
+pub struct LatexOutputArgs {
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Write the output to FILE (whole or not at all; a regular file, its permissions kept) instead of standard output.
+    #[arg(long, short = 'o', value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// The formats of a command without a LaTeX form.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum TextOrJson {
+    /// Text for people.
+    Text,
+    /// JSON for machines (exact numbers as strings in lowest terms).
+    Json,
+}
+
+impl From<TextOrJson> for Format {
+    fn from(f: TextOrJson) -> Format {
+        match f {
+            TextOrJson::Text => Format::Text,
+            TextOrJson::Json => Format::Json,
+        }
+    }
+}
+
+/// The largest `--random N` of `tribez certify` (each point is evaluated exactly).
+pub const MAX_RANDOM_POINTS: usize = 1_000_000;
+
+/// A clap value parser for a whole number from `lo` to `hi`: a negative number, a fraction or a
+/// number beyond the limit gets one line naming the range.
+pub fn whole_number<T>(lo: u64, hi: u64) -> impl Fn(&str) -> Result<T, String> + Clone + Send + Sync
+where
+    T: TryFrom<u64> + Clone + Send + Sync + 'static,
+{
+    move |text: &str| {
+        let range = || {
+            if hi == u64::MAX {
+                format!("expected a whole number, at least {lo}")
+            } else {
+                format!("expected a whole number from {lo} to {hi}")
+            }
+        };
+        let t = text.trim();
+        let digits = t.strip_prefix('+').unwrap_or(t);
+        if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(range());
+        }
+        // beyond u64: too large; leading zeros are fine
+        match digits.parse::<u64>() {
+            Ok(v) if (lo..=hi).contains(&v) => T::try_from(v).map_err(|_| range()),
+            _ => Err(range()),
+        }
+    }
+}
+
+/// A clap value parser for `--random N`: 1 to [`MAX_RANDOM_POINTS`].
+pub fn random_count(text: &str) -> Result<usize, String> {
+    if whole_number::<usize>(0, 0)(text).is_ok() {
+        return Err(format!(
+            "needs at least one point (a whole number from 1 to {MAX_RANDOM_POINTS})"
+        ));
+    }
+    whole_number(1, MAX_RANDOM_POINTS as u64)(text)
+}
+
+/// A clap value parser for a seed: any whole number from 0 to 2^64 - 1.
+pub fn seed(text: &str) -> Result<u64, String> {
+    whole_number(0, u64::MAX)(text)
+}
+
+/// The examples each command's `--help` ends with. Every line that starts with `tribez ` is run
+/// by the test suite from a directory holding the repository's `fixtures/`
+/// (`tests/help_examples.rs`), so they stay true.
+pub mod examples {
+    /// `tribez reproduce`.
+    pub const REPRODUCE: &str = "\
+Examples:
+  tribez reproduce
+  tribez reproduce --format json -o reproduce.json";
+    /// `tribez eval`.
+    pub const EVAL: &str = "\
+Examples:
+  tribez eval fixtures/finn_day30.toml --at 1/2,1/3,1/6
+  tribez eval fixtures/finn_day30.toml --at -1/2,1,1/2 --float f64
+  tribez eval fixtures/finn_day30.toml --cartesian --at -1,2";
+    /// `tribez symbolic`.
+    pub const SYMBOLIC: &str = "\
+Examples:
+  tribez symbolic fixtures/finn_day30.toml
+  tribez symbolic fixtures/finn_day30.toml --cartesian --format latex";
+    /// `tribez graph`.
+    pub const GRAPH: &str = "\
+Examples:
+  tribez graph fixtures/beyond/functional_linear.toml -o graph.toml";
+    /// `tribez check`.
+    pub const CHECK: &str = "\
+Examples:
+  tribez check fixtures/finn_day30.claims.toml
+  tribez check fixtures --junit junit.xml --record-baseline baseline.json
+  tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --tolerance ulps=4 --precision f64";
+    /// `tribez certify`.
+    pub const CERTIFY: &str = "\
+Examples:
+  tribez certify fixtures/certify/finn_quadratic.toml --random 1000 --seed 7
+  tribez certify fixtures/finn_day30.toml --random 200 --precision f32 --junit certify.xml";
+    /// `tribez blossom`.
+    pub const BLOSSOM: &str = "\
+Examples:
+  tribez blossom fixtures/finn_day30.toml --arg 1,0,0 --arg 0,1,0
+  tribez blossom fixtures/finn_day30.toml --arg 1/2,1/3,1/6 --arg -1,1,1";
+    /// `tribez subpatch`.
+    pub const SUBPATCH: &str = "\
+Examples:
+  tribez subpatch fixtures/finn_day30.toml --vertex 1,0,0 --vertex 0,1,0 --vertex 1/3,1/3,1/3
+  tribez subpatch fixtures/finn_day30.toml --vertex -1,1,1 --vertex 1,0,0 --vertex 0,1,0 -o bigger.toml";
+    /// `tribez subdivide`.
+    pub const SUBDIVIDE: &str = "\
+Examples:
+  tribez subdivide fixtures/finn_day30.toml --at 1/3,1/3,1/3
+  tribez subdivide fixtures/finn_day30.toml --midpoints --format json -o pieces.json
+  tribez subdivide fixtures/finn_day30.toml --at 1/2,1/2,0";
+    /// `tribez halve`.
+    pub const HALVE: &str = "\
+Examples:
+  tribez halve fixtures/finn_day30.toml --edge 1,2
+  tribez halve fixtures/finn_day30.toml --edge 2,3 --add-and-halve";
+    /// `tribez elevate`.
+    pub const ELEVATE: &str = "\
+Examples:
+  tribez elevate fixtures/finn_day30.toml
+  tribez elevate fixtures/finn_day30.toml --by 2 -o cubic.toml";
+    /// `tribez matrix`.
+    pub const MATRIX: &str = "\
+Examples:
+  tribez matrix halve --degree 3
+  tribez matrix halve --degree 2 --edge 2,3 --piece 2 --format latex
+  tribez matrix subpatch --degree 2 --vertex 1,0,0 --vertex 0,1,0 --vertex -1,1,1";
+    /// `tribez derivative`.
+    pub const DERIVATIVE: &str = "\
+Examples:
+  tribez derivative fixtures/finn_day30.toml --at 1/3,1/3,1/3 --dir 1,-1,0
+  tribez derivative fixtures/finn_day30.toml --at 1/3,1/3,1/3 --dir 1,-1,0 --dir 0,1,-1";
+    /// `tribez tangent`.
+    pub const TANGENT: &str = "\
+Examples:
+  tribez tangent fixtures/finn_day30.toml --at 1/2,1/3,1/6";
+    /// `tribez join`.
+    pub const JOIN: &str = "\
+Examples:
+  tribez join fixtures/joins/quad_a.toml fixtures/joins/quad_b_c1.toml
+  tribez join fixtures/joins/quad_a.toml --make-c1 --domain 6,-3 -o neighbour.toml";
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn whole_numbers_name_their_range() {
+        let p = whole_number::<usize>(1, 10);
+        assert_eq!(p("7"), Ok(7));
+        assert_eq!(p("+7"), Ok(7));
+        assert_eq!(p("010"), Ok(10));
+        for bad in [
+            "-5",
+            "0",
+            "11",
+            "1.5",
+            "",
+            "x",
+            "18446744073709551616",
+            "99999999999999999999999",
+        ] {
+            assert_eq!(
+                p(bad),
+                Err("expected a whole number from 1 to 10".into()),
+                "{bad}"
+            );
+        }
+        assert_eq!(seed("18446744073709551615"), Ok(u64::MAX));
+        assert_eq!(
+            whole_number::<usize>(1, u64::MAX)("0"),
+            Err("expected a whole number, at least 1".into())
+        );
+        assert!(random_count("1000001").is_err());
+        assert!(
+            random_count("0")
+                .unwrap_err()
+                .contains("at least one point")
+        );
+        assert_eq!(random_count("1000000"), Ok(1_000_000));
+    }
 }

@@ -294,9 +294,10 @@ fn errors() {
         "affinely dependent",
     );
     fails(&["subdivide", &f, "--at", "1/2,1/2,1/2"], "not 1");
+    // a point on an edge gives two pieces (tests/cli_usage.rs); a corner splits nothing
     fails(
-        &["subdivide", &f, "--at", "1/2,1/2,0"],
-        "lies on the face opposite corner 3",
+        &["subdivide", &f, "--at", "0,0,1"],
+        "the point is corner 3 of the domain",
     );
     for bad in ["1,1", "0,2", "1,4", "1", "1,2,3", "a,b"] {
         fails(&["halve", &f, "--edge", bad], "--edge");

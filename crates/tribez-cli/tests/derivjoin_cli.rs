@@ -293,7 +293,10 @@ fn make_c1_of_a_constant_is_accepted_as_c1() {
         &fixture("joins/const_a.toml"),
         &fixture("joins/const_b.toml"),
     ]);
-    assert_eq!((v["c1"].clone(), v["g1"].clone()), (true.into(), false.into()));
+    assert_eq!(
+        (v["c1"].clone(), v["g1"].clone()),
+        (true.into(), false.into())
+    );
 }
 
 #[test]

@@ -197,14 +197,10 @@ fn structure(c: &mut Criterion) {
     // reference workload (tribez::subdivide / tribez::elevate; `cargo bench --bench
     // constructions` measures more constructions on small rationals).
     g.bench_function("split_at_point_exact", |b| {
-        b.iter(|| {
-            tribez::subdivide::split_at_pieces_exact(&net, &at)
-                .unwrap()
-                .len()
-        })
+        b.iter(|| tribez::subdivide::split_at_pieces(&net, &at).unwrap().len())
     });
     g.bench_function("elevate_by_1_exact", |b| {
-        b.iter(|| tribez::elevate::elevate_exact(&net, 1).len())
+        b.iter(|| tribez::elevate::elevate(&net, 1).len())
     });
     let n64 = net_f64(&net);
     let at64: Vec<f64> = at.iter().map(tribez::number::round_f64).collect();

@@ -969,7 +969,10 @@ mod tests {
         );
         // the neighbour --make-c1 builds is the same constant, and it is accepted as C1
         let nb = c1_neighbour(&a, &[0, 1], r(&["1", "-1"])).unwrap();
-        assert_eq!(nb.net.points().next().unwrap(), r(&["2", "-1", "5"]).as_slice());
+        assert_eq!(
+            nb.net.points().next().unwrap(),
+            r(&["2", "-1", "5"]).as_slice()
+        );
         let jn = analyse(&a, &nb).unwrap();
         assert!(jn.c0 && jn.c1 && jn.max_smoothness == 0);
         // different constants: not even C0

@@ -351,7 +351,7 @@ impl RationalPatch {
     /// only with weights of both signs).
     pub fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError> {
         RationalPatch::from_homogeneous(
-            &crate::elevate::elevate_exact(&self.homogeneous(), r),
+            &crate::elevate::elevate(&self.homogeneous(), r),
             &self.patch,
         )
     }
@@ -361,7 +361,7 @@ impl RationalPatch {
     /// The result keeps the parent's name and domain.
     pub fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError> {
         RationalPatch::from_homogeneous(
-            &crate::blossom::subpatch_exact(&self.homogeneous(), f)?,
+            &crate::blossom::subpatch(&self.homogeneous(), f)?,
             &self.patch,
         )
     }
@@ -403,7 +403,7 @@ impl RationalPatch {
     /// Split at `t` into `m + 1` pieces (piece `s`: vertex `s` replaced by `t`), on the
     /// homogeneous net.
     pub fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError> {
-        crate::blossom::split_at_exact(&self.homogeneous(), t)
+        crate::subdivide::split_at(&self.homogeneous(), t)
             .iter()
             .map(|h| RationalPatch::from_homogeneous(h, &self.patch))
             .collect()

@@ -31,6 +31,7 @@ pub trait Scalar:
     + for<'a> Mul<&'a Self, Output = Self>
     + Send
     + Sync
+    + 'static
 {
     /// `Σ_k weights[k] · values[k]`, left to right, starting from the first product.
     ///
@@ -74,44 +75,47 @@ impl Scalar for num_bigint::BigInt {
     }
 }
 
-impl Scalar for f64 {
-    #[inline]
-    fn weighted_sum<'a, I>(mut terms: I) -> Self
-    where
-        I: Iterator<Item = (&'a Self, &'a Self)>,
-    {
-        let (w, x) = terms.next().expect("weighted_sum of no terms");
-        let mut acc = w * x;
-        for (w, x) in terms {
-            acc += w * x;
-        }
-        acc
-    }
-    fn from_u64(k: u64) -> Self {
-        k as f64
-    }
-    fn from_biguint(k: &num_bigint::BigUint) -> Self {
-        crate::number::round_f64(&num_rational::BigRational::from_integer(k.clone().into()))
-    }
+/// `x` as a `&U` when `T` is `U` (a `TypeId` comparison, resolved at compile time): how a
+/// generic algorithm hands a specialised kernel its exact rationals, so that the algorithm is
+/// written once and has one name. `None` when the types differ.
+pub(crate) fn downcast_ref<T: 'static, U: 'static>(x: &T) -> Option<&U> {
+    (x as &dyn std::any::Any).downcast_ref::<U>()
 }
 
-impl Scalar for f32 {
-    #[inline]
-    fn weighted_sum<'a, I>(mut terms: I) -> Self
-    where
-        I: Iterator<Item = (&'a Self, &'a Self)>,
-    {
-        let (w, x) = terms.next().expect("weighted_sum of no terms");
-        let mut acc = w * x;
-        for (w, x) in terms {
-            acc += w * x;
-        }
-        acc
-    }
-    fn from_u64(k: u64) -> Self {
-        k as f32
-    }
-    fn from_biguint(k: &num_bigint::BigUint) -> Self {
-        crate::number::round_f32(&num_rational::BigRational::from_integer(k.clone().into()))
-    }
+/// `x` moved into a `U` when `T` is `U` (see [`downcast_ref`]); `None` when the types differ.
+pub(crate) fn cast<T: 'static, U: 'static>(x: T) -> Option<U> {
+    let mut slot = Some(x);
+    (&mut slot as &mut dyn std::any::Any)
+        .downcast_mut::<Option<U>>()
+        .and_then(Option::take)
 }
+
+/// The machine floats: one implementation for both formats, through
+/// [`BinaryFloat`](crate::number::BinaryFloat). The weighted sum accumulates with `+=`
+/// (plain float addition and multiplication, no fused multiply-add).
+macro_rules! float_scalar {
+    ($($t:ty),*) => {$(
+        impl Scalar for $t {
+            #[inline]
+            fn weighted_sum<'a, I>(mut terms: I) -> Self
+            where
+                I: Iterator<Item = (&'a Self, &'a Self)>,
+            {
+                let (w, x) = terms.next().expect("weighted_sum of no terms");
+                let mut acc = w * x;
+                for (w, x) in terms {
+                    acc += w * x;
+                }
+                acc
+            }
+            fn from_u64(k: u64) -> Self {
+                k as $t
+            }
+            fn from_biguint(k: &num_bigint::BigUint) -> Self {
+                crate::number::round_to::<$t>(&num_rational::BigRational::from_integer(k.clone().into()))
+            }
+        }
+    )*};
+}
+
+float_scalar!(f64, f32);

@@ -49,7 +49,7 @@ fn in_memory_rows_are_judged_with_hand_derived_figures() {
         f64::NAN,
         0.6875,
     ];
-    let r = c.check_rows(&points, &values, 0).unwrap();
+    let r = c.check_rows(&points, &values, 0, "<memory>", "finn").map(|r| r.0).unwrap();
     assert_eq!((r.checked, r.passed, r.failed), (3, 1, 2));
     assert_eq!(r.max_ulps, Some(1.0));
     let worst = r.worst.as_ref().unwrap();
@@ -71,7 +71,7 @@ fn in_memory_rows_are_judged_with_hand_derived_figures() {
 fn in_memory_shapes_are_checked() {
     let c = checker("ulps=1", false);
     assert!(matches!(
-        c.check_rows(&[0.5, 0.5], &[0.0, 0.0, 0.0], 0),
+        c.check_rows(&[0.5, 0.5], &[0.0, 0.0, 0.0], 0, "<memory>", "finn").map(|r| r.0),
         Err(BatchError::Shape {
             what: "points",
             per_row: 3,
@@ -79,7 +79,7 @@ fn in_memory_shapes_are_checked() {
         })
     ));
     assert!(matches!(
-        c.check_rows(&[0.5, 0.25, 0.25], &[0.0; 4], 0),
+        c.check_rows(&[0.5, 0.25, 0.25], &[0.0; 4], 0, "<memory>", "finn"),
         Err(BatchError::Shape {
             what: "values",
             per_row: 3,
@@ -87,14 +87,14 @@ fn in_memory_shapes_are_checked() {
         })
     ));
     assert!(matches!(
-        c.check_rows(&[0.5, 0.25, 0.25], &[0.0; 6], 0),
+        c.check_rows(&[0.5, 0.25, 0.25], &[0.0; 6], 0, "<memory>", "finn"),
         Err(BatchError::RowCounts {
             points: 1,
             values: 2
         })
     ));
-    let empty = c.check_rows(&[], &[], 0).unwrap();
-    assert_eq!((empty.checked, empty.worst.is_none()), (0, true));
+    let empty = c.check_rows(&[], &[], 0, "<memory>", "finn");
+    assert_eq!(empty.unwrap_err().to_string(), "<memory>: no result rows");
 }
 
 /// Rows near Finn's patch's values: a float point, and each claimed coordinate the f64 de
@@ -188,21 +188,21 @@ proptest! {
     ) {
         let c = checker("ulps=1", detail);
         let (points, values) = rows(&spec);
-        let whole = c.check_rows(&points, &values, 0).unwrap();
+        let whole = c.check_rows(&points, &values, 0, "<memory>", "finn").map(|r| r.0).unwrap();
         let n = spec.len();
         let mut bounds: Vec<usize> = cuts.into_iter().map(|k| k % (n + 1)).collect();
         bounds.extend([0, n]);
         bounds.sort_unstable();
         let mut parts: Vec<BatchReport> = bounds
             .windows(2)
-            .map(|w| c.check_rows(&points[3 * w[0]..3 * w[1]], &values[3 * w[0]..3 * w[1]], w[0]).unwrap())
+            .map(|w| c.check_rows(&points[3 * w[0]..3 * w[1]], &values[3 * w[0]..3 * w[1]], w[0], "<memory>", "finn").map(|r| r.0).unwrap())
             .collect();
         if reverse {
             parts.reverse();
         }
         let mut merged = parts.remove(0);
         for p in &parts {
-            merged.merge(p);
+            merged.merge(p).unwrap();
         }
         same(&merged, &whole);
     }
@@ -222,7 +222,7 @@ fn rows_in_memory_and_in_a_csv_file_agree() {
         .collect();
     let (points, values) = rows(&spec);
     let c = checker("ulps=1", false);
-    let memory = c.check_rows(&points, &values, 1).unwrap();
+    let memory = c.check_rows(&points, &values, 1, "<memory>", "finn").map(|r| r.0).unwrap();
     let csv: String = points
         .chunks(3)
         .zip(values.chunks(3))
@@ -234,7 +234,7 @@ fn rows_in_memory_and_in_a_csv_file_agree() {
         })
         .collect();
     let file = c
-        .check_reader(csv.as_bytes(), Format::Csv, "r.csv", "finn", &mut |_, _| {})
+        .check_reader(csv.as_bytes(), Format::Csv, "<memory>", "finn", &mut |_, _| {})
         .unwrap();
     same(&memory, &file);
     assert!(memory.failed > 0 && memory.passed > 0);

@@ -39,10 +39,10 @@ pub struct Args {
     pub points: Option<PathBuf>,
     /// Certify at N random points (inside, near the edges and outside the triangle; for an
     /// S-patch inside the polygon, near its edges and vertices).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = crate::cli::random_count, allow_negative_numbers = true)]
     pub random: Option<usize>,
     /// Seed of --random (printed, with the command that reproduces the run).
-    #[arg(long, value_name = "S", default_value_t = 1)]
+    #[arg(long, value_name = "S", default_value_t = 1, value_parser = crate::cli::seed, allow_negative_numbers = true)]
     pub seed: u64,
     /// Precision: f64, f32 or all.
     #[arg(long, value_name = "f64|f32|all", default_value = "all")]

@@ -51,8 +51,16 @@ pub fn parse_edge(text: &str, m: usize) -> Result<(usize, usize), CliError> {
 
 /// Check that a degree and simplex dimension give a net small enough to write as a patch file.
 pub fn check_size(m: usize, n: usize, what: &str) -> Result<(), CliError> {
+    if n > MAX_DEGREE {
+        return Err(CliError::core(
+            what,
+            CoreError::Invalid(format!(
+                "the result would have degree {n}, above the patch-file limits (degree {MAX_DEGREE}, {MAX_CONTROL_POINTS} points)"
+            )),
+        ));
+    }
     let total = simplex::binomial((n + m) as u64, m as u64);
-    if n > MAX_DEGREE || total > MAX_CONTROL_POINTS as u128 {
+    if total > MAX_CONTROL_POINTS as u128 {
         return Err(CliError::core(
             what,
             CoreError::Invalid(format!(
@@ -118,7 +126,10 @@ pub fn rational_pieces(
             Some(&p.domain_in_parent),
             &label(k),
         )?;
-        out.push((p.domain_in_parent, tribez::any_patch::AnyPatch::Rational(piece)));
+        out.push((
+            p.domain_in_parent,
+            tribez::any_patch::AnyPatch::Rational(piece),
+        ));
     }
     Ok(super::graph::AnyPiecesReport(out))
 }

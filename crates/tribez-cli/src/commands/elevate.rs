@@ -6,9 +6,8 @@ use super::construct::{PatchReport, check_size, child_patch};
 use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::error::CoreError;
-use tribez::io::patch_file::read_any_patch;
 use tribez::any_patch::AnyPatch;
+use tribez::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez elevate`.
 #[derive(Debug, clap::Args)]
@@ -16,7 +15,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// Raise the degree by R (at least 1).
-    #[arg(long = "by", value_name = "R", default_value_t = 1)]
+    #[arg(long = "by", value_name = "R", default_value_t = 1, value_parser = crate::cli::whole_number::<usize>(1, u64::MAX), allow_negative_numbers = true)]
     pub by: usize,
     #[command(flatten)]
     pub out: OutputArgs,
@@ -24,12 +23,6 @@ pub struct Args {
 
 /// Run `tribez elevate`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    if args.by == 0 {
-        return Err(CliError::core(
-            "--by 0",
-            CoreError::Invalid("elevate by at least 1".into()),
-        ));
-    }
     let file = args.patch.display().to_string();
     let (parent, rational) = super::points_patch(&file, "elevate", read_any_patch(&args.patch)?)?;
     if let Some(r) = rational {
@@ -47,7 +40,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let net = tribez::elevate::elevate_exact(&parent.net, args.by);
+    let net = tribez::elevate::elevate(&parent.net, args.by);
     let patch = child_patch(
         &parent,
         net,

@@ -28,7 +28,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// A point: barycentric coordinates summing to 1 (`1/2,1/3,1/6`), or Cartesian with --cartesian. Repeatable.
-    #[arg(long = "at", value_name = "POINT")]
+    #[arg(long = "at", value_name = "POINT", allow_hyphen_values = true)]
     pub at: Vec<String>,
     /// Read points from a CSV or JSON file (one point per row).
     #[arg(long, value_name = "FILE")]

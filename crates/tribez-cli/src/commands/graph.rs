@@ -8,11 +8,11 @@ use serde_json::Value as Json;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
+use tribez::any_patch::AnyPatch;
 use tribez::functional::graph;
 use tribez::io::patch_file::{
     any_patch_to_json, any_patch_to_toml, patch_to_json, patch_to_toml, read_any_patch,
 };
-use tribez::any_patch::AnyPatch;
 use tribez::patch::BezierPatch as Patch;
 
 /// Arguments of `tribez graph`.

@@ -9,7 +9,7 @@ use super::construct::{PiecesReport, child_patch, construction_net, parse_edge, 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{HalvingOrder, Piece, add_and_halve, halve_domains, halve_exact};
+use tribez::subdivide::{HalvingOrder, Piece, add_and_halve, halve, halve_domains};
 
 /// Arguments of `tribez halve`.
 #[derive(Debug, clap::Args)]
@@ -17,7 +17,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// The edge to cut, as two corner numbers (1 to m+1), e.g. `1,2`.
-    #[arg(long, value_name = "I,J")]
+    #[arg(long, value_name = "I,J", allow_hyphen_values = true)]
     pub edge: String,
     /// Compute with the Wikipedia article's additions and divisions by two only (in place, row by row), instead of blossoms; the result is the same.
     #[arg(long)]
@@ -44,7 +44,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             },
         ]
     } else {
-        halve_exact(&parent.net, i, j)
+        halve(&parent.net, i, j)
     };
     let label = |k: usize| format!("half {} of edge {}", k + 1, args.edge);
     if let Some(r) = rational {

@@ -6,7 +6,7 @@ use serde_json::{Map, Value as Json, json};
 
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
-use crate::report::{Format, Render, json_rationals, tuple};
+use crate::report::{Render, json_rationals, tuple};
 use tribez::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
 use tribez::join::{Join, Violation, analyse, c1_neighbour};
 use tribez::patch::BezierPatch as Patch;
@@ -25,7 +25,12 @@ pub struct Args {
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub domain: Option<String>,
     /// With --make-c1: the common edge, as A's corners I,J (numbered 1 to 3); default 1,2.
-    #[arg(long, value_name = "I,J", default_value = "1,2")]
+    #[arg(
+        long,
+        value_name = "I,J",
+        default_value = "1,2",
+        allow_hyphen_values = true
+    )]
     pub edge: String,
     #[command(flatten)]
     pub out: OutputArgs,
@@ -78,11 +83,6 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             })?;
         let b = c1_neighbour(&a, &edge, v)
             .map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
-        if args.out.format == Format::Latex {
-            return Err(CliError::Usage(
-                "--format latex is not available for a patch".into(),
-            ));
-        }
         return Outcome::rendered(&PatchOutput(b), args.out.format, true);
     }
     let bpath = args.b.as_ref().ok_or_else(|| {

@@ -7,7 +7,7 @@ use serde_json::{Value as Json, json};
 
 use super::construct::{barycentric_points, parse_edge};
 use super::{CliError, Outcome};
-use crate::cli::OutputArgs;
+use crate::cli::LatexOutputArgs;
 use crate::report::Render;
 use tribez::blossom::subpatch_matrix;
 use tribez::error::CoreError;
@@ -33,22 +33,22 @@ pub struct Args {
     #[arg(value_enum)]
     pub kind: Kind,
     /// The degree n.
-    #[arg(long)]
+    #[arg(long, value_parser = crate::cli::whole_number::<usize>(0, u64::MAX), allow_negative_numbers = true)]
     pub degree: usize,
     /// halve: the simplex dimension m (2 = triangle, the default; 1 curves, 3 tetrahedra).
-    #[arg(long, default_value_t = 2)]
+    #[arg(long, default_value_t = 2, value_parser = crate::cli::whole_number::<usize>(1, tribez::io::patch_file::MAX_SIMPLEX_DIMENSION as u64), allow_negative_numbers = true)]
     pub simplex: usize,
     /// halve: the edge, two corner numbers (default 1,2).
-    #[arg(long, value_name = "I,J")]
+    #[arg(long, value_name = "I,J", allow_hyphen_values = true)]
     pub edge: Option<String>,
     /// halve: piece 1 (default) replaces corner J by the midpoint (keeps corner I), piece 2 replaces corner I.
-    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=2))]
+    #[arg(long, value_parser = crate::cli::whole_number::<u8>(1, 2), allow_negative_numbers = true)]
     pub piece: Option<u8>,
     /// subpatch: a vertex of the sub-simplex in the parent's barycentric coordinates (m+1 of them; m is their count minus one).
-    #[arg(long = "vertex", value_name = "POINT")]
+    #[arg(long = "vertex", value_name = "POINT", allow_hyphen_values = true)]
     pub vertices: Vec<String>,
     #[command(flatten)]
-    pub out: OutputArgs,
+    pub out: LatexOutputArgs,
 }
 
 /// The matrix and what it is.
@@ -67,13 +67,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             }
             let edge = args.edge.as_deref().unwrap_or("1,2");
             let piece = args.piece.unwrap_or(1);
-            let m = args.simplex;
-            if m == 0 || m > tribez::io::patch_file::MAX_SIMPLEX_DIMENSION {
-                return Err(CliError::core(
-                    format!("--simplex {m}"),
-                    CoreError::Invalid("the simplex dimension must be 1 to 16".into()),
-                ));
-            }
+            let m = args.simplex; // 1 to 16 (clap)
             let (i, j) = parse_edge(edge, m)?;
             let [a, b] = halve_domains(m, i, j);
             let (f, replaced) = if piece == 1 { (a, j) } else { (b, i) };
@@ -106,13 +100,20 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         }
     };
     let n = args.degree;
-    let len = simplex::binomial((n + m) as u64, m as u64);
+    // m >= 1, so the matrix has at least n + 1 rows: cap n before computing n + m
+    let len = if n >= MAX_ROWS {
+        u128::MAX
+    } else {
+        simplex::binomial((n + m) as u64, m as u64)
+    };
     if len > MAX_ROWS as u128 {
         return Err(CliError::core(
             format!("--degree {n}"),
-            CoreError::Invalid(format!(
-                "the matrix would have {len} rows, above the limit of {MAX_ROWS}"
-            )),
+            CoreError::Invalid(if len == u128::MAX {
+                format!("the matrix would have more than {MAX_ROWS} rows, the limit")
+            } else {
+                format!("the matrix would have {len} rows, above the limit of {MAX_ROWS}")
+            }),
         ));
     }
     let context = args

@@ -25,11 +25,93 @@ use std::path::Path;
 
 use num_rational::BigRational;
 
-use crate::cli::{Cli, Command, OutputArgs};
+use std::path::PathBuf;
+
+use clap::Parser;
+
+use crate::cli::{LatexOutputArgs, OutputArgs, examples};
 use crate::report::{Format, Render, render};
 use tribez::error::CoreError;
 use tribez::io::InputError;
 use tribez::number::parse_rational;
+
+/// Exact computations on Bézier triangles (and simplices), used to certify floating-point code.
+#[derive(Debug, Parser)]
+#[command(name = "tribez", version, about, long_about = None, propagate_version = true)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands; each maps to one function in `src/commands/<name>.rs`, and each `--help`
+/// ends with examples ([`crate::cli::examples`]).
+#[derive(Debug, clap::Subcommand)]
+pub enum Command {
+    /// Check every claim of the built-in fixtures (or of DIR) and list errata separately.
+    #[command(after_help = examples::REPRODUCE)]
+    Reproduce(reproduce::Args),
+    /// Evaluate a patch exactly at barycentric (or Cartesian) points; optionally show f64/f32 results and their errors.
+    #[command(after_help = examples::EVAL)]
+    Eval(eval::Args),
+    /// Print a patch as polynomials in the barycentric (or Cartesian) variables.
+    #[command(after_help = examples::SYMBOLIC)]
+    Symbolic(symbolic::Args),
+    /// Write the graph (x, y, f(x, y)) of a functional patch as a parametric patch file.
+    #[command(after_help = examples::GRAPH)]
+    Graph(graph::Args),
+    /// Judge claim files (or a batch of evaluation results with --patch/--results) against exact values.
+    #[command(after_help = examples::CHECK)]
+    Check(check::Args),
+    /// Run tribez's own float algorithms (Bézier, rational, S-patch) and judge their errors against proven bounds.
+    #[command(after_help = examples::CERTIFY)]
+    Certify(certify::Args),
+    /// The blossom (polar form) b[u1, ..., un] of a patch (rational: X[..]/W[..]): exactly n barycentric arguments.
+    #[command(after_help = examples::BLOSSOM)]
+    Blossom(blossom::Args),
+    /// The same polynomial over any sub-triangle (sub-simplex), as a patch file.
+    #[command(after_help = examples::SUBPATCH)]
+    Subpatch(subpatch::Args),
+    /// Split a patch at a point (m+1 pieces) or at the edge midpoints (four pieces).
+    #[command(after_help = examples::SUBDIVIDE)]
+    Subdivide(subdivide::Args),
+    /// Cut a patch in two from the midpoint of an edge to the opposite corner.
+    #[command(after_help = examples::HALVE)]
+    Halve(halve::Args),
+    /// Raise the degree of a patch (the same surface), as a patch file.
+    #[command(after_help = examples::ELEVATE)]
+    Elevate(elevate::Args),
+    /// The exact matrix mapping parent control points to a half's or a subpatch's.
+    #[command(after_help = examples::MATRIX)]
+    Matrix(matrix::Args),
+    /// Directional derivative of any order r <= n at a point (barycentric --dir or Cartesian --vector directions).
+    #[command(after_help = examples::DERIVATIVE)]
+    Derivative(derivative::Args),
+    /// Tangent plane at a point: the de Casteljau intermediate points, the partial derivatives and the normal.
+    #[command(after_help = examples::TANGENT)]
+    Tangent(tangent::Args),
+    /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, Finn's coplanarity), or build a C1 neighbour.
+    #[command(after_help = examples::JOIN)]
+    Join(join::Args),
+}
+
+/// Where a command's output goes: `-o FILE`, or standard output.
+pub trait OutputTarget {
+    /// The `-o FILE` given, if any.
+    fn output(&self) -> Option<&PathBuf>;
+}
+
+impl OutputTarget for OutputArgs {
+    fn output(&self) -> Option<&PathBuf> {
+        self.output.as_ref()
+    }
+}
+
+impl OutputTarget for LatexOutputArgs {
+    fn output(&self) -> Option<&PathBuf> {
+        self.output.as_ref()
+    }
+}
 
 /// Why a command could not run: bad input or usage (exit status 2).
 #[derive(Debug, thiserror::Error)]
@@ -71,7 +153,12 @@ pub struct Outcome {
 
 impl Outcome {
     /// Render a result in the requested format; formats that do not apply are a usage error.
-    pub fn rendered(r: &dyn Render, format: Format, success: bool) -> Result<Self, CliError> {
+    pub fn rendered(
+        r: &dyn Render,
+        format: impl Into<Format>,
+        success: bool,
+    ) -> Result<Self, CliError> {
+        let format = format.into();
         let output = render(r, format).ok_or_else(|| {
             CliError::Usage(
                 format!("--format {format:?} is not available for this command").to_lowercase(),
@@ -86,7 +173,7 @@ impl Outcome {
 /// The output files a command staged (see [`output`]) are committed only when it ran to the end
 /// (exit status 0 or 1) and its report was written; a run that exits 2 leaves none.
 pub fn main(cli: Cli) -> i32 {
-    let (result, out) = match &cli.command {
+    let (result, out): (_, &dyn OutputTarget) = match &cli.command {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
@@ -121,8 +208,8 @@ pub fn main(cli: Cli) -> i32 {
 
 /// Write the output to standard output, or stage it for `--output FILE` (written whole or not at
 /// all when the run ends, see [`output`]).
-pub fn emit(outcome: &Outcome, out: &OutputArgs) -> Result<(), CliError> {
-    match &out.output {
+pub fn emit(outcome: &Outcome, out: &dyn OutputTarget) -> Result<(), CliError> {
+    match out.output() {
         None => output::write_stdout(outcome.output.as_bytes()),
         Some(path) => output::stage(path, outcome.output.as_bytes()),
     }
@@ -177,7 +264,13 @@ pub fn points_patch(
     file: &str,
     command: &str,
     any: tribez::any_patch::AnyPatch,
-) -> Result<(tribez::patch::BezierPatch, Option<tribez::rational::RationalPatch>), CliError> {
+) -> Result<
+    (
+        tribez::patch::BezierPatch,
+        Option<tribez::rational::RationalPatch>,
+    ),
+    CliError,
+> {
     use tribez::any_patch::AnyPatch;
     match any {
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),

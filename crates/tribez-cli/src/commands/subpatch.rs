@@ -11,9 +11,9 @@ use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
+use tribez::any_patch::AnyPatch;
 use tribez::error::CoreError;
 use tribez::io::patch_file::read_any_patch;
-use tribez::any_patch::AnyPatch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]
@@ -21,7 +21,7 @@ pub struct Args {
     /// The patch file (.toml or .json).
     pub patch: PathBuf,
     /// A vertex of the sub-triangle (sub-simplex) in the parent's barycentric coordinates; may lie outside. Give m+1 (3 for a triangle), in order.
-    #[arg(long = "vertex", value_name = "POINT")]
+    #[arg(long = "vertex", value_name = "POINT", allow_hyphen_values = true)]
     pub vertices: Vec<String>,
     #[command(flatten)]
     pub out: OutputArgs,
@@ -101,8 +101,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             true,
         );
     }
-    let net =
-        tribez::blossom::subpatch_exact(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
+    let net = tribez::blossom::subpatch(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
     let patch = child_patch(&parent, net, Some(&f), "subpatch")?;
     Outcome::rendered(
         &PatchReport {

@@ -9,10 +9,10 @@ use std::path::PathBuf;
 use serde_json::{Value as Json, json};
 
 use super::{CliError, Outcome};
-use crate::cli::OutputArgs;
+use crate::cli::LatexOutputArgs;
 use crate::report::Render;
-use tribez::io::patch_file::read_any_patch;
 use tribez::any_patch::AnyPatch;
+use tribez::io::patch_file::read_any_patch;
 use tribez::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
 };
@@ -26,7 +26,7 @@ pub struct Args {
     #[arg(long)]
     pub cartesian: bool,
     #[command(flatten)]
-    pub out: OutputArgs,
+    pub out: LatexOutputArgs,
 }
 
 /// Polynomials with their variable names.

@@ -109,6 +109,16 @@ pub enum BatchError {
         /// Rows of values.
         values: usize,
     },
+    /// [`BatchReport::merge`]: reports judged differently or about different patches.
+    #[error("reports {what} ({this} vs {other})")]
+    Mismatch {
+        /// What differs (`judged with different tolerances`, …).
+        what: &'static str,
+        /// This report's.
+        this: String,
+        /// The other's.
+        other: String,
+    },
     /// A control point is outside the precision's range.
     #[error("a control point of the patch overflows {}", precision.name())]
     ControlPointOverflows {
@@ -248,6 +258,22 @@ fn memory_num(x: f64, precision: Option<Precision>) -> Num {
         float,
         text_exact: crate::number::exact_f64(x),
     }
+}
+
+/// What one in-memory row came to (for per-row arrays; cheap, unlike
+/// [`BatchOptions::row_detail`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowVerdict {
+    /// The row's number (counted from `first_row`).
+    pub row: usize,
+    /// Within the tolerance.
+    pub pass: bool,
+    /// The float filter could not decide it: judged in exact arithmetic.
+    pub fell_back: bool,
+    /// The largest error in ULPs over its coordinates at the inputs as seen (exact when
+    /// computed exactly, else the upper end of a compensated enclosure, tight to a small
+    /// fraction of an ulp; infinite for a non-finite number).
+    pub ulps: f64,
 }
 
 /// Where a row came from, to find its inputs as intended: a file's row text (and the column it
@@ -511,13 +537,19 @@ impl BatchChecker {
     /// `f32` for an `f32` batch) and the `f64` given is the input as intended; without one, the
     /// `f64` values are the exact numbers. `nan` and infinities are failed rows.
     ///
-    /// Errors: `points` or `values` not a whole number of rows, or different numbers of rows.
+    /// `file` and `patch_name` name the rows and the patch in the report. Returns the report and
+    /// every row's [`RowVerdict`].
+    ///
+    /// Errors: `points` or `values` not a whole number of rows, different numbers of rows, no
+    /// rows.
     pub fn check_rows(
         &self,
         points: &[f64],
         values: &[f64],
         first_row: usize,
-    ) -> Result<BatchReport, BatchError> {
+        file: &str,
+        patch_name: &str,
+    ) -> Result<(BatchReport, Vec<RowVerdict>), BatchError> {
         let p = &self.prepared;
         let (width, dim) = (p.width(), p.patch.net.dim());
         if points.len() % width != 0 {
@@ -541,7 +573,11 @@ impl BatchChecker {
                 values: values.len() / dim,
             });
         }
-        let mut acc = Accumulator::new(p, "<memory>", "<patch>", None);
+        if n == 0 {
+            return Err(InputError::file(file, "no result rows").into());
+        }
+        let mut acc = Accumulator::new(p, file, patch_name, None);
+        let mut verdicts = Vec::with_capacity(n);
         for start in (0..n).step_by(CHUNK) {
             let end = (start + CHUNK).min(n);
             let judged: Vec<Judged> = (start..end)
@@ -559,9 +595,16 @@ impl BatchChecker {
                 })
                 .collect();
             for j in judged {
+                let o = &j.outcome;
+                verdicts.push(RowVerdict {
+                    row: o.line,
+                    pass: o.pass,
+                    fell_back: o.fell_back,
+                    ulps: o.ulps,
+                });
                 acc.add(j, &Source::Memory);
             }
         }
-        Ok(acc.finish())
+        Ok((acc.finish(), verdicts))
     }
 }

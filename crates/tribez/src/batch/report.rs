@@ -110,7 +110,31 @@ pub struct BatchReport {
 impl BatchReport {
     /// Combine with the report of a disjoint set of rows checked with the same patch and
     /// options: the result is the report of the union, whatever the order of merging.
-    pub fn merge(&mut self, other: &BatchReport) {
+    ///
+    /// Errors: reports judged with different tolerances or precisions, or about different
+    /// patches (nothing is changed).
+    pub fn merge(&mut self, other: &BatchReport) -> Result<(), super::BatchError> {
+        let mismatch = |what, this: String, other: String| {
+            Err(super::BatchError::Mismatch { what, this, other })
+        };
+        if self.tolerance != other.tolerance {
+            return mismatch(
+                "judged with different tolerances",
+                self.tolerance.text(),
+                other.tolerance.text(),
+            );
+        }
+        if self.precision != other.precision {
+            let name = |p: Option<Precision>| p.map_or("exact numbers", |p| p.name()).to_string();
+            return mismatch(
+                "judged with different precisions",
+                name(self.precision),
+                name(other.precision),
+            );
+        }
+        if self.patch != other.patch {
+            return mismatch("about different patches", self.patch.clone(), other.patch.clone());
+        }
         self.checked += other.checked;
         self.passed += other.passed;
         self.failed += other.failed;
@@ -118,6 +142,7 @@ impl BatchReport {
         for (a, b) in self.histogram.counts.iter_mut().zip(other.histogram.counts) {
             *a += b;
         }
+        self.histogram_upper_bounds &= other.histogram_upper_bounds;
         self.histogram_exact += other.histogram_exact;
         let better = match (&self.worst, &other.worst) {
             (_, None) => false,
@@ -135,6 +160,7 @@ impl BatchReport {
             rows.extend(more.iter().cloned());
             rows.sort_by_key(|r| r.row);
         }
+        Ok(())
     }
 
     /// The failed rows not listed in [`Self::failures`].

@@ -197,12 +197,12 @@ pub(crate) struct Polynomial<'a> {
 
 impl Constructions for Polynomial<'_> {
     fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
-        let net = crate::elevate::elevate_exact(&self.patch.net, r);
+        let net = crate::elevate::elevate(&self.patch.net, r);
         Ok((self.wrap)(with_net(self.patch, net)))
     }
 
     fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
-        let net = crate::blossom::subpatch_exact(&self.patch.net, vertices)?;
+        let net = crate::blossom::subpatch(&self.patch.net, vertices)?;
         Ok((self.wrap)(with_net(self.patch, net)))
     }
 
@@ -212,7 +212,7 @@ impl Constructions for Polynomial<'_> {
 
     fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
         check_len(t, self.patch.net.m() + 1)?;
-        Ok(crate::blossom::split_at_exact(&self.patch.net, t)
+        Ok(crate::subdivide::split_at(&self.patch.net, t)
             .into_iter()
             .map(|net| (self.wrap)(with_net(self.patch, net)))
             .collect())

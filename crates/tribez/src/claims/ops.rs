@@ -463,9 +463,7 @@ fn blossom(inputs: &Inputs<'_>) -> Result<Value, InputError> {
 
 /// The construction operations: blossom, subpatch, subdivide, halve, elevate, matrix.
 fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
-    use crate::subdivide::{
-        HalvingOrder, add_and_halve, halve_exact, midpoint_split_exact, split_at_pieces_exact,
-    };
+    use crate::subdivide::{HalvingOrder, add_and_halve, halve, midpoint_split, split_at_pieces};
     if op == "matrix" {
         return matrix(inputs);
     }
@@ -486,7 +484,7 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
         "subpatch" => {
             let f = inputs.bary_points("vertices", m)?;
             net_value(
-                &crate::blossom::subpatch_exact(net, &f)
+                &crate::blossom::subpatch(net, &f)
                     .map_err(|e| inputs.error("vertices", e.to_string()))?,
             )
         }
@@ -502,14 +500,10 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
                 (Some(t), false) => {
                     crate::domain::check_barycentric(&t, m, "point `at`")
                         .map_err(|e| inputs.error("at", e.to_string()))?;
-                    pieces(
-                        split_at_pieces_exact(net, &t)
-                            .map_err(|e| inputs.error("at", e.to_string()))?,
-                    )
+                    pieces(split_at_pieces(net, &t).map_err(|e| inputs.error("at", e.to_string()))?)
                 }
                 (None, true) => pieces(
-                    midpoint_split_exact(net)
-                        .map_err(|e| inputs.error("midpoints", e.to_string()))?,
+                    midpoint_split(net).map_err(|e| inputs.error("midpoints", e.to_string()))?,
                 ),
                 _ => {
                     return Err(inputs.error(
@@ -522,7 +516,7 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
         "halve" => {
             let (i, j) = inputs.edge(m)?;
             match inputs.opt_string("method")?.as_deref() {
-                None | Some("blossom") => pieces(halve_exact(net, i, j).to_vec()),
+                None | Some("blossom") => pieces(halve(net, i, j).to_vec()),
                 Some(method @ ("add-and-halve" | "add-and-halve-bottom-first")) => {
                     let order = if method == "add-and-halve" { HalvingOrder::TopDown } else { HalvingOrder::BottomFirst };
                     Value::List(vec![net_value(&add_and_halve(net, i, j, order)), net_value(&add_and_halve(net, j, i, order))])
@@ -543,7 +537,7 @@ fn construction(inputs: &Inputs<'_>, op: &str) -> Result<Value, InputError> {
                 ));
             };
             check_count(inputs, "by", m, to)?;
-            net_value(&crate::elevate::elevate_exact(net, r))
+            net_value(&crate::elevate::elevate(net, r))
         }
         _ => unreachable!("construction ops only"),
     })

@@ -38,8 +38,8 @@ use serde_json::{Map, Value as Json, json};
 
 use super::InputError;
 use super::tree::{Document, Node};
-use crate::domain::Domain;
 use crate::any_patch::AnyPatch;
+use crate::domain::Domain;
 use crate::patch::{BezierPatch as Patch, ControlNet};
 use crate::rational::RationalPatch;
 use crate::simplex::{self, Simplex};

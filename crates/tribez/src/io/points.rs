@@ -25,27 +25,35 @@ pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, I
         .to_ascii_lowercase();
     if ext == "json" {
         let doc = Document::read(path)?;
-        let rows = doc.array(&doc.root, "")?;
-        let mut out = Vec::with_capacity(rows.len());
-        for (i, row) in rows.iter().enumerate() {
-            let key = format!("[{i}]");
-            let p = doc.rationals(row, &key)?;
-            if p.len() != width {
-                return Err(doc.error(
-                    row,
-                    &key,
-                    format!("point has {} coordinates, expected {width}", p.len()),
-                ));
-            }
-            out.push(p);
-        }
-        if out.is_empty() {
-            return Err(InputError::file(file, "no points"));
-        }
-        return Ok(out);
+        return points_from_document(&doc, width);
     }
     let text = read_text(path)?;
     parse_csv_points(&text, width, &file)
+}
+
+/// The points of a JSON document: an array of arrays of `width` numbers each.
+pub fn points_from_document(
+    doc: &Document,
+    width: usize,
+) -> Result<Vec<Vec<BigRational>>, InputError> {
+    let rows = doc.array(&doc.root, "")?;
+    let mut out = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        let key = format!("[{i}]");
+        let p = doc.rationals(row, &key)?;
+        if p.len() != width {
+            return Err(doc.error(
+                row,
+                &key,
+                format!("point has {} coordinates, expected {width}", p.len()),
+            ));
+        }
+        out.push(p);
+    }
+    if out.is_empty() {
+        return Err(InputError::file(&doc.file, "no points"));
+    }
+    Ok(out)
 }
 
 /// The points of CSV text (see the module documentation); every point has `width` coordinates.

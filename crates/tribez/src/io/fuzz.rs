@@ -1,0 +1,130 @@
+//! Entry points of the fuzz targets (`fuzz/` at the repository root, run with cargo-fuzz) and
+//! of the test that replays their regression corpus (`fuzz/regressions/<target>/`) on stable
+//! Rust. Each takes arbitrary bytes, feeds them to one parser and discards the outcome: an
+//! error is the right answer to bad input; a panic, an abort, a hang or an unbounded
+//! allocation is the bug. Not a stable API.
+
+use std::path::PathBuf;
+
+use super::patch_file::{any_patch_from_document, any_patch_to_json, any_patch_to_toml};
+use super::points::{parse_csv_points, points_from_document};
+use super::tree::Document;
+
+/// Every target's name, as in `fuzz/Cargo.toml` and `fuzz/regressions/`.
+pub const TARGETS: &[&str] = &[
+    "number",
+    "polynomial",
+    "patch_toml",
+    "patch_json",
+    "claims",
+    "points",
+];
+
+/// Run target `name` on `data`; false if there is no such target.
+pub fn run(name: &str, data: &[u8]) -> bool {
+    match name {
+        "number" => number(data),
+        "polynomial" => polynomial(data),
+        "patch_toml" => patch_toml(data),
+        "patch_json" => patch_json(data),
+        "claims" => claims(data),
+        "points" => points(data),
+        _ => return false,
+    }
+    true
+}
+
+fn text(data: &[u8]) -> Option<&str> {
+    std::str::from_utf8(data).ok()
+}
+
+/// `parse_rational` on the text.
+pub fn number(data: &[u8]) {
+    if let Some(t) = text(data) {
+        let _ = crate::number::parse_rational(t);
+    }
+}
+
+/// `Polynomial::parse`: the first byte chooses the variable names, the rest is the text.
+pub fn polynomial(data: &[u8]) {
+    const NAMES: [&[&str]; 4] = [
+        &["u", "v", "w"],
+        &["x", "y", "z"],
+        &["t"],
+        &["u1", "u", "v"],
+    ];
+    let Some((&first, rest)) = data.split_first() else {
+        return;
+    };
+    if let Some(t) = text(rest) {
+        let _ = crate::symbolic::Polynomial::parse(t, NAMES[usize::from(first) % NAMES.len()]);
+    }
+}
+
+/// A patch read from a document, then written back and read again: the same patch.
+fn patch(doc: Result<Document, super::InputError>) {
+    let Ok(doc) = doc else { return };
+    let Ok(p) = any_patch_from_document(&doc, &doc.root, "") else {
+        return;
+    };
+    let toml = any_patch_to_toml(&p);
+    let again = Document::parse_toml("again.toml", &toml)
+        .and_then(|d| any_patch_from_document(&d, &d.root, ""));
+    assert_eq!(again.as_ref(), Ok(&p), "TOML round trip of\n{toml}");
+    let json = any_patch_to_json(&p).to_string();
+    let again = Document::parse_json("again.json", &json)
+        .and_then(|d| any_patch_from_document(&d, &d.root, ""));
+    assert_eq!(again.as_ref(), Ok(&p), "JSON round trip of\n{json}");
+}
+
+/// A TOML patch file (read, then round-tripped through TOML and JSON).
+pub fn patch_toml(data: &[u8]) {
+    if let Some(t) = text(data) {
+        patch(Document::parse_toml("fuzz.toml", t));
+    }
+}
+
+/// A JSON patch file (read, then round-tripped through TOML and JSON).
+pub fn patch_json(data: &[u8]) {
+    if let Some(t) = text(data) {
+        patch(Document::parse_json("fuzz.json", t));
+    }
+}
+
+/// A claim file, read and judged: the first byte chooses TOML (even) or JSON (odd). The text is
+/// written to a file in a directory of this process's own (claim files name patch files
+/// relative to themselves).
+pub fn claims(data: &[u8]) {
+    let Some((&first, rest)) = data.split_first() else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("tribez-fuzz-claims-{}", std::process::id()));
+    if std::fs::create_dir_all(&dir).is_err() {
+        return;
+    }
+    let path: PathBuf = dir.join(if first % 2 == 0 {
+        "fuzz.claims.toml"
+    } else {
+        "fuzz.claims.json"
+    });
+    if std::fs::write(&path, rest).is_err() {
+        return;
+    }
+    if let Ok(file) = crate::claims::ClaimFile::read(&path) {
+        let _ = file.judge_all();
+    }
+}
+
+/// A points file: the first byte chooses CSV (even) or JSON (odd) and the width (1 to 4).
+pub fn points(data: &[u8]) {
+    let Some((&first, rest)) = data.split_first() else {
+        return;
+    };
+    let width = usize::from(first >> 1) % 4 + 1;
+    let Some(t) = text(rest) else { return };
+    if first % 2 == 0 {
+        let _ = parse_csv_points(t, width, "fuzz.csv");
+    } else if let Ok(doc) = Document::parse_json("fuzz.json", t) {
+        let _ = points_from_document(&doc, width);
+    }
+}

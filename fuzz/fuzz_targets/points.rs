@@ -1,0 +1,6 @@
+#![no_main]
+//! Fuzz target `points`: see `tribez::io::fuzz::points`.
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| tribez::io::fuzz::points(data));

@@ -1,0 +1,103 @@
+"""Benchmark: judging 1,000,000 f64 rows of a degree-3 patch from numpy arrays (tribez.check)
+against the command line's `tribez check --results` on the same rows (a CSV this script writes).
+
+    python python/bench/bench_check.py [--rows N] [--cli PATH] [--repeat K]
+
+Needs the package installed in release mode (`pip install ./python`, which maturin builds with
+optimisations) and a release build of the command line (`cargo build --release -p tribez-cli`;
+default path target/release/tribez). The rows: random barycentric points (u, v in [0, 1),
+w = 1 - u - v in f64, some outside the triangle), values from the patch's own f64 de Casteljau
+(`Patch.evaluate_float`), printed in the CSV with Python's shortest round-trip repr, which the
+CLI reads back to the same doubles (--precision f64). Both sides judge at cond=9.
+
+Prints the best of K wall-clock times of each side and their ratio (Python / CLI). The Python
+time includes the conversion of the arrays; the CLI time includes reading and parsing the CSV
+(which is the point: numpy arrays need no text).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+import tribez
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+PATCH = ROOT / "fixtures" / "peers" / "peer_cubic.toml"
+
+
+def rows(patch: tribez.Patch, n: int, seed: int = 3):
+    rng = np.random.default_rng(seed)
+    u = rng.random(n) * 1.1 - 0.05
+    v = (1 - u) * rng.random(n)
+    w = 1.0 - u - v
+    points = np.column_stack([u, v, w])
+    values = patch.evaluate_float(points)
+    return points, values
+
+
+def write_csv(path: pathlib.Path, points: np.ndarray, values: np.ndarray) -> None:
+    data = np.hstack([points, values])
+    with open(path, "w") as f:
+        f.write("# u, v, w, x, y, z (f64, shortest round-trip)\n")
+        for row in data.tolist():
+            f.write(",".join(map(repr, row)))
+            f.write("\n")
+
+
+def best(f, repeat: int) -> float:
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        f()
+        times.append(time.perf_counter() - t0)
+    return min(times)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--rows", type=int, default=1_000_000)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--cli", default=str(ROOT / "target" / "release" / "tribez"))
+    ap.add_argument("--tolerance", default="cond=9")
+    args = ap.parse_args()
+
+    patch = tribez.Patch.from_file(PATCH)
+    assert patch.degree == 3
+    points, values = rows(patch, args.rows)
+    print(f"{args.rows} rows of {PATCH.relative_to(ROOT)} (degree {patch.degree}), tolerance {args.tolerance}, "
+          f"{tribez.threads()} threads")
+
+    report = tribez.check(patch, points, values, tolerance=args.tolerance)
+    t_py = best(lambda: tribez.check(patch, points, values, tolerance=args.tolerance), args.repeat)
+    print(f"tribez.check (numpy arrays):   {t_py:.3f} s   passed {report.passed}, failed {report.failed}, "
+          f"fell back {report.fell_back}")
+
+    if not os.path.exists(args.cli):
+        print(f"no CLI at {args.cli}: build it with `cargo build --release -p tribez-cli`", file=sys.stderr)
+        return 2
+    with tempfile.TemporaryDirectory() as d:
+        csv = pathlib.Path(d) / "rows.csv"
+        write_csv(csv, points, values)
+        cmd = [args.cli, "check", "--patch", str(PATCH), "--results", str(csv),
+               "--precision", "f64", "--tolerance", args.tolerance]
+        out = subprocess.run(cmd, capture_output=True, text=True)
+        if out.returncode not in (0, 1):
+            print(out.stderr, file=sys.stderr)
+            return 2
+        last = out.stdout.strip().splitlines()[-1]
+        t_cli = best(lambda: subprocess.run(cmd, capture_output=True), args.repeat)
+    print(f"tribez check --results (CSV):  {t_cli:.3f} s   {last}")
+    print(f"ratio Python / CLI: {t_py / t_cli:.3f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

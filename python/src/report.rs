@@ -1,0 +1,353 @@
+//! `NativeReport`: the library's batch report (`tribez::batch::BatchReport`) with per-row
+//! arrays, and `check_rows`, which judges numpy rows with the library's batch engine.
+
+use num_rational::BigRational;
+use pyo3::prelude::*;
+use pyo3::types::PyBytes;
+use serde_json::{Value as Json, json};
+
+use tribez::any_patch::AnyPatch;
+use tribez::batch::{
+    BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
+    WorstRow,
+    UlpHistogram,
+};
+use tribez::certify::measures::{Measures, Tolerance};
+use tribez::exact::Algorithm;
+use tribez::float::Precision;
+use tribez::number::parse_rational;
+
+use crate::patch::{NativePatch, f64s};
+use crate::{guard, input_error};
+
+/// Judge in-memory rows with the library's batch engine (the GIL released meanwhile).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn check_rows(
+    py: Python<'_>,
+    patch: &NativePatch,
+    points: &[u8],
+    values: &[u8],
+    width: usize,
+    dimension: usize,
+    tolerance: &str,
+    precision: &str,
+    cartesian: bool,
+    algorithm: &str,
+    first_row: usize,
+) -> PyResult<NativeReport> {
+    guard(py, || {
+        let poly = match &patch.patch {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p.clone(),
+            other => {
+                return Err(input_error(
+                    py,
+                    format!(
+                        "patch: this is {}; check judges polynomial Bézier patches (rational patches and S-patches: claim files)",
+                        other.described()
+                    ),
+                ));
+            }
+        };
+        let tolerance =
+            Tolerance::parse(tolerance).map_err(|e| input_error(py, format!("tolerance: {e}")))?;
+        let precision: Precision = precision
+            .parse()
+            .map_err(|e: String| input_error(py, format!("precision: {e}")))?;
+        let algorithm = match algorithm {
+            "bernstein" => Algorithm::Bernstein,
+            _ => Algorithm::Casteljau,
+        };
+        let options = BatchOptions {
+            tolerance,
+            precision: Some(precision),
+            algorithm,
+            cartesian,
+            row_detail: false,
+        };
+        let name = poly.name.clone().unwrap_or_else(|| "the patch".into());
+        let checker = BatchChecker::new(poly, &options).map_err(|e| input_error(py, e))?;
+        let (pts, vals) = (f64s(points), f64s(values));
+        debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
+        let (report, verdicts) = py
+            .detach(|| checker.check_rows(&pts, &vals, first_row, "<arrays>", &name))
+            .map_err(|e| input_error(py, e))?;
+        Ok(NativeReport { report, verdicts })
+    })
+}
+
+/// A batch report and, row by row, its verdicts and errors.
+#[pyclass(module = "tribez._native", frozen)]
+pub struct NativeReport {
+    pub(crate) report: BatchReport,
+    /// Every row's verdict, by row index.
+    pub(crate) verdicts: Vec<RowVerdict>,
+}
+
+#[pymethods]
+impl NativeReport {
+    #[getter]
+    fn passed(&self) -> u64 {
+        self.report.passed
+    }
+
+    #[getter]
+    fn failed(&self) -> u64 {
+        self.report.failed
+    }
+
+    #[getter]
+    fn fell_back(&self) -> u64 {
+        self.report.fell_back
+    }
+
+    #[getter]
+    fn tolerance(&self) -> String {
+        self.report.tolerance.text()
+    }
+
+    #[getter]
+    fn precision(&self) -> Option<&'static str> {
+        self.report.precision.map(Precision::name)
+    }
+
+    #[getter]
+    fn max_ulps(&self) -> Option<f64> {
+        self.report.max_ulps
+    }
+
+    /// The worst row as JSON (the `worst` object of the JSON report, with `row` for its index).
+    fn worst_json(&self) -> Option<String> {
+        let mut j = self.report.json();
+        let mut w = j.get_mut("worst")?.take();
+        let obj = w.as_object_mut()?;
+        // in-memory rows are named by index where a file's rows have line numbers
+        let row = obj.remove("line")?;
+        obj.insert("row".into(), row);
+        Some(w.to_string())
+    }
+
+    fn histogram(&self) -> Vec<(&'static str, u64)> {
+        ULP_BUCKETS
+            .iter()
+            .copied()
+            .zip(self.report.histogram.counts)
+            .collect()
+    }
+
+    fn text(&self) -> String {
+        self.report.text()
+    }
+
+    fn json(&self) -> String {
+        self.report.json().to_string()
+    }
+
+    fn merge(&self, py: Python<'_>, other: &NativeReport) -> PyResult<NativeReport> {
+        guard(py, || {
+            let mut report = self.report.clone();
+            report
+                .merge(&other.report)
+                .map_err(|e| input_error(py, format!("merge: {e}")))?;
+            let mut verdicts = self.verdicts.clone();
+            verdicts.extend_from_slice(&other.verdicts);
+            verdicts.sort_by_key(|v| v.row);
+            Ok(NativeReport { report, verdicts })
+        })
+    }
+
+    /// Per-row arrays: (name, numpy dtype, bytes).
+    fn row_arrays<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> Vec<(&'static str, &'static str, Bound<'py, PyBytes>)> {
+        let rows = &self.verdicts;
+        let mut index = Vec::with_capacity(rows.len() * 8);
+        let mut passed = Vec::with_capacity(rows.len());
+        let mut ulps = Vec::with_capacity(rows.len() * 8);
+        let mut cr = Vec::with_capacity(rows.len());
+        let mut fell_back = Vec::with_capacity(rows.len());
+        for r in rows {
+            index.extend_from_slice(&(r.row as i64).to_ne_bytes());
+            passed.push(u8::from(r.pass));
+            ulps.extend_from_slice(&r.ulps.to_ne_bytes());
+            cr.push(u8::from(r.ulps <= 0.5));
+            fell_back.push(u8::from(r.fell_back));
+        }
+        vec![
+            ("row", "int64", PyBytes::new(py, &index)),
+            ("passed", "bool", PyBytes::new(py, &passed)),
+            ("ulps", "float64", PyBytes::new(py, &ulps)),
+            ("correctly_rounded", "bool", PyBytes::new(py, &cr)),
+            ("fell_back", "bool", PyBytes::new(py, &fell_back)),
+        ]
+    }
+
+    /// The whole report as a JSON state (for pickling).
+    fn state(&self) -> String {
+        let verdicts: Vec<Json> = self
+            .verdicts
+            .iter()
+            .map(|v| {
+                json!([
+                    v.row,
+                    v.pass,
+                    v.fell_back,
+                    if v.ulps.is_finite() {
+                        json!(v.ulps)
+                    } else {
+                        Json::Null
+                    }
+                ])
+            })
+            .collect();
+        json!({"report": state_of(&self.report), "verdicts": verdicts}).to_string()
+    }
+
+    #[staticmethod]
+    fn from_state(py: Python<'_>, state: &str) -> PyResult<NativeReport> {
+        guard(py, || {
+            let j: Json = serde_json::from_str(state)
+                .map_err(|e| crate::input_error(py, format!("report state: {e}")))?;
+            let verdicts = j["verdicts"].as_array().and_then(|v| {
+                v.iter()
+                    .map(|r| {
+                        Some(RowVerdict {
+                            row: r[0].as_u64()? as usize,
+                            pass: r[1].as_bool()?,
+                            fell_back: r[2].as_bool()?,
+                            ulps: r[3].as_f64().unwrap_or(f64::INFINITY),
+                        })
+                    })
+                    .collect::<Option<Vec<_>>>()
+            });
+            report_of(&j["report"])
+                .zip(verdicts)
+                .map(|(report, verdicts)| NativeReport { report, verdicts })
+                .ok_or_else(|| crate::input_error(py, "report state: malformed"))
+        })
+    }
+}
+
+fn q(x: &BigRational) -> Json {
+    json!(x.to_string())
+}
+
+fn measures_state(m: &Measures) -> Json {
+    json!({"abs": q(&m.abs), "rel": m.rel.as_ref().map(q), "ulps": m.ulps.as_ref().map(q),
+           "cr": m.correctly_rounded})
+}
+
+fn coord_state(c: &FailedCoord) -> Json {
+    json!({"index": c.index, "decimal": c.decimal, "hex": c.hex, "exact_seen": q(&c.exact_seen),
+           "seen": measures_state(&c.seen), "exact_intended": c.exact_intended.as_ref().map(q),
+           "intended": c.intended.as_ref().map(measures_state)})
+}
+
+fn state_of(r: &BatchReport) -> Json {
+    json!({
+        "file": r.file, "patch": r.patch, "tolerance": r.tolerance.text(),
+        "precision": r.precision.map(Precision::name),
+        "rows": r.checked, "passed": r.passed, "failed": r.failed, "fell_back": r.fell_back,
+        "histogram": r.histogram.counts.to_vec(), "upper": r.histogram_upper_bounds,
+        "hexact": r.histogram_exact,
+        "worst": r.worst.as_ref().map(|w| json!({"ulps": w.ulps, "line": w.line,
+            "coords": w.coords.iter().map(coord_state).collect::<Vec<_>>()})),
+        "failures": r.failures.iter().map(|f| json!({"line": f.line, "reason": f.reason,
+            "coords": f.coords.iter().map(coord_state).collect::<Vec<_>>()})).collect::<Vec<_>>(),
+    })
+}
+
+fn rat(j: &Json) -> Option<BigRational> {
+    parse_rational(j.as_str()?).ok()
+}
+
+fn opt_rat(j: &Json) -> Option<Option<BigRational>> {
+    if j.is_null() {
+        Some(None)
+    } else {
+        rat(j).map(Some)
+    }
+}
+
+fn measures_of(j: &Json) -> Option<Measures> {
+    Some(Measures {
+        abs: rat(&j["abs"])?,
+        rel: opt_rat(&j["rel"])?,
+        ulps: opt_rat(&j["ulps"])?,
+        correctly_rounded: j["cr"].as_bool(),
+    })
+}
+
+fn coord_of(j: &Json) -> Option<FailedCoord> {
+    Some(FailedCoord {
+        index: j["index"].as_u64()? as usize,
+        decimal: j["decimal"].as_str()?.to_string(),
+        hex: j["hex"].as_str()?.to_string(),
+        exact_seen: rat(&j["exact_seen"])?,
+        seen: measures_of(&j["seen"])?,
+        exact_intended: opt_rat(&j["exact_intended"])?,
+        intended: if j["intended"].is_null() {
+            None
+        } else {
+            Some(measures_of(&j["intended"])?)
+        },
+    })
+}
+
+fn coords_of(j: &Json) -> Option<Vec<FailedCoord>> {
+    j.as_array()?.iter().map(coord_of).collect()
+}
+
+fn report_of(j: &Json) -> Option<BatchReport> {
+    let counts: Vec<u64> = j["histogram"]
+        .as_array()?
+        .iter()
+        .map(Json::as_u64)
+        .collect::<Option<_>>()?;
+    Some(BatchReport {
+        file: j["file"].as_str()?.to_string(),
+        patch: j["patch"].as_str()?.to_string(),
+        tolerance: Tolerance::parse(j["tolerance"].as_str()?).ok()?,
+        precision: match j["precision"].as_str() {
+            None => None,
+            Some(p) => Some(p.parse().ok()?),
+        },
+        checked: j["rows"].as_u64()?,
+        passed: j["passed"].as_u64()?,
+        failed: j["failed"].as_u64()?,
+        fell_back: j["fell_back"].as_u64()?,
+        histogram: UlpHistogram {
+            counts: counts.try_into().ok()?,
+        },
+        histogram_upper_bounds: j["upper"].as_bool()?,
+        histogram_exact: j["hexact"].as_u64()? as usize,
+        worst: if j["worst"].is_null() {
+            None
+        } else {
+            let w = &j["worst"];
+            Some(WorstRow {
+                ulps: w["ulps"].as_f64()?,
+                line: w["line"].as_u64()? as usize,
+                coords: coords_of(&w["coords"])?,
+            })
+        },
+        max_ulps: if j["worst"].is_null() {
+            None
+        } else {
+            Some(j["worst"]["ulps"].as_f64()?)
+        },
+        rows: None,
+        failures: j["failures"]
+            .as_array()?
+            .iter()
+            .map(|f| {
+                Some(FailedRow {
+                    line: f["line"].as_u64()? as usize,
+                    reason: f["reason"].as_str()?.to_string(),
+                    coords: coords_of(&f["coords"])?,
+                })
+            })
+            .collect::<Option<_>>()?,
+    })
+}

@@ -1,0 +1,183 @@
+"""tribez.check and tribez.Report: verdicts, figures, merge, text and JSON, errors.
+
+Expected values come from tests/reference.py (plain Python fractions), never from tribez.
+"""
+
+import json
+import math
+import os
+import subprocess
+import threading
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+
+import tribez
+from reference import bernstein_value, ulps_error
+
+FINN = [[0, 1, 0, 0, 1, 0], [0, 0, 2, 1, 1, 2], [0, 2, 0, 0, 1, 1]]
+
+
+def points(count, seed=5):
+    rng = np.random.default_rng(seed)
+    u = rng.random(count)
+    v = (1 - u) * rng.random(count)
+    return np.column_stack([u, v, 1.0 - u - v])
+
+
+def correctly_rounded(pts):
+    return np.array([[float(q) for q in bernstein_value(FINN, 2, p)] for p in pts.tolist()])
+
+
+@pytest.fixture
+def rows():
+    pts = points(300)
+    vals = correctly_rounded(pts)
+    # rows 7, 100 and 250 off by 1, 3 and 40 ulps in one coordinate
+    for r, c, k in ((7, 0, 1), (100, 2, 3), (250, 1, 40)):
+        for _ in range(k):
+            vals[r, c] = math.nextafter(vals[r, c], math.inf)
+    return pts, vals
+
+
+def reference_ulps(pts, vals):
+    return [max(ulps_error(y, q) for y, q in zip(v, bernstein_value(FINN, 2, p)))
+            for p, v in zip(pts.tolist(), vals.tolist())]
+
+
+def test_verdicts_and_figures_match_the_fractions_reference(finn, rows):
+    pts, vals = rows
+    errs = reference_ulps(pts, vals)
+    for tol, limit in (("correctly_rounded", None), ("ulps=2", 2), ("ulps=50", 50)):
+        report = tribez.check(finn, pts, vals, tolerance=tol)
+        if limit is None:
+            want_failed = sum(e > F(1, 2) for e in errs)  # correctly rounded <=> error <= 1/2 ulp here
+        else:
+            want_failed = sum(e > limit for e in errs)
+        assert (report.passed, report.failed) == (300 - want_failed, want_failed), tol
+        assert report.ok == (want_failed == 0)
+        assert report.worst["row"] == 250
+        assert report.max_ulps == pytest.approx(float(max(errs)), rel=1e-9)
+    assert tribez.check(finn, pts, vals, tolerance="ulps=50").ok
+
+
+def test_precision_follows_the_dtype(finn):
+    pts = points(50).astype(np.float32)
+    vals = finn.evaluate_float(pts, precision="f32")
+    report = tribez.check(finn, pts, vals, tolerance="cond=9")
+    assert report.precision == "f32" and report.ok
+    assert "f32" in str(report)
+    report64 = tribez.check(finn, pts.astype(np.float64), vals.astype(np.float64), tolerance="cond=9")
+    assert report64.precision == "f64"
+    # f32 results are 2^29 f64 ulps off: far beyond cond=9 in f64
+    assert not report64.ok
+
+
+def test_text_and_json_are_the_command_lines(finn, rows, tmp_path):
+    pts, vals = rows
+    report = tribez.check(finn, pts, vals, tolerance="ulps=2")
+    text = str(report)
+    assert "passed 298, failed 2" in text
+    data = json.loads(report.to_json())
+    assert data["summary"]["passed"] == 298 and data["summary"]["failed"] == 2
+    cli = os.environ.get("TRIBEZ_CLI")
+    if not cli:
+        pytest.skip("TRIBEZ_CLI not set")
+    patch = tmp_path / "finn.toml"
+    patch.write_text(finn.to_toml())
+    csv = tmp_path / "rows.csv"
+    csv.write_text("".join(",".join(x.hex() for x in r) + "\n" for r in np.hstack([pts, vals]).tolist()))
+    out = subprocess.run([cli, "check", "--patch", str(patch), "--results", str(csv), "--precision", "f64",
+                          "--tolerance", "ulps=2"], capture_output=True, text=True)
+    assert out.returncode == 1
+    # the same report: counts, histogram and worst row; the CLI numbers file lines from 1
+    assert out.stdout.strip().splitlines()[-1] == text.strip().splitlines()[-1]
+    hist = lambda t: [l for l in t.splitlines() if " ulp " in l and "#" in l or l.strip().endswith(" 0")]
+    assert hist(out.stdout) == hist(text)
+
+
+def test_merge_equals_a_single_run(finn, rows):
+    pts, vals = rows
+    whole = tribez.check(finn, pts, vals, tolerance="ulps=2")
+    parts = [(0, 120), (120, 240), (240, 300)]
+    reports = [tribez.check(finn, pts[a:b], vals[a:b], tolerance="ulps=2", first_row=a) for a, b in parts]
+    merged = reports[0].merge(reports[1]).merge(reports[2])
+    assert (merged.passed, merged.failed, merged.fell_back) == (whole.passed, whole.failed, whole.fell_back)
+    assert merged.histogram == whole.histogram
+    assert merged.max_ulps == whole.max_ulps and merged.worst == whole.worst
+    assert json.loads(merged.to_json()) == json.loads(whole.to_json())
+    assert str(merged) == str(whole)
+    for name in ("passed", "ulps"):
+        assert np.array_equal(merged.rows[name], whole.rows[name])
+    # in another order too
+    again = reports[2].merge(reports[0]).merge(reports[1])
+    assert json.loads(again.to_json()) == json.loads(whole.to_json())
+
+
+def test_rows_are_numpy_arrays(finn, rows):
+    pts, vals = rows
+    report = tribez.check(finn, pts, vals, tolerance="ulps=2")
+    r = report.rows
+    assert r["passed"].dtype == bool and r["passed"].shape == (300,)
+    assert list(np.flatnonzero(~r["passed"])) == [100, 250]
+    errs = reference_ulps(pts, vals)
+    assert np.allclose(r["ulps"], [float(e) for e in errs], rtol=1e-6, atol=1e-6)
+
+
+def test_failures_raise(finn, rows):
+    from tribez.testing import assert_certified
+
+    pts, vals = rows
+    assert_certified(finn, pts, vals, tolerance="ulps=50")
+    with pytest.raises(AssertionError) as info:
+        assert_certified(finn, pts, vals, tolerance="ulps=2")
+    assert "failed 2" in str(info.value)
+
+
+def test_nan_is_a_failed_row_not_an_error(finn):
+    pts = points(10)
+    vals = correctly_rounded(pts)
+    vals[3, 1] = np.nan
+    report = tribez.check(finn, pts, vals, tolerance="ulps=1")
+    assert (report.passed, report.failed) == (9, 1)
+
+
+def test_bad_check_input(finn):
+    pts = points(10)
+    vals = correctly_rounded(pts)
+
+    def bad(fragment, *a, **k):
+        with pytest.raises(tribez.InputError) as info:
+            tribez.check(*a, **k)
+        assert fragment in str(info.value), str(info.value)
+
+    bad("unknown tolerance", finn, pts, vals, tolerance="ulp=1")
+    bad("10 rows of points but 9 rows of values", finn, pts, vals[:9])
+    bad("values: rows of 2 numbers, expected 3", finn, pts, vals[:, :2])
+    bad("points: rows of 2 numbers, expected 3", finn, pts[:, :2], vals)
+    bad("unknown precision", finn, pts, vals, precision="f16")
+    bad("expected floats", finn, pts, vals.astype(object))
+    bad("no rows", finn, pts[:0], vals[:0])
+    bad("expected a tribez.Patch", "finn.toml", pts, vals)
+
+
+def test_the_gil_is_released_while_judging(finn):
+    pts = points(200_000, seed=9)
+    vals = finn.evaluate_float(pts)
+    done = threading.Event()
+    result = []
+
+    def work():
+        result.append(tribez.check(finn, pts, vals, tolerance="cond=9"))
+        done.set()
+
+    t = threading.Thread(target=work)
+    ticks = 0
+    t.start()
+    while not done.is_set():
+        ticks += 1
+    t.join()
+    assert result[0].passed + result[0].failed == 200_000
+    # with the GIL held for the whole judgement this loop could not have run meanwhile
+    assert ticks > 1000
