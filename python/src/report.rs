@@ -9,8 +9,7 @@ use serde_json::{Value as Json, json};
 use tribez::any_patch::AnyPatch;
 use tribez::batch::{
     BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
-    WorstRow,
-    UlpHistogram,
+    UlpHistogram, WorstRow,
 };
 use tribez::certify::measures::{Measures, Tolerance};
 use tribez::exact::Algorithm;

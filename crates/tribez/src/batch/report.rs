@@ -133,7 +133,11 @@ impl BatchReport {
             );
         }
         if self.patch != other.patch {
-            return mismatch("about different patches", self.patch.clone(), other.patch.clone());
+            return mismatch(
+                "about different patches",
+                self.patch.clone(),
+                other.patch.clone(),
+            );
         }
         self.checked += other.checked;
         self.passed += other.passed;
