@@ -1,6 +1,6 @@
 #![no_main]
-//! Fuzz target `claims`: see `tribez::io::fuzz::claims`.
+//! Fuzz target `claims`: see `tribez::hazmat::io::fuzz::claims`.
 
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| tribez::io::fuzz::claims(data));
+fuzz_target!(|data: &[u8]| tribez::hazmat::io::fuzz::claims(data));

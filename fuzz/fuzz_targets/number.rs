@@ -1,6 +1,6 @@
 #![no_main]
-//! Fuzz target `number`: see `tribez::io::fuzz::number`.
+//! Fuzz target `number`: see `tribez::hazmat::io::fuzz::number`.
 
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| tribez::io::fuzz::number(data));
+fuzz_target!(|data: &[u8]| tribez::hazmat::io::fuzz::number(data));

@@ -1,6 +1,6 @@
 #![no_main]
-//! Fuzz target `patch_json`: see `tribez::io::fuzz::patch_json`.
+//! Fuzz target `patch_json`: see `tribez::hazmat::io::fuzz::patch_json`.
 
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| tribez::io::fuzz::patch_json(data));
+fuzz_target!(|data: &[u8]| tribez::hazmat::io::fuzz::patch_json(data));

@@ -8,20 +8,20 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use rayon::prelude::*;
 
-use tribez::any_patch::AnyPatch;
-use tribez::domain::check_barycentric;
-use tribez::error::CoreError;
-use tribez::exact::ExactEvaluator;
-use tribez::float::{Float, casteljau, net_to};
-use tribez::io::patch_file::{
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::domain::check_barycentric;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::exact::ExactEvaluator;
+use tribez::hazmat::float::{Float, casteljau, net_to};
+use tribez::hazmat::io::patch_file::{
     MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION, any_patch_from_document,
     any_patch_to_json, any_patch_to_toml, read_any_patch,
 };
-use tribez::io::tree::Document;
-use tribez::number::{format_rational, parse_rational};
-use tribez::patch::{BezierPatch as Patch, ControlNet};
-use tribez::rational::RationalPatch;
-use tribez::simplex::{Simplex, binomial};
+use tribez::hazmat::io::tree::Document;
+use tribez::hazmat::number::{format_rational, parse_rational};
+use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::rational::RationalPatch;
+use tribez::hazmat::simplex::{Simplex, binomial};
 
 use crate::{guard, input_error};
 

@@ -6,15 +6,15 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use serde_json::{Value as Json, json};
 
-use tribez::any_patch::AnyPatch;
+use tribez::hazmat::any_patch::AnyPatch;
 use tribez::batch::{
     BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
     UlpHistogram, WorstRow,
 };
-use tribez::certify::measures::{Measures, Tolerance};
-use tribez::exact::Algorithm;
-use tribez::float::Precision;
-use tribez::number::parse_rational;
+use tribez::hazmat::certify::measures::{Measures, Tolerance};
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::number::parse_rational;
 
 use crate::patch::{NativePatch, f64s};
 use crate::{guard, input_error};

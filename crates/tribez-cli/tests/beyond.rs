@@ -7,11 +7,11 @@ use std::path::{Path, PathBuf};
 use assert_cmd::Command;
 use num_rational::BigRational;
 use predicates::prelude::*;
-use tribez::casteljau;
-use tribez::number::parse_rational as q;
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
-use tribez::symbolic::{Polynomial, barycentric_form};
+use tribez::hazmat::casteljau;
+use tribez::hazmat::number::parse_rational as q;
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
+use tribez::hazmat::symbolic::{Polynomial, barycentric_form};
 
 fn tribez() -> Command {
     Command::cargo_bin("tribez").expect("binary built")

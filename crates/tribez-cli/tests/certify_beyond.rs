@@ -15,14 +15,14 @@ use std::path::{Path, PathBuf};
 use assert_cmd::Command;
 use num_rational::BigRational;
 use predicates::prelude::*;
-use tribez::certify::beyond::{RationalCertifier, SPatchCertifier};
-use tribez::certify::sample::{SplitMix, random_points, random_polygon_points};
-use tribez::float::Float;
-use tribez::io::patch_file::read_any_patch;
-use tribez::any_patch::AnyPatch;
-use tribez::patch::{BezierPatch as Patch, ControlNet};
-use tribez::rational::RationalPatch;
-use tribez::simplex::Simplex;
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::certify::beyond::{RationalCertifier, SPatchCertifier};
+use tribez::hazmat::certify::sample::{SplitMix, random_points, random_polygon_points};
+use tribez::hazmat::float::Float;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::rational::RationalPatch;
+use tribez::hazmat::simplex::Simplex;
 
 fn tribez() -> Command {
     Command::cargo_bin("tribez").unwrap()
@@ -113,8 +113,8 @@ fn a_priori_form<F: Float>(
     lam: &[F],
     q: &[BigRational],
 ) -> Option<Vec<BigRational>> {
-    use tribez::certify::bound;
-    use tribez::exact::{Algorithm, ExactEvaluator};
+    use tribez::hazmat::certify::bound;
+    use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
     let lam: Vec<BigRational> = lam.iter().map(|x| x.exact().unwrap()).collect();
     let (m, n) = (h.m(), h.degree());
     let e: Vec<BigRational> = bound::condition(h, &lam)
@@ -175,7 +175,7 @@ fn a_wrong_result_exceeds_the_rational_bound() {
 }
 
 /// An S-patch fixture and its polygon's vertices as f64.
-fn s_patch(name: &str) -> (tribez::spatch::SPatch, Vec<[f64; 2]>) {
+fn s_patch(name: &str) -> (tribez::hazmat::spatch::SPatch, Vec<[f64; 2]>) {
     let AnyPatch::SPatch(s) = read_any_patch(&fixture(name)).unwrap() else {
         panic!("{name} is an S-patch")
     };
@@ -258,7 +258,7 @@ fn s_patch_total_error_within_its_proven_bound() {
                     let err = num_traits::Signed::abs(&(y.exact().unwrap() - q));
                     assert!(&err <= b, "{name} f64 at {p:?}: {err} > {b}");
                     if !num_traits::Zero::is_zero(b) {
-                        worst = worst.max(tribez::number::round_f64(&(err / b)));
+                        worst = worst.max(tribez::hazmat::number::round_f64(&(err / b)));
                     }
                 }
             }

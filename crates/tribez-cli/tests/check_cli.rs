@@ -367,6 +367,14 @@ fn json_array_errors_name_file_line_and_column() {
                 let at = full.rfind("0.5555555555555555").unwrap();
                 format!("{}0.55x5{}", &full[..at], &full[at + 18..])
             },
+            "results.json:15:9: invalid JSON: expected `,` or `]`",
+        ),
+        // the same text as a JSON string: valid JSON, a malformed number
+        (
+            {
+                let at = full.rfind("0.5555555555555555").unwrap();
+                format!("{}\"0.55x5\"{}", &full[..at], &full[at + 18..])
+            },
             "results.json:15:5: malformed number: `0.55x5`",
         ),
         // missing entries, commas and text after the array
@@ -380,7 +388,7 @@ fn json_array_errors_name_file_line_and_column() {
         ),
         (
             "[[0.5,,0.5,0,1,2]]".to_string(),
-            "results.json:1:7: invalid JSON: expected a number, a string or null",
+            "results.json:1:7: invalid JSON: expected value",
         ),
         (
             format!("[[{ROW}]]\nx"),
@@ -740,11 +748,11 @@ fn one_ulp_change_fails_correctly_rounded() {
 /// inside the triangle, Σ|c_i|B_i = P, so the bound γ_9·P < 9·2^-24·2^(e+1) = 9 ulp(P).
 #[test]
 fn shader_f32_results_pass_at_ulps_and_bound() {
-    use tribez::float::{casteljau_vec3, net_f32, vec3_points};
+    use tribez::hazmat::float::{casteljau_vec3, net_f32, vec3_points};
     let d = tempfile::tempdir().unwrap();
     let text = "degree = 3\n[control_points]\n\"3,0,0\" = [1, 1.5, 2]\n\"2,1,0\" = [1.25, 1.75, 1.5]\n\"1,2,0\" = [1.5, 1.125, 1.875]\n\"0,3,0\" = [2, 1, 1]\n\"2,0,1\" = [1.1, 1.9, 1.3]\n\"1,1,1\" = [1.7, 1.2, 1.6]\n\"0,2,1\" = [1.3, 1.4, 1.8]\n\"1,0,2\" = [1.6, 1.8, 1.1]\n\"0,1,2\" = [1.2, 1.6, 1.4]\n\"0,0,3\" = [1.9, 1.05, 1.7]\n";
     let patch_path = write(d.path(), "cubic.toml", text);
-    let patch = tribez::io::patch_file::read_patch(&patch_path).unwrap();
+    let patch = tribez::hazmat::io::patch_file::read_patch(&patch_path).unwrap();
     let pts = vec3_points(&net_f32(&patch.net));
     let mut rows = String::new();
     let mut s = 12345u64;

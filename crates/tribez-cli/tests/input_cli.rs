@@ -229,3 +229,161 @@ fn check_dir_walks_each_file_once_and_skips_what_is_not_a_file() {
         assert!(err.contains(note), "expected `{note}` in:\n{err}");
     }
 }
+
+/// The plane patch P(u, v, w) = (v, w) (corners (0,0), (1,0), (0,1)): a results row
+/// `u,v,w,x,y` is right when x = v and y = w.
+const PLANE: &str = "degree = 1\n[control_points]\n\"1,0,0\" = [\"0\", \"0\"]\n\"0,1,0\" = [\"1\", \"0\"]\n\"0,0,1\" = [\"0\", \"1\"]\n";
+
+fn batch(dir: &Path, results: &Path, extra: &[&str]) -> std::process::Output {
+    let patch = write(dir, "plane.toml", PLANE);
+    tribez()
+        .arg("check")
+        .arg("--patch")
+        .arg(patch)
+        .arg("--results")
+        .arg(results)
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+fn batch_fails(dir: &Path, results: &Path, extra: &[&str], fragments: &[&str]) {
+    let out = batch(dir, results, extra);
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "one line: {err}");
+    for f in fragments {
+        assert!(err.contains(f), "expected `{f}` in: {err}");
+    }
+}
+
+fn batch_status(dir: &Path, results: &Path, extra: &[&str]) -> (i32, String) {
+    let out = batch(dir, results, extra);
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr),
+    )
+}
+
+#[test]
+fn json_lines_are_parsed_as_json() {
+    let d = tempfile::tempdir().unwrap();
+    let ok = write(
+        d.path(),
+        "ok.jsonl",
+        "[\"1/2\", 0.25, 0.25, 0.25, \"1/4\"]\n[1, 0, 0, 0, null]\n",
+    );
+    let (code, out) = batch_status(d.path(), &ok, &[]);
+    assert_eq!(code, 1, "the null row fails, the first passes: {out}");
+    assert!(
+        out.contains("1 passed") || out.contains("passed: 1"),
+        "{out}"
+    );
+    // a comma inside a string does not split it: one field, not a number
+    let r = write(
+        d.path(),
+        "comma.jsonl",
+        "[\"1/2\", \"1/4,1/4\", 0.25, 0.25, 0.25]\n",
+    );
+    batch_fails(d.path(), &r, &[], &["comma.jsonl:1:9: malformed number"]);
+    // text after the array, a bare word, a missing bracket: not JSON
+    for (name, text, at) in [
+        (
+            "after.jsonl",
+            "[0.5, 0.25, 0.25, 0.25, 0.25] x\n",
+            "after.jsonl:1:31: invalid JSON",
+        ),
+        (
+            "word.jsonl",
+            "[0.5, 0.25, 0.25, 0.25, abc]\n",
+            "word.jsonl:1:25: invalid JSON",
+        ),
+        (
+            "open.jsonl",
+            "[0.5, 0.25, 0.25, 0.25, 0.25\n",
+            "open.jsonl:1:28: invalid JSON: EOF while parsing a list",
+        ),
+    ] {
+        let r = write(d.path(), name, text);
+        batch_fails(d.path(), &r, &[], &[at, "invalid JSON"]);
+    }
+}
+
+#[test]
+fn results_may_start_with_a_byte_order_mark_or_a_csv_header() {
+    let d = tempfile::tempdir().unwrap();
+    for (name, text) in [
+        ("bom.csv", "\u{feff}0.5,0.25,0.25,0.25,0.25\n"),
+        ("bom.jsonl", "\u{feff}[0.5,0.25,0.25,0.25,0.25]\n"),
+        ("bom.json", "\u{feff}[[0.5,0.25,0.25,0.25,0.25]]\n"),
+        ("header.csv", "u,v,w,x,y\n0.5,0.25,0.25,0.25,0.25\n"),
+        (
+            "both.csv",
+            "\u{feff}# from numpy\n\"u\",\"v\",\"w\",\"x\",\"y\"\n0.5,0.25,0.25,0.25,0.25\n",
+        ),
+    ] {
+        let r = write(d.path(), name, text);
+        let (code, out) = batch_status(d.path(), &r, &[]);
+        assert_eq!(code, 0, "{name}: {out}");
+    }
+    let r = write(
+        d.path(),
+        "two.csv",
+        "u,v,w,x,y\nu,v,w,x,y\n0.5,0.25,0.25,0.25,0.25\n",
+    );
+    batch_fails(d.path(), &r, &[], &["two.csv:2:1: malformed number"]);
+    let r = write(d.path(), "short.csv", "u,v,w,x\n0.5,0.25,0.25,0.25,0.25\n");
+    batch_fails(
+        d.path(),
+        &r,
+        &[],
+        &["short.csv:1: a header line of 4 names, expected 5"],
+    );
+}
+
+#[test]
+fn an_overflowing_number_is_a_failed_row_whatever_its_exponent() {
+    let d = tempfile::tempdir().unwrap();
+    for big in ["1e400", "1e999999", "-1e999999999999"] {
+        let r = write(
+            d.path(),
+            "big.csv",
+            format!("0.5,0.25,0.25,0.25,0.25\n0.5,0.25,0.25,{big},0.25\n"),
+        );
+        let (code, out) = batch_status(d.path(), &r, &["--precision", "f64"]);
+        assert_eq!(code, 1, "{big}: a failed row, not an aborted run: {out}");
+        assert!(out.contains("overflows f64"), "{big}: {out}");
+    }
+}
+
+#[test]
+fn results_that_never_end_a_line_or_are_not_utf8() {
+    let d = tempfile::tempdir().unwrap();
+    let zero = d.path().join("zero.csv");
+    symlink("/dev/zero", &zero).unwrap();
+    batch_fails(
+        d.path(),
+        &zero,
+        &[],
+        &["zero.csv:1: the line is longer than the limit of 16 MiB"],
+    );
+    let zero = d.path().join("zero.json");
+    symlink("/dev/zero", &zero).unwrap();
+    batch_fails(
+        d.path(),
+        &zero,
+        &[],
+        &["zero.json:1: the line is longer than the limit"],
+    );
+    let r = write(
+        d.path(),
+        "bad.csv",
+        b"0.5,0.25,0.25,0.25,0.25\n0.5,\xff,0.25,0.25,0.25\n",
+    );
+    batch_fails(
+        d.path(),
+        &r,
+        &[],
+        &["bad.csv:2:5: the file is not UTF-8 text (invalid byte 0xff)"],
+    );
+}

@@ -15,12 +15,12 @@ use std::time::Duration;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use num_rational::BigRational;
-use tribez::certify::filter::{Decision, Enclosure, Filter, Scratch, Thresholds};
-use tribez::certify::measures::Tolerance;
-use tribez::exact::Algorithm;
-use tribez::float::{Precision, casteljau_dvec3, dvec3_points, net_f64};
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
+use tribez::hazmat::certify::filter::{Decision, Enclosure, Filter, Scratch, Thresholds};
+use tribez::hazmat::certify::measures::Tolerance;
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::{Precision, casteljau_dvec3, dvec3_points, net_f64};
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
 
 const N: usize = 3;
 const CLAIMS: usize = 1_000_000;

@@ -9,11 +9,11 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use num_rational::BigRational;
-use tribez::blossom::subpatch;
-use tribez::elevate::elevate;
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
-use tribez::subdivide::{halve, midpoint_split, split_at_pieces};
+use tribez::hazmat::blossom::subpatch;
+use tribez::hazmat::elevate::elevate;
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
+use tribez::hazmat::subdivide::{halve, midpoint_split, split_at_pieces};
 
 /// `BigRational` under another name: the constructions run their generic code on it.
 #[derive(Clone, Debug, PartialEq)]
@@ -56,7 +56,7 @@ impl num_traits::One for Plain {
         Plain(BigRational::one())
     }
 }
-impl tribez::scalar::Scalar for Plain {
+impl tribez::hazmat::scalar::Scalar for Plain {
     fn from_u64(k: u64) -> Self {
         Plain(BigRational::from_integer(k.into()))
     }

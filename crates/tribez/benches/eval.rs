@@ -17,15 +17,15 @@ use std::time::Duration;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use tribez::casteljau;
-use tribez::exact::{Algorithm, ExactEvaluator, evaluate_rational};
-use tribez::float::{
+use tribez::hazmat::casteljau;
+use tribez::hazmat::exact::{Algorithm, ExactEvaluator, evaluate_rational};
+use tribez::hazmat::float::{
     casteljau_dvec3, casteljau_vec3, dvec3_points, horner_dvec3_many, horner_points_dvec3,
     horner_points_vec3, horner_vec3_many, net_f32, net_f64, vec3_points,
 };
-use tribez::number::exact_f64;
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
+use tribez::hazmat::number::exact_f64;
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
 
 struct Rng(u64);
 impl Rng {
@@ -194,16 +194,20 @@ fn structure(c: &mut Criterion) {
     let net = reference_net(30, &mut rng);
     let at = reference_points(1, &mut rng).remove(0);
     // Subdivision at a point into three sub-triangles and elevation n → n + 1, exactly, on the
-    // reference workload (tribez::subdivide / tribez::elevate; `cargo bench --bench
+    // reference workload (tribez::hazmat::subdivide / tribez::hazmat::elevate; `cargo bench --bench
     // constructions` measures more constructions on small rationals).
     g.bench_function("split_at_point_exact", |b| {
-        b.iter(|| tribez::subdivide::split_at_pieces(&net, &at).unwrap().len())
+        b.iter(|| {
+            tribez::hazmat::subdivide::split_at_pieces(&net, &at)
+                .unwrap()
+                .len()
+        })
     });
     g.bench_function("elevate_by_1_exact", |b| {
-        b.iter(|| tribez::elevate::elevate(&net, 1).len())
+        b.iter(|| tribez::hazmat::elevate::elevate(&net, 1).len())
     });
     let n64 = net_f64(&net);
-    let at64: Vec<f64> = at.iter().map(tribez::number::round_f64).collect();
+    let at64: Vec<f64> = at.iter().map(tribez::hazmat::number::round_f64).collect();
     g.bench_function("subdivision_levels_f64", |b| {
         b.iter(|| casteljau::levels(&n64, &at64).len())
     });

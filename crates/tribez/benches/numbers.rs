@@ -1,8 +1,8 @@
-//! Reading number texts at the digit limit (`tribez::number::MAX_DIGITS`, 100,000 digits):
+//! Reading number texts at the digit limit (`tribez::hazmat::number::MAX_DIGITS`, 100,000 digits):
 //! each must take well under a second. `cargo bench --bench numbers`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use tribez::number::{MAX_DIGITS, parse_rational};
+use tribez::hazmat::number::{MAX_DIGITS, parse_rational};
 
 fn numbers(c: &mut Criterion) {
     let n = MAX_DIGITS;

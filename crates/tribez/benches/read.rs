@@ -9,8 +9,8 @@ use std::fmt::Write;
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use tribez::io::patch_file::{MAX_CONTROL_POINTS, read_patch};
-use tribez::io::points::read_points;
+use tribez::hazmat::io::patch_file::{MAX_CONTROL_POINTS, read_patch};
+use tribez::hazmat::io::points::read_points;
 
 const DEGREE: usize = 112;
 

@@ -6,12 +6,12 @@
 use std::time::Instant;
 
 use num_rational::BigRational;
-use tribez::certify::filter::{Decision, Enclosure, Filter, Scratch, Thresholds};
-use tribez::certify::measures::Tolerance;
-use tribez::exact::Algorithm;
-use tribez::float::net_f64;
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
+use tribez::hazmat::certify::filter::{Decision, Enclosure, Filter, Scratch, Thresholds};
+use tribez::hazmat::certify::measures::Tolerance;
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::net_f64;
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
 
 fn main() {
     let n = 3;
@@ -36,12 +36,12 @@ fn main() {
         })
         .collect();
     // plain f64 evaluation: the glam kernel (no allocation per point), as a renderer would run it
-    let dpts = tribez::float::dvec3_points(&net);
+    let dpts = tribez::hazmat::float::dvec3_points(&net);
     let t = Instant::now();
     let claimed: Vec<Vec<f64>> = pts
         .iter()
         .map(|p| {
-            let v = tribez::float::casteljau_dvec3(&dpts, n, *p);
+            let v = tribez::hazmat::float::casteljau_dvec3(&dpts, n, *p);
             vec![v.x, v.y, v.z]
         })
         .collect();
@@ -50,7 +50,7 @@ fn main() {
     for tol in ["ulps=4", "cond=9", "correctly_rounded", "bound"] {
         let th = Thresholds::new(
             &Tolerance::parse(tol).unwrap(),
-            tribez::float::Precision::F64,
+            tribez::hazmat::float::Precision::F64,
             Algorithm::Casteljau,
             2,
             n,

@@ -11,13 +11,13 @@ use std::time::Instant;
 
 use num_rational::BigRational;
 use serde_json::{Value, json};
-use tribez::exact::{Algorithm, ExactEvaluator};
-use tribez::float::{
+use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
+use tribez::hazmat::float::{
     casteljau_dvec3, casteljau_vec3, dvec3_points, horner_dvec3, horner_dvec3_many,
     horner_points_dvec3, horner_points_vec3, horner_vec3_many, net_f32, net_f64, vec3_points,
 };
-use tribez::number::{format_rational, parse_rational};
-use tribez::patch::ControlNet;
+use tribez::hazmat::number::{format_rational, parse_rational};
+use tribez::hazmat::patch::ControlNet;
 
 fn scalar(v: &Value) -> BigRational {
     let text = match v {
@@ -92,7 +92,9 @@ fn main() {
                 let few = &points[..points.len().min(50)];
                 let (s, generic) = best_of(1, || {
                     few.iter()
-                        .map(|p| tribez::exact::evaluate_rational(&net, p, Algorithm::Casteljau))
+                        .map(|p| {
+                            tribez::hazmat::exact::evaluate_rational(&net, p, Algorithm::Casteljau)
+                        })
                         .collect::<Vec<_>>()
                 });
                 assert!(

@@ -5,9 +5,9 @@
 //! `Σλ = 1`), and the recursion `B^n_α = Σ_k λ_k B^{n−1}_{α−e_k}` (docs/theory.md §1).
 //!
 //! ```
-//! use tribez::bernstein::basis;
-//! use tribez::number::parse_rational as q;
-//! use tribez::simplex::Simplex;
+//! use tribez::hazmat::bernstein::basis;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::simplex::Simplex;
 //! // docs/theory.md §1: the cubic basis at (1/2, 1/3, 1/6)
 //! let u = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
 //! let b: Vec<String> = basis(&Simplex::new(2, 3), &u).iter().map(|x| x.to_string()).collect();

@@ -18,9 +18,9 @@
 //! vertices (also affinely dependent ones).
 //!
 //! ```
-//! use tribez::blossom::subpatch;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
+//! use tribez::hazmat::blossom::subpatch;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
 //! // Finn's net; the half [a1, (1/2,1/2,0), a3] of docs/theory.md §5.2
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]

@@ -13,9 +13,9 @@
 //! evaluation) and the f64/f32 float paths all run this code.
 //!
 //! ```
-//! use tribez::casteljau::evaluate;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
+//! use tribez::hazmat::casteljau::evaluate;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
 //! // Finn's worked example: the point [4/9, 5/9, 29/36]
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();

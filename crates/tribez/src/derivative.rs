@@ -14,9 +14,9 @@
 //! [`crate::simplex`]; direction component `k` belongs to domain vertex `k`.
 //!
 //! ```
-//! use tribez::derivative::directional_derivative;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
+//! use tribez::hazmat::derivative::directional_derivative;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
 //! // Finn's worked example (Finn): n = 2, at (1/2, 1/3, 1/6)
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]

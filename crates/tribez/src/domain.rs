@@ -7,8 +7,8 @@
 //! replaced by `(1, t)`. Directional coordinates of a vector `d` use `(0, d)` instead and sum to 0.
 //!
 //! ```
-//! use tribez::domain::Domain;
-//! use tribez::number::parse_rational as q;
+//! use tribez::hazmat::domain::Domain;
+//! use tribez::hazmat::number::parse_rational as q;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
 //! // docs/theory.md §2: T = (1,2), (7,3), (2,8)
 //! let t = Domain::new(vec![r(&["1", "2"]), r(&["7", "3"]), r(&["2", "8"])]).unwrap();

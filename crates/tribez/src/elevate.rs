@@ -12,9 +12,9 @@
 //! multiplication by `(u_0 + … + u_m)^r`: the same surface.
 //!
 //! ```
-//! use tribez::elevate::elevate;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
+//! use tribez::hazmat::elevate::elevate;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);

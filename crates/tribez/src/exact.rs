@@ -13,9 +13,9 @@
 //! [`evaluate_rational`]; it is what `tribez eval` and the claims use.
 //!
 //! ```
-//! use tribez::exact::{Algorithm, ExactEvaluator};
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
+//! use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let eval = ExactEvaluator::new(&ControlNet::from_points(2, 2, &pts));

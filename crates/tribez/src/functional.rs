@@ -12,10 +12,10 @@
 //! `ℓ` it is `b_α = ℓ(ξ_α)`.
 //!
 //! ```
-//! use tribez::domain::Domain;
-//! use tribez::functional::{abscissae, ordinates};
-//! use tribez::number::parse_rational as q;
-//! use tribez::symbolic::Polynomial;
+//! use tribez::hazmat::domain::Domain;
+//! use tribez::hazmat::functional::{abscissae, ordinates};
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::symbolic::Polynomial;
 //! let r = |v: &[&str]| v.iter().map(|s| q(s).unwrap()).collect::<Vec<_>>();
 //! let t = Domain::new(vec![r(&["1", "1"]), r(&["5", "2"]), r(&["2", "6"])]).unwrap();
 //! let xi = abscissae(&t, 3);
@@ -31,7 +31,7 @@ use num_traits::Zero;
 
 use crate::domain::Domain;
 use crate::error::CoreError;
-use crate::patch::{ControlNet, BezierPatch};
+use crate::patch::{BezierPatch, ControlNet};
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::Polynomial;
 

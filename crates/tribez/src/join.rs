@@ -39,10 +39,10 @@
 //! (`i + j = n − 1`) is planar. Finn's notes claims this suffices for G1; it does not (docs/theory.md §8).
 //!
 //! ```
-//! use tribez::domain::Domain;
-//! use tribez::join::analyse;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::{BezierPatch as Patch, ControlNet};
+//! use tribez::hazmat::domain::Domain;
+//! use tribez::hazmat::join::analyse;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
 //! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
 //! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
 //! // docs/theory.md §8: planar quadrilaterals, C0, yet not G1

@@ -247,7 +247,9 @@ pub fn judge_algorithm(
     if matches!(tolerance, Tolerance::Cond(_)) && !seen.cond_tolerance {
         return Err(Error::Unsupported {
             kind: described,
-            what: format!("tolerance `{tolerance}` is not defined (its float program adds an error the condition number does not measure): use `bound`"),
+            what: format!(
+                "tolerance `{tolerance}` is not defined (its float program adds an error the condition number does not measure): use `bound`"
+            ),
         });
     }
     let exact = seen.exact.clone().ok_or_else(|| {

@@ -1,63 +1,91 @@
 //! # tribez: exact Bézier triangles (and simplices), to certify floating-point code
 //!
-//! tribez computes with triangular Bézier patches — and Bézier simplices of any dimension —
-//! **exactly**, in rational arithmetic, and uses those exact answers to judge floating-point
-//! results.
+//! tribez computes with Bézier triangles — and Bézier simplices of any dimension, rational and
+//! functional patches, and S-patches — **exactly**, in rational arithmetic, and uses those exact
+//! answers to judge what floating-point code computes.
+//!
+//! Start from a [`Patch`] (built with its constructors or read from a patch file), evaluate it
+//! exactly, and [`judge`] a float result:
 //!
 //! ```
-//! use tribez::casteljau::evaluate;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
-//! // Finn's notes (Finn, day 30), worked example (a): the point is exactly [4/9, 5/9, 29/36].
-//! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
-//!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
-//! let net = ControlNet::from_points(2, 2, &pts);
-//! let u = [q("1/2").unwrap(), q("1/3").unwrap(), q("1/6").unwrap()];
-//! let p: Vec<String> = evaluate(&net, &u).iter().map(|x| x.to_string()).collect();
-//! assert_eq!(p, ["4/9", "5/9", "29/36"]);
+//! use tribez::{Degree, Patch, Precision, SimplexDim, Tolerance, judge, parse_rational};
+//! let q = |s: &str| parse_rational(s).unwrap();
+//! // Finn's worked example: degree 2 over the triangle (m = 2), points in R³, control points
+//! // in the canonical order 200, 110, 020, 101, 011, 002
+//! let pts = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]];
+//! let net = pts.iter().map(|p| p.iter().map(|x| q(&x.to_string())).collect()).collect();
+//! let patch = Patch::bezier(SimplexDim(2), Degree(2), net).unwrap();
+//! let p = patch.evaluate(&[q("1/2"), q("1/3"), q("1/6")]).unwrap();
+//! assert_eq!(p, [q("4/9"), q("5/9"), q("29/36")]);
+//!
+//! // A float program saw (0.5, fl(1/3), fl(1/6)), which sums to 1 − 2^-55, and returned the
+//! // nearest floats of 4/9, 5/9 and 29/36: within one ULP of the exact values at what it saw
+//! let claimed = [4.0 / 9.0, 5.0 / 9.0, 29.0 / 36.0];
+//! let input = [0.5, 1.0 / 3.0, 1.0 / 6.0];
+//! let ulps = Tolerance::parse("ulps=1").unwrap();
+//! assert!(judge(&patch, &input, &claimed, &ulps, Precision::F64).unwrap().passed);
+//! // but not all correctly rounded there (fixtures/judge/derive.py)
+//! let cr = Tolerance::parse("correctly_rounded").unwrap();
+//! let j = judge(&patch, &input, &claimed, &cr, Precision::F64).unwrap();
+//! assert!(!j.passed && j.coordinates[0].correctly_rounded);
 //! ```
 //!
-//! ## Layers
-//! The exact core ([`number`], [`simplex`], [`bernstein`], [`domain`], [`patch`],
-//! [`casteljau`], [`exact`], [`float`]) never depends on the outer layers: files ([`io`]) and the
-//! command line.
+//! ## What is here
+//!
+//! * [`Patch`], [`PatchKind`], [`SimplexDim`], [`Degree`]: one type for every kind of patch;
+//! * [`capability`]: what a kind can do ([`ExactEval`], [`FloatEval`], [`ErrorBound`],
+//!   [`Constructions`]), implemented per kind, one file per kind;
+//! * [`judge`], [`judge_with`], [`judge_algorithm`], [`Judgement`]: one call that judges a float
+//!   result (docs/theory.md §14);
+//! * [`Rational`], [`parse_rational`], [`Precision`], [`Tolerance`], [`Algorithm`]: exact
+//!   numbers, precisions and tolerances, parsed from the same strings as the command line;
+//! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
+//!   results, judged in parallel;
+//! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
+//! * [`hazmat`]: the low-level building blocks, **unstable**.
+//!
+//! The exact core never depends on the outer layers (files, claims, the command line, which is
+//! the separate `tribez-cli` crate).
 
-pub mod any_patch;
-pub mod api_error;
+mod any_patch;
+mod api_error;
 pub mod batch;
-pub mod bernstein;
-pub mod blossom;
+mod bernstein;
+mod blossom;
 pub mod capability;
-pub mod casteljau;
-pub mod certify;
+mod casteljau;
+mod certify;
 pub mod claims;
-pub mod derivative;
-pub mod domain;
-pub mod elevate;
-pub mod error;
-pub mod exact;
-pub mod float;
-pub mod functional;
-pub mod io;
-pub mod join;
-pub mod judge;
-pub mod number;
-pub mod patch;
-pub mod patch_type;
-pub mod rational;
-pub mod scalar;
-pub mod simplex;
-pub mod spatch;
-pub mod subdivide;
-pub mod symbolic;
+mod derivative;
+mod domain;
+mod elevate;
+mod error;
+mod exact;
+mod float;
+mod functional;
+pub mod hazmat;
+mod io;
+mod join;
+mod judge;
+mod number;
+mod patch;
+mod patch_type;
+mod rational;
+mod scalar;
+mod simplex;
+mod spatch;
+mod subdivide;
+mod symbolic;
 #[cfg(test)]
 mod testing;
 
 pub use api_error::Error;
 pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
 pub use certify::measures::Tolerance;
+pub use error::CoreError;
 pub use exact::Algorithm;
 pub use float::Precision;
+pub use io::InputError;
 pub use judge::{CoordinateJudgement, Judgement, judge, judge_algorithm, judge_with};
 pub use num_rational::BigRational as Rational;
 pub use number::parse_rational;

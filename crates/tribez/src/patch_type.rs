@@ -150,11 +150,7 @@ impl Patch {
     /// `α = (α_0, …, α_m)`, `|α| = n`, in decreasing lexicographic order: for a quadratic
     /// triangle 200, 110, 020, 101, 011, 002 … as in the patch files), all with the same
     /// number `d ≥ 1` of coordinates. A wrong count is an error.
-    pub fn bezier(
-        m: SimplexDim,
-        n: Degree,
-        points: Vec<Vec<BigRational>>,
-    ) -> Result<Patch, Error> {
+    pub fn bezier(m: SimplexDim, n: Degree, points: Vec<Vec<BigRational>>) -> Result<Patch, Error> {
         Ok(Patch {
             any: AnyPatch::Bezier(BezierPatch::new(net(m.0, n.0, points)?)),
         })

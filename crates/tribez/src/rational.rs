@@ -20,9 +20,9 @@
 //! infinity, so the patch is undefined there.
 //!
 //! ```
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::{ControlNet, BezierPatch};
-//! use tribez::rational::RationalPatch;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::{ControlNet, BezierPatch};
+//! use tribez::hazmat::rational::RationalPatch;
 //! // the quarter circle as a rational quadratic curve: (1,0), (1,1), (0,1) with weights 1, 1, 2
 //! let pts: Vec<Vec<_>> = [["1", "0"], ["1", "1"], ["0", "1"]].iter().map(|p| p.iter().map(|x| q(x).unwrap()).collect()).collect();
 //! let r = RationalPatch::new(BezierPatch::new(ControlNet::from_points(1, 2, &pts)), ["1", "1", "2"].map(|w| q(w).unwrap()).to_vec());
@@ -36,7 +36,7 @@ use num_traits::{One, Zero};
 use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
-use crate::patch::{ControlNet, BezierPatch};
+use crate::patch::{BezierPatch, ControlNet};
 use crate::symbolic::{Polynomial, barycentric_form};
 use crate::{casteljau, float::Float};
 
@@ -374,9 +374,9 @@ impl RationalPatch {
     /// weight blossom `W[u_1, …, u_n]` is 0.
     ///
     /// ```
-    /// use tribez::number::parse_rational as q;
-    /// use tribez::patch::{ControlNet, BezierPatch};
-    /// use tribez::rational::RationalPatch;
+    /// use tribez::hazmat::number::parse_rational as q;
+    /// use tribez::hazmat::patch::{ControlNet, BezierPatch};
+    /// use tribez::hazmat::rational::RationalPatch;
     /// let v = |t: &[&str]| t.iter().map(|x| q(x).unwrap()).collect::<Vec<_>>();
     /// // the quarter circle (1,0), (1,1), (0,1), weights 1, 1, 2 (as in the module example)
     /// let pts = vec![v(&["1", "0"]), v(&["1", "1"]), v(&["0", "1"])];

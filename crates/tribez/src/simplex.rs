@@ -23,7 +23,7 @@
 //! `s_t = α_0 + … + α_t`; for triangles this is `k(2n+3−k)/2 + j`.
 //!
 //! ```
-//! use tribez::simplex::Simplex;
+//! use tribez::hazmat::simplex::Simplex;
 //! let tri = Simplex::new(2, 3);
 //! assert_eq!(tri.len(), 10);
 //! assert_eq!(tri.rank(&[1, 1, 1]), 5);
@@ -55,7 +55,7 @@ pub fn count(m: usize, n: usize) -> usize {
 /// Multinomial coefficient `|α|! / (α_0! ⋯ α_m!)`, exact.
 ///
 /// ```
-/// use tribez::simplex::multinomial;
+/// use tribez::hazmat::simplex::multinomial;
 /// assert_eq!(multinomial(&[1, 1, 1]).to_string(), "6");
 /// assert_eq!(multinomial(&[2, 0, 1]).to_string(), "3");
 /// ```

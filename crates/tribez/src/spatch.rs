@@ -17,8 +17,8 @@
 //! `(N−1)`-simplex de Casteljau at `λ(p)`. Everything stays rational.
 //!
 //! ```
-//! use tribez::number::parse_rational as q;
-//! use tribez::spatch::Polygon;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::spatch::Polygon;
 //! // docs/theory.md §12: the pentagon (0,0), (4,0), (5,3), (2,5), (−1,3) at p = (2,2)
 //! let v: Vec<Vec<_>> = [["0","0"],["4","0"],["5","3"],["2","5"],["-1","3"]].iter().map(|p| p.iter().map(|x| q(x).unwrap()).collect()).collect();
 //! let poly = Polygon::new(v).unwrap();

@@ -18,9 +18,9 @@
 //!   `[m13, m23, a3]`, central `[m23, m13, m12]`, each keeping the orientation (§5.3).
 //!
 //! ```
-//! use tribez::subdivide::split_at;
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
+//! use tribez::hazmat::subdivide::split_at;
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
 //! let net = ControlNet::from_points(2, 2, &pts);

@@ -7,9 +7,9 @@
 //! variables (`x, y` for triangles).
 //!
 //! ```
-//! use tribez::number::parse_rational as q;
-//! use tribez::patch::ControlNet;
-//! use tribez::symbolic::{Polynomial, barycentric_form};
+//! use tribez::hazmat::number::parse_rational as q;
+//! use tribez::hazmat::patch::ControlNet;
+//! use tribez::hazmat::symbolic::{Polynomial, barycentric_form};
 //! // Finn's worked example, part (b): the exact x-component is 2uv + 2vw (docs/theory.md §15)
 //! let pts: Vec<Vec<_>> = [[0, 0, 0], [1, 0, 2], [0, 2, 0], [0, 1, 0], [1, 1, 1], [0, 2, 1]]
 //!     .iter().map(|p| p.iter().map(|&x| q(&x.to_string()).unwrap()).collect()).collect();
@@ -279,7 +279,7 @@ impl Polynomial {
     /// limits of [`crate::number::parse_rational`].
     ///
     /// ```
-    /// use tribez::symbolic::Polynomial;
+    /// use tribez::hazmat::symbolic::Polynomial;
     /// let xy = ["x", "y"];
     /// let p = |s| Polynomial::parse(s, &xy).unwrap();
     /// assert_eq!(p("x**2 - 2*x"), p("x^2 - 2x"));

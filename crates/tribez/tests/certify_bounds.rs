@@ -5,13 +5,13 @@
 //! it cannot decide, exactly.
 
 use num_rational::BigRational;
-use tribez::certify::Certifier;
-use tribez::certify::filter::{Enclosure, Scratch};
-use tribez::certify::sample::{SplitMix, random_points};
-use tribez::exact::Algorithm;
-use tribez::float::Float;
-use tribez::patch::ControlNet;
-use tribez::simplex::Simplex;
+use tribez::hazmat::certify::Certifier;
+use tribez::hazmat::certify::filter::{Enclosure, Scratch};
+use tribez::hazmat::certify::sample::{SplitMix, random_points};
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::Float;
+use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::Simplex;
 
 fn net(
     m: usize,

@@ -1,11 +1,11 @@
 //! Replays the fuzzers' regression corpus on stable Rust: every input that ever crashed or hung
 //! a fuzz target (`fuzz/regressions/<target>/<file>`) is fed to the same entry point
-//! ([`tribez::io::fuzz`]); the test fails if one panics (a hang shows as a test that does not
+//! ([`tribez::hazmat::io::fuzz`]); the test fails if one panics (a hang shows as a test that does not
 //! finish). Each target has its directory, and every directory is a target.
 
 use std::path::Path;
 
-use tribez::io::fuzz::{TARGETS, run};
+use tribez::hazmat::io::fuzz::{TARGETS, run};
 
 #[test]
 fn every_regression_input_is_handled() {

@@ -3,8 +3,8 @@
 //! fixtures/beyond/pentagon.claims.toml.
 
 use tribez::{
-    Algorithm, Degree, Error, Patch, PatchKind, Precision, Rational, SimplexDim, Tolerance,
-    judge, judge_algorithm, judge_with, parse_rational,
+    Algorithm, Degree, Error, Patch, PatchKind, Precision, Rational, SimplexDim, Tolerance, judge,
+    judge_algorithm, judge_with, parse_rational,
 };
 
 fn q(s: &str) -> Rational {
@@ -24,7 +24,12 @@ fn finn() -> Patch {
         ["1", "1", "1"],
         ["0", "2", "1"],
     ];
-    Patch::bezier(SimplexDim(2), Degree(2), pts.iter().map(|p| qs(p)).collect()).unwrap()
+    Patch::bezier(
+        SimplexDim(2),
+        Degree(2),
+        pts.iter().map(|p| qs(p)).collect(),
+    )
+    .unwrap()
 }
 
 fn tol(s: &str) -> Tolerance {
@@ -93,14 +98,23 @@ fn judged_at_the_input_as_seen_and_as_intended() {
     assert!(!j.passed);
     assert_eq!(
         j.coordinates[0].bound,
-        Some(q("9723079600786696311211505006134509236472370569773713349243024083618792976866357677391746738307855852970343408863592690463039245681580151750543087265624262460985306411221064444987860868267033354926691330054103824046541891524980527281525030889104345040249097965399701750545237202337380743872017437165849143092362012621604470430800477658546185/32841643250247457787048287939504832224857525624036623399292297213079297599038507598789496936786386181353344944786549622664909150138607852819304548861409130872929261316611623275367732513243522960323558090071881483023535554266939502120607728452147447849674996317835141296375673744706107046407227732263370949477989875573948552446000665757831673257382029295616"))
+        Some(q(
+            "9723079600786696311211505006134509236472370569773713349243024083618792976866357677391746738307855852970343408863592690463039245681580151750543087265624262460985306411221064444987860868267033354926691330054103824046541891524980527281525030889104345040249097965399701750545237202337380743872017437165849143092362012621604470430800477658546185/32841643250247457787048287939504832224857525624036623399292297213079297599038507598789496936786386181353344944786549622664909150138607852819304548861409130872929261316611623275367732513243522960323558090071881483023535554266939502120607728452147447849674996317835141296375673744706107046407227732263370949477989875573948552446000665757831673257382029295616"
+        ))
     );
     // under ulps=1 the nearest floats of the intended values pass (0.69 ulp at most), not
     // under ulps=1/2
-    assert!(judge(&p, &INPUT, &RN_INTENDED, &tol("ulps=1"), Precision::F64).unwrap().passed);
+    assert!(
+        judge(&p, &INPUT, &RN_INTENDED, &tol("ulps=1"), Precision::F64)
+            .unwrap()
+            .passed
+    );
     let half = judge(&p, &INPUT, &RN_INTENDED, &tol("ulps=1/2"), Precision::F64).unwrap();
     assert_eq!(
-        half.coordinates.iter().map(|c| c.passed).collect::<Vec<_>>(),
+        half.coordinates
+            .iter()
+            .map(|c| c.passed)
+            .collect::<Vec<_>>(),
         [true, false, false]
     );
 }
@@ -108,7 +122,14 @@ fn judged_at_the_input_as_seen_and_as_intended() {
 #[test]
 fn correctly_rounded_at_the_input_as_seen() {
     let p = finn();
-    let j = judge(&p, &INPUT, &RN_SEEN, &tol("correctly_rounded"), Precision::F64).unwrap();
+    let j = judge(
+        &p,
+        &INPUT,
+        &RN_SEEN,
+        &tol("correctly_rounded"),
+        Precision::F64,
+    )
+    .unwrap();
     assert!(j.passed);
     assert!(j.coordinates.iter().all(|c| c.correctly_rounded));
     // one ULP off (the next float up) in the first coordinate fails correctly_rounded; the
@@ -124,12 +145,24 @@ fn correctly_rounded_at_the_input_as_seen() {
     );
     assert!(j.coordinates[1].passed && j.coordinates[2].passed);
     // the a-priori bound accepts both (an error of about one ulp is far below γ_6 · cond)
-    assert!(judge(&p, &INPUT, &off, &tol("bound"), Precision::F64).unwrap().passed);
-    // and the Bernstein form has a bound too
     assert!(
-        judge_algorithm(&p, Algorithm::Bernstein, &INPUT, &off, &tol("bound"), Precision::F64, None)
+        judge(&p, &INPUT, &off, &tol("bound"), Precision::F64)
             .unwrap()
             .passed
+    );
+    // and the Bernstein form has a bound too
+    assert!(
+        judge_algorithm(
+            &p,
+            Algorithm::Bernstein,
+            &INPUT,
+            &off,
+            &tol("bound"),
+            Precision::F64,
+            None
+        )
+        .unwrap()
+        .passed
     );
 }
 
@@ -148,16 +181,32 @@ fn rational_patch_quarter_circle() {
     let pts = vec![qs(&["1", "0"]), qs(&["1", "1"]), qs(&["0", "1"])];
     let p = Patch::rational(SimplexDim(1), Degree(2), pts, qs(&["1", "1", "2"])).unwrap();
     assert_eq!(p.kind(), PatchKind::Rational);
-    assert_eq!(p.evaluate(&qs(&["1/2", "1/2"])).unwrap(), qs(&["3/5", "4/5"]));
-    let j = judge(&p, &[0.5, 0.5], &[0.6, 0.8], &tol("correctly_rounded"), Precision::F64).unwrap();
+    assert_eq!(
+        p.evaluate(&qs(&["1/2", "1/2"])).unwrap(),
+        qs(&["3/5", "4/5"])
+    );
+    let j = judge(
+        &p,
+        &[0.5, 0.5],
+        &[0.6, 0.8],
+        &tol("correctly_rounded"),
+        Precision::F64,
+    )
+    .unwrap();
     assert!(j.passed, "{j}");
     assert_eq!(j.coordinates[1].exact, q("4/5"));
-    assert!(j.coordinates.iter().all(|c| c.bound.is_some() && c.condition.is_some()));
+    assert!(
+        j.coordinates
+            .iter()
+            .all(|c| c.bound.is_some() && c.condition.is_some())
+    );
     assert_eq!(j.algorithm, "homogeneous de Casteljau");
 }
 
 fn fixture(name: &str) -> std::path::PathBuf {
-    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures").join(name)
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fixtures")
+        .join(name)
 }
 
 #[test]
@@ -169,7 +218,14 @@ fn s_patch_pentagon() {
         qs(&["63147/128164", "100083/128164", "-15609/64082"])
     );
     let claimed = [0.49270465965481725, 0.7808979120501857, -0.2435785399956306];
-    let j = judge(&p, &[2.0, 2.0], &claimed, &tol("correctly_rounded"), Precision::F64).unwrap();
+    let j = judge(
+        &p,
+        &[2.0, 2.0],
+        &claimed,
+        &tol("correctly_rounded"),
+        Precision::F64,
+    )
+    .unwrap();
     assert!(j.passed, "{j}");
     // cond=K is not defined for S-patches (the float coordinates add their own error)
     assert!(matches!(
@@ -184,21 +240,38 @@ fn sizes_are_errors_never_panics() {
     let r = tol("ulps=1");
     assert!(matches!(
         judge(&p, &[0.5, 0.5], &RN_SEEN, &r, Precision::F64),
-        Err(Error::Size { expected: 3, found: 2, .. })
+        Err(Error::Size {
+            expected: 3,
+            found: 2,
+            ..
+        })
     ));
     assert!(matches!(
         judge(&p, &INPUT, &[0.5], &r, Precision::F64),
-        Err(Error::Size { expected: 3, found: 1, .. })
+        Err(Error::Size {
+            expected: 3,
+            found: 1,
+            ..
+        })
     ));
     assert!(judge(&p, &[f64::NAN, 0.5, 0.5], &RN_SEEN, &r, Precision::F64).is_err());
     // a wrong number of control points, or of weights, or ragged points
     let six: Vec<Vec<Rational>> = (0..6).map(|_| qs(&["0", "0"])).collect();
     assert!(matches!(
         Patch::bezier(SimplexDim(2), Degree(3), six.clone()),
-        Err(Error::Size { expected: 10, found: 6, .. })
+        Err(Error::Size {
+            expected: 10,
+            found: 6,
+            ..
+        })
     ));
     // (m, n) = (1, 5) also has 6 points: the newtypes keep the call unambiguous
-    assert_eq!(Patch::bezier(SimplexDim(1), Degree(5), six.clone()).unwrap().degree(), 5);
+    assert_eq!(
+        Patch::bezier(SimplexDim(1), Degree(5), six.clone())
+            .unwrap()
+            .degree(),
+        5
+    );
     assert!(Patch::bezier(SimplexDim(2), Degree(1_000_000), six.clone()).is_err());
     assert!(Patch::bezier(SimplexDim(0), Degree(1), six.clone()).is_err());
     assert!(Patch::rational(SimplexDim(2), Degree(2), six.clone(), qs(&["1"])).is_err());
@@ -213,7 +286,14 @@ fn toml_round_trip_and_serialisation() {
     let p = finn();
     let back = Patch::from_toml(&p.to_toml()).unwrap();
     assert_eq!(back, p);
-    let j = judge(&p, &INPUT, &RN_SEEN, &tol("correctly_rounded"), Precision::F64).unwrap();
+    let j = judge(
+        &p,
+        &INPUT,
+        &RN_SEEN,
+        &tol("correctly_rounded"),
+        Precision::F64,
+    )
+    .unwrap();
     let v = serde_json::to_value(&j).unwrap();
     assert_eq!(v["passed"], true);
     assert_eq!(v["precision"], "f64");

@@ -9,12 +9,12 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
 
-use tribez::exact::{Algorithm, ExactEvaluator, evaluate_rational};
-use tribez::patch::{BezierPatch as Patch, ControlNet};
-use tribez::rational::RationalPatch;
-use tribez::simplex::Simplex;
-use tribez::symbolic::barycentric_form;
-use tribez::{bernstein, casteljau};
+use tribez::hazmat::exact::{Algorithm, ExactEvaluator, evaluate_rational};
+use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::rational::RationalPatch;
+use tribez::hazmat::simplex::Simplex;
+use tribez::hazmat::symbolic::barycentric_form;
+use tribez::{hazmat::bernstein, hazmat::casteljau};
 
 fn q(n: i64, d: i64) -> BigRational {
     BigRational::new(BigInt::from(n), BigInt::from(d))

@@ -10,7 +10,7 @@ use std::path::Path;
 use serde_json::json;
 
 use super::CliError;
-use tribez::io::InputError;
+use tribez::hazmat::io::InputError;
 
 /// The worst error of one (operation, algorithm, precision).
 #[derive(Clone, Debug, PartialEq)]

@@ -10,10 +10,10 @@ use super::check::Args;
 use super::{CliError, Outcome};
 use crate::report::{Exporter, JunitCase, Render, junit_xml};
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport};
-use tribez::certify::measures::Tolerance;
-use tribez::exact::Algorithm;
-use tribez::float::Precision;
-use tribez::io::patch_file::read_patch;
+use tribez::hazmat::certify::measures::Tolerance;
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::io::patch_file::read_patch;
 
 /// The algorithm a `bound` tolerance refers to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

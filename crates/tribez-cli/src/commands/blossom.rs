@@ -1,7 +1,7 @@
 //! `tribez blossom`: the blossom (polar form) `b[u_1, …, u_n]` of a patch (docs/theory.md §4).
 //!
 //! For a rational patch it is the rational blossom `X[u_1, …, u_n] / W[u_1, …, u_n]`, the blossom
-//! of the homogeneous net `(w c, w)` projected ([`tribez::rational::RationalPatch::blossom`]); an
+//! of the homogeneous net `(w c, w)` projected ([`tribez::hazmat::rational::RationalPatch::blossom`]); an
 //! error where the weight blossom `W` is 0.
 
 use std::path::PathBuf;
@@ -13,8 +13,8 @@ use super::construct::barycentric_points;
 use super::{CliError, Outcome, points_patch};
 use crate::cli::OutputArgs;
 use crate::report::{Render, json_rationals, tuple};
-use tribez::error::CoreError;
-use tribez::io::patch_file::read_any_patch;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez blossom`.
 #[derive(Debug, clap::Args)]
@@ -50,7 +50,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     let points = barycentric_points(&args.args, "arg", patch.net.m())?;
     let point = match &rational {
-        None => tribez::blossom::blossom(&patch.net, &points),
+        None => tribez::hazmat::blossom::blossom(&patch.net, &points),
         Some(r) => r.blossom(&points),
     }
     .map_err(|e| CliError::core("--arg", e))?;

@@ -2,7 +2,7 @@
 //! Casteljau and the direct Bernstein form; homogeneous de Casteljau and one division for
 //! rational patches; float Wachspress coordinates and de Casteljau for S-patches) in f64 and f32
 //! and judge it against the exact values and its proven error bound
-//! ([`tribez::certify::bound`]).
+//! ([`tribez::hazmat::certify::bound`]).
 //!
 //! One code path for every kind: the kind's [`tribez::FloatEval`] and [`tribez::ErrorBound`]
 //! give the float program, the per-point case and the bound's explanation.
@@ -18,14 +18,14 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::{Exporter, JunitCase, Render, junit_xml};
 use tribez::capability::{FloatCase, FloatProgram, InputSpace};
-use tribez::certify::bound::roundings;
-use tribez::certify::measures::{Measures, sci};
-use tribez::certify::sample::{random_points, random_polygon_points};
-use tribez::exact::Algorithm;
-use tribez::float::Precision;
-use tribez::io::patch_file::read_any_patch;
-use tribez::io::points::read_points;
-use tribez::number::{round_f32, round_f64};
+use tribez::hazmat::certify::bound::roundings;
+use tribez::hazmat::certify::measures::{Measures, sci};
+use tribez::hazmat::certify::sample::{random_points, random_polygon_points};
+use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::io::points::read_points;
+use tribez::hazmat::number::{round_f32, round_f64};
 use tribez::{FloatEval, Patch};
 
 /// Arguments of `tribez certify`.
@@ -156,7 +156,7 @@ impl Acc {
     /// `None` measures of a non-finite value count as an infinite error.
     fn measure(&mut self, precision: Precision, y: &[f64], exact: &[BigRational]) {
         for (v, q) in y.iter().zip(exact) {
-            let Some(yq) = tribez::number::exact_f64(*v) else {
+            let Some(yq) = tribez::hazmat::number::exact_f64(*v) else {
                 continue;
             };
             let meas = Measures::new(&yq, q, Some(precision));
@@ -179,7 +179,7 @@ impl Acc {
         what: &str,
     ) {
         for (c, ((v, q), b)) in y.iter().zip(exact).zip(bound).enumerate() {
-            let Some(yq) = tribez::number::exact_f64(*v) else {
+            let Some(yq) = tribez::hazmat::number::exact_f64(*v) else {
                 continue;
             };
             let err = (yq - q).abs();
@@ -225,7 +225,11 @@ impl Acc {
             if let (Some(q), Some(b)) = (&case.exact, &case.bound) {
                 acc.judge(&case.y, q, b, &case.input, "");
             }
-            if let Some((cc, b)) = case.coordinates.as_ref().and_then(|cc| Some((cc, cc.bound.as_ref()?))) {
+            if let Some((cc, b)) = case
+                .coordinates
+                .as_ref()
+                .and_then(|cc| Some((cc, cc.bound.as_ref()?)))
+            {
                 acc.judge(&cc.values, &cc.exact, b, &case.input, coordinate);
             }
         }
@@ -263,7 +267,10 @@ fn certify_row(
 ) -> Result<Row, CliError> {
     let precision = program.precision();
     let bound = program.error_bound().ok_or_else(|| {
-        CliError::Usage(format!("{}: the float program has no proven bound", precision.name()))
+        CliError::Usage(format!(
+            "{}: the float program has no proven bound",
+            precision.name()
+        ))
     })?;
     let text = bound.text(algorithm);
     let coordinate = text.coordinates.as_ref().map_or("", |c| c.one);
@@ -300,7 +307,11 @@ fn certify_row(
 }
 
 /// The algorithms of `--algorithm` among those of the kind's float program.
-fn algorithms(args: &Args, patch: &Patch, float: &dyn FloatEval) -> Result<Vec<Algorithm>, CliError> {
+fn algorithms(
+    args: &Args,
+    patch: &Patch,
+    float: &dyn FloatEval,
+) -> Result<Vec<Algorithm>, CliError> {
     let offered = float.float_algorithms();
     if let [only] = offered {
         return match args.algorithm.as_str() {

@@ -10,7 +10,7 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::{Exporter, JunitCase, Render, UlpHistogram, junit_xml};
 use tribez::claims::{ClaimFile, Judged, Verdict};
-use tribez::number::to_decimal_string;
+use tribez::hazmat::number::to_decimal_string;
 
 /// Arguments of `tribez check`.
 #[derive(Debug, clap::Args)]
@@ -67,7 +67,7 @@ pub fn judge_paths(paths: &[PathBuf]) -> Result<Vec<(String, Vec<Judged>)>, CliE
     let mut files = Vec::new();
     for p in paths {
         if p.is_dir() {
-            let walk = tribez::io::walk::claim_files(p)?;
+            let walk = tribez::hazmat::io::walk::claim_files(p)?;
             for note in &walk.notes {
                 eprintln!("note: {note}");
             }
@@ -82,7 +82,7 @@ pub fn judge_paths(paths: &[PathBuf]) -> Result<Vec<(String, Vec<Judged>)>, CliE
         } else if p.exists() {
             files.push(p.clone());
         } else {
-            return Err(tribez::io::InputError::file(
+            return Err(tribez::hazmat::io::InputError::file(
                 p.display().to_string(),
                 "no such file or directory",
             )

@@ -7,11 +7,13 @@ use serde_json::{Value as Json, json};
 
 use super::{CliError, check_barycentric, parse_list};
 use crate::report::Render;
-use tribez::domain::Domain;
-use tribez::error::CoreError;
-use tribez::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, patch_to_json, patch_to_toml};
-use tribez::patch::{BezierPatch as Patch, ControlNet};
-use tribez::simplex;
+use tribez::hazmat::domain::Domain;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::patch_file::{
+    MAX_CONTROL_POINTS, MAX_DEGREE, patch_to_json, patch_to_toml,
+};
+use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::simplex;
 
 /// Parse barycentric points given as `--{flag} a,b,c`, each with `m + 1` coordinates summing to 1.
 pub fn barycentric_points(
@@ -37,7 +39,7 @@ pub fn parse_edge(text: &str, m: usize) -> Result<(usize, usize), CliError> {
     let nums: Option<Vec<usize>> = parts.iter().map(|p| p.parse::<usize>().ok()).collect();
     match nums.as_deref() {
         Some([i, j]) => {
-            tribez::subdivide::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e))
+            tribez::hazmat::subdivide::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e))
         }
         _ => Err(CliError::core(
             what,
@@ -99,8 +101,8 @@ pub fn child_patch(
 pub fn construction_net(
     file: &str,
     command: &str,
-    patch: tribez::any_patch::AnyPatch,
-) -> Result<(Patch, Option<tribez::rational::RationalPatch>), CliError> {
+    patch: tribez::hazmat::any_patch::AnyPatch,
+) -> Result<(Patch, Option<tribez::hazmat::rational::RationalPatch>), CliError> {
     let (mut p, rational) = super::points_patch(file, command, patch)?;
     if let Some(r) = &rational {
         p.net = r.homogeneous();
@@ -112,14 +114,15 @@ pub fn construction_net(
 /// each over its sub-simplex; `label(k)` names piece `k` (0-based).
 pub fn rational_pieces(
     file: &str,
-    parent: &tribez::rational::RationalPatch,
-    pieces: Vec<tribez::subdivide::Piece<BigRational>>,
+    parent: &tribez::hazmat::rational::RationalPatch,
+    pieces: Vec<tribez::hazmat::subdivide::Piece<BigRational>>,
     label: impl Fn(usize) -> String,
 ) -> Result<super::graph::AnyPiecesReport, CliError> {
     let mut out = Vec::with_capacity(pieces.len());
     for (k, p) in pieces.into_iter().enumerate() {
-        let mut piece = tribez::rational::RationalPatch::from_homogeneous(&p.net, &parent.patch)
-            .map_err(|e| CliError::core(format!("{file}: piece {}", k + 1), e))?;
+        let mut piece =
+            tribez::hazmat::rational::RationalPatch::from_homogeneous(&p.net, &parent.patch)
+                .map_err(|e| CliError::core(format!("{file}: piece {}", k + 1), e))?;
         piece.patch = child_patch(
             &parent.patch,
             piece.patch.net,
@@ -128,7 +131,7 @@ pub fn rational_pieces(
         )?;
         out.push((
             p.domain_in_parent,
-            tribez::any_patch::AnyPatch::Rational(piece),
+            tribez::hazmat::any_patch::AnyPatch::Rational(piece),
         ));
     }
     Ok(super::graph::AnyPiecesReport(out))

@@ -8,8 +8,8 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
 use crate::cli::OutputArgs;
 use crate::report::{Render, json_rationals, tuple};
-use tribez::derivative::{check_order, directional_derivative};
-use tribez::io::patch_file::read_any_patch;
+use tribez::hazmat::derivative::{check_order, directional_derivative};
+use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez derivative`.
 #[derive(Debug, clap::Args)]

@@ -6,8 +6,8 @@ use super::construct::{PatchReport, check_size, child_patch};
 use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::any_patch::AnyPatch;
-use tribez::io::patch_file::read_any_patch;
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez elevate`.
 #[derive(Debug, clap::Args)]
@@ -40,7 +40,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     }
     let (m, n) = (parent.net.m(), parent.net.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let net = tribez::elevate::elevate(&parent.net, args.by);
+    let net = tribez::hazmat::elevate::elevate(&parent.net, args.by);
     let patch = child_patch(
         &parent,
         net,

@@ -15,11 +15,11 @@ use super::{CliError, Outcome, check_barycentric, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, json_rationals, tuple};
 use tribez::capability::{FloatProgram, InputSpace};
-use tribez::error::CoreError;
-use tribez::float::Precision;
-use tribez::io::patch_file::read_any_patch;
-use tribez::io::points::read_points;
-use tribez::number::to_decimal_string;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::float::Precision;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::io::points::read_points;
+use tribez::hazmat::number::to_decimal_string;
 use tribez::{Patch, PatchKind};
 
 /// Arguments of `tribez eval`.
@@ -117,7 +117,7 @@ fn judge(
     exact_inputs: Option<&BigRational>,
     intended: &BigRational,
 ) -> FloatCoordinate {
-    use tribez::number as n;
+    use tribez::hazmat::number as n;
     let exact = n::exact_f64(value);
     let ulps = |x: &BigRational, q: &BigRational| match precision {
         Precision::F64 => n::ulps_error_f64(x, q),
@@ -202,12 +202,12 @@ fn input_of(args: &Args, patch: &Patch, p: Vec<BigRational>) -> Result<Input, Co
     let exact = patch.exact();
     match patch.shape().input {
         InputSpace::Polygon { .. } => {
-            let at = exact.from_cartesian(&p)?;
+            let at = exact.cartesian_input(&p)?;
             Ok((at, Some(p)))
         }
         InputSpace::Barycentric { m } => {
             if args.cartesian {
-                Ok((exact.from_cartesian(&p)?, Some(p)))
+                Ok((exact.cartesian_input(&p)?, Some(p)))
             } else {
                 if args.homogeneous {
                     if p.len() != m + 1 {

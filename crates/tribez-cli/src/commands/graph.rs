@@ -8,12 +8,12 @@ use serde_json::Value as Json;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::any_patch::AnyPatch;
-use tribez::functional::graph;
-use tribez::io::patch_file::{
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::functional::graph;
+use tribez::hazmat::io::patch_file::{
     any_patch_to_json, any_patch_to_toml, patch_to_json, patch_to_toml, read_any_patch,
 };
-use tribez::patch::BezierPatch as Patch;
+use tribez::hazmat::patch::BezierPatch as Patch;
 
 /// Arguments of `tribez graph`.
 #[derive(Debug, clap::Args)]

@@ -8,8 +8,8 @@ use std::path::PathBuf;
 use super::construct::{PiecesReport, child_patch, construction_net, parse_edge, rational_pieces};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{HalvingOrder, Piece, add_and_halve, halve, halve_domains};
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::subdivide::{HalvingOrder, Piece, add_and_halve, halve, halve_domains};
 
 /// Arguments of `tribez halve`.
 #[derive(Debug, clap::Args)]

@@ -7,9 +7,9 @@ use serde_json::{Map, Value as Json, json};
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, json_rationals, tuple};
-use tribez::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
-use tribez::join::{Join, Violation, analyse, c1_neighbour};
-use tribez::patch::BezierPatch as Patch;
+use tribez::hazmat::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
+use tribez::hazmat::join::{Join, Violation, analyse, c1_neighbour};
+use tribez::hazmat::patch::BezierPatch as Patch;
 
 /// Arguments of `tribez join`.
 #[derive(Debug, clap::Args)]
@@ -247,7 +247,7 @@ impl Render for JoinReport {
             self.a,
             self.b,
             self.degree,
-            tribez::domain::format_points(&f.vertices),
+            tribez::hazmat::domain::format_points(&f.vertices),
             one(&f.a),
             one(&f.b),
             tuple(&j.mu),

@@ -31,9 +31,9 @@ use clap::Parser;
 
 use crate::cli::{LatexOutputArgs, OutputArgs, examples};
 use crate::report::{Format, Render, render};
-use tribez::error::CoreError;
-use tribez::io::InputError;
-use tribez::number::parse_rational;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::InputError;
+use tribez::hazmat::number::parse_rational;
 
 /// Exact computations on Bézier triangles (and simplices), used to certify floating-point code.
 #[derive(Debug, Parser)]
@@ -238,14 +238,14 @@ pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> 
         .map_err(CliError::from)
 }
 
-pub use tribez::domain::{check_barycentric, check_direction};
+pub use tribez::hazmat::domain::{check_barycentric, check_direction};
 
 /// The barycentric point of `--at TEXT`: checked to sum to 1 on the `m`-simplex, or with
 /// `cartesian` converted by `domain` (Cramer's rule). Errors name `--at TEXT`.
 pub fn at_point(
     text: &str,
     cartesian: bool,
-    domain: &tribez::domain::Domain,
+    domain: &tribez::hazmat::domain::Domain,
     m: usize,
 ) -> Result<Vec<BigRational>, CliError> {
     let p = parse_list(text, "--at")?;
@@ -263,15 +263,15 @@ pub fn at_point(
 pub fn points_patch(
     file: &str,
     command: &str,
-    any: tribez::any_patch::AnyPatch,
+    any: tribez::hazmat::any_patch::AnyPatch,
 ) -> Result<
     (
-        tribez::patch::BezierPatch,
-        Option<tribez::rational::RationalPatch>,
+        tribez::hazmat::patch::BezierPatch,
+        Option<tribez::hazmat::rational::RationalPatch>,
     ),
     CliError,
 > {
-    use tribez::any_patch::AnyPatch;
+    use tribez::hazmat::any_patch::AnyPatch;
     match any {
         AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),
         AnyPatch::Rational(r) => Ok((r.patch.clone(), Some(r))),

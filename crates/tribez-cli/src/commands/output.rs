@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
 
 use tempfile::NamedTempFile;
-use tribez::io::InputError;
+use tribez::hazmat::io::InputError;
 
 use super::CliError;
 

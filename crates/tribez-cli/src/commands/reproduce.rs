@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use super::check::{CheckReport, judge_paths};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::io::InputError;
+use tribez::hazmat::io::InputError;
 
 mod embedded {
     include!(concat!(env!("OUT_DIR"), "/fixtures.rs"));

@@ -17,9 +17,9 @@ use super::construct::{
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::error::CoreError;
-use tribez::io::patch_file::read_any_patch;
-use tribez::subdivide::{Piece, midpoint_split, replaced, split_at, split_at_pieces};
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::subdivide::{Piece, midpoint_split, replaced, split_at, split_at_pieces};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]
@@ -51,8 +51,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 (pieces, numbers, m + 1, note)
             }
             None => {
-                let pieces =
-                    midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?;
+                let pieces = midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?;
                 let n = pieces.len();
                 (pieces, (1..=n).collect(), n, None)
             }
@@ -90,7 +89,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 /// The pieces of a split at `t` with their numbers (1-based: piece k replaces corner k), and a
 /// note naming the degenerate pieces omitted when `t` lies on a facet. A corner is an error.
 fn split_at_point(
-    net: &tribez::patch::ControlNet<BigRational>,
+    net: &tribez::hazmat::patch::ControlNet<BigRational>,
     t: &[BigRational],
     text: &str,
 ) -> Result<(Vec<Piece<BigRational>>, Vec<usize>, Option<String>), CliError> {

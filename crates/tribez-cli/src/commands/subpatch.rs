@@ -11,9 +11,9 @@ use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::any_patch::AnyPatch;
-use tribez::error::CoreError;
-use tribez::io::patch_file::read_any_patch;
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::error::CoreError;
+use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez subpatch`.
 #[derive(Debug, clap::Args)]
@@ -101,7 +101,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             true,
         );
     }
-    let net = tribez::blossom::subpatch(&parent.net, &f).map_err(|e| CliError::core(context, e))?;
+    let net = tribez::hazmat::blossom::subpatch(&parent.net, &f)
+        .map_err(|e| CliError::core(context, e))?;
     let patch = child_patch(&parent, net, Some(&f), "subpatch")?;
     Outcome::rendered(
         &PatchReport {

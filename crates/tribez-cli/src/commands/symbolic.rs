@@ -11,9 +11,9 @@ use serde_json::{Value as Json, json};
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
 use crate::report::Render;
-use tribez::any_patch::AnyPatch;
-use tribez::io::patch_file::read_any_patch;
-use tribez::symbolic::{
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::hazmat::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
 };
 
@@ -46,8 +46,9 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             let m = r.patch.net.m();
             let mut h = r.homogeneous_form();
             let names = if args.cartesian {
-                let subs =
-                    tribez::symbolic::barycentric_of_cartesian(&r.patch.domain_or_reference());
+                let subs = tribez::hazmat::symbolic::barycentric_of_cartesian(
+                    &r.patch.domain_or_reference(),
+                );
                 h = h.iter().map(|p| p.compose(&subs)).collect();
                 cartesian_names(m)
             } else {

@@ -8,9 +8,9 @@ use serde_json::{Map, Value as Json, json};
 use super::{CliError, Outcome, at_point, points_patch};
 use crate::cli::OutputArgs;
 use crate::report::{Render, json_rationals, tuple};
-use tribez::derivative::{TangentFrame, tangent_frame};
-use tribez::io::patch_file::{index_key, read_any_patch};
-use tribez::symbolic::cartesian_names;
+use tribez::hazmat::derivative::{TangentFrame, tangent_frame};
+use tribez::hazmat::io::patch_file::{index_key, read_any_patch};
+use tribez::hazmat::symbolic::cartesian_names;
 
 /// Arguments of `tribez tangent`.
 #[derive(Debug, clap::Args)]

@@ -42,7 +42,7 @@ pub fn json_rationals(xs: &[num_rational::BigRational]) -> Json {
 
 /// `(a, b, c)` for people.
 pub fn tuple(xs: &[num_rational::BigRational]) -> String {
-    tribez::domain::format_tuple(xs)
+    tribez::hazmat::domain::format_tuple(xs)
 }
 
 /// The reports of `check` and `certify`: text and JSON (through [`Render`]) plus JUnit XML for

@@ -33,6 +33,7 @@ mod report;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 pub use parse::Format;
+pub(crate) use parse::fuzz_rows;
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 
 use crate::certify::measures::Tolerance;
@@ -182,8 +183,9 @@ fn check_reader<R: Read + Send>(
     patch_name: &str,
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<BatchReport, BatchError> {
-    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file);
     let (width, dim) = (p.width(), p.patch.net.dim());
+    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file)
+        .expect_columns(width + dim);
     let mut acc = Accumulator::new(p, file, patch_name, Some(format));
     // Chunks of CHUNK rows: the next one is read (one thread) while the current one is judged
     // (the others), so reading overlaps the work and memory stays bounded.

@@ -5,12 +5,25 @@
 //! `json.dump(rows, f, indent=2)` writes it); any other such file is JSON lines. This is
 //! unambiguous: a JSON-lines row is an array of numbers, strings or null, so its first entry is
 //! never `[`, and the empty row `[]` is never a valid row. Any other extension is CSV.
+//!
+//! Every row is checked as what it claims to be: a JSON-lines row and a row of a JSON array are
+//! parsed as JSON (numbers keep their exact text), so a `,` or `]` inside a string never splits
+//! it. A UTF-8 byte-order mark at the start is ignored; invalid UTF-8 is an error naming the
+//! line. A CSV file may start with one header line of column names (`u,v,w,x,y,z`, see
+//! [`crate::io::points::csv_header`]); it must have one name per column. The file is streamed:
+//! only one line (CSV, JSON lines) or one row (JSON array) is held whole, at most
+//! [`MAX_ROW_BYTES`].
 
 use std::io::BufRead;
 
 use num_rational::BigRational;
 
 use super::CHUNK;
+use crate::io::points::csv_header;
+use crate::io::text::{BOM, not_utf8, plain_io_error};
+
+/// The longest line (CSV, JSON lines) or row (JSON array) of a results file: 16 MiB.
+pub const MAX_ROW_BYTES: usize = 16 << 20;
 use crate::certify::measures::as_float;
 use crate::float::Precision;
 use crate::io::InputError;
@@ -64,11 +77,16 @@ pub(super) fn parse_num(
                 Precision::F64 => t.parse::<f64>().ok(),
                 Precision::F32 => t.parse::<f32>().ok().map(f64::from),
             };
-            if let Some(x) = fast.filter(|x| x.is_finite()) {
-                return Ok(Num::Value {
-                    float: x,
-                    text_exact: None,
-                });
+            if let Some(x) = fast {
+                if x.is_finite() {
+                    return Ok(Num::Value {
+                        float: x,
+                        text_exact: None,
+                    });
+                }
+                // a number too large for the precision, however many digits its exponent has
+                // (`1e400` and `1e999999` alike): a failed row, never an aborted run
+                return Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name())));
             }
             let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
             match as_float(&q, p) {
@@ -122,57 +140,6 @@ pub(super) fn split_csv(line: &str) -> Vec<Field<'_>> {
     out
 }
 
-/// The fields of a JSON-lines row (an array of numbers, strings or nulls).
-pub(super) fn split_json<'a>(
-    line: &'a str,
-    file: &str,
-    line_no: usize,
-) -> Result<Vec<Field<'a>>, InputError> {
-    let bad = |col: usize, msg: &str| InputError {
-        file: file.into(),
-        line: Some(line_no),
-        column: Some(col),
-        key: None,
-        message: msg.into(),
-    };
-    let t = line.trim_end();
-    let open = t
-        .find('[')
-        .ok_or_else(|| bad(1, "expected a JSON array `[…]`"))?;
-    if !t[..open].trim().is_empty() || !t.ends_with(']') {
-        return Err(bad(1, "expected a JSON array `[…]`"));
-    }
-    let inner = &t[open + 1..t.len() - 1];
-    if inner.trim().is_empty() {
-        return Ok(Vec::new());
-    }
-    let mut out = Vec::new();
-    let mut start = 0;
-    for (i, ch) in inner
-        .char_indices()
-        .chain(std::iter::once((inner.len(), ',')))
-    {
-        if ch == ',' {
-            let raw = &inner[start..i];
-            let lead = raw.len() - raw.trim_start().len();
-            let text = raw.trim();
-            let text = if text == "null" { "" } else { text };
-            if text.contains(['[', '{', ']', '}']) {
-                return Err(bad(
-                    open + 2 + start + lead,
-                    "expected numbers, strings or null",
-                ));
-            }
-            out.push(Field {
-                text,
-                column: open + 2 + start + lead,
-            });
-            start = i + 1;
-        }
-    }
-    Ok(out)
-}
-
 /// A parsed row: its input numbers and its claimed numbers.
 pub(super) type Row = (Vec<Num>, Vec<Num>);
 
@@ -202,6 +169,7 @@ impl Format {
             .map_err(|e| InputError::file(file, format!("cannot read: {e}")))?;
         let mut reader = std::io::BufReader::new(f);
         let mut first = None;
+        let mut offset = 0usize;
         loop {
             let buf = reader
                 .fill_buf()
@@ -211,7 +179,8 @@ impl Format {
             }
             let n = buf.len();
             for &b in buf {
-                if is_json_space(b) {
+                offset += 1;
+                if is_json_space(b) || (offset <= BOM.len() && BOM.as_bytes()[offset - 1] == b) {
                     continue;
                 }
                 match first {
@@ -302,6 +271,14 @@ pub(super) struct RowReader<R> {
     open: (usize, usize),
     /// JSON array: the bytes of the row being read.
     row: Vec<u8>,
+    /// Line formats: the bytes of the line being read.
+    bytes: Vec<u8>,
+    /// The number of columns, if known (to check a CSV header line).
+    columns: Option<usize>,
+    /// CSV: a line that is neither blank nor a comment has been read.
+    data_seen: bool,
+    /// JSON array: how many bytes of a byte-order mark have been skipped.
+    bom: usize,
 }
 
 impl<R: BufRead> RowReader<R> {
@@ -315,7 +292,70 @@ impl<R: BufRead> RowReader<R> {
             between: Between::Start,
             open: (1, 1),
             row: Vec::new(),
+            bytes: Vec::new(),
+            columns: None,
+            data_seen: false,
+            bom: 0,
         }
+    }
+
+    /// Expect `n` columns: a CSV header line must then have `n` names.
+    pub(super) fn expect_columns(mut self, n: usize) -> Self {
+        self.columns = Some(n);
+        self
+    }
+
+    /// The next line (with its line ending) appended to `out`, at most [`MAX_ROW_BYTES`], UTF-8
+    /// (the byte-order mark of the first line dropped); 0 at the end of the file.
+    fn read_line(&mut self, out: &mut String) -> Result<usize, InputError> {
+        self.bytes.clear();
+        loop {
+            let buf = self.reader.fill_buf().map_err(|e| {
+                InputError::file(
+                    &self.file,
+                    format!("cannot read line {}: {}", self.line, plain_io_error(&e)),
+                )
+            })?;
+            if buf.is_empty() {
+                break;
+            }
+            let (take, done) = match buf.iter().position(|&b| b == b'\n') {
+                Some(i) => (i + 1, true),
+                None => (buf.len(), false),
+            };
+            if self.bytes.len() + take > MAX_ROW_BYTES {
+                return Err(InputError {
+                    file: self.file.clone(),
+                    line: Some(self.line),
+                    column: None,
+                    key: None,
+                    message: format!(
+                        "the line is longer than the limit of {} MiB",
+                        MAX_ROW_BYTES >> 20
+                    ),
+                });
+            }
+            self.bytes.extend_from_slice(&buf[..take]);
+            self.reader.consume(take);
+            if done {
+                break;
+            }
+        }
+        let n = self.bytes.len();
+        let start = if self.line == 1 && self.bytes.starts_with(BOM.as_bytes()) {
+            BOM.len()
+        } else {
+            0
+        };
+        match std::str::from_utf8(&self.bytes[start..]) {
+            Ok(t) => out.push_str(t),
+            Err(e) => {
+                let mut err = not_utf8(&self.file, &self.bytes[start..], e.valid_up_to());
+                err.line = Some(self.line);
+                return Err(err);
+            }
+        }
+        Ok(n)
     }
 
     /// Read the next rows into `chunk` (at most [`CHUNK`]); true at the end of the file.
@@ -325,13 +365,35 @@ impl<R: BufRead> RowReader<R> {
         if self.format != Format::JsonArray {
             while chunk.starts.len() < CHUNK {
                 let start = chunk.text.len();
-                let n = self.reader.read_line(&mut chunk.text).map_err(|e| {
-                    InputError::file(&self.file, format!("cannot read line {}: {e}", self.line))
-                })?;
-                if n == 0 {
+                let mut text = std::mem::take(&mut chunk.text);
+                let n = self.read_line(&mut text);
+                chunk.text = text;
+                if n? == 0 {
                     return Ok(true);
                 }
                 chunk.starts.push(start);
+                if self.format == Format::Csv && !self.data_seen {
+                    let t = chunk.text[start..].trim();
+                    if !t.is_empty() && !t.starts_with('#') {
+                        self.data_seen = true;
+                        if let Some(names) = csv_header(t) {
+                            if let Some(n) = self.columns.filter(|&n| n != names) {
+                                return Err(InputError {
+                                    file: self.file.clone(),
+                                    line: Some(self.line),
+                                    column: None,
+                                    key: None,
+                                    message: format!(
+                                        "a header line of {names} names, expected {n} (one per column)"
+                                    ),
+                                });
+                            }
+                            // the header is kept as a blank row, so that row i stays line
+                            // first_line + i
+                            chunk.text.truncate(start);
+                        }
+                    }
+                }
                 self.line += 1;
             }
             return Ok(false);
@@ -385,6 +447,17 @@ impl<R: BufRead> RowReader<R> {
                     self.col += 1;
                 }
                 if depth > 0 {
+                    if self.row.len() >= MAX_ROW_BYTES {
+                        return Err(located(
+                            &self.file,
+                            row_at.0,
+                            row_at.1,
+                            format!(
+                                "the row is longer than the limit of {} MiB",
+                                MAX_ROW_BYTES >> 20
+                            ),
+                        ));
+                    }
                     self.row.push(b);
                     if in_string {
                         if escaped {
@@ -431,6 +504,13 @@ impl<R: BufRead> RowReader<R> {
                     continue;
                 }
                 if is_json_space(b) {
+                    continue;
+                }
+                if self.between == Between::Start
+                    && (line, col) == (1, self.bom + 1)
+                    && BOM.as_bytes().get(self.bom) == Some(&b)
+                {
+                    self.bom += 1;
                     continue;
                 }
                 match (self.between, b) {
@@ -502,36 +582,60 @@ fn located(file: &str, line: usize, col: usize, message: String) -> InputError {
     }
 }
 
-/// The fields of a row of a JSON array of rows: each with its own 1-based line (a row may span
-/// many lines). `text` is the row from its `[` to its `]`, which starts at (`line`, `col`).
+/// The fields of a JSON row (a JSON-lines row, or a row of a JSON array of rows), each with its
+/// own 1-based line (a row may span many lines) and column. `text` is the row, which starts at
+/// (`line`, `col`); it must be ONE JSON array of numbers, strings or null (checked by a JSON
+/// parser, so that text that is not JSON is never read as a row). Linear in the row's length.
 pub(super) fn split_json_row<'a>(
     text: &'a str,
     line: usize,
     col: usize,
     file: &str,
 ) -> Result<Vec<(usize, Field<'a>)>, InputError> {
-    // 1-based (line, column) of byte offset `k` of the row text
-    let at = |k: usize| {
-        let before = &text.as_bytes()[..k];
-        match before.iter().rposition(|&b| b == b'\n') {
-            None => (line, col + k),
-            Some(nl) => (
-                line + before.iter().filter(|&&b| b == b'\n').count(),
-                k - nl,
-            ),
-        }
+    let bad = |l: usize, c: usize, message: String| InputError {
+        file: file.into(),
+        line: Some(l),
+        column: Some(c),
+        key: None,
+        message,
     };
-    let inner = &text[1..text.len() - 1];
-    if inner.bytes().all(is_json_space) {
-        return Ok(Vec::new());
+    if let Err(e) = serde_json::from_str::<serde::de::IgnoredAny>(text.trim_end()) {
+        // serde's position is within the row: 1-based line, column (of the row text)
+        let (l, c) = if e.line() <= 1 {
+            (line, col + e.column().saturating_sub(1))
+        } else {
+            (line + e.line() - 1, e.column().max(1))
+        };
+        let msg = e.to_string();
+        let msg = msg.split(" at line ").next().unwrap_or(&msg);
+        return Err(bad(l, c, format!("invalid JSON: {msg}")));
     }
+    let bytes = text.as_bytes();
+    let (mut l, mut c) = (line, col);
     let mut out = Vec::new();
-    let (mut start, mut in_string, mut escaped) = (0, false, false);
-    for (i, b) in inner
-        .bytes()
-        .enumerate()
-        .chain(std::iter::once((inner.len(), b',')))
-    {
+    let mut i = 0;
+    // the opening bracket
+    while i < bytes.len() && bytes[i] != b'[' {
+        if bytes[i] == b'\n' {
+            (l, c) = (l + 1, 1);
+        } else {
+            c += 1;
+        }
+        if !is_json_space(bytes[i]) {
+            return Err(bad(l, c - 1, "expected a JSON array `[…]`".into()));
+        }
+        i += 1;
+    }
+    if i == bytes.len() {
+        return Err(bad(line, col, "expected a JSON array `[…]`".into()));
+    }
+    i += 1;
+    c += 1;
+    // (start byte, line, column) of the field being read, once its first character is seen
+    let mut field: Option<(usize, usize, usize)> = None;
+    let (mut in_string, mut escaped) = (false, false);
+    while i < bytes.len() {
+        let b = bytes[i];
         if in_string {
             if escaped {
                 escaped = false;
@@ -540,35 +644,41 @@ pub(super) fn split_json_row<'a>(
             } else if b == b'"' {
                 in_string = false;
             }
-            continue;
-        }
-        if b == b'"' {
-            in_string = true;
-        } else if b == b',' {
-            let raw = &inner[start..i];
-            let lead = raw.len() - raw.trim_start().len();
-            let field = raw.trim();
-            let (l, c) = at(1 + start + lead);
-            if field.is_empty() {
-                return Err(InputError {
-                    file: file.into(),
-                    line: Some(l),
-                    column: Some(c),
-                    key: None,
-                    message: "invalid JSON: expected a number, a string or null".into(),
-                });
+        } else if b == b',' || b == b']' {
+            if let Some((start, fl, fc)) = field.take() {
+                let t = text[start..i].trim_end();
+                out.push((
+                    fl,
+                    Field {
+                        text: if t == "null" { "" } else { t },
+                        column: fc,
+                    },
+                ));
             }
-            out.push((
-                l,
-                Field {
-                    text: if field == "null" { "" } else { field },
-                    column: c,
-                },
-            ));
-            start = i + 1;
+            if b == b']' {
+                return Ok(out);
+            }
+        } else if !is_json_space(b) && field.is_none() {
+            if matches!(b, b'[' | b'{' | b't' | b'f') {
+                return Err(bad(
+                    l,
+                    c,
+                    "a row's entries must be numbers, strings or null".into(),
+                ));
+            }
+            field = Some((i, l, c));
+            in_string = b == b'"';
+        } else if b == b'"' {
+            in_string = true;
         }
+        if b == b'\n' {
+            (l, c) = (l + 1, 1);
+        } else {
+            c += 1;
+        }
+        i += 1;
     }
-    Ok(out)
+    Err(bad(l, c, "expected a JSON array `[…]`".into()))
 }
 
 /// Read one row into numbers; `None` for blank and comment lines. `line` and `col` locate the
@@ -590,10 +700,7 @@ pub(super) fn parse_row(
     }
     let fields = match format {
         Format::JsonArray => split_json_row(row, line, col, file)?,
-        Format::JsonLines => split_json(row, file, line)?
-            .into_iter()
-            .map(|f| (line, f))
-            .collect(),
+        Format::JsonLines => split_json_row(row, line, 1, file)?,
         Format::Csv => split_csv(row).into_iter().map(|f| (line, f)).collect(),
     };
     if fields.len() != width + dim {
@@ -632,13 +739,45 @@ pub(super) fn texts_of(
             .into_iter()
             .map(|(_, f)| f)
             .collect(),
-        Format::JsonLines => split_json(row, file, line).unwrap_or_default(),
+        Format::JsonLines => split_json_row(row, line, 1, file)
+            .unwrap_or_default()
+            .into_iter()
+            .map(|(_, f)| f)
+            .collect(),
         Format::Csv => split_csv(row),
     };
     fields
         .iter()
         .map(|f| f.text.trim().trim_matches('"').to_string())
         .collect()
+}
+
+/// Fuzzing entry (see [`crate::io::fuzz`]): every row of `data` read as a results file in
+/// `format` and parsed; the first byte chooses the input width (1 to 4), the claimed dimension
+/// (1 to 3) and the precision (none, f64, f32). Errors are fine; a panic or a hang is the bug.
+pub(crate) fn fuzz_rows(format: Format, data: &[u8]) {
+    let Some((&first, rest)) = data.split_first() else {
+        return;
+    };
+    let width = usize::from(first) % 4 + 1;
+    let dim = usize::from(first / 4) % 3 + 1;
+    let precision = [None, Some(Precision::F64), Some(Precision::F32)][usize::from(first / 12) % 3];
+    // a small buffer, so that rows straddle refills
+    let reader = std::io::BufReader::with_capacity(7, rest);
+    let mut rows = RowReader::new(reader, format, "fuzz").expect_columns(width + dim);
+    let mut chunk = Chunk::default();
+    loop {
+        let Ok(eof) = rows.read(&mut chunk) else {
+            return;
+        };
+        for (line, col, text) in chunk.rows() {
+            let _ = parse_row(format, text, line, col, width, dim, precision, "fuzz");
+            let _ = texts_of(format, text, line, col, "fuzz");
+        }
+        if eof {
+            return;
+        }
+    }
 }
 
 #[cfg(test)]

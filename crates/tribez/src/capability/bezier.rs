@@ -67,7 +67,7 @@ impl ExactEval for BezierPatch {
         })
     }
 
-    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
+    fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         self.domain_or_reference().barycentric(x)
     }
 }

@@ -9,6 +9,6 @@ pub mod spatch;
 pub mod traits;
 
 pub use traits::{
-    BoundText, Constructions, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval,
-    FloatProgram, InputSpace, PointEvaluator, Seen, Shape,
+    BoundText, Constructions, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase,
+    FloatEval, FloatProgram, InputSpace, PointEvaluator, Seen, Shape,
 };

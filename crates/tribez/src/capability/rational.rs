@@ -49,7 +49,7 @@ impl ExactEval for RationalPatch {
         Box::new(Exact(self))
     }
 
-    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
+    fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         self.patch.domain_or_reference().barycentric(x)
     }
 }
@@ -127,12 +127,13 @@ impl<F: Narrow> ErrorBound for Program<F> {
         let lam: Vec<F> = narrowed(input);
         let at: Vec<BigRational> = lam.iter().map(|x| x.exact().unwrap_or_default()).collect();
         let case = self.cert.check(&lam);
-        let failure = (!case.outside && (case.exact.is_none() || case.bound.is_none())).then(|| {
-            format!(
-                "at {}: the exact denominator vanishes although |D̂| > e_D",
-                crate::domain::format_tuple(&at)
-            )
-        });
+        let failure =
+            (!case.outside && (case.exact.is_none() || case.bound.is_none())).then(|| {
+                format!(
+                    "at {}: the exact denominator vanishes although |D̂| > e_D",
+                    crate::domain::format_tuple(&at)
+                )
+            });
         FloatCase {
             input: at,
             y: case.y.iter().map(|y| y.widen()).collect(),

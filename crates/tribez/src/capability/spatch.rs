@@ -12,8 +12,8 @@ use num_rational::BigRational;
 
 use crate::capability::bezier::check_len;
 use crate::capability::traits::{
-    BoundText, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
-    InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input,
+    BoundText, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval,
+    FloatProgram, InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input,
 };
 use crate::certify::beyond::SPatchCertifier;
 use crate::certify::bound::roundings;
@@ -55,7 +55,7 @@ impl ExactEval for SPatch {
         Box::new(Exact(self))
     }
 
-    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
+    fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         check_len(x, 2)?;
         Ok(x.to_vec())
     }

@@ -84,7 +84,7 @@ pub trait ExactEval {
     fn exact_evaluator(&self) -> Box<dyn PointEvaluator + '_>;
     /// The kind's input at a Cartesian point of its domain (`m` coordinates for a simplex,
     /// converted to barycentric coordinates by Cramer's rule; `(x, y)` for an S-patch).
-    fn from_cartesian(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError>;
+    fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError>;
 }
 
 /// Capability: the float program of a kind, as a float implementation runs it.

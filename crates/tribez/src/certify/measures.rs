@@ -17,9 +17,9 @@
 //! `exact` is the case `abs=0`: one comparison path for every tolerance.
 //!
 //! ```
-//! use tribez::certify::measures::{Tolerance, Leaf};
-//! use tribez::float::Precision;
-//! use tribez::number::{exact_f64, parse_rational as q};
+//! use tribez::hazmat::certify::measures::{Tolerance, Leaf};
+//! use tribez::hazmat::float::Precision;
+//! use tribez::hazmat::number::{exact_f64, parse_rational as q};
 //! let third = q("1/3").unwrap();
 //! let y = exact_f64(1.0 / 3.0).unwrap();
 //! let leaf = Leaf { precision: Some(Precision::F64), condition: None, bound: None };

@@ -35,12 +35,12 @@ pub mod value;
 
 use std::path::{Path, PathBuf};
 
+use crate::any_patch::AnyPatch;
 use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::float::Precision;
 use crate::io::InputError;
 use crate::io::patch_file::any_patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::any_patch::AnyPatch;
 use crate::patch::BezierPatch as Patch;
 use value::{Mismatch, Value, compare};
 

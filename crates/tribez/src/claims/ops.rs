@@ -34,12 +34,12 @@ use num_traits::Zero;
 
 use super::value::Value;
 use super::{CLAIM_KEYS, Claim, ClaimFile};
+use crate::any_patch::AnyPatch;
 use crate::bernstein;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::io::InputError;
 use crate::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, index_key};
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::any_patch::AnyPatch;
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{
     Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
@@ -863,10 +863,10 @@ mod beyond {
     use num_rational::BigRational;
 
     use super::{Inputs, MAX_DEGREE, Value};
+    use crate::any_patch::AnyPatch;
     use crate::functional;
     use crate::io::InputError;
     use crate::io::patch_file::index_key;
-    use crate::any_patch::AnyPatch;
     use crate::rational::homogenised_residual;
     use crate::symbolic::{Polynomial, barycentric_form, barycentric_names, cartesian_names};
 

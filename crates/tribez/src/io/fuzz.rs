@@ -18,6 +18,9 @@ pub const TARGETS: &[&str] = &[
     "patch_json",
     "claims",
     "points",
+    "batch_csv",
+    "batch_jsonl",
+    "batch_json_array",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -29,6 +32,9 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "patch_json" => patch_json(data),
         "claims" => claims(data),
         "points" => points(data),
+        "batch_csv" => batch_csv(data),
+        "batch_jsonl" => batch_jsonl(data),
+        "batch_json_array" => batch_json_array(data),
         _ => return false,
     }
     true
@@ -127,4 +133,20 @@ pub fn points(data: &[u8]) {
     } else if let Ok(doc) = Document::parse_json("fuzz.json", t) {
         let _ = points_from_document(&doc, width);
     }
+}
+
+/// Rows of a CSV results file (`check --results`): the first byte chooses the width, the
+/// dimension and the precision.
+pub fn batch_csv(data: &[u8]) {
+    crate::batch::fuzz_rows(crate::batch::Format::Csv, data);
+}
+
+/// Rows of a JSON-lines results file (as [`batch_csv`]).
+pub fn batch_jsonl(data: &[u8]) {
+    crate::batch::fuzz_rows(crate::batch::Format::JsonLines, data);
+}
+
+/// Rows of a results file that is one JSON array of rows (as [`batch_csv`]).
+pub fn batch_json_array(data: &[u8]) {
+    crate::batch::fuzz_rows(crate::batch::Format::JsonArray, data);
 }

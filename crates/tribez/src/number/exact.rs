@@ -12,7 +12,7 @@ use super::format::{BinaryFloat, emin, exp_ones, fields, frac_bits};
 /// (for `f64`: `f·2^−1074` and `(2^52+f)·2^(e−1075)`); ±0 both give 0.
 ///
 /// ```
-/// use tribez::number::{exact_value, format_rational};
+/// use tribez::hazmat::number::{exact_value, format_rational};
 /// assert_eq!(format_rational(&exact_value(0.1f32).unwrap()), "13421773/134217728");
 /// assert_eq!(exact_value(f64::INFINITY), None);
 /// ```
@@ -32,7 +32,7 @@ pub fn exact_value<F: BinaryFloat>(x: F) -> Option<BigRational> {
 /// when e = 0, else `(−1)^s·(2^52+f)·2^(e−1075)`; ±0 both give 0.
 ///
 /// ```
-/// use tribez::number::{exact_f64, format_rational};
+/// use tribez::hazmat::number::{exact_f64, format_rational};
 /// assert_eq!(format_rational(&exact_f64(0.1).unwrap()), "3602879701896397/36028797018963968");
 /// assert_eq!(format_rational(&exact_f64(-0.0).unwrap()), "0");
 /// assert_eq!(exact_f64(f64::NAN), None);

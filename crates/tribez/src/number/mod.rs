@@ -15,7 +15,7 @@
 //! `f64`); the `_f64` / `_f32` names are that generic code at each format.
 //!
 //! ```
-//! use tribez::number::*;
+//! use tribez::hazmat::number::*;
 //! let q = parse_rational("f64:0.1").unwrap();
 //! assert_eq!(format_rational(&q), "3602879701896397/36028797018963968");
 //! assert_eq!(round_f64(&parse_rational("1/10").unwrap()), 0.1);

@@ -103,7 +103,7 @@ pub enum OutOfRange {
 /// whose exact value is read), `1e-999999` as an underflow, anything else as too long.
 ///
 /// ```
-/// use tribez::number::{OutOfRange, out_of_float_range, parse_rational};
+/// use tribez::hazmat::number::{OutOfRange, out_of_float_range, parse_rational};
 /// assert!(parse_rational("1e999999").unwrap_err().is_size_limit());
 /// assert_eq!(out_of_float_range("-1e999999"), Some(OutOfRange::Overflow { negative: true }));
 /// assert_eq!(out_of_float_range("0.001e-999999"), Some(OutOfRange::Underflow { negative: false }));
@@ -215,7 +215,7 @@ fn saturating_exponent(s: &str) -> Option<i64> {
 /// Long texts are abbreviated in the errors.
 ///
 /// ```
-/// use tribez::number::{format_rational, parse_rational};
+/// use tribez::hazmat::number::{format_rational, parse_rational};
 /// let q = |s| format_rational(&parse_rational(s).unwrap());
 /// assert_eq!(q("-1.5e-3"), "-3/2000");
 /// assert_eq!(q("0x1.8p-3"), "3/16");

@@ -50,7 +50,7 @@ pub fn format_rational(q: &BigRational) -> String {
 /// `1.2345e-20`. For people; exact values are printed with [`format_rational`].
 ///
 /// ```
-/// use tribez::number::{parse_rational, to_decimal_string};
+/// use tribez::hazmat::number::{parse_rational, to_decimal_string};
 /// let d = |s, n| to_decimal_string(&parse_rational(s).unwrap(), n);
 /// assert_eq!(d("1/3", 5), "0.33333");
 /// assert_eq!(d("2/3", 3), "0.667");
@@ -198,7 +198,7 @@ pub fn hex_float<F: BinaryFloat>(x: F) -> String {
 /// `±0x0.hhhhhhhhhhhhhp-1022`, zero `0x0p+0` / `-0x0p+0`; `inf`, `-inf`, `nan`.
 ///
 /// ```
-/// use tribez::number::hex_f64;
+/// use tribez::hazmat::number::hex_f64;
 /// assert_eq!(hex_f64(0.1), "0x1.999999999999ap-4");
 /// assert_eq!(hex_f64(-1.0), "-0x1p+0");
 /// assert_eq!(hex_f64(5e-324), "0x0.0000000000001p-1022");

@@ -289,7 +289,7 @@ pub(super) fn format_of<F: BinaryFloat>() -> Format {
 /// denominator gives NaN.
 ///
 /// ```
-/// use tribez::number::{parse_rational, round_to};
+/// use tribez::hazmat::number::{parse_rational, round_to};
 /// // 1 + 2^-24 + 2^-60 rounds up in f32; through f64 it would tie and round down to 1.
 /// let q = parse_rational("0x1.000001000000001p0").unwrap();
 /// assert_eq!(round_to::<f32>(&q), 1.0 + f32::EPSILON);
@@ -309,7 +309,7 @@ pub fn round_to<F: BinaryFloat>(q: &BigRational) -> F {
 /// IEEE 754 and `str::parse` do). A zero denominator gives NaN.
 ///
 /// ```
-/// use tribez::number::{parse_rational, round_f64};
+/// use tribez::hazmat::number::{parse_rational, round_f64};
 /// let r = |s| round_f64(&parse_rational(s).unwrap());
 /// assert_eq!(r("1/3"), 1.0 / 3.0);
 /// assert_eq!(r("0x1.00000000000008p0"), 1.0); // 1 + 2^-53: tie, to even

@@ -54,7 +54,7 @@ pub fn ulps_error<F: BinaryFloat>(x: &BigRational, q: &BigRational) -> BigRation
 /// It is at most 1/2 when x = RN(q).
 ///
 /// ```
-/// use tribez::number::{exact_f64, format_rational, parse_rational, ulps_error_f64};
+/// use tribez::hazmat::number::{exact_f64, format_rational, parse_rational, ulps_error_f64};
 /// let e = ulps_error_f64(&exact_f64(0.1).unwrap(), &parse_rational("1/10").unwrap());
 /// assert_eq!(format_rational(&e), "2/5");
 /// ```

@@ -1,0 +1,71 @@
+//! **Unstable**: the low-level building blocks of tribez (as the Python package `bezier` keeps
+//! its `hazmat`). Everything here may change or go in any release; the stable API is what the
+//! crate root re-exports.
+//!
+//! * exact core: [`number`] (exact numbers, correctly rounded conversions, ULPs),
+//!   [`simplex`] (multi-indices), [`patch`] (control nets, [`patch::BezierPatch`]),
+//!   [`domain`], [`bernstein`], [`casteljau`], [`blossom`], [`subdivide`], [`elevate`],
+//!   [`derivative`], [`symbolic`], [`scalar`], [`exact`] (the exact evaluation kernel);
+//! * the kinds: [`rational`], [`functional`], [`spatch`], [`any_patch`], [`join`];
+//! * floats: [`float`] (the float programs, glam kernels);
+//! * certification: [`certify`] (bounds, measures, the float filter, certifiers);
+//! * files: [`io`] (the document tree, patch files, point files);
+//! * errors: [`error`].
+
+macro_rules! hazmat {
+    ($($(#[$doc:meta])* $name:ident),* $(,)?) => {
+        $(
+            $(#[$doc])*
+            pub mod $name {
+                pub use crate::$name::*;
+            }
+        )*
+    };
+}
+
+hazmat!(
+    /// [`AnyPatch`]: the representation of a [`crate::Patch`] by kind.
+    any_patch,
+    /// Bernstein polynomials and the direct Bernstein form.
+    bernstein,
+    /// Blossoms and subpatches.
+    blossom,
+    /// de Casteljau's algorithm, generic.
+    casteljau,
+    /// Certification: bounds, measures, the float filter and the certifiers.
+    certify,
+    /// Derivatives, tangent frames and normals.
+    derivative,
+    /// Domain simplices and Cartesian ↔ barycentric conversion.
+    domain,
+    /// Degree elevation.
+    elevate,
+    /// The core's error type.
+    error,
+    /// The exact evaluation kernel.
+    exact,
+    /// Float types, precisions and the float programs.
+    float,
+    /// Functional (nonparametric) patches.
+    functional,
+    /// Files in: the document tree, patch files, point files.
+    io,
+    /// Joins: continuity between patches.
+    join,
+    /// Exact numbers: parsing, printing, correctly rounded conversions, ULPs.
+    number,
+    /// Control nets and polynomial patches.
+    patch,
+    /// Rational Bézier simplices.
+    rational,
+    /// The scalar trait of the generic algorithms.
+    scalar,
+    /// Multi-indices of Bézier simplices.
+    simplex,
+    /// S-patches over convex polygons.
+    spatch,
+    /// Subdivision.
+    subdivide,
+    /// Polynomials in barycentric and Cartesian form.
+    symbolic,
+);
