@@ -9,7 +9,7 @@ use serde_json::{Value as Json, json};
 use tribez::hazmat::any_patch::AnyPatch;
 use tribez::batch::{
     BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
-    UlpHistogram,
+    UlpHistogram, WorstRow,
 };
 use tribez::hazmat::certify::measures::{Measures, Tolerance};
 use tribez::hazmat::exact::Algorithm;
@@ -62,6 +62,7 @@ pub fn check_rows(
             precision: Some(precision),
             algorithm,
             cartesian,
+            row_detail: false,
         };
         let name = poly.name.clone().unwrap_or_else(|| "the patch".into());
         let checker = BatchChecker::new(poly, &options).map_err(|e| input_error(py, e))?;
@@ -111,7 +112,7 @@ impl NativeReport {
 
     #[getter]
     fn max_ulps(&self) -> Option<f64> {
-        self.report.worst.as_ref().map(|w| w.0)
+        self.report.max_ulps
     }
 
     /// The worst row as JSON (the `worst` object of the JSON report, with `row` for its index).
@@ -246,11 +247,11 @@ fn state_of(r: &BatchReport) -> Json {
     json!({
         "file": r.file, "patch": r.patch, "tolerance": r.tolerance.text(),
         "precision": r.precision.map(Precision::name),
-        "rows": r.rows, "passed": r.passed, "failed": r.failed, "fell_back": r.fell_back,
+        "rows": r.checked, "passed": r.passed, "failed": r.failed, "fell_back": r.fell_back,
         "histogram": r.histogram.counts.to_vec(), "upper": r.histogram_upper_bounds,
         "hexact": r.histogram_exact,
-        "worst": r.worst.as_ref().map(|(u, line, cs)| json!({"ulps": u, "line": line,
-            "coords": cs.iter().map(coord_state).collect::<Vec<_>>()})),
+        "worst": r.worst.as_ref().map(|w| json!({"ulps": w.ulps, "line": w.line,
+            "coords": w.coords.iter().map(coord_state).collect::<Vec<_>>()})),
         "failures": r.failures.iter().map(|f| json!({"line": f.line, "reason": f.reason,
             "coords": f.coords.iter().map(coord_state).collect::<Vec<_>>()})).collect::<Vec<_>>(),
     })
@@ -311,7 +312,7 @@ fn report_of(j: &Json) -> Option<BatchReport> {
             None => None,
             Some(p) => Some(p.parse().ok()?),
         },
-        rows: j["rows"].as_u64()?,
+        checked: j["rows"].as_u64()?,
         passed: j["passed"].as_u64()?,
         failed: j["failed"].as_u64()?,
         fell_back: j["fell_back"].as_u64()?,
@@ -324,12 +325,18 @@ fn report_of(j: &Json) -> Option<BatchReport> {
             None
         } else {
             let w = &j["worst"];
-            Some((
-                w["ulps"].as_f64()?,
-                w["line"].as_u64()? as usize,
-                coords_of(&w["coords"])?,
-            ))
+            Some(WorstRow {
+                ulps: w["ulps"].as_f64()?,
+                line: w["line"].as_u64()? as usize,
+                coords: coords_of(&w["coords"])?,
+            })
         },
+        max_ulps: if j["worst"].is_null() {
+            None
+        } else {
+            Some(j["worst"]["ulps"].as_f64()?)
+        },
+        rows: None,
         failures: j["failures"]
             .as_array()?
             .iter()

@@ -568,6 +568,51 @@ fn baselines_catch_regressions() {
     .stderr(predicate::str::contains("not a baseline file"));
 }
 
+/// issue 10: `--baseline` is read before `--record-baseline` is written, and a run with a
+/// regression records nothing; with one file for both, a regression fails the run and leaves the
+/// baseline as it was. At (1/2, 1/4, 1/4) Finn's patch is exactly (3/8, 5/8, 11/16) (Bernstein
+/// weights 1/4, 1/4, 1/16, 1/4, 1/8, 1/16), three floats; two floats above 11/16 (in [1/2, 1),
+/// ulp 2^-53) is an error of exactly 2 ulps.
+#[test]
+fn one_file_for_baseline_and_record_baseline_never_raises_it() {
+    let exact = "0.5,0.25,0.25,0.375,0.625,0.6875\n";
+    let (d, p, r) = batch_dir(exact, "csv");
+    let base = d.path().join("base.json");
+    let args = |base: &Path| {
+        vec![
+            "--precision".to_string(),
+            "f64".into(),
+            "--tolerance".into(),
+            "ulps=4".into(),
+            "--record-baseline".into(),
+            base.display().to_string(),
+        ]
+    };
+    let a = args(&base);
+    let a: Vec<&str> = a.iter().map(String::as_str).collect();
+    batch(&p, &r, &a).success();
+    let recorded = std::fs::read_to_string(&base).unwrap();
+    assert!(recorded.contains("\"ulps\": 0.0"), "{recorded}");
+    let two_ulps = f64::from_bits(0.6875f64.to_bits() + 2);
+    let worse = write(
+        d.path(),
+        "worse.csv",
+        &format!("{exact}0.5,0.25,0.25,0.375,0.625,{two_ulps:?}\n"),
+    );
+    let mut a = args(&base);
+    a.extend(["--baseline".to_string(), base.display().to_string()]);
+    let a: Vec<&str> = a.iter().map(String::as_str).collect();
+    batch(&p, &worse, &a)
+        .code(1)
+        .stdout(predicate::str::contains(
+            "baseline regression: eval claimed f64: worst error 2 ulp",
+        ));
+    assert_eq!(std::fs::read_to_string(&base).unwrap(), recorded);
+    // no regression: the run passes and records again
+    batch(&p, &r, &a).success();
+    assert_eq!(std::fs::read_to_string(&base).unwrap(), recorded);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Peers
 

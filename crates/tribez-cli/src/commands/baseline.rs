@@ -27,6 +27,29 @@ pub struct Worst {
     pub at: String,
 }
 
+/// The baselines of a run: `--baseline FILE` is read and compared first; `--record-baseline
+/// FILE` is written only when the run succeeds (`success`: every claim holds) and nothing
+/// regressed, so a regression never raises the baseline, even when both name the same file.
+/// Returns the regressions.
+pub fn judge(
+    baseline: Option<&Path>,
+    record_baseline: Option<&Path>,
+    worst: &[Worst],
+    success: bool,
+) -> Result<Vec<String>, CliError> {
+    let regressions = match baseline {
+        Some(path) => compare(path, worst)?,
+        None => Vec::new(),
+    };
+    if let Some(path) = record_baseline
+        && success
+        && regressions.is_empty()
+    {
+        record(path, worst)?;
+    }
+    Ok(regressions)
+}
+
 /// Write the baseline file (whole or not at all).
 pub fn record(path: &Path, worst: &[Worst]) -> Result<(), CliError> {
     let entries: Vec<_> = worst

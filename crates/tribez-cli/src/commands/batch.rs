@@ -52,6 +52,7 @@ fn options(args: &Args) -> Result<BatchOptions, CliError> {
         precision,
         algorithm: args.algorithm.algorithm(),
         cartesian: args.cartesian,
+        row_detail: false,
     })
 }
 
@@ -62,7 +63,7 @@ impl From<BatchError> for CliError {
             BatchError::ToleranceNeedsPrecision { tolerance } => CliError::Usage(format!(
                 "--tolerance {tolerance} needs --precision f64 or f32"
             )),
-            e @ BatchError::ControlPointOverflows { .. } => CliError::Usage(e.to_string()),
+            e => CliError::Usage(e.to_string()),
         }
     }
 }
@@ -94,13 +95,12 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         super::write_atomically(path, report.junit().as_bytes())?;
     }
     let worst = worst_errors(&report);
-    if let Some(path) = &args.record_baseline {
-        super::baseline::record(path, &worst)?;
-    }
-    let mut regressions = Vec::new();
-    if let Some(path) = &args.baseline {
-        regressions = super::baseline::compare(path, &worst)?;
-    }
+    let regressions = super::baseline::judge(
+        args.baseline.as_deref(),
+        args.record_baseline.as_deref(),
+        &worst,
+        success,
+    )?;
     let mut outcome =
         Outcome::rendered(&report, args.out.format, success && regressions.is_empty())?;
     for r in regressions {
@@ -114,12 +114,12 @@ fn worst_errors(report: &BatchReport) -> Vec<super::baseline::Worst> {
     report
         .worst
         .iter()
-        .map(|(u, line, _)| super::baseline::Worst {
+        .map(|w| super::baseline::Worst {
             op: "eval".into(),
             algorithm: "claimed".into(),
             precision: report.precision.map_or("exact", |p| p.name()).into(),
-            ulps: *u,
-            at: format!("{}:{line}", report.file),
+            ulps: w.ulps,
+            at: format!("{}:{}", report.file, w.line),
         })
         .collect()
 }
@@ -151,7 +151,7 @@ impl Exporter for BatchReport {
             "check",
             &[JunitCase {
                 name: self.file.clone(),
-                checks: self.rows as usize,
+                checks: self.checked as usize,
                 failures,
             }],
         )

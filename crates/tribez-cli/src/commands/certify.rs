@@ -472,12 +472,13 @@ fn finish(
                 .map_or(String::new(), |p| crate::report::tuple(p)),
         })
         .collect();
-    if let Some(path) = &args.record_baseline {
-        super::baseline::record(path, &worst)?;
-    }
-    if let Some(path) = &args.baseline {
-        report.regressions = super::baseline::compare(path, &worst)?;
-    }
+    let all_hold = report.rows.iter().all(|r| r.violations.is_empty());
+    report.regressions = super::baseline::judge(
+        args.baseline.as_deref(),
+        args.record_baseline.as_deref(),
+        &worst,
+        all_hold,
+    )?;
     let success =
         report.rows.iter().all(|r| r.violations.is_empty()) && report.regressions.is_empty();
     if let Some(path) = &args.junit {

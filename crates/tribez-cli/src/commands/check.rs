@@ -40,7 +40,9 @@ pub struct Args {
     /// Also write a JUnit XML report to FILE (one test case per claim file).
     #[arg(long, value_name = "FILE")]
     pub junit: Option<PathBuf>,
-    /// Write the worst error per operation, algorithm and precision to FILE.
+    /// Write the worst error per operation, algorithm and precision to FILE, when every claim
+    /// holds and no worst error regressed against --baseline (which is read first, so both may
+    /// name the same file).
     #[arg(long, value_name = "FILE")]
     pub record_baseline: Option<PathBuf>,
     /// Fail when any worst error is larger than recorded in FILE.
@@ -128,12 +130,13 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         regressions: Vec::new(),
     };
     let worst = report.worst_errors();
-    if let Some(path) = &args.record_baseline {
-        super::baseline::record(path, &worst)?;
-    }
-    if let Some(path) = &args.baseline {
-        report.regressions = super::baseline::compare(path, &worst)?;
-    }
+    let all_hold = report.success();
+    report.regressions = super::baseline::judge(
+        args.baseline.as_deref(),
+        args.record_baseline.as_deref(),
+        &worst,
+        all_hold,
+    )?;
     let success = report.success();
     if let Some(path) = &args.junit {
         super::write_atomically(path, report.junit().as_bytes())?;

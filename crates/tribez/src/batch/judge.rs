@@ -40,6 +40,7 @@ pub(super) struct Prepared {
     pub(super) tolerance: Tolerance,
     pub(super) algorithm: Algorithm,
     pub(super) cartesian: bool,
+    pub(super) row_detail: bool,
     pub(super) filter: Option<(Filter, Thresholds)>,
     pub(super) seen: ExactEvaluator,
     pub(super) seen_net: ControlNet<BigRational>,
@@ -53,6 +54,7 @@ impl Prepared {
             precision,
             algorithm,
             cartesian,
+            row_detail,
         } = options.clone();
         if tolerance.needs_precision() && precision.is_none() {
             return Err(BatchError::ToleranceNeedsPrecision { tolerance });
@@ -83,6 +85,7 @@ impl Prepared {
             tolerance,
             algorithm,
             cartesian,
+            row_detail,
             filter,
         })
     }
@@ -122,12 +125,13 @@ impl Prepared {
             .and_then(|x| self.barycentric(x))
     }
 
-    /// Judge one row exactly; `texts` are the row's fields (for the intended values).
+    /// Judge one row exactly; `intended` are the row's inputs as intended (the exact values of
+    /// their texts), for the error at the intended inputs.
     pub(super) fn exact_row(
         &self,
         inputs: &[Num],
         claimed: &[Num],
-        texts: Option<&[&str]>,
+        intended: Option<&[BigRational]>,
         detail: bool,
     ) -> (bool, f64, Option<String>, Vec<FailedCoord>) {
         let Some(lambda) = self.seen_point(inputs) else {
@@ -141,15 +145,8 @@ impl Prepared {
         };
         let (m, n) = (self.patch.net.m(), self.patch.net.degree());
         let intended: Option<Vec<BigRational>> = if detail {
-            texts
-                .and_then(|t| {
-                    inputs
-                        .iter()
-                        .zip(t)
-                        .map(|(x, s)| x.text_value(s))
-                        .collect::<Option<Vec<_>>>()
-                })
-                .and_then(|x| self.barycentric(x))
+            intended
+                .and_then(|x| self.barycentric(x.to_vec()))
                 .map(|l| self.intended.evaluate_fast(&l))
         } else {
             None

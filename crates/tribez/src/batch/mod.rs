@@ -22,19 +22,19 @@
 use std::io::{BufReader, Read};
 use std::path::Path;
 
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use rayon::prelude::*;
 
 mod histogram;
 mod judge;
 mod parse;
 mod report;
-mod rows;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 pub use parse::Format;
 pub(crate) use parse::fuzz_rows;
-pub use report::{BatchReport, FailedCoord, FailedRow};
-pub use rows::RowVerdict;
+pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 
 use crate::certify::measures::Tolerance;
 use crate::exact::Algorithm;
@@ -63,6 +63,8 @@ pub struct BatchOptions {
     pub algorithm: Algorithm,
     /// The input columns are Cartesian coordinates in the patch's domain (else barycentric).
     pub cartesian: bool,
+    /// Keep every row's figures in [`BatchReport::rows`] (memory grows with the batch).
+    pub row_detail: bool,
 }
 
 impl Default for BatchOptions {
@@ -73,6 +75,7 @@ impl Default for BatchOptions {
             precision: None,
             algorithm: Algorithm::Casteljau,
             cartesian: false,
+            row_detail: false,
         }
     }
 }
@@ -88,6 +91,34 @@ pub enum BatchError {
     ToleranceNeedsPrecision {
         /// The tolerance.
         tolerance: Tolerance,
+    },
+    /// In-memory rows: a slice that is not a whole number of rows.
+    #[error("{what}: {len} numbers is not a whole number of rows of {per_row}")]
+    Shape {
+        /// `points` or `values`.
+        what: &'static str,
+        /// Numbers per row.
+        per_row: usize,
+        /// Numbers given.
+        len: usize,
+    },
+    /// In-memory rows: different numbers of rows of points and values.
+    #[error("{points} rows of points but {values} rows of values")]
+    RowCounts {
+        /// Rows of points.
+        points: usize,
+        /// Rows of values.
+        values: usize,
+    },
+    /// [`BatchReport::merge`]: reports judged differently or about different patches.
+    #[error("reports {what} ({this} vs {other})")]
+    Mismatch {
+        /// What differs (`judged with different tolerances`, …).
+        what: &'static str,
+        /// This report's.
+        this: String,
+        /// The other's.
+        other: String,
     },
     /// A control point is outside the precision's range.
     #[error("a control point of the patch overflows {}", precision.name())]
@@ -152,32 +183,10 @@ fn check_reader<R: Read + Send>(
     patch_name: &str,
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<BatchReport, BatchError> {
-    let file = file.to_string();
     let (width, dim) = (p.width(), p.patch.net.dim());
-    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file)
+    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file)
         .expect_columns(width + dim);
-    let mut report = BatchReport {
-        file: file.clone(),
-        patch: patch_name.into(),
-        tolerance: p.tolerance.clone(),
-        precision: p.precision,
-        rows: 0,
-        passed: 0,
-        failed: 0,
-        fell_back: 0,
-        histogram: UlpHistogram::default(),
-        histogram_upper_bounds: p.filter.is_some(),
-        histogram_exact: 0,
-        worst: None,
-        failures: Vec::new(),
-    };
-    // The worst row: the largest lower bound seen (`floor`) and every row whose upper bound
-    // reaches it (the bounds are tight after `Prepared::settle_ulps`, so only near-ties stay);
-    // settled exactly at the end.
-    let mut floor = 0f64;
-    // (upper bound, line, inputs, claimed, the row's text and where it starts)
-    type Candidate = (f64, usize, Vec<Num>, Vec<Num>, String, usize);
-    let mut candidates: Vec<Candidate> = Vec::new();
+    let mut acc = Accumulator::new(p, file, patch_name, Some(format));
     // Chunks of CHUNK rows: the next one is read (one thread) while the current one is judged
     // (the others), so reading overlaps the work and memory stays bounded.
     let mut chunk = Chunk::default();
@@ -192,22 +201,21 @@ fn check_reader<R: Read + Send>(
                     reader.read(&mut next)
                 }
             },
-            || -> Result<Vec<Option<RowOutcome>>, InputError> {
+            || -> Result<Vec<Option<Judged>>, InputError> {
                 chunk
                     .rows()
                     .collect::<Vec<_>>()
                     .par_iter()
                     .map_init(
                         RowScratch::default,
-                        |scratch, (no, col, text)| -> Result<Option<RowOutcome>, InputError> {
+                        |scratch, &(no, col, text)| -> Result<Option<Judged>, InputError> {
                             let Some((inputs, claimed)) =
-                                parse_row(format, text, *no, *col, width, dim, p.precision, &file)?
+                                parse_row(format, text, no, col, width, dim, p.precision, file)?
                             else {
                                 return Ok(None);
                             };
-                            let mut o = p.row(*no, inputs, claimed, scratch);
-                            p.settle_ulps(&mut o, scratch);
-                            Ok(Some(o))
+                            let source = Source::Text(text, col);
+                            Ok(Some(acc.judge(no, inputs, claimed, &source, scratch)))
                         },
                     )
                     .collect()
@@ -217,80 +225,388 @@ fn check_reader<R: Read + Send>(
         let next_eof = read?;
         for (i, o) in outcomes.into_iter().enumerate() {
             let Some(o) = o else { continue };
-            report.rows += 1;
-            report.histogram.add(o.ulps);
-            if o.fell_back {
-                report.fell_back += 1;
-            }
-            if o.settled_exactly {
-                report.histogram_exact += 1;
-            }
-            if o.ulps.is_finite() {
-                if o.ulps_lower > floor {
-                    floor = o.ulps_lower;
-                    candidates.retain(|c| c.0 >= floor);
-                }
-                if o.ulps >= floor && candidates.len() < MAX_CANDIDATES {
-                    let col = chunk.position(i).1;
-                    candidates.push((
-                        o.ulps,
-                        o.line,
-                        o.inputs.clone(),
-                        o.claimed.clone(),
-                        chunk.row(i).to_string(),
-                        col,
-                    ));
-                }
-            }
-            if o.pass {
-                report.passed += 1;
-            } else {
-                report.failed += 1;
-                if report.failures.len() < MAX_LISTED {
-                    let texts = texts_of(format, chunk.row(i), o.line, chunk.position(i).1, &file);
-                    let refs: Vec<&str> = texts.iter().map(String::as_str).collect();
-                    let (_, _, reason, coords) =
-                        p.exact_row(&o.inputs, &o.claimed, Some(&refs), true);
-                    let reason = o
-                        .failure
-                        .filter(|r| !r.is_empty())
-                        .or(reason)
-                        .unwrap_or_else(|| "fails".into());
-                    report.failures.push(FailedRow {
-                        line: o.line,
-                        reason,
-                        coords,
-                    });
-                }
-            }
+            acc.add(o, &Source::Text(chunk.row(i), chunk.position(i).1));
         }
-        progress(report.rows, report.failed);
+        progress(acc.report.checked, acc.report.failed);
         if eof {
             break;
         }
         std::mem::swap(&mut chunk, &mut next);
         eof = next_eof;
     }
-    if report.rows == 0 {
+    if acc.report.checked == 0 {
         return Err(InputError::file(file, "no result rows").into());
     }
-    // the candidates' exact errors; the first of the largest
-    let worst_row = candidates
-        .into_iter()
-        .map(|(_, line, inputs, claimed, text, col)| {
-            let (_, u, _, _) = p.exact_row(&inputs, &claimed, None, false);
-            (u, line, inputs, claimed, text, col)
-        })
-        .fold(None, |best: Option<Candidate>, c| match &best {
-            Some(b) if b.0 >= c.0 => best,
-            _ => Some(c),
-        });
-    if let Some((_, line, inputs, claimed, text, col)) = worst_row {
-        // Recompute the worst row exactly (its filter figure is an upper bound).
-        let texts = texts_of(format, &text, line, col, &file);
-        let refs: Vec<&str> = texts.iter().map(String::as_str).collect();
-        let (_, u, _, coords) = p.exact_row(&inputs, &claimed, Some(&refs), true);
-        report.worst = Some((u, line, coords));
+    Ok(acc.finish())
+}
+
+/// The numbers of an in-memory row: with a precision each value is rounded to it (an `f32`
+/// batch takes the nearest `f32`); the value as intended is the `f64` given.
+fn memory_num(x: f64, precision: Option<Precision>) -> Num {
+    if !x.is_finite() {
+        return Num::NotFinite(format!("`{x}`"));
     }
-    Ok(report)
+    let float = match precision {
+        Some(Precision::F32) => {
+            let y = x as f32;
+            if !y.is_finite() {
+                return Num::NotFinite(format!("`{x}` overflows f32"));
+            }
+            f64::from(y)
+        }
+        _ => x,
+    };
+    Num::Value {
+        float,
+        text_exact: crate::number::exact_f64(x),
+    }
+}
+
+/// What one in-memory row came to (for per-row arrays; cheap, unlike
+/// [`BatchOptions::row_detail`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowVerdict {
+    /// The row's number (counted from `first_row`).
+    pub row: usize,
+    /// Within the tolerance.
+    pub pass: bool,
+    /// The float filter could not decide it: judged in exact arithmetic.
+    pub fell_back: bool,
+    /// The largest error in ULPs over its coordinates at the inputs as seen (exact when
+    /// computed exactly, else the upper end of a compensated enclosure, tight to a small
+    /// fraction of an ulp; infinite for a non-finite number).
+    pub ulps: f64,
+}
+
+/// Where a row came from, to find its inputs as intended: a file's row text (and the column it
+/// starts at), or memory (the numbers themselves).
+enum Source<'a> {
+    Text(&'a str, usize),
+    Memory,
+}
+
+/// A row judged, with its detail when asked for.
+struct Judged {
+    outcome: RowOutcome,
+    detail: Option<RowDetail>,
+}
+
+/// A row that may be the worst: its upper bound, its number, its numbers and where it came from.
+struct Candidate {
+    upper: f64,
+    lower: f64,
+    row: usize,
+    inputs: Vec<Num>,
+    claimed: Vec<Num>,
+    text: Option<(String, usize)>,
+}
+
+/// The report being assembled, row by row in order.
+struct Accumulator<'p> {
+    p: &'p Prepared,
+    format: Option<Format>,
+    report: BatchReport,
+    /// The largest lower bound seen.
+    floor: f64,
+    /// Some candidate's lower bound reaches `floor` (a later row whose upper bound is at most
+    /// `floor` can at best tie it, and ties go to the earlier row).
+    certified: bool,
+    candidates: Vec<Candidate>,
+}
+
+impl<'p> Accumulator<'p> {
+    fn new(p: &'p Prepared, file: &str, patch: &str, format: Option<Format>) -> Self {
+        Accumulator {
+            p,
+            format,
+            report: BatchReport {
+                file: file.into(),
+                patch: patch.into(),
+                tolerance: p.tolerance.clone(),
+                precision: p.precision,
+                checked: 0,
+                passed: 0,
+                failed: 0,
+                fell_back: 0,
+                histogram: UlpHistogram::default(),
+                histogram_upper_bounds: p.filter.is_some(),
+                histogram_exact: 0,
+                max_ulps: None,
+                worst: None,
+                failures: Vec::new(),
+                rows: p.row_detail.then(Vec::new),
+            },
+            floor: 0.0,
+            certified: false,
+            candidates: Vec::new(),
+        }
+    }
+
+    /// The inputs of a row as intended.
+    fn intended(
+        &self,
+        inputs: &[Num],
+        row: usize,
+        source: &Source<'_>,
+    ) -> Option<Vec<BigRational>> {
+        match (source, self.format) {
+            (Source::Text(text, col), Some(format)) => {
+                let texts = texts_of(format, text, row, *col, &self.report.file);
+                inputs
+                    .iter()
+                    .zip(&texts)
+                    .map(|(x, s)| x.text_value(s))
+                    .collect()
+            }
+            _ => inputs
+                .iter()
+                .map(|x| match x {
+                    Num::Value {
+                        text_exact: Some(q),
+                        ..
+                    } => Some(q.clone()),
+                    _ => None,
+                })
+                .collect(),
+        }
+    }
+
+    /// Judge one row (any thread): the filter, exact arithmetic when undecided, the ULP figures
+    /// settled, and the row's detail when asked for.
+    fn judge(
+        &self,
+        row: usize,
+        inputs: Vec<Num>,
+        claimed: Vec<Num>,
+        source: &Source<'_>,
+        scratch: &mut RowScratch,
+    ) -> Judged {
+        let p = self.p;
+        let mut outcome = p.row(row, inputs, claimed, scratch);
+        p.settle_ulps(&mut outcome, scratch);
+        let detail = p.row_detail.then(|| {
+            let intended = self.intended(&outcome.inputs, row, source);
+            let (passed, ulps, _, coords) =
+                p.exact_row(&outcome.inputs, &outcome.claimed, intended.as_deref(), true);
+            let finite = coords.len() == outcome.claimed.len();
+            RowDetail {
+                row,
+                passed,
+                ulps_seen: ulps,
+                ulps_intended: coords
+                    .iter()
+                    .map(|c| {
+                        c.intended
+                            .as_ref()
+                            .and_then(|m| m.ulps.as_ref())
+                            .and_then(ToPrimitive::to_f64)
+                    })
+                    .collect::<Option<Vec<f64>>>()
+                    .filter(|_| finite)
+                    .map(|us| us.into_iter().fold(0.0, f64::max)),
+                correctly_rounded: finite
+                    && coords
+                        .iter()
+                        .all(|c| c.seen.correctly_rounded == Some(true)),
+            }
+        });
+        Judged { outcome, detail }
+    }
+
+    /// Count a judged row (in input order).
+    fn add(&mut self, judged: Judged, source: &Source<'_>) {
+        let Judged { outcome: o, detail } = judged;
+        let report = &mut self.report;
+        report.checked += 1;
+        report.histogram.add(o.ulps);
+        if o.fell_back {
+            report.fell_back += 1;
+        }
+        if o.settled_exactly {
+            report.histogram_exact += 1;
+        }
+        if let (Some(rows), Some(d)) = (&mut report.rows, detail) {
+            rows.push(d);
+        }
+        if o.pass {
+            report.passed += 1;
+        } else {
+            report.failed += 1;
+            if report.failures.len() < MAX_LISTED {
+                let intended = self.intended(&o.inputs, o.line, source);
+                let (_, _, reason, coords) =
+                    self.p
+                        .exact_row(&o.inputs, &o.claimed, intended.as_deref(), true);
+                let reason = o
+                    .failure
+                    .clone()
+                    .filter(|r| !r.is_empty())
+                    .or(reason)
+                    .unwrap_or_else(|| "fails".into());
+                self.report.failures.push(FailedRow {
+                    line: o.line,
+                    reason,
+                    coords,
+                });
+            }
+        }
+        if !o.ulps.is_finite() {
+            return;
+        }
+        if o.ulps_lower > self.floor {
+            self.floor = o.ulps_lower;
+            let floor = self.floor;
+            self.candidates.retain(|c| c.upper >= floor);
+            self.certified = false;
+        }
+        if o.ulps > self.floor || (o.ulps >= self.floor && !self.certified) {
+            if o.ulps_lower >= self.floor {
+                self.certified = true;
+            }
+            let text = match source {
+                Source::Text(t, col) => Some((t.to_string(), *col)),
+                Source::Memory => None,
+            };
+            self.candidates.push(Candidate {
+                upper: o.ulps,
+                lower: o.ulps_lower,
+                row: o.line,
+                inputs: o.inputs,
+                claimed: o.claimed,
+                text,
+            });
+            if self.candidates.len() >= MAX_CANDIDATES {
+                self.settle_candidates();
+            }
+        }
+    }
+
+    /// Compute the candidates' errors exactly and keep the first of the largest.
+    fn settle_candidates(&mut self) {
+        for c in &mut self.candidates {
+            if c.lower < c.upper {
+                let (_, u, _, _) = self.p.exact_row(&c.inputs, &c.claimed, None, false);
+                c.lower = u;
+                c.upper = u;
+            }
+        }
+        let best =
+            self.candidates
+                .iter()
+                .enumerate()
+                .fold(None, |best: Option<(usize, f64)>, (i, c)| match best {
+                    Some((_, u)) if u >= c.upper => best,
+                    _ => Some((i, c.upper)),
+                });
+        if let Some((i, u)) = best {
+            let c = self.candidates.swap_remove(i);
+            self.candidates.clear();
+            self.candidates.push(c);
+            self.floor = self.floor.max(u);
+            self.certified = true;
+        }
+    }
+
+    /// The report, with the worst row computed exactly.
+    fn finish(mut self) -> BatchReport {
+        self.settle_candidates();
+        if let Some(c) = self.candidates.pop() {
+            let source = match &c.text {
+                Some((t, col)) => Source::Text(t, *col),
+                None => Source::Memory,
+            };
+            let intended = self.intended(&c.inputs, c.row, &source);
+            let (_, u, _, coords) =
+                self.p
+                    .exact_row(&c.inputs, &c.claimed, intended.as_deref(), true);
+            self.report.max_ulps = Some(u);
+            self.report.worst = Some(WorstRow {
+                ulps: u,
+                line: c.row,
+                coords,
+            });
+        }
+        self.report
+    }
+}
+
+impl BatchChecker {
+    /// Judge rows held in memory, in parallel: `points` row-major (`m + 1` barycentric
+    /// coordinates per row, or `m` Cartesian ones with [`BatchOptions::cartesian`]), `values`
+    /// row-major (the patch's `dim` claimed coordinates per row). Row `i` is numbered
+    /// `first_row + i` in the report (so reports of consecutive slices [`BatchReport::merge`]
+    /// into the report of the whole). With a precision, each value is rounded to it (the nearest
+    /// `f32` for an `f32` batch) and the `f64` given is the input as intended; without one, the
+    /// `f64` values are the exact numbers. `nan` and infinities are failed rows.
+    ///
+    /// `file` and `patch_name` name the rows and the patch in the report. Returns the report and
+    /// every row's [`RowVerdict`].
+    ///
+    /// Errors: `points` or `values` not a whole number of rows, different numbers of rows, no
+    /// rows.
+    pub fn check_rows(
+        &self,
+        points: &[f64],
+        values: &[f64],
+        first_row: usize,
+        file: &str,
+        patch_name: &str,
+    ) -> Result<(BatchReport, Vec<RowVerdict>), BatchError> {
+        let p = &self.prepared;
+        let (width, dim) = (p.width(), p.patch.net.dim());
+        if points.len() % width != 0 {
+            return Err(BatchError::Shape {
+                what: "points",
+                per_row: width,
+                len: points.len(),
+            });
+        }
+        if values.len() % dim != 0 {
+            return Err(BatchError::Shape {
+                what: "values",
+                per_row: dim,
+                len: values.len(),
+            });
+        }
+        let n = points.len() / width;
+        if values.len() / dim != n {
+            return Err(BatchError::RowCounts {
+                points: n,
+                values: values.len() / dim,
+            });
+        }
+        if n == 0 {
+            return Err(InputError::file(file, "no result rows").into());
+        }
+        let mut acc = Accumulator::new(p, file, patch_name, None);
+        let mut verdicts = Vec::with_capacity(n);
+        for start in (0..n).step_by(CHUNK) {
+            let end = (start + CHUNK).min(n);
+            let judged: Vec<Judged> = (start..end)
+                .into_par_iter()
+                .map_init(RowScratch::default, |scratch, i| {
+                    let inputs = points[i * width..(i + 1) * width]
+                        .iter()
+                        .map(|&x| memory_num(x, p.precision))
+                        .collect();
+                    let claimed = values[i * dim..(i + 1) * dim]
+                        .iter()
+                        .map(|&x| memory_num(x, p.precision))
+                        .collect();
+                    acc.judge(first_row + i, inputs, claimed, &Source::Memory, scratch)
+                })
+                .collect();
+            for j in judged {
+                let o = &j.outcome;
+                verdicts.push(RowVerdict {
+                    row: o.line,
+                    pass: o.pass,
+                    fell_back: o.fell_back,
+                    ulps: o.ulps,
+                });
+                acc.add(j, &Source::Memory);
+            }
+        }
+        Ok((acc.finish(), verdicts))
+    }
 }

@@ -1,0 +1,255 @@
+//! The batch checker's in-memory rows and `BatchReport::merge`.
+//!
+//! Hand-derived figures: Finn's worked example patch (degree 2; control points 200:(0,0,0)
+//! 110:(1,0,2) 020:(0,2,0) 101:(0,1,0) 011:(1,1,1) 002:(0,2,1)) at (1/2, 1/4, 1/4), where the
+//! Bernstein weights are u² = 1/4, 2uv = 1/4, v² = 1/16, 2uw = 1/4, 2vw = 1/8, w² = 1/16, so
+//! the point is exactly (1/4 + 1/8, 2/16 + 1/4 + 1/8 + 2/16, 2/4 + 1/8 + 1/16) =
+//! (3/8, 5/8, 11/16): three floats. The float after 11/16 = 0.6875 (in [1/2, 1), where the ulp
+//! is 2^-53) is one ulp away.
+
+use std::path::PathBuf;
+
+use proptest::prelude::*;
+use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport, Format};
+use tribez::certify::measures::Tolerance;
+use tribez::float::Precision;
+use tribez::io::patch_file::read_patch;
+
+fn finn() -> tribez::patch::BezierPatch {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/finn_day30.toml");
+    read_patch(&path).unwrap()
+}
+
+fn checker(tolerance: &str, detail: bool) -> BatchChecker {
+    let options = BatchOptions {
+        tolerance: Tolerance::parse(tolerance).unwrap(),
+        precision: Some(Precision::F64),
+        row_detail: detail,
+        ..BatchOptions::default()
+    };
+    BatchChecker::new(finn(), &options).unwrap()
+}
+
+fn next_up(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() + 1)
+}
+
+#[test]
+fn in_memory_rows_are_judged_with_hand_derived_figures() {
+    let c = checker("ulps=1/2", true);
+    let points = [0.5, 0.25, 0.25, 0.5, 0.25, 0.25, 0.5, 0.25, 0.25];
+    let values = [
+        0.375,
+        0.625,
+        0.6875,
+        0.375,
+        0.625,
+        next_up(0.6875),
+        0.375,
+        f64::NAN,
+        0.6875,
+    ];
+    let r = c
+        .check_rows(&points, &values, 0, "<memory>", "finn")
+        .map(|r| r.0)
+        .unwrap();
+    assert_eq!((r.checked, r.passed, r.failed), (3, 1, 2));
+    assert_eq!(r.max_ulps, Some(1.0));
+    let worst = r.worst.as_ref().unwrap();
+    assert_eq!((worst.line, worst.ulps), (1, 1.0));
+    // buckets: "0" (row 0), "(1/2, 1]" (row 1), "> 256" (row 2: not a number)
+    assert_eq!(r.histogram.counts, [1, 0, 1, 0, 0, 0, 0, 1]);
+    let lines: Vec<usize> = r.failures.iter().map(|f| f.line).collect();
+    assert_eq!(lines, [1, 2]);
+    let rows = r.rows.as_ref().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert!(rows[0].passed && rows[0].correctly_rounded && rows[0].ulps_seen == 0.0);
+    assert_eq!(rows[0].ulps_intended, Some(0.0));
+    assert!(!rows[1].passed && !rows[1].correctly_rounded);
+    assert_eq!((rows[1].ulps_seen, rows[1].ulps_intended), (1.0, Some(1.0)));
+    assert!(!rows[2].passed && rows[2].ulps_seen.is_infinite());
+}
+
+#[test]
+fn in_memory_shapes_are_checked() {
+    let c = checker("ulps=1", false);
+    assert!(matches!(
+        c.check_rows(&[0.5, 0.5], &[0.0, 0.0, 0.0], 0, "<memory>", "finn")
+            .map(|r| r.0),
+        Err(BatchError::Shape {
+            what: "points",
+            per_row: 3,
+            len: 2
+        })
+    ));
+    assert!(matches!(
+        c.check_rows(&[0.5, 0.25, 0.25], &[0.0; 4], 0, "<memory>", "finn"),
+        Err(BatchError::Shape {
+            what: "values",
+            per_row: 3,
+            len: 4
+        })
+    ));
+    assert!(matches!(
+        c.check_rows(&[0.5, 0.25, 0.25], &[0.0; 6], 0, "<memory>", "finn"),
+        Err(BatchError::RowCounts {
+            points: 1,
+            values: 2
+        })
+    ));
+    let empty = c.check_rows(&[], &[], 0, "<memory>", "finn");
+    assert_eq!(empty.unwrap_err().to_string(), "<memory>: no result rows");
+}
+
+/// Rows near Finn's patch's values: a float point, and each claimed coordinate the f64 de
+/// Casteljau value moved by `shift` ulps (`None`: a NaN).
+fn rows(spec: &[(f64, f64, [Option<i8>; 3])]) -> (Vec<f64>, Vec<f64>) {
+    let net = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 2.0],
+        [0.0, 2.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 1.0, 1.0],
+        [0.0, 2.0, 1.0],
+    ];
+    let (mut points, mut values) = (Vec::new(), Vec::new());
+    for &(a, b, shifts) in spec {
+        let (u, v) = (a, b * (1.0 - a));
+        let w = 1.0 - u - v;
+        points.extend([u, v, w]);
+        for (k, s) in shifts.iter().enumerate() {
+            // f64 de Casteljau, degree 2
+            let lerp = |p: f64, q: f64, r: f64| u * p + v * q + w * r;
+            let (p200, p110, p020, p101, p011, p002) = (
+                net[0][k], net[1][k], net[2][k], net[3][k], net[4][k], net[5][k],
+            );
+            let y = lerp(
+                lerp(p200, p110, p101),
+                lerp(p110, p020, p011),
+                lerp(p101, p011, p002),
+            );
+            values.push(match s {
+                None => f64::NAN,
+                Some(s) if y != 0.0 => f64::from_bits((y.to_bits() as i64 + i64::from(*s)) as u64),
+                Some(_) => y,
+            });
+        }
+    }
+    (points, values)
+}
+
+fn same(a: &BatchReport, b: &BatchReport) {
+    assert_eq!(
+        (
+            a.checked,
+            a.passed,
+            a.failed,
+            a.fell_back,
+            a.histogram_exact
+        ),
+        (
+            b.checked,
+            b.passed,
+            b.failed,
+            b.fell_back,
+            b.histogram_exact
+        )
+    );
+    assert_eq!(a.histogram, b.histogram);
+    assert_eq!(a.max_ulps, b.max_ulps);
+    assert_eq!(
+        a.worst.as_ref().map(|w| (w.line, w.ulps)),
+        b.worst.as_ref().map(|w| (w.line, w.ulps))
+    );
+    let lines = |r: &BatchReport| {
+        r.failures
+            .iter()
+            .map(|f| (f.line, f.reason.clone()))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(lines(a), lines(b));
+    assert_eq!(a.rows, b.rows);
+}
+
+fn row_spec() -> impl Strategy<Value = (f64, f64, [Option<i8>; 3])> {
+    let shift = prop_oneof![8 => (-3i8..=3).prop_map(Some), 1 => Just(None)];
+    // few distinct points, so that equal errors (ties for the worst row) are common
+    (
+        prop_oneof![Just(0.5), Just(0.25), 0.0f64..1.0],
+        prop_oneof![Just(0.5), 0.0f64..1.0],
+        [shift.clone(), shift.clone(), shift],
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+    #[test]
+    fn merging_the_reports_of_slices_gives_the_report_of_the_whole(
+        spec in prop::collection::vec(row_spec(), 1..40),
+        cuts in prop::collection::vec(0usize..40, 0..4),
+        reverse in any::<bool>(),
+        detail in any::<bool>(),
+    ) {
+        let c = checker("ulps=1", detail);
+        let (points, values) = rows(&spec);
+        let whole = c.check_rows(&points, &values, 0, "<memory>", "finn").map(|r| r.0).unwrap();
+        let n = spec.len();
+        let mut bounds: Vec<usize> = cuts.into_iter().map(|k| k % (n + 1)).collect();
+        bounds.extend([0, n]);
+        bounds.sort_unstable();
+        bounds.dedup(); // empty slices are not reports (no rows is an error)
+        let mut parts: Vec<BatchReport> = bounds
+            .windows(2)
+            .map(|w| c.check_rows(&points[3 * w[0]..3 * w[1]], &values[3 * w[0]..3 * w[1]], w[0], "<memory>", "finn").map(|r| r.0).unwrap())
+            .collect();
+        if reverse {
+            parts.reverse();
+        }
+        let mut merged = parts.remove(0);
+        for p in &parts {
+            merged.merge(p).unwrap();
+        }
+        same(&merged, &whole);
+    }
+}
+
+#[test]
+fn rows_in_memory_and_in_a_csv_file_agree() {
+    let spec: Vec<_> = (0..50)
+        .map(|i| {
+            let t = f64::from(i) / 50.0;
+            (
+                t,
+                1.0 - t,
+                [Some((i % 5) as i8 - 2), Some(0), Some((i % 3) as i8 - 1)],
+            )
+        })
+        .collect();
+    let (points, values) = rows(&spec);
+    let c = checker("ulps=1", false);
+    let memory = c
+        .check_rows(&points, &values, 1, "<memory>", "finn")
+        .map(|r| r.0)
+        .unwrap();
+    let csv: String = points
+        .chunks(3)
+        .zip(values.chunks(3))
+        .map(|(p, v)| {
+            format!(
+                "{:?},{:?},{:?},{:?},{:?},{:?}\n",
+                p[0], p[1], p[2], v[0], v[1], v[2]
+            )
+        })
+        .collect();
+    let file = c
+        .check_reader(
+            csv.as_bytes(),
+            Format::Csv,
+            "<memory>",
+            "finn",
+            &mut |_, _| {},
+        )
+        .unwrap();
+    same(&memory, &file);
+    assert!(memory.failed > 0 && memory.passed > 0);
+}
