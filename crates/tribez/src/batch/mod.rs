@@ -554,14 +554,14 @@ impl BatchChecker {
     ) -> Result<(BatchReport, Vec<RowVerdict>), BatchError> {
         let p = &self.prepared;
         let (width, dim) = (p.width(), p.patch.net.dim());
-        if points.len() % width != 0 {
+        if !points.len().is_multiple_of(width) {
             return Err(BatchError::Shape {
                 what: "points",
                 per_row: width,
                 len: points.len(),
             });
         }
-        if values.len() % dim != 0 {
+        if !values.len().is_multiple_of(dim) {
             return Err(BatchError::Shape {
                 what: "values",
                 per_row: dim,
