@@ -24,7 +24,7 @@ macro_rules! hazmat {
 }
 
 hazmat!(
-    /// [`AnyPatch`]: the representation of a [`crate::Patch`] by kind.
+    /// `AnyPatch`: the representation of a [`crate::Patch`] by kind.
     any_patch,
     /// Bernstein polynomials and the direct Bernstein form.
     bernstein,
