@@ -11,11 +11,11 @@ use std::path::PathBuf;
 
 use proptest::prelude::*;
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport, Format};
-use tribez::certify::measures::Tolerance;
-use tribez::float::Precision;
-use tribez::io::patch_file::read_patch;
+use tribez::Tolerance;
+use tribez::Precision;
+use tribez::hazmat::io::patch_file::read_patch;
 
-fn finn() -> tribez::patch::BezierPatch {
+fn finn() -> tribez::hazmat::patch::BezierPatch {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/finn_day30.toml");
     read_patch(&path).unwrap()
 }
