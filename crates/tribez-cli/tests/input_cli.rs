@@ -193,9 +193,7 @@ fn check_dir_walks_each_file_once_and_skips_what_is_not_a_file() {
     write(
         root,
         "sub/a.claims.toml",
-        format!(
-            "patch = \"../finn.toml\"\n[[claim]]\nid = \"worked\"\nop = \"eval\"\nat = [\"1/2\",\"1/3\",\"1/6\"]\nexpect = [\"4/9\",\"5/9\",\"29/36\"]\n"
-        ),
+        "patch = \"../finn.toml\"\n[[claim]]\nid = \"worked\"\nop = \"eval\"\nat = [\"1/2\",\"1/3\",\"1/6\"]\nexpect = [\"4/9\",\"5/9\",\"29/36\"]\n",
     );
     symlink(".", root.join("dot1")).unwrap();
     symlink(".", root.join("sub/dot2")).unwrap();

@@ -86,13 +86,16 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     )
 }
 
+/// Pieces, their numbers among the m+1 of the full split, and the note on degenerate pieces.
+type Split = (Vec<Piece<BigRational>>, Vec<usize>, Option<String>);
+
 /// The pieces of a split at `t` with their numbers (1-based: piece k replaces corner k), and a
 /// note naming the degenerate pieces omitted when `t` lies on a facet. A corner is an error.
 fn split_at_point(
     net: &tribez::hazmat::patch::ControlNet<BigRational>,
     t: &[BigRational],
     text: &str,
-) -> Result<(Vec<Piece<BigRational>>, Vec<usize>, Option<String>), CliError> {
+) -> Result<Split, CliError> {
     let what = || format!("--at {text}");
     let zero: Vec<usize> = (0..t.len()).filter(|&k| t[k].is_zero()).collect();
     if zero.is_empty() {

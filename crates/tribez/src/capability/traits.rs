@@ -8,7 +8,7 @@
 //! | [`Constructions`] | degree elevation, subpatches, blossoms, splitting | Bézier, functional, rational |
 //!
 //! A kind is one file in this folder that implements these traits for its type; the commands
-//! and [`crate::judge`] work through the traits and never name a kind.
+//! and [`crate::judge()`] work through the traits and never name a kind.
 //!
 //! Floats cross these traits as `f64`: an `f32` value widens exactly, and a precision says which
 //! format the numbers belong to.

@@ -191,7 +191,12 @@ fn resolve_patch(
 impl ClaimFile {
     /// Read a claim file (TOML or JSON).
     pub fn read(path: &Path) -> Result<Self, InputError> {
-        let doc = Document::read(path)?;
+        Self::from_document(Document::read(path)?, path)
+    }
+
+    /// A claim file from its parsed document; `path` names it, and patch files named in it are
+    /// read beside it.
+    pub fn from_document(doc: Document, path: &Path) -> Result<Self, InputError> {
         let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
         let root = doc.root_table()?;
         doc.check_keys(&doc.root, root, FILE_KEYS, "")?;
@@ -341,8 +346,15 @@ impl ClaimFile {
 
     /// Judge one claim.
     pub fn judge(&self, claim: &Claim) -> Result<Judged, InputError> {
-        let exact = ops::exact_value(self, claim)?;
+        let inputs = ops::Inputs::new(self, claim)?;
+        let op = ops::ClaimOp::parse(&inputs)?;
         let (tolerance, precision) = self.tolerance_of(claim)?;
+        // with `precision`, every operation but `eval` computes from the inputs as the code saw
+        // them; `eval` keeps both views (its float view below)
+        let exact = match precision {
+            Some(p) if !op.is_eval() => op.seen(&inputs, p)?.compute(&inputs)?,
+            _ => op.compute(&inputs)?,
+        };
         let t = self.doc.table(&claim.node, &claim.id)?;
         let expect = Document::get(t, "expect").ok_or_else(|| {
             self.doc.error(
@@ -362,8 +374,10 @@ impl ClaimFile {
                 )
             })?;
         }
-        let float_eval = match (precision, claim.op.as_str()) {
-            (Some(p), "eval") => Some(ops::eval_float(self, claim, p)?),
+        let float_eval = match (precision, &op) {
+            (Some(p), ops::ClaimOp::Point(eval @ ops::PointOp::Eval { .. })) => {
+                Some(ops::float_view(&inputs, eval, p)?)
+            }
             _ => None,
         };
         let judged_against = float_eval

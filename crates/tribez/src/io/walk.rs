@@ -47,11 +47,14 @@ fn identity(path: &Path, _meta: &std::fs::Metadata) -> Option<(u64, u64, PathBuf
     std::fs::canonicalize(path).ok().map(|p| (0, 0, p))
 }
 
+/// A file's identity: (device, inode, canonical path).
+type Identity = (u64, u64, PathBuf);
+
 /// The regular files under `dir` whose file name satisfies `matches` (see the module
 /// documentation). `dir` itself may be a symbolic link: it was named explicitly.
 pub fn walk(dir: &Path, matches: &dyn Fn(&str) -> bool) -> Result<Walk, InputError> {
     // (is a link, path, identity)
-    let mut found: Vec<(bool, PathBuf, Option<(u64, u64, PathBuf)>)> = Vec::new();
+    let mut found: Vec<(bool, PathBuf, Option<Identity>)> = Vec::new();
     let mut notes = Vec::new();
     let mut entered = HashSet::new();
     let mut stack = vec![dir.to_path_buf()];

@@ -1,0 +1,562 @@
+//! Operations at one point: `eval` (and its float view), `derivative`, `tangent`, `wachspress`;
+//! and the coordinates of a point in a simplex: `barycentric`, `direction`.
+
+use std::borrow::Cow;
+
+use num_rational::BigRational;
+use num_traits::Zero;
+
+use super::inputs::{Inputs, Point, select_part};
+use super::{OpName, Value, seen};
+use crate::any_patch::AnyPatch;
+use crate::domain::Domain;
+use crate::exact::{Algorithm, ExactEvaluator};
+use crate::io::InputError;
+use crate::spatch::SPatch;
+
+type Q = BigRational;
+
+/// An operation at one point, with its parsed inputs.
+#[derive(Clone, Debug)]
+pub enum PointOp<'a> {
+    /// `eval`: the patch (any kind) at a point; `algorithm` names the float path of `bound`.
+    Eval {
+        /// The patch.
+        patch: Cow<'a, AnyPatch>,
+        /// The point (Cartesian only, `at` empty, for an S-patch).
+        point: Point,
+        /// The float algorithm whose a-priori bound `tolerance = "bound"` uses.
+        algorithm: Algorithm,
+    },
+    /// `derivative`: `D_{d_1} ⋯ D_{d_r} p` at a point (polynomial or rational patch).
+    Derivative {
+        /// The patch.
+        patch: Cow<'a, AnyPatch>,
+        /// The point.
+        point: Point,
+        /// Barycentric directions (each summing to 0).
+        dirs: Vec<Vec<Q>>,
+        /// Cartesian directions (converted with the patch's domain).
+        vectors: Vec<Vec<Q>>,
+    },
+    /// `tangent`: the tangent frame at a point (polynomial or rational patch).
+    Tangent {
+        /// The patch.
+        patch: Cow<'a, AnyPatch>,
+        /// The point.
+        point: Point,
+        /// The part of the frame claimed, if one.
+        part: Option<String>,
+    },
+    /// `wachspress`: an S-patch polygon's Wachspress data at a Cartesian point.
+    Wachspress {
+        /// The S-patch.
+        patch: Cow<'a, SPatch>,
+        /// The Cartesian point.
+        cartesian: Vec<Q>,
+    },
+    /// `barycentric` (`direction = false`) or `direction` coordinates in a simplex.
+    Coordinates {
+        /// The simplex.
+        domain: Domain,
+        /// The Cartesian point (or vector).
+        x: Vec<Q>,
+        /// A vector (directional coordinates) rather than a point.
+        direction: bool,
+    },
+}
+
+fn parse_algorithm(inputs: &Inputs<'_>) -> Result<Algorithm, InputError> {
+    match inputs.opt_string("algorithm")?.as_deref() {
+        None | Some("casteljau") => Ok(Algorithm::Casteljau),
+        Some("bernstein") => Ok(Algorithm::Bernstein),
+        Some(other) => Err(inputs.error(
+            "algorithm",
+            format!("unknown algorithm `{other}` (known: casteljau, bernstein)"),
+        )),
+    }
+}
+
+/// The point of a polynomial or rational patch (`at` or `cartesian`).
+fn patch_point(inputs: &Inputs<'_>, patch: &AnyPatch) -> Result<Point, InputError> {
+    match patch {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => inputs.point(p),
+        AnyPatch::Rational(r) => inputs.point(&r.patch),
+        AnyPatch::SPatch(_) => {
+            if inputs.get("at").is_some() {
+                return Err(
+                    inputs.error("at", "an S-patch takes Cartesian points: use `cartesian`")
+                );
+            }
+            Ok(Point {
+                at: Vec::new(),
+                cartesian: Some(inputs.rationals("cartesian")?),
+            })
+        }
+    }
+}
+
+/// A polynomial or rational patch (an S-patch is an error for the claim's operation).
+fn polynomial_or_rational<'a>(inputs: &Inputs<'a>) -> Result<Cow<'a, AnyPatch>, InputError> {
+    let any = inputs.any_patch()?;
+    if let AnyPatch::SPatch(_) = any.as_ref() {
+        inputs.patch()?; // the located error "operation `…` does not take a S-patch patch"
+    }
+    Ok(any)
+}
+
+fn domain_of(patch: &AnyPatch) -> Option<Domain> {
+    match patch {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Some(p.domain_or_reference()),
+        AnyPatch::Rational(r) => Some(r.patch.domain_or_reference()),
+        AnyPatch::SPatch(_) => None,
+    }
+}
+
+impl<'a> PointOp<'a> {
+    /// Parse the inputs of `name` (one of this module's operations).
+    pub fn parse(inputs: &Inputs<'a>, name: OpName) -> Result<Self, InputError> {
+        Ok(match name {
+            OpName::Eval => {
+                let patch = inputs.any_patch()?;
+                let point = patch_point(inputs, &patch)?;
+                PointOp::Eval {
+                    algorithm: parse_algorithm(inputs)?,
+                    patch,
+                    point,
+                }
+            }
+            OpName::Derivative => {
+                let patch = polynomial_or_rational(inputs)?;
+                let point = patch_point(inputs, &patch)?;
+                let m = point.at.len() - 1;
+                let dirs = inputs.rational_rows("dirs")?;
+                for (i, d) in dirs.iter().enumerate() {
+                    crate::domain::check_direction(d, m, "direction")
+                        .map_err(|e| inputs.error("dirs", format!("direction {}: {e}", i + 1)))?;
+                }
+                let vectors = inputs.rational_rows("vectors")?;
+                let op = PointOp::Derivative {
+                    patch,
+                    point,
+                    dirs,
+                    vectors,
+                };
+                // the Cartesian directions convert, and the order is possible
+                op.directions(inputs)?;
+                op
+            }
+            OpName::Tangent => {
+                let patch = polynomial_or_rational(inputs)?;
+                let point = patch_point(inputs, &patch)?;
+                PointOp::Tangent {
+                    patch,
+                    point,
+                    part: inputs.part()?,
+                }
+            }
+            OpName::Wachspress => {
+                let AnyPatch::SPatch(s) = inputs.file.any_patch_for(inputs.claim)? else {
+                    return Err(inputs.error(
+                        "patch",
+                        "`wachspress` needs an S-patch (a patch file with `polygon`)",
+                    ));
+                };
+                let cartesian = inputs.rationals("cartesian")?;
+                PointOp::Wachspress {
+                    patch: Cow::Borrowed(s),
+                    cartesian,
+                }
+            }
+            OpName::Barycentric | OpName::Direction => {
+                let direction = name == OpName::Direction;
+                let key = if direction { "vector" } else { "point" };
+                PointOp::Coordinates {
+                    domain: inputs.domain("domain")?,
+                    x: inputs.rationals(key)?,
+                    direction,
+                }
+            }
+            other => unreachable!("`{}` is not a point operation", other.name()),
+        })
+    }
+
+    /// The derivative's barycentric directions: `dirs`, then `vectors` converted with the
+    /// patch's domain; an error if there are none or more than the degree.
+    fn directions(&self, inputs: &Inputs<'_>) -> Result<Vec<Vec<Q>>, InputError> {
+        let PointOp::Derivative {
+            patch,
+            dirs,
+            vectors,
+            ..
+        } = self
+        else {
+            unreachable!("derivative only")
+        };
+        let domain = domain_of(patch).expect("a polynomial or rational patch");
+        let mut out = dirs.clone();
+        for (i, v) in vectors.iter().enumerate() {
+            out.push(
+                domain
+                    .direction(v)
+                    .map_err(|e| inputs.error("vectors", format!("vector {}: {e}", i + 1)))?,
+            );
+        }
+        if out.is_empty() {
+            return Err(inputs.error(
+                "dirs",
+                "give at least one direction in `dirs` (barycentric) or `vectors` (Cartesian)",
+            ));
+        }
+        if let Some(p) = patch.polynomial() {
+            crate::derivative::check_order(out.len(), p.net.degree())
+                .map_err(|e| inputs.error("dirs", e.to_string()))?;
+        }
+        Ok(out)
+    }
+
+    /// The operation on the inputs as seen in precision `p` (module doc of `ops`).
+    pub fn seen(
+        &self,
+        inputs: &Inputs<'_>,
+        p: crate::float::Precision,
+    ) -> Result<Self, InputError> {
+        Ok(match self {
+            PointOp::Eval {
+                patch,
+                point,
+                algorithm,
+            } => PointOp::Eval {
+                point: seen::point(inputs, point, domain_of(patch).as_ref(), p)?,
+                patch: Cow::Owned(seen::any_patch(inputs, patch, p)?),
+                algorithm: *algorithm,
+            },
+            PointOp::Derivative {
+                patch,
+                point,
+                dirs,
+                vectors,
+            } => PointOp::Derivative {
+                point: seen::point(inputs, point, domain_of(patch).as_ref(), p)?,
+                patch: Cow::Owned(seen::any_patch(inputs, patch, p)?),
+                dirs: seen::rows(inputs, "dirs", dirs, p)?,
+                vectors: seen::rows(inputs, "vectors", vectors, p)?,
+            },
+            PointOp::Tangent { patch, point, part } => PointOp::Tangent {
+                point: seen::point(inputs, point, domain_of(patch).as_ref(), p)?,
+                patch: Cow::Owned(seen::any_patch(inputs, patch, p)?),
+                part: part.clone(),
+            },
+            PointOp::Wachspress { patch, cartesian } => PointOp::Wachspress {
+                patch: Cow::Owned(seen::spatch(inputs, patch, p)?),
+                cartesian: seen::numbers(inputs, "cartesian", cartesian, p)?,
+            },
+            PointOp::Coordinates {
+                domain,
+                x,
+                direction,
+            } => PointOp::Coordinates {
+                domain: seen::domain(inputs, "domain", domain, p)?,
+                x: seen::numbers(inputs, if *direction { "vector" } else { "point" }, x, p)?,
+                direction: *direction,
+            },
+        })
+    }
+
+    /// The exact value.
+    pub fn compute(&self, inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        match self {
+            PointOp::Eval { patch, point, .. } => match patch.as_ref() {
+                AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok(Value::numbers(
+                    &ExactEvaluator::new(&p.net).evaluate_fast(&point.at),
+                )),
+                AnyPatch::Rational(r) => r
+                    .evaluate(&point.at)
+                    .map(|v| Value::numbers(&v))
+                    .map_err(|e| inputs.error(point.key(), e.to_string())),
+                AnyPatch::SPatch(s) => {
+                    let x = point.cartesian.as_deref().unwrap_or_default();
+                    s.evaluate(x)
+                        .map(|(_, v)| Value::numbers(&v))
+                        .map_err(|e| inputs.error("cartesian", e.to_string()))
+                }
+            },
+            PointOp::Derivative { patch, point, .. } => {
+                let dirs = self.directions(inputs)?;
+                let refs: Vec<&[Q]> = dirs.iter().map(Vec::as_slice).collect();
+                match patch.as_ref() {
+                    // rational patches: any order, by Leibniz's rule on the homogeneous net
+                    AnyPatch::Rational(r) => r
+                        .derivative_of_order(&point.at, &refs)
+                        .map(|v| Value::numbers(&v))
+                        .map_err(|e| inputs.error(point.key(), e.to_string())),
+                    other => {
+                        let p = other.polynomial().expect("checked when parsed");
+                        Ok(Value::numbers(&crate::derivative::directional_derivative(
+                            &p.net, &refs, &point.at,
+                        )))
+                    }
+                }
+            }
+            PointOp::Tangent { patch, point, part } => {
+                let f = match patch.as_ref() {
+                    AnyPatch::Rational(r) => {
+                        r.tangent_frame(&r.patch.domain_or_reference(), &point.at)
+                    }
+                    other => {
+                        let p = other.polynomial().expect("checked when parsed");
+                        crate::derivative::tangent_frame(
+                            &p.net,
+                            &p.domain_or_reference(),
+                            &point.at,
+                        )
+                    }
+                }
+                .map_err(|e| inputs.error("at", e.to_string()))?;
+                select_part(inputs, part.as_deref(), tangent_value(&f))
+            }
+            PointOp::Wachspress { patch, cartesian } => {
+                let lambda = patch
+                    .polygon
+                    .wachspress(cartesian)
+                    .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+                let x = [cartesian[0].clone(), cartesian[1].clone()]; // checked by `wachspress`
+                Ok(Value::Map(vec![
+                    ("A".into(), Value::numbers(&patch.polygon.areas(&x))),
+                    ("C".into(), Value::numbers(&patch.polygon.corner_areas())),
+                    ("lambda".into(), Value::numbers(&lambda)),
+                ]))
+            }
+            PointOp::Coordinates {
+                domain,
+                x,
+                direction,
+            } => {
+                let (name, result) = if *direction {
+                    ("vector", domain.direction(x))
+                } else {
+                    ("point", domain.barycentric(x))
+                };
+                Ok(Value::numbers(
+                    &result.map_err(|e| inputs.error(name, e.to_string()))?,
+                ))
+            }
+        }
+    }
+}
+
+/// The tangent frame as a map value.
+fn tangent_value(f: &crate::derivative::TangentFrame) -> Value {
+    let rows = |v: &[Vec<Q>]| Value::List(v.iter().map(|p| Value::numbers(p)).collect());
+    let mut kv = vec![
+        ("point".to_string(), Value::numbers(&f.point)),
+        ("intermediate".to_string(), rows(&f.intermediate)),
+        ("partials".to_string(), rows(&f.partials)),
+        ("regular".to_string(), Value::Bool(f.regular)),
+    ];
+    if let Some(nrm) = &f.normal {
+        kv.push(("normal".into(), Value::numbers(nrm)));
+        // the plane through the intermediate points contains the point and has normal ∥ p_x × p_y
+        let c = &f.intermediate;
+        let d = |a: &[Q], b: &[Q]| a.iter().zip(b).map(|(x, y)| x - y).collect::<Vec<_>>();
+        let plane = crate::derivative::cross(&d(&c[1], &c[0]), &d(&c[2], &c[0]));
+        let parallel = crate::derivative::cross(&plane, nrm)
+            .iter()
+            .all(Zero::is_zero)
+            && plane.iter().any(|x| !x.is_zero());
+        let on: Q = d(&f.point, &c[0])
+            .iter()
+            .zip(&plane)
+            .map(|(a, b)| a * b)
+            .sum();
+        kv.push((
+            "spans_tangent_plane".into(),
+            Value::Bool(parallel && on.is_zero()),
+        ));
+    }
+    Value::Map(kv)
+}
+
+/// A float evaluation claim's exact values both ways, its condition numbers and bounds.
+pub struct FloatEval {
+    /// The exact values of the inputs as the code saw them (rounded to the precision).
+    pub seen_inputs: Vec<Q>,
+    /// `P` at those inputs, with the control points rounded to the precision too (homogeneous form).
+    pub exact_seen: Vec<Q>,
+    /// `P` at the intended inputs (the exact text, the exact patch).
+    pub exact_intended: Vec<Q>,
+    /// `Σ|c_i| B_i(|λ|)` per coordinate, at the inputs as seen.
+    pub condition: Vec<Q>,
+    /// The a-priori bound of the claim's `algorithm` per coordinate.
+    pub bound: Vec<Option<Q>>,
+}
+
+/// The float view of an `eval` claim in precision `p`. A Cartesian point is rounded to `p` and
+/// converted to barycentric coordinates exactly.
+///
+/// Rational patches: `bound` is the proven a-priori bound
+/// [`crate::certify::bound::rational_a_priori`] of homogeneous de Casteljau plus one division,
+/// and `cond=K` means `|y − q| ≤ K ε κ` with the rational condition number
+/// [`crate::certify::bound::rational_condition`]; the homogeneous net `(w c, w)` is what is
+/// rounded.
+///
+/// S-patches: `bound` is the proven bound of the whole float path (float Wachspress
+/// coordinates, then de Casteljau: [`crate::certify::beyond::SPatchCase::total_bound`]);
+/// `cond=K` is refused (the coordinates have a condition of their own that `Σ|P_α|B_α` does
+/// not measure). The condition shown is `Σ|P_α|B_α(λ)` at the exact Wachspress coordinates of
+/// the rounded point.
+pub fn eval_float(
+    inputs: &Inputs<'_>,
+    op: &PointOp<'_>,
+    p: crate::float::Precision,
+) -> Result<FloatEval, InputError> {
+    let PointOp::Eval {
+        patch,
+        point,
+        algorithm,
+    } = op
+    else {
+        unreachable!("the float view is of `eval`")
+    };
+    let patch = match patch.as_ref() {
+        AnyPatch::Rational(r) => return eval_float_rational(inputs, r, point, *algorithm, p),
+        AnyPatch::SPatch(s) => return eval_float_spatch(inputs, s, point, p),
+        AnyPatch::Bezier(patch) | AnyPatch::Functional(patch) => patch,
+    };
+    let seen_patch = seen::patch(inputs, patch, p)?;
+    let seen_inputs = seen::point(inputs, point, Some(&patch.domain_or_reference()), p)?.at;
+    let seen_net = &seen_patch.net;
+    let exact_seen = ExactEvaluator::new(seen_net).evaluate(&seen_inputs, Algorithm::Casteljau);
+    let exact_intended = ExactEvaluator::new(&patch.net).evaluate(&point.at, Algorithm::Casteljau);
+    let condition = crate::certify::bound::condition(seen_net, &seen_inputs);
+    let (m, n) = (patch.net.m(), patch.net.degree());
+    let bound = condition
+        .iter()
+        .map(|s| crate::certify::bound::a_priori(*algorithm, p, m, n, s, &seen_inputs))
+        .collect();
+    Ok(FloatEval {
+        seen_inputs,
+        exact_seen,
+        exact_intended,
+        condition,
+        bound,
+    })
+}
+
+fn refuse_cond_tolerance(inputs: &Inputs<'_>) -> Result<(), InputError> {
+    let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+    if matches!(tolerance, crate::certify::measures::Tolerance::Cond(_)) {
+        return Err(inputs.error(
+            "tolerance",
+            format!("tolerance `{tolerance}` is not defined for S-patches (the float Wachspress coordinates add an error Σ|P_α|B_α does not measure): use `bound`, the proven bound of the whole float path"),
+        ));
+    }
+    Ok(())
+}
+
+/// The float view of an `eval` claim on a rational patch.
+fn eval_float_rational(
+    inputs: &Inputs<'_>,
+    r: &crate::rational::RationalPatch,
+    point: &Point,
+    algorithm: Algorithm,
+    p: crate::float::Precision,
+) -> Result<FloatEval, InputError> {
+    if algorithm != Algorithm::Casteljau {
+        return Err(inputs.error(
+            "algorithm",
+            "`bernstein`: a rational patch's float path is homogeneous de Casteljau (algorithm `casteljau`) only",
+        ));
+    }
+    let key = point.key();
+    let seen_inputs = seen::point(inputs, point, Some(&r.patch.domain_or_reference()), p)?.at;
+    let seen = seen::rational(inputs, r, p)?;
+    let hr = seen.homogeneous();
+    let exact_seen = seen
+        .evaluate(&seen_inputs)
+        .map_err(|e| inputs.error(key, format!("as the code saw it: {e}")))?;
+    let exact_intended = r
+        .evaluate(&point.at)
+        .map_err(|e| inputs.error(key, e.to_string()))?;
+    use crate::certify::bound;
+    let condition = bound::rational_condition(&hr, &seen_inputs)
+        .ok_or_else(|| inputs.error(key, "the denominator vanishes as the code saw it"))?;
+    let (m, n) = (hr.m(), hr.degree());
+    let errs: Option<Vec<Q>> = bound::condition(&hr, &seen_inputs)
+        .iter()
+        .map(|s| bound::a_priori(Algorithm::Casteljau, p, m, n, s, &seen_inputs))
+        .collect();
+    let den = ExactEvaluator::new(&seen.denominator())
+        .evaluate(&seen_inputs, Algorithm::Casteljau)
+        .remove(0);
+    let bounds = errs.and_then(|e| {
+        let (e_den, e_num) = e.split_last()?;
+        bound::rational_a_priori(p, e_num, e_den, &exact_seen, &den)
+    });
+    let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+    if tolerance == crate::certify::measures::Tolerance::Bound && bounds.is_none() {
+        return Err(inputs.error(
+            "tolerance",
+            format!("no bound at this point: the denominator's error bound e_D is not below |D| in {} (its sign is not certain)", p.name()),
+        ));
+    }
+    let d = exact_seen.len();
+    let bound = bounds.map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect());
+    Ok(FloatEval {
+        seen_inputs,
+        exact_seen,
+        exact_intended,
+        condition,
+        bound,
+    })
+}
+
+/// The float view of an `eval` claim on an S-patch (Cartesian point).
+fn eval_float_spatch(
+    inputs: &Inputs<'_>,
+    s: &SPatch,
+    point: &Point,
+    p: crate::float::Precision,
+) -> Result<FloatEval, InputError> {
+    refuse_cond_tolerance(inputs)?;
+    let x = point.cartesian.as_deref().unwrap_or_default();
+    let (_, exact_intended) = s
+        .evaluate(x)
+        .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+    let seen_inputs = seen::numbers(inputs, "cartesian", x, p)?;
+    let seen = seen::spatch(inputs, s, p)?;
+    let (lambda, exact_seen) = seen
+        .evaluate(&seen_inputs)
+        .map_err(|e| inputs.error("cartesian", format!("as the code saw it: {e}")))?;
+    let condition = crate::certify::bound::condition(&seen.net, &lambda);
+    let d = exact_seen.len();
+    // the proven bound of the float path, run as the code runs it
+    use crate::certify::beyond::SPatchCertifier;
+    use crate::float::Precision;
+    use crate::number::{round_f32, round_f64};
+    let total = match p {
+        Precision::F64 => SPatchCertifier::<f64>::new(s).ok().and_then(|c| {
+            c.check(&[round_f64(&seen_inputs[0]), round_f64(&seen_inputs[1])])
+                .total_bound
+        }),
+        Precision::F32 => SPatchCertifier::<f32>::new(s).ok().and_then(|c| {
+            c.check(&[round_f32(&seen_inputs[0]), round_f32(&seen_inputs[1])])
+                .total_bound
+        }),
+    };
+    let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
+    if tolerance == crate::certify::measures::Tolerance::Bound && total.is_none() {
+        return Err(inputs.error(
+            "tolerance",
+            format!("no bound at this point in {}: it is on or too near an edge of the polygon (or its numbers too small) for the float Wachspress coordinates' bound", p.name()),
+        ));
+    }
+    let bound = total.map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect());
+    Ok(FloatEval {
+        seen_inputs,
+        exact_seen,
+        exact_intended,
+        condition,
+        bound,
+    })
+}

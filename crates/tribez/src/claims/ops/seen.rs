@@ -1,0 +1,150 @@
+//! The inputs as the float code saw them: numbers, points, domains and patches rounded to a
+//! precision (each number to the float nearest it, [`crate::certify::measures::as_float`]).
+//! Errors name the input that overflows the precision, or that rounding makes invalid.
+
+use num_rational::BigRational;
+
+use super::inputs::{Inputs, Point};
+use crate::any_patch::AnyPatch;
+use crate::domain::Domain;
+use crate::float::Precision;
+use crate::io::InputError;
+use crate::patch::BezierPatch as Patch;
+use crate::rational::RationalPatch;
+use crate::spatch::SPatch;
+
+type Q = BigRational;
+
+fn round(q: &Q, p: Precision) -> Option<Q> {
+    crate::certify::measures::as_float(q, p)
+}
+
+/// Numbers of input `name` rounded to `p`.
+pub fn numbers(
+    inputs: &Inputs<'_>,
+    name: &str,
+    xs: &[Q],
+    p: Precision,
+) -> Result<Vec<Q>, InputError> {
+    xs.iter()
+        .map(|q| round(q, p))
+        .collect::<Option<_>>()
+        .ok_or_else(|| inputs.error(name, format!("an input overflows {}", p.name())))
+}
+
+/// Rows of numbers of input `name` rounded to `p`.
+pub fn rows(
+    inputs: &Inputs<'_>,
+    name: &str,
+    xs: &[Vec<Q>],
+    p: Precision,
+) -> Result<Vec<Vec<Q>>, InputError> {
+    xs.iter().map(|x| numbers(inputs, name, x, p)).collect()
+}
+
+/// A point as seen: the barycentric `at` rounded, or the Cartesian point rounded and then
+/// converted exactly with `domain` (the patch's; `None` for an S-patch, whose points stay
+/// Cartesian).
+pub fn point(
+    inputs: &Inputs<'_>,
+    point: &Point,
+    domain: Option<&Domain>,
+    p: Precision,
+) -> Result<Point, InputError> {
+    match (&point.cartesian, domain) {
+        (Some(x), Some(domain)) => {
+            let xr = numbers(inputs, "cartesian", x, p)?;
+            Ok(Point {
+                at: domain
+                    .barycentric(&xr)
+                    .map_err(|e| inputs.error("cartesian", e.to_string()))?,
+                cartesian: Some(xr),
+            })
+        }
+        (Some(x), None) => Ok(Point {
+            at: Vec::new(),
+            cartesian: Some(numbers(inputs, "cartesian", x, p)?),
+        }),
+        (None, _) => Ok(Point {
+            at: numbers(inputs, "at", &point.at, p)?,
+            cartesian: None,
+        }),
+    }
+}
+
+/// A simplex given as an op input, its vertices rounded.
+pub fn domain(
+    inputs: &Inputs<'_>,
+    name: &str,
+    d: &Domain,
+    p: Precision,
+) -> Result<Domain, InputError> {
+    let vs = rows(inputs, name, d.vertices(), p)?;
+    Domain::new(vs).map_err(|e| inputs.error(name, format!("rounded to {}: {e}", p.name())))
+}
+
+/// A polynomial patch with its control points rounded (its domain stays exact).
+pub fn patch(inputs: &Inputs<'_>, patch: &Patch, p: Precision) -> Result<Patch, InputError> {
+    if patch.net.coords().iter().any(|q| round(q, p).is_none()) {
+        return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+    }
+    Ok(Patch {
+        net: patch.net.map(|q| round(q, p).unwrap_or_default()),
+        ..patch.clone()
+    })
+}
+
+/// A rational patch as seen: its homogeneous net `(w c, w)` rounded.
+pub fn rational(
+    inputs: &Inputs<'_>,
+    r: &RationalPatch,
+    p: Precision,
+) -> Result<RationalPatch, InputError> {
+    let hr = r.homogeneous().map(|q| round(q, p));
+    if hr.coords().iter().any(Option::is_none) {
+        return Err(inputs.error(
+            "patch",
+            format!("a weighted control point overflows {}", p.name()),
+        ));
+    }
+    let hr = hr.map(|q| q.clone().unwrap_or_default());
+    RationalPatch::from_homogeneous(&hr, &r.patch)
+        .map_err(|e| inputs.error("patch", format!("rounded to {}: {e}", p.name())))
+}
+
+/// An S-patch as seen: its polygon and control points rounded.
+pub fn spatch(inputs: &Inputs<'_>, s: &SPatch, p: Precision) -> Result<SPatch, InputError> {
+    let mut verts = Vec::new();
+    for v in s.polygon.vertices() {
+        verts.push(
+            v.iter()
+                .map(|q| round(q, p))
+                .collect::<Option<Vec<_>>>()
+                .ok_or_else(|| inputs.error("patch", format!("a number overflows {}", p.name())))?,
+        );
+    }
+    let polygon = crate::spatch::Polygon::new(verts)
+        .map_err(|e| inputs.error("patch", format!("the polygon rounded to {}: {e}", p.name())))?;
+    let net = s.net.map(|q| round(q, p));
+    if net.coords().iter().any(Option::is_none) {
+        return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+    }
+    let mut out = SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
+        .map_err(|e| inputs.error("patch", e.to_string()))?;
+    out.name = s.name.clone();
+    Ok(out)
+}
+
+/// A patch of any kind as seen.
+pub fn any_patch(
+    inputs: &Inputs<'_>,
+    any: &AnyPatch,
+    p: Precision,
+) -> Result<AnyPatch, InputError> {
+    Ok(match any {
+        AnyPatch::Bezier(x) => AnyPatch::Bezier(patch(inputs, x, p)?),
+        AnyPatch::Functional(x) => AnyPatch::Functional(patch(inputs, x, p)?),
+        AnyPatch::Rational(r) => AnyPatch::Rational(rational(inputs, r, p)?),
+        AnyPatch::SPatch(s) => AnyPatch::SPatch(spatch(inputs, s, p)?),
+    })
+}
