@@ -10,13 +10,13 @@ use pyo3::types::PyBytes;
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
-use tribez::hazmat::any_patch::AnyPatch;
 use tribez::batch::{
     BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
     UlpHistogram, WorstRow,
 };
-use tribez::hazmat::certify::measures::{Measures, Tolerance};
+use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::certify::measures::as_float;
+use tribez::hazmat::certify::measures::{Measures, Tolerance};
 use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
 use tribez::hazmat::float::Precision;
 use tribez::hazmat::number::{exact_f64, parse_rational, ulps_error_f32, ulps_error_f64};
@@ -71,6 +71,7 @@ pub fn check_rows(
             row_detail: false,
         };
         let name = poly.name.clone().unwrap_or_else(|| "the patch".into());
+        let key = judged_key(&patch.patch, algorithm, cartesian);
         let checker = BatchChecker::new(poly.clone(), &options).map_err(|e| input_error(py, e))?;
         let (pts, vals) = (f64s(points), f64s(values));
         debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
@@ -91,8 +92,30 @@ pub fn check_rows(
             verdicts,
             detail: OnceLock::new(),
             source: Some(Arc::new(source)),
+            key,
         })
     })
+}
+
+/// What a report was judged about, beyond what the library's merge compares (tolerance,
+/// precision, patch name): the patch itself (an FNV-1a hash of its JSON patch file, stable
+/// across processes and machines), the algorithm and the input space. Reports merge only with
+/// equal keys.
+fn judged_key(patch: &AnyPatch, algorithm: Algorithm, cartesian: bool) -> String {
+    let text = tribez::hazmat::io::patch_file::any_patch_to_json(patch).to_string();
+    let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    let algorithm = match algorithm {
+        Algorithm::Bernstein => "bernstein",
+        _ => "casteljau",
+    };
+    let space = if cartesian {
+        "cartesian"
+    } else {
+        "barycentric"
+    };
+    format!("patch {hash:016x}, {algorithm}, {space} points")
 }
 
 /// The numbers of the rows judged, kept until the per-row detail is first asked for.
@@ -230,15 +253,23 @@ pub struct NativeReport {
     pub(crate) detail: OnceLock<Detail>,
     /// The rows' numbers, while the detail is not computed (reports made by `check_rows`).
     pub(crate) source: Option<Arc<Rows>>,
+    /// What it was judged about ([`judged_key`]).
+    pub(crate) key: String,
 }
 
 impl NativeReport {
-    fn with_detail(report: BatchReport, verdicts: Vec<RowVerdict>, detail: Detail) -> Self {
+    fn with_detail(
+        report: BatchReport,
+        verdicts: Vec<RowVerdict>,
+        detail: Detail,
+        key: String,
+    ) -> Self {
         NativeReport {
             report,
             verdicts,
             detail: OnceLock::from(detail),
             source: None,
+            key,
         }
     }
 
@@ -324,6 +355,33 @@ impl NativeReport {
 
     fn merge(&self, py: Python<'_>, other: &NativeReport) -> PyResult<NativeReport> {
         guard(py, || {
+            if self.key != other.key {
+                return Err(input_error(
+                    py,
+                    format!(
+                        "merge: reports judged differently ({} vs {})",
+                        self.key, other.key
+                    ),
+                ));
+            }
+            // disjoint row sets: both verdict lists are sorted by row
+            let (mut i, mut j) = (0, 0);
+            while i < self.verdicts.len() && j < other.verdicts.len() {
+                let (a, b) = (self.verdicts[i].row, other.verdicts[j].row);
+                if a == b {
+                    return Err(input_error(
+                        py,
+                        format!(
+                            "merge: both reports have row {a}: merge reports of disjoint row sets (give each part its first_row)"
+                        ),
+                    ));
+                }
+                if a < b {
+                    i += 1;
+                } else {
+                    j += 1;
+                }
+            }
             let mut report = self.report.clone();
             report
                 .merge(&other.report)
@@ -349,7 +407,12 @@ impl NativeReport {
                 detail.ulps_intended.push(u);
                 detail.correctly_rounded.push(c);
             }
-            Ok(NativeReport::with_detail(report, verdicts, detail))
+            Ok(NativeReport::with_detail(
+                report,
+                verdicts,
+                detail,
+                self.key.clone(),
+            ))
         })
     }
 
@@ -375,7 +438,11 @@ impl NativeReport {
             .iter()
             .flat_map(|u| u.to_ne_bytes())
             .collect();
-        let cr: Vec<u8> = detail.correctly_rounded.iter().map(|&c| u8::from(c)).collect();
+        let cr: Vec<u8> = detail
+            .correctly_rounded
+            .iter()
+            .map(|&c| u8::from(c))
+            .collect();
         vec![
             ("row", "int64", PyBytes::new(py, &index)),
             ("passed", "bool", PyBytes::new(py, &passed)),
@@ -394,9 +461,11 @@ impl NativeReport {
             .verdicts
             .iter()
             .zip(detail.ulps_intended.iter().zip(&detail.correctly_rounded))
-            .map(|(v, (&ui, &cr))| json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr]))
+            .map(|(v, (&ui, &cr))| {
+                json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr])
+            })
             .collect();
-        json!({"report": state_of(&self.report), "verdicts": verdicts}).to_string()
+        json!({"report": state_of(&self.report), "verdicts": verdicts, "key": self.key}).to_string()
     }
 
     #[staticmethod]
@@ -420,6 +489,7 @@ impl NativeReport {
                     })
                     .collect::<Option<Vec<_>>>()
             });
+            let key = j["key"].as_str().unwrap_or_default().to_string();
             report_of(&j["report"])
                 .zip(rows)
                 .map(|(report, rows)| {
@@ -430,7 +500,7 @@ impl NativeReport {
                         detail.ulps_intended.push(u);
                         detail.correctly_rounded.push(c);
                     }
-                    NativeReport::with_detail(report, verdicts, detail)
+                    NativeReport::with_detail(report, verdicts, detail, key.clone())
                 })
                 .ok_or_else(|| crate::input_error(py, "report state: malformed"))
         })

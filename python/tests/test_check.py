@@ -253,3 +253,16 @@ def test_the_gil_is_released_while_judging(finn):
     assert result[0].passed + result[0].failed == 200_000
     # with the GIL held for the whole judgement this loop could not have run meanwhile
     assert ticks > 1000
+
+
+def test_cartesian_points(finn):
+    # (x, y) in the reference triangle is the barycentric point (x, y, 1 - x - y), exactly
+    pts = points(40, seed=17)[:, :2]
+    vals = np.array([[float(q) for q in bernstein_value(FINN, 2, [F(x), F(y), 1 - F(x) - F(y)])]
+                     for x, y in pts.tolist()])
+    report = tribez.check(finn, pts, vals, tolerance="correctly_rounded", cartesian=True)
+    assert (report.passed, report.failed) == (40, 0)
+    assert report.rows["correctly_rounded"].all()
+    vals[5, 2] = math.nextafter(vals[5, 2], -math.inf)
+    report = tribez.check(finn, pts, vals, tolerance="correctly_rounded", cartesian=True)
+    assert (report.passed, report.failed, report.worst["row"]) == (39, 1, 5)
