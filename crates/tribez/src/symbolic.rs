@@ -27,6 +27,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
 use crate::domain::Domain;
+use crate::number::{q_add, q_div, q_mul, q_pow};
 use crate::patch::ControlNet;
 use crate::simplex::multinomial;
 
@@ -105,7 +106,7 @@ impl Polynomial {
                 v.insert(c);
             }
             std::collections::btree_map::Entry::Occupied(mut o) => {
-                *o.get_mut() += c;
+                *o.get_mut() = q_add(o.get(), &c);
                 if o.get().is_zero() {
                     o.remove();
                 }
@@ -131,7 +132,7 @@ impl Polynomial {
     pub fn scale(&self, c: &BigRational) -> Polynomial {
         let mut out = Polynomial::zero(self.nvars);
         for (e, x) in &self.terms {
-            out.add_term(e.clone(), x * c);
+            out.add_term(e.clone(), q_mul(x, c));
         }
         out
     }
@@ -142,7 +143,7 @@ impl Polynomial {
         for (ea, ca) in &self.terms {
             for (eb, cb) in &other.terms {
                 let e = ea.iter().zip(eb).map(|(a, b)| a + b).collect();
-                out.add_term(e, ca * cb);
+                out.add_term(e, q_mul(ca, cb));
             }
         }
         out
@@ -727,7 +728,7 @@ fn checked_div(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
         .next()
         .ok_or_else(|| "division by zero".to_string())?;
     check_bits(a.max_coefficient_bits() + coefficient_bits(c))?;
-    Ok(a.scale(&c.recip()))
+    Ok(a.scale(&q_div(&BigRational::one(), c)))
 }
 
 /// `p^k`, after checking the degree `deg(p)·k` and the coefficient size `bits(p)·k`.
@@ -748,8 +749,8 @@ fn checked_pow(p: &Polynomial, k: u64) -> Result<Polynomial, String> {
     check_bits(p.max_coefficient_bits().saturating_mul(k))?;
     if deg == 0 {
         let c = p.terms.values().next().expect("non-zero");
-        let k = usize::try_from(k).map_err(|_| "exponent too large".to_string())?;
-        return Ok(Polynomial::constant(p.nvars, num_traits::pow(c.clone(), k)));
+        let k = u32::try_from(k).map_err(|_| "exponent too large".to_string())?;
+        return Ok(Polynomial::constant(p.nvars, q_pow(c, k)));
     }
     let mut out = p.clone();
     for _ in 1..k {

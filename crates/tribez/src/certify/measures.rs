@@ -218,7 +218,7 @@ impl Tolerance {
         exact: &BigRational,
         leaf: &Leaf,
     ) -> Result<bool, ToleranceNeeds> {
-        let err = (claimed - exact).abs();
+        let err = crate::number::q_sub(claimed, exact).abs();
         let precision = || {
             leaf.precision.ok_or_else(|| ToleranceNeeds::Precision {
                 tolerance: self.text(),
@@ -331,7 +331,7 @@ pub struct Measures {
 impl Measures {
     /// Measure `claimed` against `exact`.
     pub fn new(claimed: &BigRational, exact: &BigRational, precision: Option<Precision>) -> Self {
-        let abs = (claimed - exact).abs();
+        let abs = crate::number::q_sub(claimed, exact).abs();
         let rel = (!exact.is_zero()).then(|| &abs / exact.abs());
         let ulps = precision.map(|p| &abs / ulp(exact, p));
         let correctly_rounded = precision.map(|p| nearest(exact, p).as_ref() == Some(claimed));

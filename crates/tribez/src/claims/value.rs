@@ -153,7 +153,7 @@ pub fn compare(
             *counter += 1;
             if !tolerance.accepts(a, b, &l)? {
                 out.push(mismatch(match tolerance {
-                    Tolerance::Exact => format!("differs by {}", a - b),
+                    Tolerance::Exact => format!("differs by {}", crate::number::q_sub(a, b)),
                     t => format!(
                         "breaks tolerance `{t}`: {}",
                         Measures::new(a, b, l.precision).text()

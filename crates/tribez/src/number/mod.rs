@@ -22,6 +22,7 @@
 //! assert_eq!(round_to::<f32>(&parse_rational("1/10").unwrap()), 0.1f32);
 //! ```
 
+mod arith;
 mod exact;
 mod format;
 mod parse;
@@ -32,6 +33,8 @@ mod ulp;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 
+pub use arith::gcd;
+pub(crate) use arith::{add as q_add, div as q_div, mul as q_mul, pow as q_pow, sub as q_sub};
 pub use exact::{exact_f32, exact_f64, exact_value, pow2};
 pub use format::BinaryFloat;
 pub use parse::{

@@ -296,7 +296,7 @@ fn parse_plain(s: &str, whole: &str) -> Result<BigRational, NumberError> {
         if den.is_zero() {
             return Err(NumberError::ZeroDenominator(abbreviate(whole)));
         }
-        return Ok(BigRational::new(signed(neg, num), BigInt::from(den)));
+        return Ok(super::arith::ratio(signed(neg, num), BigInt::from(den)));
     }
     let hex = body.strip_prefix("0x").or_else(|| body.strip_prefix("0X"));
     if let Some(hex) = hex {
