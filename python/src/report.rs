@@ -1,20 +1,26 @@
 //! `NativeReport`: the library's batch report (`tribez::batch::BatchReport`) with per-row
 //! arrays, and `check_rows`, which judges numpy rows with the library's batch engine.
 
+use std::sync::{Arc, OnceLock};
+
 use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
+use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
-use tribez::hazmat::any_patch::AnyPatch;
 use tribez::batch::{
     BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
     UlpHistogram, WorstRow,
 };
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::certify::measures::as_float;
 use tribez::hazmat::certify::measures::{Measures, Tolerance};
-use tribez::hazmat::exact::Algorithm;
+use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
 use tribez::hazmat::float::Precision;
-use tribez::hazmat::number::parse_rational;
+use tribez::hazmat::number::{exact_f64, parse_rational, ulps_error_f32, ulps_error_f64};
+use tribez::hazmat::patch::{BezierPatch, ControlNet};
 
 use crate::patch::{NativePatch, f64s};
 use crate::{guard, input_error};
@@ -65,14 +71,176 @@ pub fn check_rows(
             row_detail: false,
         };
         let name = poly.name.clone().unwrap_or_else(|| "the patch".into());
-        let checker = BatchChecker::new(poly, &options).map_err(|e| input_error(py, e))?;
+        let key = judged_key(&patch.patch, algorithm, cartesian);
+        let checker = BatchChecker::new(poly.clone(), &options).map_err(|e| input_error(py, e))?;
         let (pts, vals) = (f64s(points), f64s(values));
         debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
         let (report, verdicts) = py
             .detach(|| checker.check_rows(&pts, &vals, first_row, "<arrays>", &name))
             .map_err(|e| input_error(py, e))?;
-        Ok(NativeReport { report, verdicts })
+        let source = Rows {
+            patch: poly,
+            precision,
+            cartesian,
+            points: pts,
+            values: vals,
+            width,
+            dim: dimension,
+        };
+        Ok(NativeReport {
+            report,
+            verdicts,
+            detail: OnceLock::new(),
+            source: Some(Arc::new(source)),
+            key,
+        })
     })
+}
+
+/// What a report was judged about, beyond what the library's merge compares (tolerance,
+/// precision, patch name): the patch itself (an FNV-1a hash of its JSON patch file, stable
+/// across processes and machines), the algorithm and the input space. Reports merge only with
+/// equal keys.
+fn judged_key(patch: &AnyPatch, algorithm: Algorithm, cartesian: bool) -> String {
+    let text = tribez::hazmat::io::patch_file::any_patch_to_json(patch).to_string();
+    let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    let algorithm = match algorithm {
+        Algorithm::Bernstein => "bernstein",
+        _ => "casteljau",
+    };
+    let space = if cartesian {
+        "cartesian"
+    } else {
+        "barycentric"
+    };
+    format!("patch {hash:016x}, {algorithm}, {space} points")
+}
+
+/// The numbers of the rows judged, kept until the per-row detail is first asked for.
+pub(crate) struct Rows {
+    patch: BezierPatch,
+    precision: Precision,
+    cartesian: bool,
+    points: Vec<f64>,
+    values: Vec<f64>,
+    width: usize,
+    dim: usize,
+}
+
+/// Per-row figures beyond the verdicts, aligned with them: the error in ULPs at the inputs as
+/// intended, and whether every coordinate is the correctly rounded value at the inputs as seen.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Detail {
+    ulps_intended: Vec<f64>,
+    correctly_rounded: Vec<bool>,
+}
+
+/// The float of `precision` that `x` denotes (an f32 batch rounds to the nearest f32), or
+/// `None` if it is not finite there.
+fn seen_float(x: f64, precision: Precision) -> Option<f64> {
+    let y = match precision {
+        Precision::F32 => f64::from(x as f32),
+        Precision::F64 => x,
+    };
+    y.is_finite().then_some(y)
+}
+
+fn ulps_of(y: &BigRational, q: &BigRational, precision: Precision) -> f64 {
+    if y == q {
+        return 0.0;
+    }
+    match precision {
+        Precision::F32 => ulps_error_f32(y, q),
+        Precision::F64 => ulps_error_f64(y, q),
+    }
+    .to_f64()
+    .unwrap_or(f64::INFINITY)
+}
+
+impl Rows {
+    /// The row-by-row detail (exact arithmetic where it can differ from the verdicts' figures).
+    ///
+    /// The inputs as intended are the numbers given (f64), the patch as intended its exact
+    /// control points; as seen, both are rounded to the precision. Where they coincide (a net
+    /// whose control points are floats of the precision, a row whose inputs are too: always in
+    /// f64) the error at the inputs as intended is the error as seen, already known; otherwise it
+    /// is computed exactly. "Correctly rounded" is `ulps_seen <= 1/2` (1/2 is a boundary the
+    /// batch engine settles exactly), except at exactly 1/2, a possible tie, settled exactly.
+    fn detail(&self, verdicts: &[RowVerdict], first_row: usize) -> Detail {
+        let p = self.precision;
+        let net = &self.patch.net;
+        let seen_net: ControlNet<BigRational> =
+            net.map(|q| as_float(q, p).unwrap_or_else(|| q.clone()));
+        let net_is_seen = seen_net.coords() == net.coords();
+        let intended = ExactEvaluator::new(net);
+        let seen = ExactEvaluator::new(&seen_net);
+        let point = |xs: Vec<BigRational>| -> Option<Vec<BigRational>> {
+            if self.cartesian {
+                self.patch.domain_or_reference().barycentric(&xs).ok()
+            } else {
+                Some(xs)
+            }
+        };
+        let (ulps_intended, correctly_rounded): (Vec<f64>, Vec<bool>) = verdicts
+            .par_iter()
+            .map(|v| {
+                let i = v.row - first_row;
+                let xs = &self.points[i * self.width..(i + 1) * self.width];
+                let ys = &self.values[i * self.dim..(i + 1) * self.dim];
+                if !v.ulps.is_finite() {
+                    return (f64::INFINITY, false);
+                }
+                let claimed: Option<Vec<BigRational>> = ys
+                    .iter()
+                    .map(|&y| seen_float(y, p).and_then(exact_f64))
+                    .collect();
+                let Some(claimed) = claimed else {
+                    return (f64::INFINITY, false);
+                };
+                let inputs_seen = xs.iter().all(|&x| seen_float(x, p) == Some(x));
+                let ulps_intended = if net_is_seen && inputs_seen {
+                    v.ulps
+                } else {
+                    let lambda = xs
+                        .iter()
+                        .map(|&x| exact_f64(x))
+                        .collect::<Option<Vec<_>>>()
+                        .and_then(point);
+                    match lambda {
+                        None => f64::INFINITY,
+                        Some(l) => intended
+                            .evaluate_fast(&l)
+                            .iter()
+                            .zip(&claimed)
+                            .map(|(q, y)| ulps_of(y, q, p))
+                            .fold(0.0, f64::max),
+                    }
+                };
+                let correctly_rounded = if v.ulps == 0.5 {
+                    let lambda = xs
+                        .iter()
+                        .map(|&x| seen_float(x, p).and_then(exact_f64))
+                        .collect::<Option<Vec<_>>>()
+                        .and_then(point);
+                    lambda.is_some_and(|l| {
+                        seen.evaluate_fast(&l)
+                            .iter()
+                            .zip(&claimed)
+                            .all(|(q, y)| as_float(q, p).as_ref() == Some(y))
+                    })
+                } else {
+                    v.ulps < 0.5
+                };
+                (ulps_intended, correctly_rounded)
+            })
+            .unzip();
+        Detail {
+            ulps_intended,
+            correctly_rounded,
+        }
+    }
 }
 
 /// A batch report and, row by row, its verdicts and errors.
@@ -81,6 +249,49 @@ pub struct NativeReport {
     pub(crate) report: BatchReport,
     /// Every row's verdict, by row index.
     pub(crate) verdicts: Vec<RowVerdict>,
+    /// The per-row detail, computed when first asked for (from `source`).
+    pub(crate) detail: OnceLock<Detail>,
+    /// The rows' numbers, while the detail is not computed (reports made by `check_rows`).
+    pub(crate) source: Option<Arc<Rows>>,
+    /// What it was judged about ([`judged_key`]).
+    pub(crate) key: String,
+}
+
+impl NativeReport {
+    fn with_detail(
+        report: BatchReport,
+        verdicts: Vec<RowVerdict>,
+        detail: Detail,
+        key: String,
+    ) -> Self {
+        NativeReport {
+            report,
+            verdicts,
+            detail: OnceLock::from(detail),
+            source: None,
+            key,
+        }
+    }
+
+    /// The per-row detail (computed on first use, the GIL released meanwhile).
+    ///
+    /// Not `OnceLock::get_or_init` around the released GIL: a second Python thread blocking on
+    /// the lock with the GIL held would deadlock the first. Two threads may both compute it; the
+    /// first to finish sets it (the same figures either way).
+    fn detail(&self, py: Python<'_>) -> &Detail {
+        if let Some(d) = self.detail.get() {
+            return d;
+        }
+        let d = match &self.source {
+            Some(rows) => {
+                let first = self.verdicts.first().map_or(0, |v| v.row);
+                py.detach(|| rows.detail(&self.verdicts, first))
+            }
+            None => Detail::default(),
+        };
+        let _ = self.detail.set(d);
+        self.detail.get().expect("set just now")
+    }
 }
 
 #[pymethods]
@@ -144,14 +355,64 @@ impl NativeReport {
 
     fn merge(&self, py: Python<'_>, other: &NativeReport) -> PyResult<NativeReport> {
         guard(py, || {
+            if self.key != other.key {
+                return Err(input_error(
+                    py,
+                    format!(
+                        "merge: reports judged differently ({} vs {})",
+                        self.key, other.key
+                    ),
+                ));
+            }
+            // disjoint row sets: both verdict lists are sorted by row
+            let (mut i, mut j) = (0, 0);
+            while i < self.verdicts.len() && j < other.verdicts.len() {
+                let (a, b) = (self.verdicts[i].row, other.verdicts[j].row);
+                if a == b {
+                    return Err(input_error(
+                        py,
+                        format!(
+                            "merge: both reports have row {a}: merge reports of disjoint row sets (give each part its first_row)"
+                        ),
+                    ));
+                }
+                if a < b {
+                    i += 1;
+                } else {
+                    j += 1;
+                }
+            }
             let mut report = self.report.clone();
             report
                 .merge(&other.report)
                 .map_err(|e| input_error(py, format!("merge: {e}")))?;
-            let mut verdicts = self.verdicts.clone();
-            verdicts.extend_from_slice(&other.verdicts);
-            verdicts.sort_by_key(|v| v.row);
-            Ok(NativeReport { report, verdicts })
+            let (a, b) = (self.detail(py), other.detail(py));
+            let mut rows: Vec<(RowVerdict, f64, bool)> = self
+                .verdicts
+                .iter()
+                .zip(a.ulps_intended.iter().zip(&a.correctly_rounded))
+                .chain(
+                    other
+                        .verdicts
+                        .iter()
+                        .zip(b.ulps_intended.iter().zip(&b.correctly_rounded)),
+                )
+                .map(|(v, (&u, &c))| (*v, u, c))
+                .collect();
+            rows.sort_by_key(|r| r.0.row);
+            let mut detail = Detail::default();
+            let mut verdicts = Vec::with_capacity(rows.len());
+            for (v, u, c) in rows {
+                verdicts.push(v);
+                detail.ulps_intended.push(u);
+                detail.correctly_rounded.push(c);
+            }
+            Ok(NativeReport::with_detail(
+                report,
+                verdicts,
+                detail,
+                self.key.clone(),
+            ))
         })
     }
 
@@ -161,46 +422,50 @@ impl NativeReport {
         py: Python<'py>,
     ) -> Vec<(&'static str, &'static str, Bound<'py, PyBytes>)> {
         let rows = &self.verdicts;
+        let detail = self.detail(py);
         let mut index = Vec::with_capacity(rows.len() * 8);
         let mut passed = Vec::with_capacity(rows.len());
         let mut ulps = Vec::with_capacity(rows.len() * 8);
-        let mut cr = Vec::with_capacity(rows.len());
         let mut fell_back = Vec::with_capacity(rows.len());
         for r in rows {
             index.extend_from_slice(&(r.row as i64).to_ne_bytes());
             passed.push(u8::from(r.pass));
             ulps.extend_from_slice(&r.ulps.to_ne_bytes());
-            cr.push(u8::from(r.ulps <= 0.5));
             fell_back.push(u8::from(r.fell_back));
         }
+        let intended: Vec<u8> = detail
+            .ulps_intended
+            .iter()
+            .flat_map(|u| u.to_ne_bytes())
+            .collect();
+        let cr: Vec<u8> = detail
+            .correctly_rounded
+            .iter()
+            .map(|&c| u8::from(c))
+            .collect();
         vec![
             ("row", "int64", PyBytes::new(py, &index)),
             ("passed", "bool", PyBytes::new(py, &passed)),
-            ("ulps", "float64", PyBytes::new(py, &ulps)),
+            ("ulps_seen", "float64", PyBytes::new(py, &ulps)),
+            ("ulps_intended", "float64", PyBytes::new(py, &intended)),
             ("correctly_rounded", "bool", PyBytes::new(py, &cr)),
             ("fell_back", "bool", PyBytes::new(py, &fell_back)),
         ]
     }
 
     /// The whole report as a JSON state (for pickling).
-    fn state(&self) -> String {
+    fn state(&self, py: Python<'_>) -> String {
+        let finite = |u: f64| if u.is_finite() { json!(u) } else { Json::Null };
+        let detail = self.detail(py);
         let verdicts: Vec<Json> = self
             .verdicts
             .iter()
-            .map(|v| {
-                json!([
-                    v.row,
-                    v.pass,
-                    v.fell_back,
-                    if v.ulps.is_finite() {
-                        json!(v.ulps)
-                    } else {
-                        Json::Null
-                    }
-                ])
+            .zip(detail.ulps_intended.iter().zip(&detail.correctly_rounded))
+            .map(|(v, (&ui, &cr))| {
+                json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr])
             })
             .collect();
-        json!({"report": state_of(&self.report), "verdicts": verdicts}).to_string()
+        json!({"report": state_of(&self.report), "verdicts": verdicts, "key": self.key}).to_string()
     }
 
     #[staticmethod]
@@ -208,21 +473,35 @@ impl NativeReport {
         guard(py, || {
             let j: Json = serde_json::from_str(state)
                 .map_err(|e| crate::input_error(py, format!("report state: {e}")))?;
-            let verdicts = j["verdicts"].as_array().and_then(|v| {
+            let rows = j["verdicts"].as_array().and_then(|v| {
                 v.iter()
                     .map(|r| {
-                        Some(RowVerdict {
-                            row: r[0].as_u64()? as usize,
-                            pass: r[1].as_bool()?,
-                            fell_back: r[2].as_bool()?,
-                            ulps: r[3].as_f64().unwrap_or(f64::INFINITY),
-                        })
+                        Some((
+                            RowVerdict {
+                                row: r[0].as_u64()? as usize,
+                                pass: r[1].as_bool()?,
+                                fell_back: r[2].as_bool()?,
+                                ulps: r[3].as_f64().unwrap_or(f64::INFINITY),
+                            },
+                            r[4].as_f64().unwrap_or(f64::INFINITY),
+                            r[5].as_bool()?,
+                        ))
                     })
                     .collect::<Option<Vec<_>>>()
             });
+            let key = j["key"].as_str().unwrap_or_default().to_string();
             report_of(&j["report"])
-                .zip(verdicts)
-                .map(|(report, verdicts)| NativeReport { report, verdicts })
+                .zip(rows)
+                .map(|(report, rows)| {
+                    let mut detail = Detail::default();
+                    let mut verdicts = Vec::with_capacity(rows.len());
+                    for (v, u, c) in rows {
+                        verdicts.push(v);
+                        detail.ulps_intended.push(u);
+                        detail.correctly_rounded.push(c);
+                    }
+                    NativeReport::with_detail(report, verdicts, detail, key.clone())
+                })
                 .ok_or_else(|| crate::input_error(py, "report state: malformed"))
         })
     }

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import tribez
-from reference import bernstein_value, ulps_error
+from reference import bernstein_value, ulp, ulps_error
 
 FINN = [[0, 1, 0, 0, 1, 0], [0, 0, 2, 1, 1, 2], [0, 2, 0, 0, 1, 1]]
 
@@ -108,7 +108,7 @@ def test_merge_equals_a_single_run(finn, rows):
     assert merged.max_ulps == whole.max_ulps and merged.worst == whole.worst
     assert json.loads(merged.to_json()) == json.loads(whole.to_json())
     assert str(merged) == str(whole)
-    for name in ("passed", "ulps"):
+    for name in ("row", "passed", "ulps_seen", "ulps_intended", "correctly_rounded", "fell_back"):
         assert np.array_equal(merged.rows[name], whole.rows[name])
     # in another order too
     again = reports[2].merge(reports[0]).merge(reports[1])
@@ -119,10 +119,82 @@ def test_rows_are_numpy_arrays(finn, rows):
     pts, vals = rows
     report = tribez.check(finn, pts, vals, tolerance="ulps=2")
     r = report.rows
+    assert set(r) == {"row", "passed", "ulps_seen", "ulps_intended", "correctly_rounded", "fell_back"}
     assert r["passed"].dtype == bool and r["passed"].shape == (300,)
+    assert r["ulps_seen"].dtype == np.float64 and r["row"].dtype == np.int64
+    assert list(r["row"]) == list(range(300))
     assert list(np.flatnonzero(~r["passed"])) == [100, 250]
     errs = reference_ulps(pts, vals)
-    assert np.allclose(r["ulps"], [float(e) for e in errs], rtol=1e-6, atol=1e-6)
+    assert np.allclose(r["ulps_seen"], [float(e) for e in errs], rtol=1e-6, atol=1e-6)
+    # f64 floats in, integer control points: the inputs as intended are those as seen
+    assert np.array_equal(r["ulps_intended"], r["ulps_seen"])
+    # the values are correctly rounded (by the fractions reference) except rows 7, 100, 250
+    assert list(np.flatnonzero(~r["correctly_rounded"])) == [7, 100, 250]
+    assert r["fell_back"].sum() == report.fell_back
+    with pytest.raises(ValueError):
+        r["passed"][0] = False  # read-only
+
+
+def ulps_f32(y, q):
+    return abs(F(y) - q) / ulp(q, mant_bits=24, emin=-126)
+
+
+def test_rows_f32_errors_at_the_inputs_as_seen_and_as_intended(finn):
+    # a float32 kernel given float32(points): seen = the f32 points, intended = the f64 points
+    pts = points(40, seed=21)
+    vals = finn.evaluate_float(pts.astype(np.float32), precision="f32")
+    report = tribez.check(finn, pts, vals, tolerance="ulps=4")
+    assert report.precision == "f32"
+    r = report.rows
+    seen = [max(ulps_f32(y, q) for y, q in zip(v, bernstein_value(FINN, 2, p)))
+            for p, v in zip(pts.astype(np.float32).tolist(), vals.tolist())]
+    intended = [max(ulps_f32(y, q) for y, q in zip(v, bernstein_value(FINN, 2, p)))
+                for p, v in zip(pts.tolist(), vals.tolist())]
+    assert np.allclose(r["ulps_seen"], [float(e) for e in seen], rtol=1e-6, atol=1e-6)
+    assert np.allclose(r["ulps_intended"], [float(e) for e in intended], rtol=1e-12, atol=0)
+    assert intended != seen
+
+
+def test_rows_errors_at_an_exact_control_net():
+    # a control point 1/3 is not a float: seen, the net rounded to f64; intended, exactly 1/3
+    nodes = [[0, F(1, 3), 1, F(2, 3), 1, 2]]
+    exact_patch = tribez.Patch.from_nodes(nodes)
+    rounded = [[F(float(x)) for x in nodes[0]]]
+    pts = points(30, seed=8)
+    vals = exact_patch.evaluate_float(pts)
+    r = tribez.check(exact_patch, pts, vals, tolerance="cond=9").rows
+    seen = [ulps_error(v[0], bernstein_value(rounded, 2, p)[0]) for p, v in zip(pts.tolist(), vals.tolist())]
+    intended = [ulps_error(v[0], bernstein_value(nodes, 2, p)[0]) for p, v in zip(pts.tolist(), vals.tolist())]
+    assert np.allclose(r["ulps_seen"], [float(e) for e in seen], rtol=1e-6, atol=1e-6)
+    assert np.allclose(r["ulps_intended"], [float(e) for e in intended], rtol=1e-12, atol=0)
+    assert intended != seen
+
+
+def test_correctly_rounded_at_a_tie_is_ties_to_even():
+    # a line from 1 to 1 + 2^-52 at (1/2, 1/2): exactly 1 + 2^-53, the midpoint of two doubles;
+    # both are 1/2 ulp off, only 1.0 (even significand) is the correctly rounded one
+    line = tribez.Patch.from_nodes([[1, 1 + 2.0**-52]], simplex=1)
+    assert line.evaluate([["1/2", "1/2"]]) == [(1 + F(1, 2**53),)]
+    pts = np.array([[0.5, 0.5]] * 3)
+    vals = np.array([[1.0], [1 + 2.0**-52], [1 + 2.0**-51]])
+    report = tribez.check(line, pts, vals, tolerance="correctly_rounded")
+    r = report.rows
+    assert list(r["ulps_seen"]) == [0.5, 0.5, 1.5]
+    assert list(r["correctly_rounded"]) == [True, False, False]
+    assert list(r["passed"]) == [True, False, False]
+
+
+def test_rows_survive_merge_and_pickle(finn):
+    import pickle
+
+    pts = points(200, seed=31)
+    vals = finn.evaluate_float(pts.astype(np.float32), precision="f32")
+    whole = tribez.check(finn, pts, vals, tolerance="ulps=4")
+    a = tribez.check(finn, pts[:90], vals[:90], tolerance="ulps=4")
+    b = tribez.check(finn, pts[90:], vals[90:], tolerance="ulps=4", first_row=90)
+    for merged in (b.merge(a), pickle.loads(pickle.dumps(a)).merge(pickle.loads(pickle.dumps(b)))):
+        for name, arr in whole.rows.items():
+            assert np.array_equal(merged.rows[name], arr), name
 
 
 def test_failures_raise(finn, rows):
@@ -181,3 +253,16 @@ def test_the_gil_is_released_while_judging(finn):
     assert result[0].passed + result[0].failed == 200_000
     # with the GIL held for the whole judgement this loop could not have run meanwhile
     assert ticks > 1000
+
+
+def test_cartesian_points(finn):
+    # (x, y) in the reference triangle is the barycentric point (x, y, 1 - x - y), exactly
+    pts = points(40, seed=17)[:, :2]
+    vals = np.array([[float(q) for q in bernstein_value(FINN, 2, [F(x), F(y), 1 - F(x) - F(y)])]
+                     for x, y in pts.tolist()])
+    report = tribez.check(finn, pts, vals, tolerance="correctly_rounded", cartesian=True)
+    assert (report.passed, report.failed) == (40, 0)
+    assert report.rows["correctly_rounded"].all()
+    vals[5, 2] = math.nextafter(vals[5, 2], -math.inf)
+    report = tribez.check(finn, pts, vals, tolerance="correctly_rounded", cartesian=True)
+    assert (report.passed, report.failed, report.worst["row"]) == (39, 1, 5)

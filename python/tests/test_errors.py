@@ -46,6 +46,7 @@ def test_bad_files(tmp_path):
     assert msg.startswith(str(tmp_path / "bad.toml") + ":7:"), msg
     (tmp_path / "empty.json").write_text("")
     raises("the file is empty", tribez.Patch.from_file, tmp_path / "empty.json")
+    raises("path: expected a str or os.PathLike, got int", tribez.Patch.from_file, 123)
 
 
 def test_bad_text():
@@ -128,3 +129,60 @@ def test_same_message_as_the_command_line(tmp_path):
     out = subprocess.run([CLI, "eval", str(bad), "--at", "1/2,1/3,1/6"], capture_output=True, text=True)
     assert out.returncode == 2
     assert out.stderr.strip() == f"tribez: {info.value}"
+
+
+def finn_rows(n=4):
+    finn = tribez.Patch.from_toml(FINN_TOML)
+    pts = np.array([[0.5, 0.25, 0.25], [0.1, 0.2, 0.7], [0.3, 0.3, 0.4], [1.0, 0.0, 0.0]])[:n]
+    return finn, pts, finn.evaluate_float(pts)
+
+
+def test_bad_check_arguments():
+    finn, pts, vals = finn_rows()
+    raises("first_row: -1 is negative", tribez.check, finn, pts, vals, first_row=-1)
+    raises("tolerance: expected a str", tribez.check, finn, pts, vals, tolerance=3)
+    raises("tolerance: tolerance `cond=x`: `x`: not a number", tribez.check, finn, pts, vals, tolerance="cond=x")
+    raises("must not be negative", tribez.check, finn, pts, vals, tolerance="ulps=-1")
+    raises("unknown algorithm `horner`", tribez.check, finn, pts, vals, algorithm="horner")
+    raises("points: rows of 3 numbers, expected 2", tribez.check, finn, pts, vals, cartesian=True)
+    rational = tribez.Patch.from_nodes([[0, 1, 0, 0, 1, 0]], weights=[1, 2, 1, 1, 1, 1])
+    raises("this is a rational patch; check judges polynomial", tribez.check, rational, pts, vals[:, :1])
+    # a control point beyond the f32 range, with f32 results
+    big = tribez.Patch.from_nodes([[0, 1e300, 0, 0, 1, 0]])
+    raises("a control point of the patch overflows f32", tribez.check, big, pts.astype(np.float32),
+           vals[:, :1].astype(np.float32))
+
+
+def test_bad_merges():
+    finn, pts, vals = finn_rows()
+    a = tribez.check(finn, pts[:2], vals[:2], tolerance="ulps=1")
+    b = tribez.check(finn, pts[2:], vals[2:], tolerance="ulps=1", first_row=2)
+    assert a.merge(b).passed + a.merge(b).failed == 4
+    raises("merge: reports judged with different tolerances (ulps=1 vs ulps=2)", a.merge,
+           tribez.check(finn, pts[2:], vals[2:], tolerance="ulps=2", first_row=2))
+    raises("merge: reports judged with different precisions (f64 vs f32)", a.merge,
+           tribez.check(finn, pts[2:].astype(np.float32), vals[2:].astype(np.float32), tolerance="ulps=1",
+                        first_row=2))
+    # the same rows twice (a forgotten first_row)
+    raises("merge: both reports have row 0", a.merge, a)
+    raises("merge: both reports have row 0", a.merge, tribez.check(finn, pts[2:], vals[2:], tolerance="ulps=1"))
+    # another patch of the same (missing) name, and another algorithm
+    other = tribez.Patch.from_nodes([[0, 1, 0, 0, 1, 0], [0, 0, 2, 1, 1, 2], [0, 2, 0, 0, 1, 2]])
+    raises("merge: reports judged differently", a.merge,
+           tribez.check(other, pts[2:], vals[2:], tolerance="ulps=1", first_row=2))
+    raises("merge: reports judged differently", a.merge,
+           tribez.check(finn, pts[2:], vals[2:], tolerance="ulps=1", first_row=2, algorithm="bernstein"))
+    raises("merge: expected a tribez.Report, got str", a.merge, "report")
+
+
+def test_help_explains_the_tolerances():
+    doc = tribez.check.__doc__
+    for t in ("exact", "ulps=N", "abs=E", "rel=E", "correctly_rounded", "faithful", "cond=K", "bound"):
+        assert t in doc, t
+    import io
+    import contextlib
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        help(tribez.check)
+    assert "correctly_rounded   y is the float nearest q" in out.getvalue()

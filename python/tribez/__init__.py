@@ -90,7 +90,13 @@ class Patch:
     def from_file(cls, path) -> "Patch":
         """Read a patch file (``.toml`` or ``.json``, by extension; the layout of README.md,
         "Patch files"). Errors name the file, line and key."""
-        return cls(_native.NativePatch.from_file(os.fspath(path)))
+        try:
+            path = os.fspath(path)
+        except TypeError:
+            raise InputError(f"path: expected a str or os.PathLike, got {type(path).__name__}") from None
+        if isinstance(path, bytes):
+            path = os.fsdecode(path)
+        return cls(_native.NativePatch.from_file(path))
 
     @classmethod
     def from_toml(cls, text: str, name: str = "<toml>") -> "Patch":

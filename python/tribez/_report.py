@@ -26,10 +26,11 @@ class Report:
     :class:`CertificationError` with the failure summary.
     """
 
-    __slots__ = ("_native",)
+    __slots__ = ("_native", "_rows")
 
     def __init__(self, native):
         self._native = native
+        self._rows = None
 
     @property
     def passed(self) -> int:
@@ -78,18 +79,35 @@ class Report:
 
     @property
     def rows(self) -> dict:
-        """Per-row results, numpy arrays indexed by row (in the order of the rows given; after a
-        merge, by row index): ``passed`` (bool), ``ulps`` (float64: the error in ULPs at the
-        inputs as the code saw them, max over coordinates; exact for rows computed exactly, else
-        the upper end of a compensated enclosure a small fraction of an ULP wide),
-        ``correctly_rounded`` (bool: the error is at most half an ULP: the nearest float, or
-        either one at an exact tie), ``fell_back`` (bool), ``row`` (int64: the row's index).
-        With float arrays as input the inputs as seen are the intended ones."""
-        raw = self._native.row_arrays()
-        out = {}
-        for name, dtype, data in raw:
-            out[name] = np.frombuffer(data, dtype=dtype).copy()
-        return out
+        """Per-row results, numpy arrays indexed like the rows (after a merge: by row index):
+
+        * ``row`` (int64): the row's index (counted from ``first_row``);
+        * ``passed`` (bool): within the tolerance;
+        * ``ulps_seen`` (float64): the error in ULPs at the inputs as the code saw them (the
+          floats of the precision, the control points rounded to it), the largest over the
+          coordinates; exact for rows computed exactly, otherwise the upper end of a compensated
+          enclosure a small fraction of an ULP wide (never across the 0 and 1/2 boundaries);
+          infinite for a NaN or infinite number;
+        * ``ulps_intended`` (float64): the same error at the inputs as intended: the float64
+          numbers given and the patch's exact control points. It differs from ``ulps_seen`` only
+          where those differ from what the code saw (``precision="f32"`` rounds the inputs; a
+          control point such as 1/3 is not a float): those rows are computed exactly;
+        * ``correctly_rounded`` (bool): every coordinate is the float nearest the exact value at
+          the inputs as seen (ties to even);
+        * ``fell_back`` (bool): the float filter left the row to exact arithmetic.
+
+        The arrays are read-only (copy them to change them). Computed on first access (exact arithmetic only where the inputs as intended differ
+        from those as seen); until then the report keeps the rows' numbers.
+        """
+        cached = getattr(self, "_rows", None)
+        if cached is None:
+            cached = {}
+            for name, dtype, data in self._native.row_arrays():
+                a = np.frombuffer(data, dtype=dtype).copy()
+                a.flags.writeable = False
+                cached[name] = a
+            self._rows = cached
+        return dict(cached)
 
     def to_json(self) -> str:
         """The report as JSON: the command line's ``--format json`` output."""

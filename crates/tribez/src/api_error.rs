@@ -3,6 +3,7 @@
 //! It carries data (the file, line and key of bad input; the sizes that do not match; the
 //! capability a kind lacks); its `Display` is the one-line message the command line prints.
 
+use crate::certify::measures::ToleranceNeeds;
 use crate::error::CoreError;
 use crate::io::InputError;
 
@@ -36,11 +37,11 @@ pub enum Error {
     },
     /// A tolerance that cannot judge this value (it lacks a precision, a condition number or a
     /// bound).
-    #[error("coordinate {coordinate}: {message}")]
+    #[error("coordinate {coordinate}: {needs}")]
     Tolerance {
         /// The coordinate judged (0-based).
         coordinate: usize,
         /// What is missing.
-        message: String,
+        needs: ToleranceNeeds,
     },
 }

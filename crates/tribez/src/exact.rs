@@ -50,6 +50,52 @@ pub enum Algorithm {
     Bernstein,
 }
 
+impl Algorithm {
+    /// The name written in claim files and on the command line: `"casteljau"`, `"bernstein"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Casteljau => "casteljau",
+            Algorithm::Bernstein => "bernstein",
+        }
+    }
+}
+
+/// A text that is not an algorithm's name (`"casteljau"` or `"bernstein"`).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown algorithm `{text}` (known: casteljau, bernstein)")]
+pub struct ParseAlgorithmError {
+    /// The text.
+    pub text: String,
+}
+
+/// `"casteljau"` or `"bernstein"`, and [`Display`](std::fmt::Display) writes them back.
+///
+/// ```
+/// use tribez::Algorithm;
+/// assert_eq!("bernstein".parse::<Algorithm>().unwrap(), Algorithm::Bernstein);
+/// assert_eq!(Algorithm::Casteljau.to_string(), "casteljau");
+/// assert_eq!(
+///     "horner".parse::<Algorithm>().unwrap_err().to_string(),
+///     "unknown algorithm `horner` (known: casteljau, bernstein)"
+/// );
+/// ```
+impl std::str::FromStr for Algorithm {
+    type Err = ParseAlgorithmError;
+    fn from_str(s: &str) -> Result<Self, ParseAlgorithmError> {
+        match s {
+            "casteljau" => Ok(Algorithm::Casteljau),
+            "bernstein" => Ok(Algorithm::Bernstein),
+            _ => Err(ParseAlgorithmError { text: s.into() }),
+        }
+    }
+}
+
+impl std::fmt::Display for Algorithm {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// Bring rationals to a common (least) denominator: `(numerators, D)` with `x_k = a_k / D`.
 pub fn common_denominator(xs: &[BigRational]) -> (Vec<BigInt>, BigInt) {
     let d = xs.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));

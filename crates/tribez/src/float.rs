@@ -39,14 +39,40 @@ impl Precision {
     }
 }
 
+/// A text that is not a precision (`"f64"` or `"f32"`).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown precision `{text}` (expected f64 or f32)")]
+pub struct ParsePrecisionError {
+    /// The text.
+    pub text: String,
+}
+
+/// `"f64"` or `"f32"`, exactly (the strings of the command line and of claim files), and
+/// [`Display`](std::fmt::Display) writes them back.
+///
+/// ```
+/// use tribez::Precision;
+/// assert_eq!("f32".parse::<Precision>().unwrap(), Precision::F32);
+/// assert_eq!(Precision::F64.to_string(), "f64");
+/// assert_eq!(
+///     "f16".parse::<Precision>().unwrap_err().to_string(),
+///     "unknown precision `f16` (expected f64 or f32)"
+/// );
+/// ```
 impl std::str::FromStr for Precision {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
+    type Err = ParsePrecisionError;
+    fn from_str(s: &str) -> Result<Self, ParsePrecisionError> {
         match s {
             "f64" => Ok(Precision::F64),
             "f32" => Ok(Precision::F32),
-            _ => Err(format!("unknown precision `{s}` (expected f64 or f32)")),
+            _ => Err(ParsePrecisionError { text: s.into() }),
         }
+    }
+}
+
+impl std::fmt::Display for Precision {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

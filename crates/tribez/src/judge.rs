@@ -288,12 +288,13 @@ pub fn judge_algorithm(
                     condition: condition.clone().filter(|_| seen.cond_tolerance),
                     bound: bound.clone(),
                 };
-                let passed = tolerance
-                    .accepts(&yq, &exact[c], &leaf)
-                    .map_err(|message| Error::Tolerance {
-                        coordinate: c,
-                        message,
-                    })?;
+                let passed =
+                    tolerance
+                        .accepts(&yq, &exact[c], &leaf)
+                        .map_err(|needs| Error::Tolerance {
+                            coordinate: c,
+                            needs,
+                        })?;
                 CoordinateJudgement {
                     claimed: y,
                     exact: exact[c].clone(),

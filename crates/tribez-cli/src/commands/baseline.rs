@@ -65,12 +65,13 @@ pub fn compare(path: &Path, worst: &[Worst]) -> Result<Vec<String>, CliError> {
     let file = path.display().to_string();
     let text = std::fs::read_to_string(path)
         .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
-    let doc: serde_json::Value = serde_json::from_str(&text).map_err(|e| InputError {
-        file: file.clone(),
-        line: Some(e.line()),
-        column: Some(e.column()),
-        key: None,
-        message: format!("not a baseline file: {e}"),
+    let doc: serde_json::Value = serde_json::from_str(&text).map_err(|e| {
+        InputError::at(
+            file.clone(),
+            Some(e.line()),
+            Some(e.column()),
+            format!("not a baseline file: {e}"),
+        )
     })?;
     let entries = doc
         .get("worst")

@@ -226,12 +226,9 @@ pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> 
     text.split(',')
         .enumerate()
         .map(|(i, t)| {
-            parse_rational(t).map_err(|e| InputError {
-                file: "<command line>".into(),
-                line: None,
-                column: None,
-                key: Some(format!("{what} `{text}`, coordinate {}", i + 1)),
-                message: e.to_string(),
+            parse_rational(t).map_err(|e| {
+                InputError::file("<command line>", e)
+                    .with_key(format!("{what} `{text}`, coordinate {}", i + 1))
             })
         })
         .collect::<Result<_, _>>()

@@ -26,7 +26,7 @@ use crate::io::text::{BOM, not_utf8, plain_io_error};
 pub const MAX_ROW_BYTES: usize = 16 << 20;
 use crate::certify::measures::as_float;
 use crate::float::Precision;
-use crate::io::InputError;
+use crate::io::{InputError, Problem};
 use crate::number::parse_rational;
 
 /// One field of a row: its text and its 1-based column.
@@ -68,7 +68,8 @@ pub(super) fn parse_num(
         line: Some(line),
         column: Some(f.column),
         key: None,
-        message: msg,
+        problem: msg.into(),
+        named_at: None,
     };
     match precision {
         Some(p) => {
@@ -329,10 +330,12 @@ impl<R: BufRead> RowReader<R> {
                     line: Some(self.line),
                     column: None,
                     key: None,
-                    message: format!(
+                    problem: format!(
                         "the line is longer than the limit of {} MiB",
                         MAX_ROW_BYTES >> 20
-                    ),
+                    )
+                    .into(),
+                    named_at: None,
                 });
             }
             self.bytes.extend_from_slice(&buf[..take]);
@@ -383,9 +386,8 @@ impl<R: BufRead> RowReader<R> {
                                     line: Some(self.line),
                                     column: None,
                                     key: None,
-                                    message: format!(
-                                        "a header line of {names} names, expected {n} (one per column)"
-                                    ),
+                                    problem: Problem::HeaderWidth { names, expected: n },
+                                    named_at: None,
                                 });
                             }
                             // the header is kept as a blank row, so that row i stays line
@@ -578,7 +580,8 @@ fn located(file: &str, line: usize, col: usize, message: String) -> InputError {
         line: Some(line),
         column: Some(col),
         key: None,
-        message,
+        problem: message.into(),
+        named_at: None,
     }
 }
 
@@ -597,7 +600,8 @@ pub(super) fn split_json_row<'a>(
         line: Some(l),
         column: Some(c),
         key: None,
-        message,
+        problem: message.into(),
+        named_at: None,
     };
     if let Err(e) = serde_json::from_str::<serde::de::IgnoredAny>(text.trim_end()) {
         // serde's position is within the row: 1-based line, column (of the row text)
@@ -709,11 +713,13 @@ pub(super) fn parse_row(
             line: Some(line),
             column: (format == Format::JsonArray).then_some(col),
             key: None,
-            message: format!(
+            problem: format!(
                 "{} columns, expected {} ({width} input coordinates, then the {dim} claimed coordinates of the point)",
                 fields.len(),
                 width + dim
-            ),
+            )
+            .into(),
+            named_at: None,
         });
     }
     let nums = fields

@@ -34,7 +34,7 @@ use num_traits::{Signed, Zero};
 
 use crate::float::Precision;
 use crate::number::{
-    exact_f32, exact_f64, parse_rational, pow2, round_f32, round_f64, ulp_f32, ulp_f64,
+    NumberError, exact_f32, exact_f64, parse_rational, pow2, round_f32, round_f64, ulp_f32, ulp_f64,
 };
 
 /// What a claim accepts as agreement.
@@ -64,26 +64,116 @@ pub enum Tolerance {
 pub const TOLERANCES: &str =
     "exact, ulps=N, abs=E, rel=E, correctly_rounded, faithful, cond=K, cond, bound";
 
-impl Tolerance {
-    /// Parse `exact`, `ulps=2`, `abs=1e-12`, `rel=1e-9`, `correctly_rounded`, `faithful`,
-    /// `cond=4`, `cond` or `bound`. The number after `=` is exact and non-negative.
-    pub fn parse(text: &str) -> Result<Self, String> {
+/// Why a text is not a tolerance ([`Tolerance::from_str`](std::str::FromStr::from_str)).
+/// `Display` is the one-line message the command line prints.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ParseToleranceError {
+    /// A name that takes a value written without one (`ulps`).
+    #[error("tolerance `{text}` needs a value: `{name}=…`")]
+    MissingValue {
+        /// The text as written (trimmed).
+        text: String,
+        /// The tolerance's name.
+        name: String,
+    },
+    /// The value after `=` is not an exact number.
+    #[error("tolerance `{text}`: {error}")]
+    Number {
+        /// The text as written (trimmed).
+        text: String,
+        /// Why the value is not a number.
+        error: NumberError,
+    },
+    /// A negative value.
+    #[error("tolerance `{text}`: the value must not be negative")]
+    Negative {
+        /// The text as written (trimmed).
+        text: String,
+    },
+    /// A value given to a tolerance without one (`exact=1`).
+    #[error("tolerance `{name}` takes no value")]
+    TakesNoValue {
+        /// The tolerance's name.
+        name: String,
+    },
+    /// No tolerance has this name.
+    #[error("unknown tolerance `{text}` (known: {TOLERANCES})")]
+    Unknown {
+        /// The text as written (trimmed).
+        text: String,
+    },
+}
+
+/// What a tolerance lacks to judge a number ([`Tolerance::accepts`]).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ToleranceNeeds {
+    /// A float tolerance without a precision.
+    #[error("tolerance `{tolerance}` needs `precision` (f64 or f32)")]
+    Precision {
+        /// The tolerance as written.
+        tolerance: String,
+    },
+    /// `cond=K` without a condition number.
+    #[error("tolerance `cond` needs an evaluation claim (the condition number Σ|c_i|B_i)")]
+    Condition,
+    /// `cond` without `K` before [`Tolerance::for_patch`] gave it the patch's `K = (m+1)·n`.
+    #[error("tolerance `cond` needs the patch's degree (K = (m+1)·n)")]
+    Degree,
+    /// `bound` without a proven bound.
+    #[error(
+        "tolerance `bound` needs an evaluation claim with an `algorithm` that has a proven bound"
+    )]
+    Bound,
+}
+
+/// Exactly the strings of the command line and of claim files: `exact`, `ulps=N`, `abs=E`,
+/// `rel=E`, `correctly_rounded`, `faithful`, `cond=K`, `cond`, `bound` (surrounding whitespace
+/// ignored). The number after `=` is exact (any syntax of [`crate::parse_rational`]) and
+/// non-negative; [`Display`](std::fmt::Display) writes it back as `p/q`, and reading that gives
+/// the same tolerance.
+///
+/// ```
+/// use tribez::{Rational, Tolerance};
+/// let t: Tolerance = "ulps=0.5".parse().unwrap();
+/// assert_eq!(t, Tolerance::Ulps(Rational::new(1.into(), 2.into())));
+/// assert_eq!(t.to_string(), "ulps=1/2");
+/// assert_eq!(t.to_string().parse::<Tolerance>().unwrap(), t);
+/// assert_eq!(" bound ".parse::<Tolerance>().unwrap(), Tolerance::Bound);
+/// assert_eq!(
+///     "ulps".parse::<Tolerance>().unwrap_err().to_string(),
+///     "tolerance `ulps` needs a value: `ulps=…`"
+/// );
+/// assert_eq!(
+///     "abs=-1".parse::<Tolerance>().unwrap_err().to_string(),
+///     "tolerance `abs=-1`: the value must not be negative"
+/// );
+/// ```
+impl std::str::FromStr for Tolerance {
+    type Err = ParseToleranceError;
+
+    fn from_str(text: &str) -> Result<Self, ParseToleranceError> {
         let t = text.trim();
         let (name, arg) = match t.split_once('=') {
             Some((n, a)) => (n.trim(), Some(a.trim())),
             None => (t, None),
         };
-        let number = |a: Option<&str>| -> Result<BigRational, String> {
-            let a = a.ok_or_else(|| format!("tolerance `{t}` needs a value: `{name}=…`"))?;
-            let q = parse_rational(a).map_err(|e| format!("tolerance `{t}`: {e}"))?;
+        let number = |a: Option<&str>| -> Result<BigRational, ParseToleranceError> {
+            let a = a.ok_or_else(|| ParseToleranceError::MissingValue {
+                text: t.into(),
+                name: name.into(),
+            })?;
+            let q = parse_rational(a).map_err(|error| ParseToleranceError::Number {
+                text: t.into(),
+                error,
+            })?;
             if q.is_negative() {
-                return Err(format!("tolerance `{t}`: the value must not be negative"));
+                return Err(ParseToleranceError::Negative { text: t.into() });
             }
             Ok(q)
         };
         let bare = |tol: Tolerance| {
             if arg.is_some() {
-                Err(format!("tolerance `{name}` takes no value"))
+                Err(ParseToleranceError::TakesNoValue { name: name.into() })
             } else {
                 Ok(tol)
             }
@@ -98,8 +188,17 @@ impl Tolerance {
             "rel" => Ok(Tolerance::Rel(number(arg)?)),
             "cond" if arg.is_none() => Ok(Tolerance::CondDegree),
             "cond" => Ok(Tolerance::Cond(number(arg)?)),
-            _ => Err(format!("unknown tolerance `{t}` (known: {TOLERANCES})")),
+            _ => Err(ParseToleranceError::Unknown { text: t.into() }),
         }
+    }
+}
+
+impl Tolerance {
+    /// Parse `exact`, `ulps=2`, `abs=1e-12`, `rel=1e-9`, `correctly_rounded`, `faithful`,
+    /// `cond=4`, `cond` or `bound` (the same as [`str::parse`]). The number after `=` is exact and
+    /// non-negative.
+    pub fn parse(text: &str) -> Result<Self, ParseToleranceError> {
+        text.parse()
     }
 
     /// Does the tolerance need a precision (`f64`/`f32`) to mean anything?
@@ -156,11 +255,11 @@ impl Tolerance {
         claimed: &BigRational,
         exact: &BigRational,
         leaf: &Leaf,
-    ) -> Result<bool, String> {
+    ) -> Result<bool, ToleranceNeeds> {
         let err = (claimed - exact).abs();
         let precision = || {
-            leaf.precision.ok_or_else(|| {
-                format!("tolerance `{}` needs `precision` (f64 or f32)", self.text())
+            leaf.precision.ok_or_else(|| ToleranceNeeds::Precision {
+                tolerance: self.text(),
             })
         };
         Ok(match self {
@@ -171,16 +270,14 @@ impl Tolerance {
             Tolerance::CorrectlyRounded => nearest(exact, precision()?).as_ref() == Some(claimed),
             Tolerance::Faithful => is_faithful(claimed, exact, precision()?),
             Tolerance::Cond(k) => {
-                let s = leaf.condition.as_ref().ok_or(
-                    "tolerance `cond` needs an evaluation claim (the condition number Σ|c_i|B_i)",
-                )?;
+                let s = leaf.condition.as_ref().ok_or(ToleranceNeeds::Condition)?;
                 err <= k * unit_roundoff(precision()?) * s
             }
             Tolerance::CondDegree => {
-                return Err("tolerance `cond` needs the patch's degree (K = (m+1)·n): resolve it with `Tolerance::for_patch`".into());
+                return Err(ToleranceNeeds::Degree);
             }
             Tolerance::Bound => {
-                let b = leaf.bound.as_ref().ok_or("tolerance `bound` needs an evaluation claim with an `algorithm` that has a proven bound")?;
+                let b = leaf.bound.as_ref().ok_or(ToleranceNeeds::Bound)?;
                 &err <= b
             }
         })
@@ -366,21 +463,25 @@ mod tests {
         assert!(
             Tolerance::parse("ulp=2")
                 .unwrap_err()
+                .to_string()
                 .contains("unknown tolerance")
         );
         assert!(
             Tolerance::parse("ulps")
                 .unwrap_err()
+                .to_string()
                 .contains("needs a value")
         );
         assert!(
             Tolerance::parse("ulps=-1")
                 .unwrap_err()
+                .to_string()
                 .contains("negative")
         );
         assert!(
             Tolerance::parse("exact=1")
                 .unwrap_err()
+                .to_string()
                 .contains("takes no value")
         );
     }
@@ -481,7 +582,7 @@ mod tests {
         let e = t
             .accepts(&one, &one, &leaf(Some(Precision::F64)))
             .unwrap_err();
-        assert!(e.contains("degree"), "{e}");
+        assert_eq!(e, ToleranceNeeds::Degree);
         // `cond=` with an empty value is still an error, not the degree constant
         assert!(Tolerance::parse("cond=").is_err());
     }
@@ -492,6 +593,9 @@ mod tests {
             .unwrap()
             .accepts(&q("1").unwrap(), &q("1").unwrap(), &leaf(None))
             .unwrap_err();
-        assert!(e.contains("precision"));
+        assert_eq!(
+            e.to_string(),
+            "tolerance `ulps=1` needs `precision` (f64 or f32)"
+        );
     }
 }

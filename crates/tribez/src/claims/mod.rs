@@ -38,9 +38,9 @@ use std::path::{Path, PathBuf};
 use crate::any_patch::AnyPatch;
 use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::float::Precision;
-use crate::io::InputError;
 use crate::io::patch_file::any_patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
+use crate::io::{InputError, NamedAt};
 use crate::patch::BezierPatch as Patch;
 use value::{Mismatch, Value, compare};
 
@@ -168,10 +168,11 @@ fn resolve_patch(
             let path = dir.join(rel);
             crate::io::patch_file::read_any_patch(&path).map_err(|mut e| {
                 if e.line.is_none() {
-                    e.message = format!(
-                        "{} (patch named at {}:{}: {key})",
-                        e.message, doc.file, node.line
-                    );
+                    e.named_at = Some(NamedAt {
+                        file: doc.file.clone(),
+                        line: node.line,
+                        key: key.to_string(),
+                    });
                 }
                 e
             })

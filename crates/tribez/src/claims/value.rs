@@ -6,7 +6,7 @@
 
 use num_rational::BigRational;
 
-use crate::certify::measures::{Leaf, Measures, Tolerance};
+use crate::certify::measures::{Leaf, Measures, Tolerance, ToleranceNeeds};
 use crate::symbolic::Polynomial;
 
 /// An exact (or claimed) value.
@@ -110,7 +110,7 @@ pub fn compare(
     counter: &mut usize,
     path: &str,
     out: &mut Vec<Mismatch>,
-) -> Result<(), String> {
+) -> Result<(), ToleranceNeeds> {
     let mismatch = |reason: String| Mismatch {
         path: path.into(),
         claimed: claimed.to_text(),

@@ -11,8 +11,14 @@ pub mod walk;
 
 use std::fmt;
 
-/// Bad input: which file, where in it, and what is wrong. The CLI prints it on one line and
-/// exits with status 2.
+use crate::certify::measures::{ParseToleranceError, ToleranceNeeds};
+use crate::error::CoreError;
+use crate::exact::ParseAlgorithmError;
+use crate::float::{ParsePrecisionError, Precision};
+use crate::number::NumberError;
+
+/// Bad input: which file, where in it, and what is wrong ([`Problem`]). The CLI prints it on
+/// one line and exits with status 2.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct InputError {
     /// The file (or `<command line>`).
@@ -24,18 +30,230 @@ pub struct InputError {
     /// The key or field, e.g. `control_points."1,1,0"`.
     pub key: Option<String>,
     /// What is wrong.
-    pub message: String,
+    pub problem: Problem,
+    /// For an error in a file named by another one (a patch file named by a claim file): where
+    /// it was named.
+    pub named_at: Option<NamedAt>,
+}
+
+/// Where a file was named by another file ([`InputError::named_at`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NamedAt {
+    /// The naming file.
+    pub file: String,
+    /// Its line.
+    pub line: usize,
+    /// The key that names the file.
+    pub key: String,
+}
+
+/// What is wrong with an input. `Display` is the message after the location.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Problem {
+    /// The file cannot be read (the operating system's reason, without its error number: the
+    /// one message tribez does not write itself).
+    #[error("cannot read: {reason}")]
+    CannotRead {
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// A directory cannot be listed.
+    #[error("cannot read directory: {reason}")]
+    CannotReadDirectory {
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// An output cannot be written.
+    #[error("cannot write: {reason}")]
+    CannotWrite {
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// The path is not a regular file (`kind`: `"a directory"`, `"a FIFO (named pipe)"`, …;
+    /// `None`: something else).
+    #[error("{}not a regular file", kind.map_or(String::new(), |k| format!("{k}, ")))]
+    NotRegularFile {
+        /// What it is instead.
+        kind: Option<&'static str>,
+    },
+    /// A file above the size read whole.
+    #[error("the file is larger than the limit of {limit_mib} MiB for a file read whole")]
+    FileTooLarge {
+        /// The limit, in MiB.
+        limit_mib: u64,
+    },
+    /// A byte that is not UTF-8 (the location is the error's line and column).
+    #[error("the file is not UTF-8 text (invalid byte 0x{byte:02x})")]
+    NotUtf8 {
+        /// The first invalid byte.
+        byte: u8,
+    },
+    /// An extension other than `.toml` or `.json`.
+    #[error("unknown file type (expected a .toml or .json extension)")]
+    UnknownFileType,
+    /// A file with nothing in it.
+    #[error("the file is empty")]
+    EmptyFile,
+    /// TOML syntax. The message is the `toml_edit` parser's own: tribez does not re-word a
+    /// third-party parser's diagnosis.
+    #[error("invalid TOML: {message}")]
+    Toml {
+        /// The parser's message.
+        message: String,
+    },
+    /// JSON syntax (tribez's own parser).
+    #[error("invalid JSON: {0}")]
+    Json(JsonSyntax),
+    /// A value of the wrong type.
+    #[error("expected {expected}, found {found}")]
+    WrongType {
+        /// What the key takes (`"a table"`, `"a number"`, …).
+        expected: &'static str,
+        /// What it has (`"a string"`, …).
+        found: &'static str,
+    },
+    /// A required key is absent.
+    #[error("missing key `{key}`")]
+    MissingKey {
+        /// The key.
+        key: &'static str,
+    },
+    /// A key that the table does not take.
+    #[error("unknown key (expected one of: {})", known.join(", "))]
+    UnknownKey {
+        /// The keys it takes.
+        known: Vec<String>,
+    },
+    /// Text that is not a non-negative integer.
+    #[error("`{text}` is not a non-negative integer")]
+    NotAnInteger {
+        /// The text.
+        text: String,
+    },
+    /// Text that is not an exact number.
+    #[error(transparent)]
+    Number(#[from] NumberError),
+    /// Not a tolerance.
+    #[error(transparent)]
+    Tolerance(#[from] ParseToleranceError),
+    /// A tolerance that cannot judge this value.
+    #[error(transparent)]
+    ToleranceNeeds(#[from] ToleranceNeeds),
+    /// Not a precision.
+    #[error(transparent)]
+    Precision(#[from] ParsePrecisionError),
+    /// Not an algorithm.
+    #[error(transparent)]
+    Algorithm(#[from] ParseAlgorithmError),
+    /// A mathematical precondition the input violates.
+    #[error(transparent)]
+    Core(#[from] CoreError),
+    /// A number of the input that overflows the precision it denotes a float of.
+    #[error("{what} overflows {precision}")]
+    Overflows {
+        /// What overflows (`"an input"`, `"a control point"`, …).
+        what: &'static str,
+        /// The precision.
+        precision: Precision,
+    },
+    /// A CSV header with the wrong number of names.
+    #[error("a header line of {names} names, expected {expected} (one per column)")]
+    HeaderWidth {
+        /// Names in the header.
+        names: usize,
+        /// Columns expected.
+        expected: usize,
+    },
+    /// A CSV row with the wrong number of fields.
+    #[error("{found} fields, expected {expected}")]
+    FieldCount {
+        /// Fields in the row.
+        found: usize,
+        /// Fields expected.
+        expected: usize,
+    },
+    /// A points file without a point.
+    #[error("no points")]
+    NoPoints,
+    /// Not yet converted to data: a message written where the error arises. Each remaining use
+    /// is a message specific to one check of one file format or claim operation.
+    #[error("{0}")]
+    Other(String),
+}
+
+/// What is wrong in JSON text ([`Problem::Json`]).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum JsonSyntax {
+    /// Arrays and objects nested deeper than the limit.
+    #[error("nested too deeply")]
+    TooDeep,
+    /// The text ends inside a value.
+    #[error("unexpected end of file")]
+    UnexpectedEnd,
+    /// A key twice in one object.
+    #[error("duplicate key \"{key}\"")]
+    DuplicateKey {
+        /// The key.
+        key: String,
+    },
+    /// Something other than the expected token (`"':' after a key"`, `"',' or '}'"`, `"a
+    /// value"`, `"a string"`, …).
+    #[error("expected {0}")]
+    Expected(&'static str),
+    /// A string without its closing quote.
+    #[error("unterminated string")]
+    UnterminatedString,
+    /// A `\u` escape that is not four hex digits or a valid code point.
+    #[error("bad \\u escape")]
+    BadUnicodeEscape,
+    /// Another bad escape.
+    #[error("bad escape in string")]
+    BadEscape,
+    /// A string whose bytes are not UTF-8.
+    #[error("string is not UTF-8")]
+    StringNotUtf8,
+    /// Text after the value.
+    #[error("unexpected text after the JSON value")]
+    TrailingText,
+}
+
+impl From<String> for Problem {
+    fn from(message: String) -> Self {
+        Problem::Other(message)
+    }
+}
+
+impl From<&str> for Problem {
+    fn from(message: &str) -> Self {
+        Problem::Other(message.to_string())
+    }
 }
 
 impl InputError {
     /// An error about a whole file.
-    pub fn file(file: impl Into<String>, message: impl Into<String>) -> Self {
+    pub fn file(file: impl Into<String>, problem: impl Into<Problem>) -> Self {
         InputError {
             file: file.into(),
             line: None,
             column: None,
             key: None,
-            message: message.into(),
+            problem: problem.into(),
+            named_at: None,
+        }
+    }
+
+    /// An error at a line and column of a file.
+    pub fn at(
+        file: impl Into<String>,
+        line: Option<usize>,
+        column: Option<usize>,
+        problem: impl Into<Problem>,
+    ) -> Self {
+        InputError {
+            line,
+            column,
+            ..InputError::file(file, problem)
         }
     }
 
@@ -58,7 +276,11 @@ impl fmt::Display for InputError {
         if let Some(key) = &self.key {
             write!(f, ": {key}")?;
         }
-        write!(f, ": {}", self.message)
+        write!(f, ": {}", self.problem)?;
+        if let Some(n) = &self.named_at {
+            write!(f, " (patch named at {}:{}: {})", n.file, n.line, n.key)?;
+        }
+        Ok(())
     }
 }
 

@@ -10,9 +10,9 @@ use std::path::Path;
 
 use num_rational::BigRational;
 
-use super::InputError;
 use super::text::read_text;
 use super::tree::Document;
+use super::{InputError, Problem};
 use crate::number::parse_rational;
 
 /// Read the points of a `.csv` or `.json` file; every point must have `width` coordinates.
@@ -45,13 +45,17 @@ pub fn points_from_document(
             return Err(doc.error(
                 row,
                 &key,
-                format!("point has {} coordinates, expected {width}", p.len()),
+                crate::error::CoreError::WrongLength {
+                    what: "point".into(),
+                    expected: width,
+                    found: p.len(),
+                },
             ));
         }
         out.push(p);
     }
     if out.is_empty() {
-        return Err(InputError::file(&doc.file, "no points"));
+        return Err(InputError::file(&doc.file, Problem::NoPoints));
     }
     Ok(out)
 }
@@ -74,22 +78,22 @@ pub fn parse_csv_points(
             && let Some(names) = csv_header(t)
         {
             if names != width {
-                return Err(InputError {
-                    file: file.into(),
-                    line: Some(i + 1),
-                    column: None,
-                    key: None,
-                    message: format!(
-                        "a header line of {names} names, expected {width} (one per column)"
-                    ),
-                });
+                return Err(InputError::at(
+                    file,
+                    Some(i + 1),
+                    None,
+                    Problem::HeaderWidth {
+                        names,
+                        expected: width,
+                    },
+                ));
             }
             continue;
         }
         out.push(parse_csv_row(t, width, file, i + 1)?);
     }
     if out.is_empty() {
-        return Err(InputError::file(file, "no points"));
+        return Err(InputError::file(file, Problem::NoPoints));
     }
     Ok(out)
 }
@@ -103,23 +107,22 @@ pub fn parse_csv_row(
 ) -> Result<Vec<BigRational>, InputError> {
     let fields: Vec<&str> = line.split(',').collect();
     if fields.len() != width {
-        return Err(InputError {
-            file: file.into(),
-            line: Some(line_no),
-            column: None,
-            key: None,
-            message: format!("{} fields, expected {width}", fields.len()),
-        });
+        return Err(InputError::at(
+            file,
+            Some(line_no),
+            None,
+            Problem::FieldCount {
+                found: fields.len(),
+                expected: width,
+            },
+        ));
     }
     let mut column = 1; // character column where the field starts
     let mut out = Vec::with_capacity(fields.len());
     for (c, f) in fields.iter().enumerate() {
-        out.push(parse_rational(f).map_err(|e| InputError {
-            file: file.into(),
-            line: Some(line_no),
-            column: Some(column),
-            key: Some(format!("field {}", c + 1)),
-            message: e.to_string(),
+        out.push(parse_rational(f).map_err(|e| {
+            InputError::at(file, Some(line_no), Some(column), e)
+                .with_key(format!("field {}", c + 1))
         })?);
         column += f.chars().count() + 1;
     }

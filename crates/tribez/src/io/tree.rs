@@ -9,8 +9,8 @@ use std::path::Path;
 
 use num_rational::BigRational;
 
-use super::InputError;
 use super::text::{LineIndex, read_text, strip_bom};
+use super::{InputError, JsonSyntax, Problem};
 use crate::number::parse_rational;
 
 /// A value with the line it starts on.
@@ -64,13 +64,10 @@ pub struct Document {
 
 impl Document {
     /// An error located at `node`, under `key`.
-    pub fn error(&self, node: &Node, key: &str, message: impl Into<String>) -> InputError {
+    pub fn error(&self, node: &Node, key: &str, problem: impl Into<Problem>) -> InputError {
         InputError {
-            file: self.file.clone(),
-            line: Some(node.line),
-            column: None,
             key: (!key.is_empty()).then(|| key.to_string()),
-            message: message.into(),
+            ..InputError::at(self.file.clone(), Some(node.line), None, problem)
         }
     }
 
@@ -84,10 +81,7 @@ impl Document {
             .unwrap_or("")
             .to_ascii_lowercase();
         if !matches!(ext.as_str(), "toml" | "json") {
-            return Err(InputError::file(
-                &file,
-                "unknown file type (expected a .toml or .json extension)",
-            ));
+            return Err(InputError::file(&file, Problem::UnknownFileType));
         }
         let text = read_text(path)?;
         if ext == "toml" {
@@ -101,19 +95,13 @@ impl Document {
     pub fn parse_toml(file: &str, text: &str) -> Result<Self, InputError> {
         let text = strip_bom(text);
         if text.trim().is_empty() {
-            return Err(InputError::file(file, "the file is empty"));
+            return Err(InputError::file(file, Problem::EmptyFile));
         }
         let lines = LineIndex::new(text.as_bytes());
         let doc = toml_edit::Document::parse(text).map_err(|e| {
             let (line, column) = e.span().map(|s| lines.line_col(s.start)).unzip();
             let msg = e.message().trim().to_string();
-            InputError {
-                file: file.into(),
-                line,
-                column,
-                key: None,
-                message: format!("invalid TOML: {msg}"),
-            }
+            InputError::at(file, line, column, Problem::Toml { message: msg })
         })?;
         let root = Toml { text, lines }.table(doc.as_table(), 1);
         Ok(Document {
@@ -126,7 +114,7 @@ impl Document {
     pub fn parse_json(file: &str, text: &str) -> Result<Self, InputError> {
         let text = strip_bom(text);
         if text.trim().is_empty() {
-            return Err(InputError::file(file, "the file is empty"));
+            return Err(InputError::file(file, Problem::EmptyFile));
         }
         let mut p = JsonParser {
             text: text.as_bytes(),
@@ -138,7 +126,7 @@ impl Document {
         let root = p.value(0)?;
         p.skip_ws();
         if p.pos != p.text.len() {
-            return Err(p.err("unexpected text after the JSON value"));
+            return Err(p.err(JsonSyntax::TrailingText));
         }
         Ok(Document {
             file: file.into(),
@@ -239,15 +227,9 @@ impl JsonParser<'_> {
         self.lines.line(self.pos)
     }
 
-    fn err(&self, message: &str) -> InputError {
+    fn err(&self, syntax: JsonSyntax) -> InputError {
         let (line, col) = self.lines.line_col(self.pos);
-        InputError {
-            file: self.file.into(),
-            line: Some(line),
-            column: Some(col),
-            key: None,
-            message: format!("invalid JSON: {message}"),
-        }
+        InputError::at(self.file, Some(line), Some(col), Problem::Json(syntax))
     }
 
     fn skip_ws(&mut self) {
@@ -270,12 +252,12 @@ impl JsonParser<'_> {
 
     fn value(&mut self, depth: usize) -> Result<Node, InputError> {
         if depth > MAX_DEPTH {
-            return Err(self.err("nested too deeply"));
+            return Err(self.err(JsonSyntax::TooDeep));
         }
         self.skip_ws();
         let line = self.line();
         let value = match self.text.get(self.pos) {
-            None => return Err(self.err("unexpected end of file")),
+            None => return Err(self.err(JsonSyntax::UnexpectedEnd)),
             Some(b'{') => {
                 self.pos += 1;
                 let mut entries: Vec<(String, Node)> = Vec::new();
@@ -287,10 +269,10 @@ impl JsonParser<'_> {
                         let key = self.string()?;
                         if !seen.insert(key.clone()) {
                             self.pos = key_pos;
-                            return Err(self.err(&format!("duplicate key \"{key}\"")));
+                            return Err(self.err(JsonSyntax::DuplicateKey { key }));
                         }
                         if !self.eat(b':') {
-                            return Err(self.err("expected ':' after a key"));
+                            return Err(self.err(JsonSyntax::Expected("':' after a key")));
                         }
                         let v = self.value(depth + 1)?;
                         entries.push((key, v));
@@ -300,7 +282,7 @@ impl JsonParser<'_> {
                         if self.eat(b'}') {
                             break;
                         }
-                        return Err(self.err("expected ',' or '}'"));
+                        return Err(self.err(JsonSyntax::Expected("',' or '}'")));
                     }
                 }
                 Value::Table(entries)
@@ -317,7 +299,7 @@ impl JsonParser<'_> {
                         if self.eat(b']') {
                             break;
                         }
-                        return Err(self.err("expected ',' or ']'"));
+                        return Err(self.err(JsonSyntax::Expected("',' or ']'")));
                     }
                 }
                 Value::Array(items)
@@ -350,20 +332,20 @@ impl JsonParser<'_> {
                     .to_string();
                 Value::Number(s)
             }
-            Some(_) => return Err(self.err("expected a value")),
+            Some(_) => return Err(self.err(JsonSyntax::Expected("a value"))),
         };
         Ok(Node { value, line })
     }
 
     fn string(&mut self) -> Result<String, InputError> {
         if self.text.get(self.pos) != Some(&b'"') {
-            return Err(self.err("expected a string"));
+            return Err(self.err(JsonSyntax::Expected("a string")));
         }
         self.pos += 1;
         let mut out = Vec::new();
         loop {
             match self.text.get(self.pos) {
-                None => return Err(self.err("unterminated string")),
+                None => return Err(self.err(JsonSyntax::UnterminatedString)),
                 Some(b'"') => {
                     self.pos += 1;
                     break;
@@ -387,13 +369,13 @@ impl JsonParser<'_> {
                                 .and_then(|h| std::str::from_utf8(h).ok());
                             let code = hex
                                 .and_then(|h| u32::from_str_radix(h, 16).ok())
-                                .ok_or_else(|| self.err("bad \\u escape"))?;
+                                .ok_or_else(|| self.err(JsonSyntax::BadUnicodeEscape))?;
                             self.pos += 4;
                             let c = char::from_u32(code).unwrap_or('\u{fffd}');
                             let mut buf = [0u8; 4];
                             out.extend_from_slice(c.encode_utf8(&mut buf).as_bytes());
                         }
-                        _ => return Err(self.err("bad escape in string")),
+                        _ => return Err(self.err(JsonSyntax::BadEscape)),
                     }
                 }
                 Some(&b) => {
@@ -402,7 +384,7 @@ impl JsonParser<'_> {
                 }
             }
         }
-        String::from_utf8(out).map_err(|_| self.err("string is not UTF-8"))
+        String::from_utf8(out).map_err(|_| self.err(JsonSyntax::StringNotUtf8))
     }
 }
 
@@ -420,7 +402,10 @@ impl Document {
             other => Err(self.error(
                 node,
                 key,
-                format!("expected a table, found {}", other.kind()),
+                Problem::WrongType {
+                    expected: "a table",
+                    found: other.kind(),
+                },
             )),
         }
     }
@@ -432,7 +417,10 @@ impl Document {
             other => Err(self.error(
                 node,
                 key,
-                format!("expected an array, found {}", other.kind()),
+                Problem::WrongType {
+                    expected: "an array",
+                    found: other.kind(),
+                },
             )),
         }
     }
@@ -444,7 +432,10 @@ impl Document {
             other => Err(self.error(
                 node,
                 key,
-                format!("expected a string, found {}", other.kind()),
+                Problem::WrongType {
+                    expected: "a string",
+                    found: other.kind(),
+                },
             )),
         }
     }
@@ -457,12 +448,15 @@ impl Document {
                 return Err(self.error(
                     node,
                     key,
-                    format!("expected a non-negative integer, found {}", other.kind()),
+                    Problem::WrongType {
+                        expected: "a non-negative integer",
+                        found: other.kind(),
+                    },
                 ));
             }
         };
         text.parse::<usize>()
-            .map_err(|_| self.error(node, key, format!("`{text}` is not a non-negative integer")))
+            .map_err(|_| self.error(node, key, Problem::NotAnInteger { text: text.into() }))
     }
 
     /// `node` as an exact rational: a number (its text) or a string in the number syntax.
@@ -473,11 +467,14 @@ impl Document {
                 return Err(self.error(
                     node,
                     key,
-                    format!("expected a number, found {}", other.kind()),
+                    Problem::WrongType {
+                        expected: "a number",
+                        found: other.kind(),
+                    },
                 ));
             }
         };
-        parse_rational(text).map_err(|e| self.error(node, key, e.to_string()))
+        parse_rational(text).map_err(|e| self.error(node, key, e))
     }
 
     /// `node` as an array of rationals.
@@ -513,7 +510,9 @@ impl Document {
                 return Err(self.error(
                     v,
                     &key,
-                    format!("unknown key (expected one of: {})", known.join(", ")),
+                    Problem::UnknownKey {
+                        known: known.iter().map(|k| k.to_string()).collect(),
+                    },
                 ));
             }
         }
@@ -545,7 +544,11 @@ mod tests {
     fn json_rejects_duplicate_keys_with_position() {
         let e = Document::parse_json("x.json", "{\"a\": 1,\n \"a\": 2}").unwrap_err();
         assert_eq!(e.line, Some(2));
-        assert!(e.message.contains("duplicate key \"a\""), "{e}");
+        assert_eq!(
+            e.problem,
+            Problem::Json(JsonSyntax::DuplicateKey { key: "a".into() })
+        );
+        assert!(e.to_string().contains("duplicate key \"a\""), "{e}");
     }
 
     #[test]
@@ -562,12 +565,7 @@ mod tests {
 
     #[test]
     fn empty_and_garbage_are_errors() {
-        assert!(
-            Document::parse_json("x.json", "  ")
-                .unwrap_err()
-                .message
-                .contains("empty")
-        );
+        assert!(Document::parse_json("x.json", "  ").unwrap_err().problem == Problem::EmptyFile);
         assert_eq!(
             Document::parse_json("x.json", "{\"a\": }")
                 .unwrap_err()

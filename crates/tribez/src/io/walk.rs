@@ -15,8 +15,8 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-use super::InputError;
 use super::text::{not_regular, plain_io_error};
+use super::{InputError, Problem};
 
 /// The outcome of a walk: the files found (sorted) and one note per path skipped.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -62,7 +62,9 @@ pub fn walk(dir: &Path, matches: &dyn Fn(&str) -> bool) -> Result<Walk, InputErr
         let dir_error = |e: std::io::Error| {
             InputError::file(
                 d.display().to_string(),
-                format!("cannot read directory: {}", plain_io_error(&e)),
+                Problem::CannotReadDirectory {
+                    reason: plain_io_error(&e),
+                },
             )
         };
         let meta = std::fs::metadata(&d).map_err(dir_error)?;

@@ -7,8 +7,8 @@ use num_rational::BigRational;
 
 use super::super::{Claim, ClaimFile};
 use crate::any_patch::AnyPatch;
-use crate::io::InputError;
 use crate::io::tree::{Document, Node, Value as NodeValue};
+use crate::io::{InputError, Problem};
 use crate::patch::BezierPatch as Patch;
 
 type Q = BigRational;
@@ -61,9 +61,9 @@ impl<'a> Inputs<'a> {
     }
 
     /// An error at this claim's input `name` (at the claim if the input is absent).
-    pub fn error(&self, name: &str, message: impl Into<String>) -> InputError {
+    pub fn error(&self, name: &str, problem: impl Into<Problem>) -> InputError {
         let node = self.get(name).unwrap_or(&self.claim.node);
-        self.file.doc.error(node, &self.key(name), message)
+        self.file.doc.error(node, &self.key(name), problem)
     }
 
     /// A required input's node.
