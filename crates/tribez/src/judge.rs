@@ -244,7 +244,7 @@ pub fn judge_algorithm(
         what: "its float program has no error bound".into(),
     })?;
     let seen = bounds.seen(algorithm, &seen_input);
-    if matches!(tolerance, Tolerance::Cond(_)) && !seen.cond_tolerance {
+    if tolerance.is_cond() && !seen.cond_tolerance {
         return Err(Error::Unsupported {
             kind: described,
             what: format!(
@@ -252,6 +252,7 @@ pub fn judge_algorithm(
             ),
         });
     }
+    let tolerance = &tolerance.for_patch(shape.simplex_dim, shape.degree);
     let exact = seen.exact.clone().ok_or_else(|| {
         Error::Core(CoreError::Invalid(format!(
             "{described} is undefined at the input as seen {} (in {})",

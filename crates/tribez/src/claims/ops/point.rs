@@ -389,6 +389,9 @@ pub struct FloatEval {
     pub condition: Vec<Q>,
     /// The a-priori bound of the claim's `algorithm` per coordinate.
     pub bound: Vec<Option<Q>>,
+    /// `(m, n)`: the simplex dimension and degree of the net evaluated (what `cond` without `K`
+    /// resolves against, [`crate::certify::measures::Tolerance::for_patch`]).
+    pub simplex_degree: (usize, usize),
 }
 
 /// The float view of an `eval` claim in precision `p`. A Cartesian point is rounded to `p` and
@@ -440,12 +443,13 @@ pub fn eval_float(
         exact_intended,
         condition,
         bound,
+        simplex_degree: (m, n),
     })
 }
 
 fn refuse_cond_tolerance(inputs: &Inputs<'_>) -> Result<(), InputError> {
     let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
-    if matches!(tolerance, crate::certify::measures::Tolerance::Cond(_)) {
+    if tolerance.is_cond() {
         return Err(inputs.error(
             "tolerance",
             format!("tolerance `{tolerance}` is not defined for S-patches (the float Wachspress coordinates add an error Σ|P_α|B_α does not measure): use `bound`, the proven bound of the whole float path"),
@@ -508,6 +512,7 @@ fn eval_float_rational(
         exact_intended,
         condition,
         bound,
+        simplex_degree: (m, n),
     })
 }
 
@@ -558,5 +563,6 @@ fn eval_float_spatch(
         exact_intended,
         condition,
         bound,
+        simplex_degree: (seen.net.m(), seen.net.degree()),
     })
 }
