@@ -20,7 +20,7 @@
 
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{CheckedSub, One, Signed, ToPrimitive, Zero};
 
 /// The greatest common divisor of `a` and `b` (`gcd(0, 0) = 0`).
 ///
@@ -64,12 +64,7 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
             (x, y) = (y, x - q * y);
         }
         let combined = (b_ != 0)
-            .then(|| {
-                let (ui, vi) = (BigInt::from(u.clone()), BigInt::from(v.clone()));
-                let nu = &ui * a_ + &vi * b_;
-                let nv = &ui * c_ + &vi * d_;
-                Some((nu.to_biguint()?, nv.to_biguint()?))
-            })
+            .then(|| Some((combine(&u, a_, &v, b_)?, combine(&u, c_, &v, d_)?)))
             .flatten();
         match combined {
             // Knuth shows both stay non-negative and the pair's gcd is unchanged.
@@ -84,6 +79,19 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
         }
     }
     u
+}
+
+/// `a·u + b·v` when it is not negative, for cofactors of at most 64 bits (Algorithm L keeps
+/// them below 2^63 with opposite signs), by two single-word products.
+fn combine(u: &BigUint, a: i128, v: &BigUint, b: i128) -> Option<BigUint> {
+    let au = u * u64::try_from(a.unsigned_abs()).ok()?;
+    let bv = v * u64::try_from(b.unsigned_abs()).ok()?;
+    match (a < 0, b < 0) {
+        (false, false) => Some(au + bv),
+        (false, true) => au.checked_sub(&bv),
+        (true, false) => bv.checked_sub(&au),
+        (true, true) => None,
+    }
 }
 
 /// Binary gcd of machine words.
