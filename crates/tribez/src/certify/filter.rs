@@ -208,10 +208,10 @@ impl Thresholds {
         if !(e.value.is_finite() && e.mu.is_finite() && e.s_hi.is_finite()) {
             return Decision::Undecided;
         }
-        if e.is_exact_zero() {
-            if let Some(d) = self.decide_at_zero(y) {
-                return d;
-            }
+        if e.is_exact_zero()
+            && let Some(d) = self.decide_at_zero(y)
+        {
+            return d;
         }
         let d1 = y - e.value;
         let d = d1 - e.corr;
