@@ -35,3 +35,26 @@ fn every_regression_input_is_handled() {
     }
     assert!(replayed > 0, "the corpus is empty");
 }
+
+/// The fuzz targets are built with nightly Rust only (cargo-fuzz), so CI never compiles them: this
+/// keeps each `fuzz/fuzz_targets/<target>.rs` calling its entry point by the library's public path
+/// (`tribez::hazmat::io::fuzz::<target>`), and every target listed in `fuzz/Cargo.toml`, so that a
+/// change to the library's module layout cannot silently break fuzzing.
+#[test]
+fn every_fuzz_target_calls_its_entry_point_by_a_public_path() {
+    let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz");
+    let manifest = std::fs::read_to_string(fuzz.join("Cargo.toml")).unwrap();
+    for target in TARGETS {
+        let source = std::fs::read_to_string(fuzz.join(format!("fuzz_targets/{target}.rs")))
+            .unwrap_or_else(|e| panic!("fuzz/fuzz_targets/{target}.rs: {e}"));
+        let call = format!("tribez::hazmat::io::fuzz::{target}(data)");
+        assert!(
+            source.contains(&call),
+            "fuzz/fuzz_targets/{target}.rs must call {call}"
+        );
+        assert!(
+            manifest.contains(&format!("name = \"{target}\"")),
+            "fuzz/Cargo.toml must declare the target {target}"
+        );
+    }
+}
