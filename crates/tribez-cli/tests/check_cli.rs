@@ -909,3 +909,64 @@ fn certify_baseline() {
         .code(1)
         .stdout(predicate::str::contains("baseline regression"));
 }
+
+// ---------------------------------------------------------------------------------------------
+// `cond` without K: K = (m+1)·n
+
+/// QUAD (m = 2, n = 2) at the corner (0, 1, 0) is c_020 = (0, 2, 0); the condition number of the
+/// second coordinate there is |c_020| B_020 = 2. A claim 3 ulps above 2 (ulp(2) = 2^-51 = 4ε, so
+/// an error of 12ε) meets K·ε·2 exactly when K ≥ 6 = (m+1)·n: `cond` passes, `cond=5` fails
+/// (hand derivation).
+fn three_ulps_above_two() -> String {
+    format!("{:?}", 2f64.next_up().next_up().next_up())
+}
+
+#[test]
+fn batch_cond_without_k_is_the_degree_constant() {
+    let y = three_ulps_above_two();
+    let (_d, p, r) = batch_dir(&format!("0,1,0,0,{y},0\n"), "csv");
+    batch(&p, &r, &["--precision", "f64", "--tolerance", "cond"])
+        .success()
+        .stdout(
+            predicate::str::contains("tolerance cond=6")
+                .and(predicate::str::contains("1 claim: 1 passed, 0 failed")),
+        );
+    batch(&p, &r, &["--precision", "f64", "--tolerance", "cond=5"])
+        .code(1)
+        .stdout(predicate::str::contains("0 passed, 1 failed"));
+    // like cond=K, it needs a precision
+    batch(&p, &r, &["--tolerance", "cond"])
+        .code(2)
+        .stderr(predicate::str::contains(
+            "--tolerance cond needs --precision",
+        ));
+}
+
+#[test]
+fn claim_cond_without_k_is_the_degree_constant() {
+    let y = three_ulps_above_two();
+    let claim = |tol: &str| {
+        format!(
+            "[[claim]]\nop = \"eval\"\nat = [\"0\", \"1\", \"0\"]\nexpect = [\"0\", \"{y}\", \"0\"]\nprecision = \"f64\"\ntolerance = \"{tol}\"\n"
+        )
+    };
+    let d = claim_dir(&claim("cond"));
+    tribez()
+        .arg("check")
+        .arg(d.path())
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("1 passed"));
+    let d = claim_dir(&claim("cond=5"));
+    tribez().arg("check").arg(d.path()).assert().code(1);
+    // only evaluation claims have a condition number
+    let d = claim_dir(
+        "[[claim]]\nop = \"elevate\"\nexpect = \"x\"\nprecision = \"f64\"\ntolerance = \"cond\"\n",
+    );
+    tribez()
+        .arg("check")
+        .arg(d.path())
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("applies to `eval` claims only"));
+}

@@ -307,7 +307,7 @@ pub(crate) fn exact_side(
         },
     ))?;
     let seen = bounds.seen(algorithm, &seen_input);
-    if matches!(tolerance, Tolerance::Cond(_)) && !seen.cond_tolerance {
+    if tolerance.is_cond() && !seen.cond_tolerance {
         return Err((
             Part::Tolerance,
             Error::Unsupported {
@@ -380,6 +380,7 @@ pub fn judge_algorithm(
     }
     let side =
         exact_side(patch, algorithm, input, tolerance, precision, intended).map_err(|(_, e)| e)?;
+    let tolerance = &tolerance.for_patch(shape.simplex_dim, shape.degree);
     let mut coordinates = Vec::with_capacity(claimed.len());
     for (c, &y) in claimed.iter().enumerate() {
         let condition = side.condition.as_ref().map(|k| k[c].clone());

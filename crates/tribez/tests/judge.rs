@@ -232,6 +232,38 @@ fn s_patch_pentagon() {
         judge(&p, &[2.0, 2.0], &claimed, &tol("cond=4"), Precision::F64),
         Err(Error::Unsupported { .. })
     ));
+    assert!(matches!(
+        judge(&p, &[2.0, 2.0], &claimed, &tol("cond"), Precision::F64),
+        Err(Error::Unsupported { .. })
+    ));
+}
+
+/// `cond` without K is `cond=(m+1)·n`: 6 for Finn's quadratic triangle. At the corner (0, 1, 0)
+/// the value is c_020 = (0, 2, 0), the condition number of the second coordinate |c_020| = 2; a
+/// claim 3 ulps above 2 is off by 3·2^-51 = 12ε, within K·ε·2 exactly when K ≥ 6 (by hand).
+#[test]
+fn cond_without_k_takes_the_degree_constant() {
+    let p = finn();
+    let y = 2f64.next_up().next_up().next_up();
+    let j = judge(
+        &p,
+        &[0.0, 1.0, 0.0],
+        &[0.0, y, 0.0],
+        &tol("cond"),
+        Precision::F64,
+    )
+    .unwrap();
+    assert!(j.passed, "{j}");
+    assert_eq!(j.tolerance, tol("cond=6"));
+    let j = judge(
+        &p,
+        &[0.0, 1.0, 0.0],
+        &[0.0, y, 0.0],
+        &tol("cond=5"),
+        Precision::F64,
+    )
+    .unwrap();
+    assert!(!j.passed, "{j}");
 }
 
 #[test]

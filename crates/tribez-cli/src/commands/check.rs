@@ -25,7 +25,10 @@ pub struct Args {
     /// claimed coordinates).
     #[arg(long, value_name = "FILE", requires = "patch")]
     pub results: Option<PathBuf>,
-    /// Batch mode: the tolerance every row is judged with (default `exact`).
+    /// Batch mode: the tolerance every row is judged with (default `exact`): `exact`, `ulps=N`,
+    /// `abs=E`, `rel=E`, `correctly_rounded`, `faithful`, `cond=K` (|y − q| ≤ K·ε·Σ|c|B(|λ|)),
+    /// `cond` (K = (m+1)·n for this patch: de Casteljau's own constant, n = 3 on a triangle gives
+    /// K = 9) or `bound`.
     #[arg(long, value_name = "T")]
     pub tolerance: Option<String>,
     /// Batch mode: each number denotes the nearest float of this precision (f64 or f32).

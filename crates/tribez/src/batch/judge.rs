@@ -69,6 +69,7 @@ impl Prepared {
             None => patch.net.clone(),
         };
         let (m, n) = (patch.net.m(), patch.net.degree());
+        let tolerance = tolerance.for_patch(m, n);
         let filter = precision.filter(|_| !cartesian).map(|p| {
             let fnet = seen_net.map(crate::number::round_f64);
             (

@@ -106,10 +106,12 @@ impl Thresholds {
         m: usize,
         n: usize,
     ) -> Self {
+        let tolerance = &tolerance.for_patch(m, n);
         let (k_lo, k_hi) = match tolerance {
             Tolerance::Exact | Tolerance::CorrectlyRounded | Tolerance::Faithful => (0.0, 0.0),
             Tolerance::Ulps(x) | Tolerance::Abs(x) | Tolerance::Rel(x) => enclose(x),
             Tolerance::Cond(k) => enclose(&(k * super::measures::unit_roundoff(precision))),
+            Tolerance::CondDegree => unreachable!("resolved by for_patch above"),
             Tolerance::Bound => match super::bound::gamma(roundings(algorithm, m, n), precision) {
                 Some(g) => enclose(&g),
                 None => (f64::INFINITY, f64::INFINITY),
@@ -214,7 +216,10 @@ impl Thresholds {
                 self.k_lo * ulp_of(pabs_lo, self.precision),
                 self.k_hi * ulp_of(pabs_hi, self.precision),
             ),
-            Tolerance::Cond(_) => by_threshold(self.k_lo * e.s_lo, self.k_hi * e.s_hi),
+            // `cond` was resolved to `cond=(m+1)n` by `Thresholds::new`
+            Tolerance::Cond(_) | Tolerance::CondDegree => {
+                by_threshold(self.k_lo * e.s_lo, self.k_hi * e.s_hi)
+            }
             Tolerance::Bound => {
                 let extra = if self.sum_abs_powers {
                     let mut g = 0.0;
@@ -567,7 +572,9 @@ impl Filter {
             (Precision::F64, Tolerance::Ulps(_)) => th.k_hi < 1.5 * unit,
             (Precision::F64, Tolerance::Rel(_)) => th.k_hi < 2.5 * unit * EPS,
             (Precision::F64, Tolerance::Abs(_)) => th.k_hi < 0.3 * unit * EPS * self.scale,
-            (Precision::F64, Tolerance::Cond(_)) => th.k_hi < 0.7 * unit * EPS,
+            (Precision::F64, Tolerance::Cond(_) | Tolerance::CondDegree) => {
+                th.k_hi < 0.7 * unit * EPS
+            }
             (Precision::F64, Tolerance::Bound) => false,
         }
     }

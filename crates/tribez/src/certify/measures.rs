@@ -12,6 +12,7 @@
 //! | `correctly_rounded` | `y = RN_p(q)` (nearest, ties to even) |
 //! | `faithful` | `y` is one of the two floats of precision `p` bracketing `q` (`q` itself if it is one) |
 //! | `cond=K` | `|y − q| ≤ K · ε_p · Σ_i |c_i| B_i(|λ|)` (ε_p = 2^-53 or 2^-24; the condition number of \[FR87\]) |
+//! | `cond` | `cond=K` with `K = (m+1)·n` for a degree-`n` patch on the m-simplex ([`Tolerance::for_patch`]) |
 //! | `bound` | `|y − q| ≤` the proven a-priori bound of the named algorithm ([`super::bound`]) |
 //!
 //! `exact` is the case `abs=0`: one comparison path for every tolerance.
@@ -53,13 +54,15 @@ pub enum Tolerance {
     Faithful,
     /// At most `K · ε · Σ|c_i| B_i(|λ|)`.
     Cond(BigRational),
+    /// `cond` without `K`: `Cond((m+1)·n)` once the patch is known ([`Tolerance::for_patch`]).
+    CondDegree,
     /// Within the proven a-priori bound of the claim's algorithm.
     Bound,
 }
 
 /// The tolerance names, for messages.
 pub const TOLERANCES: &str =
-    "exact, ulps=N, abs=E, rel=E, correctly_rounded, faithful, cond=K, bound";
+    "exact, ulps=N, abs=E, rel=E, correctly_rounded, faithful, cond=K, cond, bound";
 
 /// Why a text is not a tolerance ([`Tolerance::from_str`](std::str::FromStr::from_str)).
 /// `Display` is the one-line message the command line prints.
@@ -113,6 +116,9 @@ pub enum ToleranceNeeds {
     /// `cond=K` without a condition number.
     #[error("tolerance `cond` needs an evaluation claim (the condition number Σ|c_i|B_i)")]
     Condition,
+    /// `cond` without `K` before [`Tolerance::for_patch`] gave it the patch's `K = (m+1)·n`.
+    #[error("tolerance `cond` needs the patch's degree (K = (m+1)·n)")]
+    Degree,
     /// `bound` without a proven bound.
     #[error(
         "tolerance `bound` needs an evaluation claim with an `algorithm` that has a proven bound"
@@ -121,7 +127,7 @@ pub enum ToleranceNeeds {
 }
 
 /// Exactly the strings of the command line and of claim files: `exact`, `ulps=N`, `abs=E`,
-/// `rel=E`, `correctly_rounded`, `faithful`, `cond=K`, `bound` (surrounding whitespace
+/// `rel=E`, `correctly_rounded`, `faithful`, `cond=K`, `cond`, `bound` (surrounding whitespace
 /// ignored). The number after `=` is exact (any syntax of [`crate::parse_rational`]) and
 /// non-negative; [`Display`](std::fmt::Display) writes it back as `p/q`, and reading that gives
 /// the same tolerance.
@@ -180,6 +186,7 @@ impl std::str::FromStr for Tolerance {
             "ulps" => Ok(Tolerance::Ulps(number(arg)?)),
             "abs" => Ok(Tolerance::Abs(number(arg)?)),
             "rel" => Ok(Tolerance::Rel(number(arg)?)),
+            "cond" if arg.is_none() => Ok(Tolerance::CondDegree),
             "cond" => Ok(Tolerance::Cond(number(arg)?)),
             _ => Err(ParseToleranceError::Unknown { text: t.into() }),
         }
@@ -188,7 +195,7 @@ impl std::str::FromStr for Tolerance {
 
 impl Tolerance {
     /// Parse `exact`, `ulps=2`, `abs=1e-12`, `rel=1e-9`, `correctly_rounded`, `faithful`,
-    /// `cond=4` or `bound` (the same as [`str::parse`]). The number after `=` is exact and
+    /// `cond=4`, `cond` or `bound` (the same as [`str::parse`]). The number after `=` is exact and
     /// non-negative.
     pub fn parse(text: &str) -> Result<Self, ParseToleranceError> {
         text.parse()
@@ -202,13 +209,44 @@ impl Tolerance {
                 | Tolerance::CorrectlyRounded
                 | Tolerance::Faithful
                 | Tolerance::Cond(_)
+                | Tolerance::CondDegree
                 | Tolerance::Bound
         )
     }
 
     /// Does it need the condition number `Σ|c_i|B_i(|λ|)` (only evaluation claims have one)?
     pub fn needs_condition(&self) -> bool {
-        matches!(self, Tolerance::Cond(_) | Tolerance::Bound)
+        matches!(
+            self,
+            Tolerance::Cond(_) | Tolerance::CondDegree | Tolerance::Bound
+        )
+    }
+
+    /// Is it `cond=K` or `cond` (relative to the condition number `Σ|c_i|B_i(|λ|)`)?
+    pub fn is_cond(&self) -> bool {
+        matches!(self, Tolerance::Cond(_) | Tolerance::CondDegree)
+    }
+
+    /// The tolerance for a degree-`n` patch on the m-simplex: `cond` becomes `cond=K` with
+    /// `K = (m+1)·n`, the constant of de Casteljau's own bound `|fl(P) − P| ≤ γ_{(m+1)n} Σ|c_α|
+    /// B_α(|λ|)` (docs/theory.md §14.1: n levels, each a sum of m+1 products); every other
+    /// tolerance is returned unchanged.
+    ///
+    /// ```
+    /// use tribez::hazmat::certify::measures::Tolerance;
+    /// use tribez::hazmat::number::parse_rational as q;
+    /// let t = Tolerance::parse("cond").unwrap();
+    /// assert_eq!(t.for_patch(2, 3), Tolerance::Cond(q("9").unwrap()));
+    /// assert_eq!(t.for_patch(3, 20), Tolerance::Cond(q("80").unwrap()));
+    /// assert_eq!(Tolerance::Bound.for_patch(2, 3), Tolerance::Bound);
+    /// ```
+    pub fn for_patch(&self, m: usize, n: usize) -> Tolerance {
+        match self {
+            Tolerance::CondDegree => Tolerance::Cond(BigRational::from_integer(
+                num_bigint::BigInt::from(m + 1) * num_bigint::BigInt::from(n),
+            )),
+            t => t.clone(),
+        }
     }
 
     /// Judge one number. `Err` names what the tolerance lacks (a precision, a condition number).
@@ -235,6 +273,9 @@ impl Tolerance {
                 let s = leaf.condition.as_ref().ok_or(ToleranceNeeds::Condition)?;
                 err <= k * unit_roundoff(precision()?) * s
             }
+            Tolerance::CondDegree => {
+                return Err(ToleranceNeeds::Degree);
+            }
             Tolerance::Bound => {
                 let b = leaf.bound.as_ref().ok_or(ToleranceNeeds::Bound)?;
                 &err <= b
@@ -252,6 +293,7 @@ impl Tolerance {
             Tolerance::CorrectlyRounded => "correctly_rounded".into(),
             Tolerance::Faithful => "faithful".into(),
             Tolerance::Cond(k) => format!("cond={k}"),
+            Tolerance::CondDegree => "cond".into(),
             Tolerance::Bound => "bound".into(),
         }
     }
@@ -410,6 +452,7 @@ mod tests {
             "correctly_rounded",
             "faithful",
             "cond=4",
+            "cond",
             "bound",
         ] {
             assert_eq!(
@@ -507,6 +550,41 @@ mod tests {
                 .accepts(&y, &x, &l)
                 .unwrap()
         );
+    }
+
+    #[test]
+    fn cond_without_k_is_the_degree_constant() {
+        // (m+1)·n by hand: a cubic triangle 3·3 = 9, a quadratic curve 2·2 = 4, a degree-20
+        // triangle 3·20 = 60, a degree-10 tetrahedron 4·10 = 40, a linear 4-simplex 5·1 = 5.
+        let t = Tolerance::parse("cond").unwrap();
+        assert_eq!(t, Tolerance::CondDegree);
+        assert!(t.needs_precision() && t.needs_condition() && t.is_cond());
+        for (m, n, k) in [
+            (2, 3, "9"),
+            (1, 2, "4"),
+            (2, 20, "60"),
+            (3, 10, "40"),
+            (4, 1, "5"),
+        ] {
+            assert_eq!(
+                t.for_patch(m, n),
+                Tolerance::Cond(q(k).unwrap()),
+                "m={m} n={n}"
+            );
+            assert_eq!(t.for_patch(m, n).text(), format!("cond={k}"));
+        }
+        assert_eq!(
+            Tolerance::parse(" cond = 9 ").unwrap().for_patch(2, 20),
+            Tolerance::Cond(q("9").unwrap())
+        );
+        // unresolved, it cannot judge: it names what it lacks
+        let one = q("1").unwrap();
+        let e = t
+            .accepts(&one, &one, &leaf(Some(Precision::F64)))
+            .unwrap_err();
+        assert_eq!(e, ToleranceNeeds::Degree);
+        // `cond=` with an empty value is still an error, not the degree constant
+        assert!(Tolerance::parse("cond=").is_err());
     }
 
     #[test]

@@ -383,6 +383,10 @@ impl ClaimFile {
             }
             _ => None,
         };
+        let tolerance = match &float_eval {
+            Some(f) => tolerance.for_patch(f.simplex_degree.0, f.simplex_degree.1),
+            None => tolerance,
+        };
         let judged_against = float_eval
             .as_ref()
             .map_or_else(|| exact.clone(), |f| Value::numbers(&f.exact_seen));

@@ -379,6 +379,9 @@ pub struct FloatEval {
     pub bound: Vec<Option<Q>>,
     /// Does `cond=K` mean anything for this kind of patch?
     pub cond_tolerance: bool,
+    /// `(m, n)`: the simplex dimension and degree of the net evaluated (what `cond` without `K`
+    /// resolves against, [`crate::certify::measures::Tolerance::for_patch`]).
+    pub simplex_degree: (usize, usize),
 }
 
 /// The float view of an `eval` claim in precision `p`: the exact side of the library's judge
@@ -444,5 +447,6 @@ pub fn eval_float(
             .bound
             .map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect()),
         cond_tolerance: side.cond_tolerance,
+        simplex_degree: (patch.simplex_dim(), patch.degree()),
     })
 }
