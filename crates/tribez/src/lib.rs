@@ -71,6 +71,7 @@ mod number;
 mod patch;
 mod patch_type;
 mod rational;
+pub mod report;
 mod scalar;
 mod simplex;
 mod spatch;
@@ -82,6 +83,9 @@ mod testing;
 pub use api_error::Error;
 pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
 pub use certify::measures::Tolerance;
+pub use certify::run::{
+    CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, RandomPoints, certify,
+};
 pub use error::CoreError;
 pub use exact::Algorithm;
 pub use float::Precision;

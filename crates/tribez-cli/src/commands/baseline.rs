@@ -7,24 +7,16 @@
 
 use std::path::Path;
 
-use serde_json::json;
-
 use super::CliError;
 use tribez::hazmat::io::InputError;
 
-/// The worst error of one (operation, algorithm, precision).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Worst {
-    /// Operation (`eval`).
-    pub op: String,
-    /// Algorithm (`casteljau`, `bernstein`, or `claimed` for other code's results).
-    pub algorithm: String,
-    /// `f64` or `f32`.
-    pub precision: String,
-    /// The worst error in ULPs.
-    pub ulps: f64,
-    /// Where it occurred.
-    pub at: String,
+pub use tribez::report::WorstError as Worst;
+
+/// A baseline file as written.
+#[derive(serde::Serialize)]
+struct BaselineFile<'a> {
+    tribez_baseline: u32,
+    worst: &'a [Worst],
 }
 
 /// The baselines of a run: `--baseline FILE` is read and compared first; `--record-baseline
@@ -52,11 +44,11 @@ pub fn judge(
 
 /// Write the baseline file (whole or not at all).
 pub fn record(path: &Path, worst: &[Worst]) -> Result<(), CliError> {
-    let entries: Vec<_> = worst
-        .iter()
-        .map(|w| json!({"op": w.op, "algorithm": w.algorithm, "precision": w.precision, "ulps": w.ulps, "at": w.at}))
-        .collect();
-    let text = format!("{:#}\n", json!({"tribez_baseline": 1, "worst": entries}));
+    let file = BaselineFile {
+        tribez_baseline: 1,
+        worst,
+    };
+    let text = crate::report::pretty_json(&file);
     super::write_atomically(path, text.as_bytes())
 }
 

@@ -133,6 +133,16 @@ pub enum CliError {
     Usage(String),
 }
 
+impl From<tribez::Error> for CliError {
+    /// Bad input stays located; every other error of the library is one line of its own.
+    fn from(e: tribez::Error) -> Self {
+        match e {
+            tribez::Error::Input(e) => CliError::Input(e),
+            e => CliError::Usage(e.to_string()),
+        }
+    }
+}
+
 impl CliError {
     /// A core error about `context`.
     pub fn core(context: impl Into<String>, source: CoreError) -> Self {

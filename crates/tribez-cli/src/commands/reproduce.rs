@@ -7,9 +7,10 @@
 
 use std::path::{Path, PathBuf};
 
-use super::check::{CheckReport, judge_paths};
+use super::check::judge_paths;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
+use tribez::claims::ClaimsOptions;
 use tribez::hazmat::io::InputError;
 
 mod embedded {
@@ -51,7 +52,8 @@ fn unpack(dir: &Path) -> Result<PathBuf, CliError> {
 
 /// Run `tribez reproduce`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let files = match &args.dir {
+    let options = ClaimsOptions { reproduce: true };
+    let report = match &args.dir {
         Some(dir) => {
             if !dir.is_dir() {
                 return Err(CliError::Usage(format!(
@@ -59,7 +61,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                     dir.display()
                 )));
             }
-            judge_paths(std::slice::from_ref(dir))?
+            judge_paths(std::slice::from_ref(dir), &options)?
         }
         None => {
             if builtin_fixtures().is_empty() {
@@ -75,7 +77,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 )
             })?;
             let root = unpack(tmp.path())?;
-            let mut files = judge_paths(&[root])?;
+            let mut report = judge_paths(&[root], &options)?;
             // report the files under their names in the repository, not the temporary copy's
             let rename = |name: &mut String| {
                 if let Ok(rel) = Path::new(name.as_str()).strip_prefix(tmp.path()) {
@@ -86,17 +88,12 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                         .join("/");
                 }
             };
-            for (name, judged) in &mut files {
-                rename(name);
-                judged.iter_mut().for_each(|j| rename(&mut j.file));
+            for f in &mut report.files {
+                rename(&mut f.file);
+                f.claims.iter_mut().for_each(|j| rename(&mut j.file));
             }
-            files
+            report
         }
-    };
-    let report = CheckReport {
-        files,
-        ok_word: "reproduced",
-        regressions: Vec::new(),
     };
     let success = report.success();
     Outcome::rendered(&report, args.out.format, success)

@@ -35,6 +35,14 @@ pub fn render(r: &dyn Render, format: Format) -> Option<String> {
     }
 }
 
+/// `value` as pretty-printed JSON (two-space indents) and a final newline: how every JSON
+/// report and file is written.
+pub fn pretty_json(value: &impl serde::Serialize) -> String {
+    let mut text = serde_json::to_string_pretty(value).unwrap_or_else(|_| "null".into());
+    text.push('\n');
+    text
+}
+
 /// Exact rationals as JSON strings.
 pub fn json_rationals(xs: &[num_rational::BigRational]) -> Json {
     Json::Array(xs.iter().map(|x| Json::String(x.to_string())).collect())
@@ -109,5 +117,3 @@ pub fn xml_escape(s: &str) -> String {
     }
     out
 }
-
-pub use tribez::batch::UlpHistogram;

@@ -385,15 +385,9 @@ impl Measures {
         }
     }
 
-    /// JSON, numbers as exact strings plus a short decimal.
+    /// JSON, numbers as exact strings plus a short decimal (the [`serde::Serialize`] impl).
     pub fn to_json(&self) -> serde_json::Value {
-        let q = |x: &BigRational| serde_json::json!({"exact": x.to_string(), "approx": crate::number::to_decimal_string(x, 6)});
-        serde_json::json!({
-            "abs": q(&self.abs),
-            "rel": self.rel.as_ref().map(q),
-            "ulps": self.ulps.as_ref().map(q),
-            "correctly_rounded": self.correctly_rounded,
-        })
+        serde_json::to_value(self).unwrap_or(serde_json::Value::Null)
     }
 
     /// One line for people: `0.5 ulp, abs 1.1e-17, rel 5.5e-17, correctly rounded`.
@@ -413,6 +407,43 @@ impl Measures {
             None => {}
         }
         parts.join(", ")
+    }
+}
+
+/// A number in a report: exact (`p/q`) and as a short decimal (6 significant digits).
+#[derive(serde::Serialize)]
+struct Approx {
+    exact: String,
+    approx: String,
+}
+
+impl Approx {
+    fn of(x: &BigRational) -> Self {
+        Approx {
+            exact: x.to_string(),
+            approx: crate::number::to_decimal_string(x, 6),
+        }
+    }
+}
+
+impl serde::Serialize for Measures {
+    /// `{"abs": {"exact", "approx"}, "rel": …, "ulps": …, "correctly_rounded": bool}`, `rel`,
+    /// `ulps` and `correctly_rounded` null where undefined.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        #[derive(serde::Serialize)]
+        struct MeasuresJson {
+            abs: Approx,
+            rel: Option<Approx>,
+            ulps: Option<Approx>,
+            correctly_rounded: Option<bool>,
+        }
+        MeasuresJson {
+            abs: Approx::of(&self.abs),
+            rel: self.rel.as_ref().map(Approx::of),
+            ulps: self.ulps.as_ref().map(Approx::of),
+            correctly_rounded: self.correctly_rounded,
+        }
+        .serialize(s)
     }
 }
 

@@ -31,7 +31,13 @@
 //! agrees, the stale erratum fails the run.
 
 pub mod ops;
+mod report;
 pub mod value;
+
+pub use report::{
+    ClaimsOptions, ClaimsReport, FileResults, FoundFiles, check_claims, check_files, check_paths,
+    claim_files_of,
+};
 
 use std::path::{Path, PathBuf};
 
@@ -107,6 +113,7 @@ impl Verdict {
 }
 
 /// A judged claim.
+#[derive(Clone, Debug)]
 pub struct Judged {
     /// The claim file.
     pub file: String,

@@ -671,7 +671,7 @@ fn inputs_that_overflow_the_precision_are_errors() {
     let cf = file(&format!(
         "{big}\n[[claim]]\nid = \"c\"\nop = \"edge_curve\"\nfrom = 1\nto = 2\nprecision = \"f64\"\nexpect = [[\"0\"], [\"0\"]]\n"
     ));
-    let e = cf.judge(&cf.claims[0]).err().expect("an error").to_string();
+    let e = cf.judge(&cf.claims[0]).expect_err("an error").to_string();
     assert!(e.contains("c.patch") && e.contains("overflows f64"), "{e}");
 }
 
