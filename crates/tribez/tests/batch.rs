@@ -307,3 +307,79 @@ fn an_identically_zero_coordinate_never_falls_back() {
         assert_eq!(r.fell_back, 0, "{tol}");
     }
 }
+
+/// `--cartesian` rows go through the float filter (docs/theory.md §14.5). A cubic with control
+/// values k/8 − 1 (floats, so the code sees them exactly) over a triangle (0,0), (3,0), (1, h);
+/// at 300 float points the claimed values are the correctly rounded exact values (the generic
+/// exact path: exact barycentric coordinates by Cramer's rule, rational de Casteljau), so every
+/// row meets `ulps=1/2` and `ulps=64`; moved by a relative 2^-30 on one coordinate (about 2^22
+/// ulps), every row fails `ulps=64`. For h = 2 the filter decides most rows at `ulps=64` (260 of
+/// 300 when written; the others, near cancellation, fall back)
+/// (the conversion's rounding costs a few ulps of the condition number); `ulps=1/2` is too tight
+/// for any Cartesian enclosure and falls back, with the same verdicts. For the thin h = 2^-20
+/// (barycentric coordinates known in floats to about 2^20 ε) the verdicts are the same.
+#[test]
+fn cartesian_rows_are_decided_by_the_filter_and_agree_with_the_exact_path() {
+    use tribez::Rational;
+    use tribez::hazmat::domain::Domain;
+    use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
+    use tribez::hazmat::number::{exact_f64, round_f64};
+    use tribez::hazmat::patch::{BezierPatch, ControlNet};
+    use tribez::hazmat::simplex::Simplex;
+    let q = |x: f64| exact_f64(x).unwrap();
+    let simplex = Simplex::new(2, 3);
+    let coords: Vec<Rational> = (0..simplex.len() * 2)
+        .map(|i| {
+            Rational::new(((i * 7919) % 23).into(), 8.into()) - Rational::from_integer(1.into())
+        })
+        .collect();
+    let net = ControlNet::new(simplex, 2, coords);
+    let exact = ExactEvaluator::new(&net);
+    for h in [2.0, 2f64.powi(-20)] {
+        let domain = Domain::new(vec![
+            vec![q(0.0), q(0.0)],
+            vec![q(3.0), q(0.0)],
+            vec![q(1.0), q(h)],
+        ])
+        .unwrap();
+        let mut patch = BezierPatch::new(net.clone());
+        patch.domain = Some(domain.clone());
+        let (mut points, mut good, mut bad) = (Vec::new(), Vec::new(), Vec::new());
+        for i in 0..300u32 {
+            let s = f64::from(i % 17) / 17.0 + 0.01;
+            let t = f64::from(i / 17) / 19.0 * (1.0 - s);
+            let x = [3.0 * s + t, t * h + 1e-9 * f64::from(i % 3)];
+            let lam = domain.barycentric(&[q(x[0]), q(x[1])]).unwrap();
+            let p = exact.evaluate(&lam, Algorithm::Casteljau);
+            let y = [round_f64(&p[0]), round_f64(&p[1])];
+            points.extend(x);
+            good.extend(y);
+            bad.extend([y[0] + y[0].abs() * 2f64.powi(-30) + 1e-300, y[1]]);
+        }
+        let check = |tol: &str, values: &[f64]| {
+            let options = BatchOptions {
+                tolerance: Tolerance::parse(tol).unwrap(),
+                precision: Some(Precision::F64),
+                cartesian: true,
+                ..BatchOptions::default()
+            };
+            BatchChecker::new(patch.clone(), &options)
+                .unwrap()
+                .check_rows(&points, values, 0, "<memory>", "triangle")
+                .unwrap()
+                .0
+        };
+        let r = check("ulps=1/2", &good);
+        assert_eq!((r.checked, r.passed), (300, 300), "h={h}");
+        let r = check("ulps=64", &good);
+        assert_eq!((r.checked, r.passed), (300, 300), "h={h}");
+        if h == 2.0 {
+            assert!(r.fell_back <= 60, "fell back {}", r.fell_back);
+        }
+        let r = check("ulps=64", &bad);
+        assert_eq!((r.checked, r.failed), (300, 300), "h={h}");
+        if h == 2.0 {
+            assert!(r.fell_back <= 60, "fell back {}", r.fell_back);
+        }
+    }
+}

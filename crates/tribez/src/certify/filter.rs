@@ -41,6 +41,7 @@ use crate::simplex::Simplex;
 
 use super::measures::Tolerance;
 
+pub mod cartesian;
 mod kernel;
 
 /// Safety margin of the comparisons (relative).
@@ -441,6 +442,9 @@ pub struct Scratch {
     mu2: Vec<f64>,
     s2: Vec<f64>,
     lean: kernel::LeanScratch,
+    /// Cartesian rows: the outer point `|λ̂| + d` and its enclosures.
+    outer: Vec<f64>,
+    wide: Vec<Enclosure>,
 }
 
 impl Filter {
@@ -629,6 +633,25 @@ pub struct RowJudgement {
     pub tight: bool,
 }
 
+/// Widen enclosures at `λ̂` to hold at every `λ` within the radii: `wide[c].mu ≥
+/// S(|λ̂| + d) − S(|λ̂|)` bounds the move of `P`, `wide[c].s_hi ≥ S(|λ̂| + d)` the condition
+/// number (docs/theory.md §14.5).
+fn widen(enc: &mut [Enclosure], wide: &[Enclosure]) {
+    for (e, w) in enc.iter_mut().zip(wide) {
+        if e.is_exact_zero() && w.is_exact_zero() {
+            continue;
+        }
+        e.mu = (e.mu + w.mu) * (1.0 + 2.0 * EPS);
+        let lo = e.s_lo - w.mu;
+        e.s_lo = if lo > 0.0 {
+            lo * (1.0 - 2.0 * EPS)
+        } else {
+            0.0
+        };
+        e.s_hi = w.s_hi;
+    }
+}
+
 /// The row's conclusion from one set of enclosures.
 fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJudgement {
     let mut all_pass = true;
@@ -737,6 +760,125 @@ impl Filter {
         enc: &mut [Enclosure],
     ) -> RowJudgement {
         self.judge_in_order(th, lambda, claimed, scratch, enc, true)
+    }
+
+    /// [`Filter::judge_tight`] at the exact point `λ` known only as `λ̂ = lambda` with radii
+    /// `|λ_k − λ̂_k| ≤ radius[k]` (a Cartesian input converted in floats,
+    /// [`cartesian::CartesianMap`]): every enclosure is widened by `S(|λ̂| + d) − S(|λ̂|)`
+    /// (docs/theory.md §14.5), its condition-number bounds made to hold at every such `λ`.
+    pub fn judge_tight_uncertain(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        radius: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        let undecided = RowJudgement {
+            decision: Decision::Undecided,
+            ulps: f64::INFINITY,
+            ulps_lower: 0.0,
+            tight: false,
+        };
+        // |λ̂| and the radii; Σ_k (|λ̂_k| + d_k) ≥ Σ|λ_k| for the a-priori bound's underflow term
+        let mut outer = std::mem::take(&mut scratch.outer);
+        let mut wide = std::mem::take(&mut scratch.wide);
+        outer.clear();
+        outer.extend(lambda.iter().map(|l| l.abs()));
+        let s_abs: f64 = outer.iter().zip(radius).map(|(a, d)| a + d).sum::<f64>()
+            * (1.0 + 2.0 * (self.m + 2) as f64 * EPS);
+        wide.clear();
+        wide.resize(enc.len(), Enclosure::default());
+        self.widening(&outer, radius, scratch, &mut wide);
+        let ok = wide.iter().all(|w| w.mu.is_finite() && w.s_hi.is_finite()) && s_abs.is_finite();
+        let result = if ok {
+            let first = self.lean.is_some();
+            let mut r = undecided;
+            for stage in 0..2 {
+                if (stage == 0) == first {
+                    self.evaluate_compensated(lambda, scratch, enc);
+                } else {
+                    self.evaluate(lambda, scratch, enc);
+                }
+                widen(enc, &wide);
+                r = conclude(th, claimed, enc, s_abs);
+                r.tight = false;
+                if r.decision != Decision::Undecided {
+                    break;
+                }
+            }
+            r
+        } else {
+            undecided
+        };
+        scratch.outer = outer;
+        scratch.wide = wide;
+        result
+    }
+
+    /// Per coordinate, upper bounds of `Δ = S(a + d) − S(a)` (in `mu`) and of `S(a + d)` (in
+    /// `s_hi`), `a = |λ̂| ≥ 0`, `d ≥ 0`, `S(μ) = Σ_α |c_α| B_α(μ)` (docs/theory.md §14.5).
+    ///
+    /// de Casteljau on `|c|` at `a + d`, each node split into the part `A` at `a` and the rest:
+    /// `A = Σ_k a_k A_k`, `Δ = Σ_k (a_k + d_k) Δ_k + Σ_k d_k A_k`, from `A = |c|`, `Δ = 0`. Every
+    /// term is non-negative, so with `K = (4m + 4)n` roundings per path the computed values are
+    /// within a factor `1 + γ_K` of the exact ones; we inflate by `1 + 4Kε` and add an absolute
+    /// `2^-1074` per operation, scaled by `Σ_{j≤n} (Σ_k (a_k + d_k))^j`, for underflow.
+    fn widening(&self, a: &[f64], d: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+        let (m, dim, n) = (self.m, self.dim, self.n);
+        let Scratch { v, mu, v2, mu2, .. } = scratch;
+        v.clear();
+        v.extend(self.coords.iter().map(|x| x.abs()));
+        mu.clear();
+        mu.resize(v.len(), 0.0);
+        for stencil in &self.stencils {
+            v2.clear();
+            mu2.clear();
+            for children in stencil.chunks_exact(m + 1) {
+                for c in 0..dim {
+                    let mut acc = 0.0;
+                    let mut delta = 0.0;
+                    for k in 0..=m {
+                        let r = children[k] * dim + c;
+                        acc += a[k] * v[r];
+                        delta += (a[k] + d[k]) * mu[r] + d[k] * v[r];
+                    }
+                    v2.push(acc);
+                    mu2.push(delta);
+                }
+            }
+            std::mem::swap(v, v2);
+            std::mem::swap(mu, mu2);
+        }
+        let k = ((4 * m + 4) * n.max(1)) as f64;
+        let inflate = 1.0 + 4.0 * k * EPS;
+        let sum: f64 =
+            a.iter().zip(d).map(|(x, y)| x + y).sum::<f64>() * (1.0 + 2.0 * (m + 2) as f64 * EPS);
+        let mut geometric = 0.0;
+        let mut power = 1.0;
+        for _ in 0..=n {
+            geometric += power;
+            power *= sum;
+        }
+        let nodes = crate::simplex::count(m, n) as f64 * (n as f64 + 1.0);
+        let absolute = nodes * (6 * m + 8) as f64 * TINY * geometric * (1.0 + R);
+        for c in 0..dim {
+            let delta = mu[c] * inflate + absolute;
+            let s_at_a = v[c] * inflate + absolute;
+            let zero = self.zero[c];
+            out[c] = Enclosure {
+                value: 0.0,
+                corr: 0.0,
+                mu: if zero { 0.0 } else { delta },
+                s_lo: 0.0,
+                s_hi: if zero {
+                    0.0
+                } else {
+                    (s_at_a + delta) * (1.0 + 2.0 * EPS)
+                },
+            };
+        }
     }
 
     fn judge_in_order(
@@ -1716,6 +1858,115 @@ mod tests {
                             }
                         }
                     }
+                }
+            }
+        }
+
+        /// Cartesian rows (docs/theory.md §14.5): on random domain simplices, many of them
+        /// nearly degenerate (a vertex within 2^-40·t of the opposite face, far away, or huge),
+        /// the float conversion's radii contain the exact barycentric coordinates, the widened
+        /// enclosures contain the exact value and condition number at them, and every decision
+        /// of the filter agrees with the exact judgement (the generic exact path).
+        #[test]
+        fn cartesian_rows_are_enclosed_and_judged_soundly(
+            m in 1usize..=3,
+            n in 1usize..=4,
+            dim in 1usize..=3,
+            values in proptest::collection::vec(scaled(), 60),
+            verts in proptest::collection::vec(-4.0f64..4.0, 12),
+            squash in 0u8..4,
+            x01 in proptest::collection::vec(-0.2f64..1.2, 3),
+            steps in proptest::collection::vec(-2i32..=2, 3),
+        ) {
+            use crate::certify::measures::{Leaf, Tolerance};
+            use crate::domain::Domain;
+            use cartesian::CartesianMap;
+            // the vertices: random, then (squash) the last one pushed towards the opposite face,
+            // or scaled up
+            let mut v: Vec<Vec<f64>> = (0..=m).map(|k| verts[k * m..(k + 1) * m].to_vec()).collect();
+            match squash {
+                1 => {
+                    // last vertex = mean of the others + 2^-40 · a random offset
+                    for j in 0..m {
+                        let mean = v[..m].iter().map(|p| p[j]).sum::<f64>() / m as f64;
+                        v[m][j] = mean + v[m][j] * 2f64.powi(-40);
+                    }
+                }
+                2 => v.iter_mut().for_each(|p| p.iter_mut().for_each(|c| *c *= 1e6)),
+                3 => v.iter_mut().for_each(|p| p.iter_mut().for_each(|c| *c = *c / 3.0 + 1e3)),
+                _ => {}
+            }
+            let vq: Vec<Vec<BigRational>> = v.iter().map(|p| p.iter().map(|c| exact_f64(*c).unwrap()).collect()).collect();
+            let Ok(domain) = Domain::new(vq) else { return Ok(()); };
+            let Some(map) = CartesianMap::new(&domain) else { return Ok(()); };
+            // a float point: an affine combination of the vertices, computed in floats
+            let w: Vec<f64> = {
+                let mut w: Vec<f64> = x01[..m].to_vec();
+                let rest = 1.0 - w.iter().sum::<f64>();
+                w.insert(0, rest);
+                w
+            };
+            let x: Vec<f64> = (0..m).map(|j| (0..=m).map(|k| w[k] * v[k][j]).sum()).collect();
+            let xq: Vec<BigRational> = x.iter().map(|c| exact_f64(*c).unwrap()).collect();
+            let lam = domain.barycentric(&xq).unwrap();
+            let (mut lh, mut d) = (Vec::new(), Vec::new());
+            proptest::prop_assert!(map.barycentric(&x, &mut lh, &mut d));
+            for k in 0..=m {
+                let err = (exact_f64(lh[k]).unwrap() - &lam[k]).abs();
+                proptest::prop_assert!(err <= exact_f64(d[k]).unwrap(), "k={} {} > {}", k, err, d[k]);
+            }
+            let simplex = Simplex::new(m, n);
+            let coords: Vec<f64> = (0..simplex.len() * dim).map(|i| values[i % values.len()]).collect();
+            let net = ControlNet::new(simplex, dim, coords);
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let pe = ExactEvaluator::new(&exact_net).evaluate(&lam, Algorithm::Casteljau);
+            let s = crate::certify::bound::condition(&exact_net, &lam);
+            let ys: Vec<f64> = (0..dim).map(|c| {
+                let mut y = round_f64(&pe[c]);
+                for _ in 0..steps[c].abs() {
+                    y = if steps[c] > 0 { y.next_up() } else { y.next_down() };
+                }
+                y
+            }).collect();
+            if ys.iter().any(|y| !y.is_finite()) {
+                return Ok(());
+            }
+            let mut sc = Scratch::default();
+            let mut enc = vec![Enclosure::default(); dim];
+            for t in ["exact", "ulps=1", "ulps=4", "ulps=64", "abs=1e-12", "rel=1e-12", "correctly_rounded", "faithful", "cond", "cond=2", "bound"] {
+                let tol = Tolerance::parse(t).unwrap().for_patch(m, n);
+                let p = Precision::F64;
+                let th = Thresholds::new(&tol, p, Algorithm::Casteljau, m, n);
+                let truth = (0..dim).all(|c| {
+                    let leaf = Leaf {
+                        precision: Some(p),
+                        condition: Some(s[c].clone()),
+                        bound: crate::certify::bound::a_priori(Algorithm::Casteljau, p, m, n, &s[c], &lam),
+                    };
+                    tol.accepts(&exact_f64(ys[c]).unwrap(), &pe[c], &leaf).unwrap()
+                });
+                let r = f.judge_tight_uncertain(&th, &lh, &d, &ys, &mut sc, &mut enc);
+                // the deciding enclosures hold at the exact point
+                for c in 0..dim {
+                    let e = &enc[c];
+                    if e.mu.is_finite() && e.value.is_finite() && e.corr.is_finite() {
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap() - &pe[c]).abs();
+                        proptest::prop_assert!(err <= exact_f64(e.mu).unwrap(), "{} c={}", t, c);
+                        if e.s_hi.is_finite() {
+                            proptest::prop_assert!(exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap(), "{} c={} cond", t, c);
+                        }
+                    }
+                }
+                match r.decision {
+                    Decision::Pass => proptest::prop_assert!(truth, "{} {:?} {:?}", t, x, ys),
+                    Decision::Fail => proptest::prop_assert!(!truth, "{} {:?} {:?}", t, x, ys),
+                    Decision::Undecided => {}
+                }
+                if r.ulps.is_finite() {
+                    let e_max = (0..dim).map(|c| crate::number::ulps_error_f64(&exact_f64(ys[c]).unwrap(), &pe[c])).max().unwrap();
+                    proptest::prop_assert!(e_max <= BigRational::from_float(r.ulps).unwrap());
+                    proptest::prop_assert!(BigRational::from_float(r.ulps_lower).unwrap() <= e_max);
                 }
             }
         }
