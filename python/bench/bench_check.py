@@ -80,6 +80,34 @@ def best_cpu(f, repeat: int, children: bool = False) -> float:
     return min(times)
 
 
+def thread_cpu() -> dict:
+    """CPU ticks (user + system) of each thread of this process, from /proc (Linux; {} elsewhere)."""
+    out = {}
+    base = pathlib.Path("/proc/self/task")
+    if not base.is_dir():
+        return out
+    for t in base.iterdir():
+        try:
+            fields = (t / "stat").read_text().rsplit(")", 1)[1].split()
+            out[t.name] = int(fields[11]) + int(fields[12])  # utime, stime (fields 14, 15)
+        except (OSError, IndexError, ValueError):
+            pass
+    return out
+
+
+def threads_busy(f) -> str:
+    """Which threads did the work of f: their share of its CPU time (Linux only)."""
+    before = thread_cpu()
+    f()
+    after = thread_cpu()
+    deltas = sorted((after[t] - before.get(t, 0) for t in after), reverse=True)
+    total = sum(deltas)
+    if not total:
+        return "per-thread CPU time unavailable"
+    shares = [d / total for d in deltas if d / total >= 0.05]
+    return f"{len(shares)} threads did it (" + ", ".join(f"{x:.0%}" for x in shares) + " of its CPU time)"
+
+
 def cpu_per_wall(f) -> float:
     """CPU time of this process (all its threads) over wall-clock time for one call of f: about
     the number of cores busy meanwhile (2 when both cores judge)."""
@@ -106,8 +134,9 @@ def main() -> int:
     t_py = best(lambda: tribez.check(patch, points, values, tolerance=args.tolerance), args.repeat)
     busy = cpu_per_wall(lambda: tribez.check(patch, points, values, tolerance=args.tolerance))
     c_py = best_cpu(lambda: tribez.check(patch, points, values, tolerance=args.tolerance), args.repeat)
+    spread = threads_busy(lambda: tribez.check(patch, points, values, tolerance=args.tolerance))
     print(f"tribez.check (numpy arrays):   {t_py:.3f} s   passed {report.passed}, failed {report.failed}, "
-          f"fell back {report.fell_back}; CPU time / wall time {busy:.2f}")
+          f"fell back {report.fell_back}; CPU time / wall time {busy:.2f}; {spread}")
 
     if not os.path.exists(args.cli):
         print(f"no CLI at {args.cli}: build it with `cargo build --release -p tribez-cli`", file=sys.stderr)

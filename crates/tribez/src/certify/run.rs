@@ -16,7 +16,7 @@ use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::api_error::Error;
+use crate::api_error::{Error, Lacks};
 use crate::capability::{FloatCase, FloatEval, FloatProgram, InputSpace};
 use crate::certify::bound::roundings;
 use crate::certify::measures::{Measures, sci};
@@ -362,10 +362,9 @@ fn algorithms(
         Some(Algorithm::Casteljau) if offered.len() == 1 => Ok(offered.to_vec()),
         Some(a) => Err(Error::Unsupported {
             kind: patch.kind().plural(),
-            what: format!(
-                "certified with de Casteljau only, not with {}",
-                algorithm_name(a)
-            ),
+            what: Lacks::CertifyAlgorithm {
+                algorithm: algorithm_name(a),
+            },
         }),
     }
 }
@@ -454,7 +453,7 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
     };
     let float = patch.float().ok_or(Error::Unsupported {
         kind: patch.kind().plural(),
-        what: "have no float program to certify".into(),
+        what: Lacks::FloatProgramToCertify,
     })?;
     let algorithms = algorithms(options.algorithm, patch, float)?;
     let points = points_of(patch, options)?;

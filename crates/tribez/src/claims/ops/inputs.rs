@@ -220,7 +220,7 @@ impl<'a> Inputs<'a> {
 
     /// A point of `patch`'s domain in its kind's coordinates ([`InputSpace`]): for a simplex
     /// as [`Inputs::point`]; for a polygon (an S-patch) a Cartesian point from `cartesian`.
-    pub fn point_of(&self, patch: &crate::Patch) -> Result<Point, InputError> {
+    pub fn point_of(&self, patch: &crate::patch_type::Patch) -> Result<Point, InputError> {
         match patch.shape().input {
             InputSpace::Barycentric { m } => {
                 self.point_in(m, &|x: &[Q]| patch.exact().cartesian_input(x))
@@ -251,11 +251,7 @@ impl<'a> Inputs<'a> {
     }
 
     /// [`Inputs::point`] over the `m`-simplex, `cartesian` converted by `convert`.
-    fn point_in(
-        &self,
-        m: usize,
-        convert: &Convert<'_>,
-    ) -> Result<Point, InputError> {
+    fn point_in(&self, m: usize, convert: &Convert<'_>) -> Result<Point, InputError> {
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) if self.get("precision").is_some() => {
                 if at.len() != m + 1 {
