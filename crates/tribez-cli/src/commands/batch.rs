@@ -8,7 +8,7 @@ use serde_json::Value as Json;
 
 use super::check::Args;
 use super::{CliError, Outcome};
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport};
 use tribez::hazmat::certify::measures::Tolerance;
 use tribez::hazmat::exact::Algorithm;
@@ -92,7 +92,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let report = report?;
     let success = report.failed == 0;
     if let Some(path) = &args.junit {
-        super::write_atomically(path, report.junit().as_bytes())?;
+        super::write_junit(path, &report)?;
     }
     let worst = worst_errors(&report);
     let regressions = super::baseline::judge(
@@ -130,12 +130,10 @@ impl Render for BatchReport {
     }
 
     fn json(&self) -> Json {
-        BatchReport::json(self)
+        to_json(self)
     }
-}
 
-impl Exporter for BatchReport {
-    fn junit(&self) -> String {
+    fn junit(&self) -> Option<JunitSuite> {
         let mut failures: Vec<String> = self
             .failures
             .iter()
@@ -147,13 +145,13 @@ impl Exporter for BatchReport {
                 self.failed as usize - self.failures.len()
             ));
         }
-        junit_xml(
-            "check",
-            &[JunitCase {
+        Some(JunitSuite {
+            suite: "check",
+            cases: vec![JunitCase {
                 name: self.file.clone(),
                 checks: self.checked as usize,
                 failures,
             }],
-        )
+        })
     }
 }

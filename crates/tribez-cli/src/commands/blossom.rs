@@ -7,12 +7,12 @@
 use std::path::PathBuf;
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::construct::barycentric_points;
 use super::{CliError, Outcome, points_patch};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
+use crate::report::{Render, to_json, tuple};
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
@@ -28,9 +28,12 @@ pub struct Args {
     pub out: OutputArgs,
 }
 
-/// The blossom value.
+/// The blossom value; JSON `{"point": [..]}`.
+#[derive(serde::Serialize)]
 pub struct BlossomReport {
+    #[serde(skip)]
     args: Vec<Vec<BigRational>>,
+    #[serde(serialize_with = "crate::report::ser::rationals")]
     point: Vec<BigRational>,
 }
 
@@ -77,6 +80,6 @@ impl Render for BlossomReport {
         )
     }
     fn json(&self) -> Json {
-        json!({ "point": json_rationals(&self.point) })
+        to_json(self)
     }
 }

@@ -7,7 +7,7 @@ use serde_json::Value as Json;
 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::claims::{self, ClaimsOptions, ClaimsReport};
 
 /// Arguments of `tribez check`.
@@ -98,7 +98,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     )?;
     let success = report.success();
     if let Some(path) = &args.junit {
-        super::write_atomically(path, report.junit().as_bytes())?;
+        super::write_junit(path, &report)?;
     }
     Outcome::rendered(&report, args.out.format, success)
 }
@@ -109,12 +109,10 @@ impl Render for ClaimsReport {
     }
 
     fn json(&self) -> Json {
-        serde_json::to_value(self).unwrap_or(Json::Null)
+        to_json(self)
     }
-}
 
-impl Exporter for ClaimsReport {
-    fn junit(&self) -> String {
+    fn junit(&self) -> Option<JunitSuite> {
         let cases: Vec<JunitCase> = self
             .files
             .iter()
@@ -137,6 +135,9 @@ impl Exporter for ClaimsReport {
                     .collect(),
             })
             .collect();
-        junit_xml("check", &cases)
+        Some(JunitSuite {
+            suite: "check",
+            cases,
+        })
     }
 }

@@ -3,10 +3,11 @@
 //! patch-file format so that commands compose.
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde::Serialize;
+use serde_json::Value as Json;
 
 use super::{CliError, check_barycentric, parse_list};
-use crate::report::Render;
+use crate::report::{Render, to_json};
 use tribez::hazmat::domain::Domain;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::{
@@ -175,13 +176,42 @@ fn toml_with(patch: &Patch, f: Option<&[Vec<BigRational>]>, prefix: &str) -> Str
     out
 }
 
+/// A patch file's JSON, followed by `domain_in_parent` when the patch is a subpatch.
+#[derive(Serialize)]
+struct PatchJson {
+    #[serde(flatten)]
+    patch: Json,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    domain_in_parent: Option<Vec<Vec<String>>>,
+}
+
+/// One piece of a split: its simplex in the parent's barycentric coordinates and its patch file.
+#[derive(Serialize)]
+pub struct PieceJson {
+    /// The piece's simplex.
+    pub domain_in_parent: Vec<Vec<String>>,
+    /// The patch file's JSON.
+    pub patch: Json,
+}
+
+/// The pieces of a split, as JSON.
+#[derive(Serialize)]
+pub struct PiecesJson {
+    /// The pieces.
+    pub pieces: Vec<PieceJson>,
+}
+
+/// Points as lists of exact strings.
+pub fn point_strings(f: &[Vec<BigRational>]) -> Vec<Vec<String>> {
+    f.iter().map(|p| strings(p)).collect()
+}
+
 /// The JSON patch file, with `domain_in_parent` if given.
 pub fn json_with(patch: &Patch, f: Option<&[Vec<BigRational>]>) -> Json {
-    let mut j = patch_to_json(patch);
-    if let Some(f) = f {
-        j["domain_in_parent"] = json!(f.iter().map(|p| strings(p)).collect::<Vec<_>>());
-    }
-    j
+    to_json(&PatchJson {
+        patch: patch_to_json(patch),
+        domain_in_parent: f.map(point_strings),
+    })
 }
 
 /// A patch-valued result: text is the TOML patch file, JSON the JSON patch file.
@@ -224,9 +254,15 @@ impl Render for PiecesReport {
         out
     }
     fn json(&self) -> Json {
-        json!({ "pieces": self.pieces.iter().map(|(f, p)| json!({
-            "domain_in_parent": f.iter().map(|v| strings(v)).collect::<Vec<_>>(),
-            "patch": patch_to_json(p),
-        })).collect::<Vec<_>>() })
+        to_json(&PiecesJson {
+            pieces: self
+                .pieces
+                .iter()
+                .map(|(f, p)| PieceJson {
+                    domain_in_parent: point_strings(f),
+                    patch: patch_to_json(p),
+                })
+                .collect(),
+        })
     }
 }

@@ -3,11 +3,11 @@
 use std::path::PathBuf;
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
+use crate::report::{Render, to_json, tuple};
 use tribez::hazmat::derivative::{check_order, directional_derivative};
 use tribez::hazmat::io::patch_file::read_any_patch;
 
@@ -38,6 +38,30 @@ pub struct DerivativeReport {
     at: Vec<BigRational>,
     directions: Vec<Vec<BigRational>>,
     value: Vec<BigRational>,
+}
+
+/// The JSON of `tribez derivative`.
+#[derive(serde::Serialize)]
+struct DerivativeJson<'a> {
+    patch: &'a str,
+    at: Vec<String>,
+    order: usize,
+    directions: Vec<Vec<String>>,
+    value: Vec<String>,
+}
+
+impl serde::Serialize for DerivativeReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use crate::report::strings;
+        DerivativeJson {
+            patch: &self.file,
+            at: strings(&self.at),
+            order: self.directions.len(),
+            directions: self.directions.iter().map(|d| strings(d)).collect(),
+            value: strings(&self.value),
+        }
+        .serialize(s)
+    }
 }
 
 /// Run `tribez derivative`.
@@ -107,12 +131,6 @@ impl Render for DerivativeReport {
     }
 
     fn json(&self) -> Json {
-        json!({
-            "patch": self.file,
-            "at": json_rationals(&self.at),
-            "order": self.directions.len(),
-            "directions": self.directions.iter().map(|d| json_rationals(d)).collect::<Vec<_>>(),
-            "value": json_rationals(&self.value),
-        })
+        to_json(self)
     }
 }

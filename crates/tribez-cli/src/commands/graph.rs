@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use serde_json::Value as Json;
 
+use super::construct::{PieceJson, PiecesJson, point_strings};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
@@ -103,23 +104,15 @@ impl Render for AnyPiecesReport {
     }
 
     fn json(&self) -> Json {
-        Json::Object(
-            [(
-                "pieces".to_string(),
-                Json::Array(
-                    self.0
-                        .iter()
-                        .map(|(f, p)| {
-                            serde_json::json!({
-                                "domain_in_parent": f.iter().map(|v| v.iter().map(ToString::to_string).collect::<Vec<_>>()).collect::<Vec<_>>(),
-                                "patch": any_patch_to_json(p),
-                            })
-                        })
-                        .collect(),
-                ),
-            )]
-            .into_iter()
-            .collect(),
-        )
+        crate::report::to_json(&PiecesJson {
+            pieces: self
+                .0
+                .iter()
+                .map(|(f, p)| PieceJson {
+                    domain_in_parent: point_strings(f),
+                    patch: any_patch_to_json(p),
+                })
+                .collect(),
+        })
     }
 }

@@ -30,7 +30,7 @@ use std::path::PathBuf;
 use clap::Parser;
 
 use crate::cli::{LatexOutputArgs, OutputArgs, examples};
-use crate::report::{Format, Render, render};
+use crate::report::{Exporter, Format, JunitExporter, Render, render};
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::InputError;
 use tribez::hazmat::number::parse_rational;
@@ -229,6 +229,14 @@ pub fn emit(outcome: &Outcome, out: &dyn OutputTarget) -> Result<(), CliError> {
 /// when the run ends with exit status 0 or 1, and not at all otherwise.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     output::stage(path, bytes)
+}
+
+/// Stage the JUnit XML of `report` as `path` (see [`write_atomically`]).
+pub fn write_junit(path: &Path, report: &dyn Render) -> Result<(), CliError> {
+    let xml = JunitExporter
+        .export(report)
+        .ok_or_else(|| CliError::Usage("--junit is not available for this command".into()))?;
+    output::stage(path, xml.as_bytes())
 }
 
 /// Parse a comma-separated list of exact numbers from the command line (`1/2,1/3,1/6`).

@@ -6,11 +6,12 @@
 
 use std::path::PathBuf;
 
-use serde_json::{Value as Json, json};
+use serde::Serialize;
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
-use crate::report::Render;
+use crate::report::{Render, to_json};
 use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::hazmat::symbolic::{
@@ -98,6 +99,46 @@ impl SymbolicReport {
     }
 }
 
+/// One term of a polynomial in JSON: its exact coefficient and the exponents of the variables.
+#[derive(Serialize)]
+struct TermJson<'a> {
+    coefficient: String,
+    exponents: &'a [u32],
+}
+
+/// The JSON of `tribez symbolic`: the variables, each component as its list of terms, and the
+/// common denominator (rational patches, S-patches) as text.
+#[derive(Serialize)]
+struct SymbolicJson<'a> {
+    variables: &'a [String],
+    components: Vec<Vec<TermJson<'a>>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    denominator: Option<String>,
+}
+
+impl Serialize for SymbolicReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        SymbolicJson {
+            variables: &self.names,
+            components: self
+                .components
+                .iter()
+                .map(|p| {
+                    p.terms()
+                        .into_iter()
+                        .map(|(e, c)| TermJson {
+                            coefficient: c.to_string(),
+                            exponents: e,
+                        })
+                        .collect()
+                })
+                .collect(),
+            denominator: self.denominator.as_ref().map(|d| d.to_text(&self.names())),
+        }
+        .serialize(s)
+    }
+}
+
 impl Render for SymbolicReport {
     fn text(&self) -> String {
         let names = self.names();
@@ -116,23 +157,7 @@ impl Render for SymbolicReport {
     }
 
     fn json(&self) -> Json {
-        let components: Vec<Json> = self
-            .components
-            .iter()
-            .map(|p| {
-                Json::Array(
-                    p.terms()
-                        .into_iter()
-                        .map(|(e, c)| json!({ "coefficient": c.to_string(), "exponents": e }))
-                        .collect(),
-                )
-            })
-            .collect();
-        let mut out = json!({ "variables": self.names, "components": components });
-        if let Some(d) = &self.denominator {
-            out["denominator"] = json!(d.to_text(&self.names()));
-        }
-        out
+        to_json(self)
     }
 
     fn latex(&self) -> Option<String> {

@@ -3,11 +3,12 @@
 use std::path::PathBuf;
 
 use num_rational::BigRational;
-use serde_json::{Map, Value as Json, json};
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome, at_point, points_patch};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
+use crate::report::ser::OrderedMap;
+use crate::report::{Render, strings, to_json, tuple};
 use tribez::hazmat::derivative::{TangentFrame, tangent_frame};
 use tribez::hazmat::io::patch_file::{index_key, read_any_patch};
 use tribez::hazmat::symbolic::cartesian_names;
@@ -70,6 +71,51 @@ impl TangentReport {
     }
 }
 
+/// The JSON of `tribez tangent`.
+#[derive(serde::Serialize)]
+struct TangentJson<'a> {
+    patch: &'a str,
+    at: Vec<String>,
+    point: Vec<String>,
+    /// `"1,0,0"` → the de Casteljau point of level n − 1 at that unit index.
+    intermediate: OrderedMap<Vec<String>>,
+    /// `"x"` → the partial derivative.
+    partials: OrderedMap<Vec<String>>,
+    normal: Option<Vec<String>>,
+    normal_from_intermediate: Option<Vec<String>>,
+    regular: bool,
+}
+
+impl serde::Serialize for TangentReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let f = &self.frame;
+        let m = self.at.len() - 1;
+        TangentJson {
+            patch: &self.file,
+            at: strings(&self.at),
+            point: strings(&f.point),
+            intermediate: OrderedMap(
+                f.intermediate
+                    .iter()
+                    .enumerate()
+                    .map(|(k, p)| (self.unit_key(k), strings(p)))
+                    .collect(),
+            ),
+            partials: OrderedMap(
+                cartesian_names(m)
+                    .into_iter()
+                    .zip(&f.partials)
+                    .map(|(name, p)| (name, strings(p)))
+                    .collect(),
+            ),
+            normal: f.normal.as_deref().map(strings),
+            normal_from_intermediate: f.normal_from_intermediate.as_deref().map(strings),
+            regular: f.regular,
+        }
+        .serialize(s)
+    }
+}
+
 impl Render for TangentReport {
     fn text(&self) -> String {
         let f = &self.frame;
@@ -120,27 +166,6 @@ impl Render for TangentReport {
     }
 
     fn json(&self) -> Json {
-        let f = &self.frame;
-        let m = self.at.len() - 1;
-        let mut inter = Map::new();
-        for (k, p) in f.intermediate.iter().enumerate() {
-            inter.insert(self.unit_key(k), json_rationals(p));
-        }
-        let mut partials = Map::new();
-        for (name, p) in cartesian_names(m).iter().zip(&f.partials) {
-            partials.insert(name.clone(), json_rationals(p));
-        }
-        let opt =
-            |v: &Option<Vec<BigRational>>| v.as_ref().map_or(Json::Null, |x| json_rationals(x));
-        json!({
-            "patch": self.file,
-            "at": json_rationals(&self.at),
-            "point": json_rationals(&f.point),
-            "intermediate": inter,
-            "partials": partials,
-            "normal": opt(&f.normal),
-            "normal_from_intermediate": opt(&f.normal_from_intermediate),
-            "regular": f.regular,
-        })
+        to_json(self)
     }
 }
