@@ -214,6 +214,17 @@ pub fn json_with(patch: &Patch, f: Option<&[Vec<BigRational>]>) -> Json {
     })
 }
 
+/// The JSON patch file of a patch of any kind, with `domain_in_parent` if given.
+pub fn json_with_any(
+    patch: &tribez::hazmat::any_patch::AnyPatch,
+    f: Option<&[Vec<BigRational>]>,
+) -> Json {
+    to_json(&PatchJson {
+        patch: tribez::hazmat::io::patch_file::any_patch_to_json(patch),
+        domain_in_parent: f.map(point_strings),
+    })
+}
+
 /// A patch-valued result: text is the TOML patch file, JSON the JSON patch file.
 pub struct PatchReport {
     /// The patch.

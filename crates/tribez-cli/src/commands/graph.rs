@@ -9,12 +9,9 @@ use super::construct::{PieceJson, PiecesJson, point_strings};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
+use tribez::Patch;
 use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::functional::graph;
-use tribez::hazmat::io::patch_file::{
-    any_patch_to_json, any_patch_to_toml, patch_to_json, patch_to_toml, read_any_patch,
-};
-use tribez::hazmat::patch::BezierPatch as Patch;
+use tribez::hazmat::io::patch_file::{any_patch_to_json, any_patch_to_toml, read_any_patch};
 
 /// Arguments of `tribez graph`.
 #[derive(Debug, clap::Args)]
@@ -25,35 +22,18 @@ pub struct Args {
     pub out: OutputArgs,
 }
 
-/// The graph patch; text output is the TOML patch file itself.
-pub struct GraphReport {
-    patch: Patch,
-}
-
 /// Run `tribez graph`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = match read_any_patch(&args.patch)? {
-        AnyPatch::Functional(p) => p,
-        other => {
-            return Err(CliError::Usage(format!(
-                "{file}: `tribez graph` takes a functional patch (kind = \"functional\"), this is a {} patch",
-                other.kind_name()
-            )));
-        }
-    };
-    let g = graph(&patch).map_err(|e| CliError::core(&file, e))?;
-    Outcome::rendered(&GraphReport { patch: g }, args.out.format, true)
-}
-
-impl Render for GraphReport {
-    fn text(&self) -> String {
-        patch_to_toml(&self.patch)
-    }
-
-    fn json(&self) -> Json {
-        patch_to_json(&self.patch)
-    }
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let graph = patch.constructions().and_then(|c| c.graph()).ok_or_else(|| {
+        CliError::Usage(format!(
+            "{file}: `tribez graph` takes a functional patch (kind = \"functional\"), this is a {} patch",
+            patch.kind().name()
+        ))
+    })?;
+    let g = graph.map_err(|e| CliError::core(&file, e))?;
+    Outcome::rendered(&AnyPatchReport(g), args.out.format, true)
 }
 
 /// A patch of any kind, written as a patch file (TOML text, or JSON): the output of commands that

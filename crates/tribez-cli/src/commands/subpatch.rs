@@ -55,14 +55,7 @@ impl Render for RationalSubpatchReport {
         }
     }
     fn json(&self) -> Json {
-        let mut j = AnyPatchReport(self.patch.clone()).json();
-        j["domain_in_parent"] = Json::Array(
-            self.domain_in_parent
-                .iter()
-                .map(|p| Json::Array(p.iter().map(|x| Json::String(x.to_string())).collect()))
-                .collect(),
-        );
-        j
+        super::construct::json_with_any(&self.patch, Some(&self.domain_in_parent))
     }
 }
 

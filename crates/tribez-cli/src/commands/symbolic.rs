@@ -1,8 +1,8 @@
 //! `tribez symbolic`: the patch as polynomials with exact coefficients.
 //!
-//! A rational patch prints its numerators `Σ w_α c_α B_α` and the common denominator
-//! `Σ w_α B_α`; an S-patch prints its rational form in `x, y` (docs/theory.md §12): numerators
-//! `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
+//! Every kind gives its form through [`tribez::ExactEval::symbolic`]: a rational patch its
+//! numerators `Σ w_α c_α B_α` and the common denominator `Σ w_α B_α`; an S-patch its rational
+//! form in `x, y` (docs/theory.md §12): numerators `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
 
 use std::path::PathBuf;
 
@@ -12,11 +12,9 @@ use serde_json::Value as Json;
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
 use crate::report::{Render, to_json};
-use tribez::hazmat::any_patch::AnyPatch;
+use tribez::Patch;
 use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::symbolic::{
-    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
-};
+use tribez::hazmat::symbolic::Polynomial;
 
 /// Arguments of `tribez symbolic`.
 #[derive(Debug, clap::Args)]
@@ -41,54 +39,13 @@ pub struct SymbolicReport {
 
 /// Run `tribez symbolic`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let patch = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
-        AnyPatch::Rational(r) => {
-            let m = r.patch.net.m();
-            let mut h = r.homogeneous_form();
-            let names = if args.cartesian {
-                let subs = tribez::hazmat::symbolic::barycentric_of_cartesian(
-                    &r.patch.domain_or_reference(),
-                );
-                h = h.iter().map(|p| p.compose(&subs)).collect();
-                cartesian_names(m)
-            } else {
-                barycentric_names(m)
-            };
-            let denominator = h.pop();
-            let report = SymbolicReport {
-                file: args.patch.display().to_string(),
-                names,
-                components: h,
-                denominator,
-            };
-            return Outcome::rendered(&report, args.out.format, true);
-        }
-        AnyPatch::SPatch(s) => {
-            let (components, den) = s.rational_form();
-            let report = SymbolicReport {
-                file: args.patch.display().to_string(),
-                names: cartesian_names(2),
-                components,
-                denominator: Some(den),
-            };
-            return Outcome::rendered(&report, args.out.format, true);
-        }
-    };
-    let m = patch.net.m();
-    let (names, components) = if args.cartesian {
-        (
-            cartesian_names(m),
-            cartesian_form(&patch.net, &patch.domain_or_reference()),
-        )
-    } else {
-        (barycentric_names(m), barycentric_form(&patch.net))
-    };
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let form = patch.exact().symbolic(args.cartesian);
     let report = SymbolicReport {
         file: args.patch.display().to_string(),
-        names,
-        components,
-        denominator: None,
+        names: form.names,
+        components: form.components,
+        denominator: form.denominator,
     };
     Outcome::rendered(&report, args.out.format, true)
 }
