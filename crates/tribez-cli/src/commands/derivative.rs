@@ -5,10 +5,11 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::Value as Json;
 
-use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
+use super::{CliError, Outcome, at_point, check_direction, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, to_json, tuple};
-use tribez::hazmat::derivative::{check_order, directional_derivative};
+use tribez::Patch;
+use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez derivative`.
@@ -67,9 +68,15 @@ impl serde::Serialize for DerivativeReport {
 /// Run `tribez derivative`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = points_patch(&file, "derivative", read_any_patch(&args.patch)?)?;
-    let (m, n) = (patch.net.m(), patch.net.degree());
-    let domain = patch.domain_or_reference();
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let constructions = patch.constructions().ok_or_else(|| {
+        CliError::Usage(format!(
+            "{file}: `tribez derivative` does not take {}",
+            patch.kind().plural()
+        ))
+    })?;
+    let m = patch.simplex_dim();
+    let domain = constructions.domain();
     let at = at_point(&args.at, args.cartesian, &domain, m)?;
     let mut directions = Vec::new();
     for d in &args.dir {
@@ -91,16 +98,11 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         ));
     }
     let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
-    let value = match &rational {
-        None => {
-            check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
-            directional_derivative(&patch.net, &refs, &at)
-        }
-        // rational patches: any order, by Leibniz's rule on the homogeneous net
-        Some(r) => r
-            .derivative_of_order(&at, &refs)
-            .map_err(|e| CliError::core(format!("--at {}", args.at), e))?,
-    };
+    // an order above the degree concerns the patch; anything else the point
+    let value = constructions.derivative(&at, &refs).map_err(|e| match e {
+        CoreError::OrderTooHigh { .. } => CliError::core(&file, e),
+        e => CliError::core(format!("--at {}", args.at), e),
+    })?;
     Outcome::rendered(
         &DerivativeReport {
             file,

@@ -5,11 +5,12 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::Value as Json;
 
-use super::{CliError, Outcome, at_point, points_patch};
+use super::{CliError, Outcome, at_point};
 use crate::cli::OutputArgs;
 use crate::report::ser::OrderedMap;
 use crate::report::{Render, strings, to_json, tuple};
-use tribez::hazmat::derivative::{TangentFrame, tangent_frame};
+use tribez::Patch;
+use tribez::hazmat::derivative::TangentFrame;
 use tribez::hazmat::io::patch_file::{index_key, read_any_patch};
 use tribez::hazmat::symbolic::cartesian_names;
 
@@ -40,21 +41,28 @@ pub struct TangentReport {
 /// Run `tribez tangent`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = points_patch(&file, "tangent", read_any_patch(&args.patch)?)?;
-    let m = patch.net.m();
-    let domain = patch.domain_or_reference();
-    let at = at_point(&args.at, args.cartesian, &domain, m)?;
-    let frame = match &rational {
-        None => tangent_frame(&patch.net, &domain, &at),
-        Some(r) => r.tangent_frame(&domain, &at),
-    }
-    .map_err(|e| CliError::core(&file, e))?;
-    let rational = rational.is_some();
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let constructions = patch.constructions().ok_or_else(|| {
+        CliError::Usage(format!(
+            "{file}: `tribez tangent` does not take {}",
+            patch.kind().plural()
+        ))
+    })?;
+    let at = at_point(
+        &args.at,
+        args.cartesian,
+        &constructions.domain(),
+        patch.simplex_dim(),
+    )?;
+    let frame = constructions
+        .tangent_frame(&at)
+        .map_err(|e| CliError::core(&file, e))?;
+    let rational = constructions.projected();
     Outcome::rendered(
         &TangentReport {
             file,
             rational,
-            degree: patch.net.degree(),
+            degree: patch.degree(),
             at,
             frame,
         },

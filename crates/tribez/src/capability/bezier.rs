@@ -245,4 +245,28 @@ impl Constructions for Polynomial<'_> {
         self.functional
             .then(|| crate::functional::graph(self.patch).map(AnyPatch::Bezier))
     }
+
+    fn domain(&self) -> crate::domain::Domain {
+        self.patch.domain_or_reference()
+    }
+
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        crate::derivative::check_order(directions.len(), self.patch.net.degree())?;
+        Ok(crate::derivative::directional_derivative(
+            &self.patch.net,
+            directions,
+            at,
+        ))
+    }
+
+    fn tangent_frame(
+        &self,
+        at: &[BigRational],
+    ) -> Result<crate::derivative::TangentFrame, CoreError> {
+        crate::derivative::tangent_frame(&self.patch.net, &self.domain(), at)
+    }
 }

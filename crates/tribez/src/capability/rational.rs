@@ -202,4 +202,27 @@ impl Constructions for RationalPatch {
             .map(AnyPatch::Rational)
             .collect())
     }
+
+    fn domain(&self) -> crate::domain::Domain {
+        self.patch.domain_or_reference()
+    }
+
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        self.derivative_of_order(at, directions)
+    }
+
+    fn tangent_frame(
+        &self,
+        at: &[BigRational],
+    ) -> Result<crate::derivative::TangentFrame, CoreError> {
+        RationalPatch::tangent_frame(self, &self.patch.domain_or_reference(), at)
+    }
+
+    fn projected(&self) -> bool {
+        true
+    }
 }

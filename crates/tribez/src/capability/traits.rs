@@ -19,6 +19,8 @@ use crate::any_patch::AnyPatch;
 use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
+use crate::derivative::TangentFrame;
+use crate::domain::Domain;
 use crate::symbolic::Polynomial;
 
 /// How a point of a kind's domain is given.
@@ -235,6 +237,26 @@ pub trait Constructions {
     fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {
         None
     }
+    /// The domain simplex (the patch's own, or the reference simplex), for Cartesian points and
+    /// directions.
+    fn domain(&self) -> Domain;
+    /// The mixed directional derivative `D_{d^{(1)}} ⋯ D_{d^{(r)}} p(λ)` at the barycentric point
+    /// `at` along the barycentric `directions` (docs/theory.md §7). A polynomial patch refuses
+    /// an order above its degree ([`CoreError::OrderTooHigh`]); a rational patch takes any
+    /// order (Leibniz's rule, §10).
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError>;
+    /// The tangent frame at the barycentric point `at` over [`Self::domain`]: the de Casteljau
+    /// points of level `n − 1`, the partial derivatives and the normal (docs/theory.md §7).
+    fn tangent_frame(&self, at: &[BigRational]) -> Result<TangentFrame, CoreError>;
+    /// The patch's points are projections `X/W` of a homogeneous net (rational patches): the
+    /// de Casteljau points of a tangent frame are projected ones.
+    fn projected(&self) -> bool {
+        false
+    }
 }
 
 impl<T: Constructions + ?Sized> Constructions for &T {
@@ -252,6 +274,22 @@ impl<T: Constructions + ?Sized> Constructions for &T {
     }
     fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {
         (**self).graph()
+    }
+    fn domain(&self) -> Domain {
+        (**self).domain()
+    }
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        (**self).derivative(at, directions)
+    }
+    fn tangent_frame(&self, at: &[BigRational]) -> Result<TangentFrame, CoreError> {
+        (**self).tangent_frame(at)
+    }
+    fn projected(&self) -> bool {
+        (**self).projected()
     }
 }
 
