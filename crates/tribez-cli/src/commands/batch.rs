@@ -11,28 +11,8 @@ use super::{CliError, Outcome};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport};
 use tribez::hazmat::certify::measures::Tolerance;
-use tribez::hazmat::exact::Algorithm;
 use tribez::hazmat::float::Precision;
 use tribez::hazmat::io::patch_file::read_patch;
-
-/// The algorithm a `bound` tolerance refers to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum AlgorithmChoice {
-    /// de Casteljau (bound γ_{(m+1)n} Σ|c_i|B_i(|λ|)).
-    Casteljau,
-    /// The direct Bernstein form (bound γ_{N+n+m+2} Σ|c_i|B_i(|λ|)).
-    Bernstein,
-}
-
-impl AlgorithmChoice {
-    /// The corresponding algorithm.
-    pub fn algorithm(self) -> Algorithm {
-        match self {
-            AlgorithmChoice::Casteljau => Algorithm::Casteljau,
-            AlgorithmChoice::Bernstein => Algorithm::Bernstein,
-        }
-    }
-}
 
 /// The batch options of `tribez check`'s arguments.
 fn options(args: &Args) -> Result<BatchOptions, CliError> {
@@ -68,8 +48,13 @@ impl From<BatchError> for CliError {
     }
 }
 
-/// Run the batch mode of `tribez check`.
+/// Run the batch mode of `tribez check` (`--patch PATCH --results FILE`).
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    if !args.paths.is_empty() {
+        return Err(CliError::Usage(
+            "give either claim files or --patch/--results, not both".into(),
+        ));
+    }
     let patch_path = args
         .patch
         .as_ref()

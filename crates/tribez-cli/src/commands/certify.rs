@@ -144,7 +144,7 @@ impl Render for CertifyReport {
             .map(|r| JunitCase {
                 name: format!(
                     "{} {}",
-                    tribez::hazmat::certify::run::algorithm_name(r.algorithm),
+                    tribez::hazmat::certify::report::algorithm_key(r.algorithm),
                     r.precision.name()
                 ),
                 checks: r.coordinates,

@@ -188,6 +188,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
         Command::Graph(a) => (graph::run(a), &a.out),
+        Command::Check(a) if a.results.is_some() => (batch::run(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::Value as Json;
 
+use super::construct::AnyPatchReport;
 use super::construct::{PatchReport, barycentric_points, child_patch};
-use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;

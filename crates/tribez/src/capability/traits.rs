@@ -16,11 +16,11 @@
 use num_rational::BigRational;
 
 use crate::any_patch::AnyPatch;
+use crate::derivative::TangentFrame;
+use crate::domain::Domain;
 use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
-use crate::derivative::TangentFrame;
-use crate::domain::Domain;
 use crate::symbolic::Polynomial;
 
 /// How a point of a kind's domain is given.
