@@ -42,12 +42,7 @@ pub struct BlossomReport {
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
     let patch = Patch::from(read_any_patch(&args.patch)?);
-    let constructions = patch.constructions().ok_or_else(|| {
-        CliError::Usage(format!(
-            "{file}: `tribez blossom` does not take {}",
-            patch.kind().plural()
-        ))
-    })?;
+    let constructions = super::constructions(&patch, &file, "blossom")?;
     let n = patch.degree();
     if args.args.len() != n {
         return Err(CliError::core(

@@ -69,12 +69,7 @@ impl serde::Serialize for DerivativeReport {
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
     let patch = Patch::from(read_any_patch(&args.patch)?);
-    let constructions = patch.constructions().ok_or_else(|| {
-        CliError::Usage(format!(
-            "{file}: `tribez derivative` does not take {}",
-            patch.kind().plural()
-        ))
-    })?;
+    let constructions = super::constructions(&patch, &file, "derivative")?;
     let m = patch.simplex_dim();
     let domain = constructions.domain();
     let at = at_point(&args.at, args.cartesian, &domain, m)?;

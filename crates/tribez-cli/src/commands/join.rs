@@ -5,12 +5,13 @@ use std::path::PathBuf;
 use serde::Serialize;
 use serde_json::Value as Json;
 
+use super::construct::AnyPatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, strings, to_json, tuple};
-use tribez::hazmat::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::io::patch_file::{index_key, read_patch};
 use tribez::hazmat::join::{Join, Violation, analyse, c1_neighbour};
-use tribez::hazmat::patch::BezierPatch as Patch;
 
 /// Arguments of `tribez join`.
 #[derive(Debug, clap::Args)]
@@ -45,18 +46,6 @@ pub struct JoinReport {
     join: Join,
 }
 
-/// A patch written as a patch file (TOML for text, JSON for json).
-pub struct PatchOutput(pub Patch);
-
-impl Render for PatchOutput {
-    fn text(&self) -> String {
-        patch_to_toml(&self.0)
-    }
-    fn json(&self) -> Json {
-        patch_to_json(&self.0)
-    }
-}
-
 /// Run `tribez join`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let afile = args.a.display().to_string();
@@ -84,7 +73,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             })?;
         let b = c1_neighbour(&a, &edge, v)
             .map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
-        return Outcome::rendered(&PatchOutput(b), args.out.format, true);
+        return Outcome::rendered(&AnyPatchReport(AnyPatch::Bezier(b)), args.out.format, true);
     }
     let bpath = args.b.as_ref().ok_or_else(|| {
         CliError::Usage("give two patches (A B), or one with --make-c1 --domain X,Y".into())

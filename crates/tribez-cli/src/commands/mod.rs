@@ -274,6 +274,21 @@ pub fn at_point(
     }
 }
 
+/// The constructions of `patch` (read from `file`) for `tribez {command}`; a kind without them
+/// (S-patches) is a usage error naming the command.
+pub fn constructions<'a>(
+    patch: &'a tribez::Patch,
+    file: &str,
+    command: &str,
+) -> Result<Box<dyn tribez::Constructions + 'a>, CliError> {
+    patch.constructions().ok_or_else(|| {
+        CliError::Usage(format!(
+            "{file}: `tribez {command}` does not take {}",
+            patch.kind().plural()
+        ))
+    })
+}
+
 /// A patch for the commands that take polynomial and rational patches alike: its points patch,
 /// and the rational patch when it is one. S-patches are a usage error naming `command`.
 pub fn points_patch(

@@ -42,12 +42,7 @@ pub struct TangentReport {
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
     let patch = Patch::from(read_any_patch(&args.patch)?);
-    let constructions = patch.constructions().ok_or_else(|| {
-        CliError::Usage(format!(
-            "{file}: `tribez tangent` does not take {}",
-            patch.kind().plural()
-        ))
-    })?;
+    let constructions = super::constructions(&patch, &file, "tangent")?;
     let at = at_point(
         &args.at,
         args.cartesian,
