@@ -58,7 +58,7 @@ pub fn check_rows(
             Tolerance::parse(tolerance).map_err(|e| input_error(py, format!("tolerance: {e}")))?;
         let precision: Precision = precision
             .parse()
-            .map_err(|e: String| input_error(py, format!("precision: {e}")))?;
+            .map_err(|e| input_error(py, format!("precision: {e}")))?;
         let algorithm = match algorithm {
             "bernstein" => Algorithm::Bernstein,
             _ => Algorithm::Casteljau,
@@ -76,7 +76,11 @@ pub fn check_rows(
         let (pts, vals) = (f64s(points), f64s(values));
         debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
         let (report, verdicts) = py
-            .detach(|| checker.check_rows(&pts, &vals, first_row, "<arrays>", &name))
+            .detach(|| {
+                checker
+                    .check_rows(&pts, &vals, first_row, "<arrays>", &name)
+                    .map_err(|e| e.to_string())
+            })
             .map_err(|e| input_error(py, e))?;
         let source = Rows {
             patch: poly,
@@ -327,14 +331,19 @@ impl NativeReport {
     }
 
     /// The worst row as JSON (the `worst` object of the JSON report, with `row` for its index).
-    fn worst_json(&self) -> Option<String> {
-        let mut j = self.report.json();
-        let mut w = j.get_mut("worst")?.take();
-        let obj = w.as_object_mut()?;
-        // in-memory rows are named by index where a file's rows have line numbers
-        let row = obj.remove("line")?;
-        obj.insert("row".into(), row);
-        Some(w.to_string())
+    fn worst_json(&self, py: Python<'_>) -> PyResult<Option<String>> {
+        guard(py, || {
+            let worst = || {
+                let mut j = self.report.json();
+                let mut w = j.get_mut("worst")?.take();
+                let obj = w.as_object_mut()?;
+                // in-memory rows are named by index where a file's rows have line numbers
+                let row = obj.remove("line")?;
+                obj.insert("row".into(), row);
+                Some(w.to_string())
+            };
+            Ok(worst())
+        })
     }
 
     fn histogram(&self) -> Vec<(&'static str, u64)> {
@@ -345,12 +354,14 @@ impl NativeReport {
             .collect()
     }
 
-    fn text(&self) -> String {
-        self.report.text()
+    fn text(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || Ok(self.report.text()))
     }
 
-    fn json(&self) -> String {
-        self.report.json().to_string()
+    /// The JSON report, byte for byte the command line's `--format json` (pretty, a final
+    /// newline).
+    fn json(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || Ok(format!("{:#}\n", self.report.json())))
     }
 
     fn merge(&self, py: Python<'_>, other: &NativeReport) -> PyResult<NativeReport> {
@@ -420,52 +431,59 @@ impl NativeReport {
     fn row_arrays<'py>(
         &self,
         py: Python<'py>,
-    ) -> Vec<(&'static str, &'static str, Bound<'py, PyBytes>)> {
-        let rows = &self.verdicts;
-        let detail = self.detail(py);
-        let mut index = Vec::with_capacity(rows.len() * 8);
-        let mut passed = Vec::with_capacity(rows.len());
-        let mut ulps = Vec::with_capacity(rows.len() * 8);
-        let mut fell_back = Vec::with_capacity(rows.len());
-        for r in rows {
-            index.extend_from_slice(&(r.row as i64).to_ne_bytes());
-            passed.push(u8::from(r.pass));
-            ulps.extend_from_slice(&r.ulps.to_ne_bytes());
-            fell_back.push(u8::from(r.fell_back));
-        }
-        let intended: Vec<u8> = detail
-            .ulps_intended
-            .iter()
-            .flat_map(|u| u.to_ne_bytes())
-            .collect();
-        let cr: Vec<u8> = detail
-            .correctly_rounded
-            .iter()
-            .map(|&c| u8::from(c))
-            .collect();
-        vec![
-            ("row", "int64", PyBytes::new(py, &index)),
-            ("passed", "bool", PyBytes::new(py, &passed)),
-            ("ulps_seen", "float64", PyBytes::new(py, &ulps)),
-            ("ulps_intended", "float64", PyBytes::new(py, &intended)),
-            ("correctly_rounded", "bool", PyBytes::new(py, &cr)),
-            ("fell_back", "bool", PyBytes::new(py, &fell_back)),
-        ]
+    ) -> PyResult<Vec<(&'static str, &'static str, Bound<'py, PyBytes>)>> {
+        guard(py, || {
+            let rows = &self.verdicts;
+            let detail = self.detail(py);
+            let mut index = Vec::with_capacity(rows.len() * 8);
+            let mut passed = Vec::with_capacity(rows.len());
+            let mut ulps = Vec::with_capacity(rows.len() * 8);
+            let mut fell_back = Vec::with_capacity(rows.len());
+            for r in rows {
+                index.extend_from_slice(&(r.row as i64).to_ne_bytes());
+                passed.push(u8::from(r.pass));
+                ulps.extend_from_slice(&r.ulps.to_ne_bytes());
+                fell_back.push(u8::from(r.fell_back));
+            }
+            let intended: Vec<u8> = detail
+                .ulps_intended
+                .iter()
+                .flat_map(|u| u.to_ne_bytes())
+                .collect();
+            let cr: Vec<u8> = detail
+                .correctly_rounded
+                .iter()
+                .map(|&c| u8::from(c))
+                .collect();
+            Ok(vec![
+                ("row", "int64", PyBytes::new(py, &index)),
+                ("passed", "bool", PyBytes::new(py, &passed)),
+                ("ulps_seen", "float64", PyBytes::new(py, &ulps)),
+                ("ulps_intended", "float64", PyBytes::new(py, &intended)),
+                ("correctly_rounded", "bool", PyBytes::new(py, &cr)),
+                ("fell_back", "bool", PyBytes::new(py, &fell_back)),
+            ])
+        })
     }
 
     /// The whole report as a JSON state (for pickling).
-    fn state(&self, py: Python<'_>) -> String {
-        let finite = |u: f64| if u.is_finite() { json!(u) } else { Json::Null };
-        let detail = self.detail(py);
-        let verdicts: Vec<Json> = self
-            .verdicts
-            .iter()
-            .zip(detail.ulps_intended.iter().zip(&detail.correctly_rounded))
-            .map(|(v, (&ui, &cr))| {
-                json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr])
-            })
-            .collect();
-        json!({"report": state_of(&self.report), "verdicts": verdicts, "key": self.key}).to_string()
+    fn state(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || {
+            let finite = |u: f64| if u.is_finite() { json!(u) } else { Json::Null };
+            let detail = self.detail(py);
+            let verdicts: Vec<Json> = self
+                .verdicts
+                .iter()
+                .zip(detail.ulps_intended.iter().zip(&detail.correctly_rounded))
+                .map(|(v, (&ui, &cr))| {
+                    json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr])
+                })
+                .collect();
+            Ok(
+                json!({"report": state_of(&self.report), "verdicts": verdicts, "key": self.key})
+                    .to_string(),
+            )
+        })
     }
 
     #[staticmethod]

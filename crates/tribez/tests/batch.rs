@@ -253,3 +253,57 @@ fn rows_in_memory_and_in_a_csv_file_agree() {
     same(&memory, &file);
     assert!(memory.failed > 0 && memory.passed > 0);
 }
+
+/// A planar patch embedded in R^3: degree 4 on the triangle with c_α = (α_1/4, α_2/4, 0), so by
+/// linear precision P(λ) = (λ_1, λ_2, 0) exactly (every control value a float). The third
+/// coordinate is zero at every point: the float filter decides it without exact arithmetic, so
+/// no row falls back; a claimed third coordinate of ±2^-1074 is exactly 1 ulp of 0 (hand
+/// derivation: ulp_f64(0) is the smallest subnormal), failing `ulps=1/2` and `cond` (whose
+/// threshold is K·ε·0 = 0 there) and passing `ulps=1`.
+#[test]
+fn an_identically_zero_coordinate_never_falls_back() {
+    use tribez::hazmat::patch::{BezierPatch, ControlNet};
+    use tribez::hazmat::simplex::Simplex;
+    let simplex = Simplex::new(2, 4);
+    let coords: Vec<tribez::Rational> = simplex
+        .iter()
+        .flat_map(|a| {
+            [
+                tribez::Rational::new(i64::from(a[1]).into(), 4.into()),
+                tribez::Rational::new(i64::from(a[2]).into(), 4.into()),
+                tribez::Rational::from_integer(0.into()),
+            ]
+        })
+        .collect();
+    let patch = BezierPatch::new(ControlNet::new(simplex, 3, coords));
+    let tiny = f64::from_bits(1);
+    let (mut points, mut values, mut off) = (Vec::new(), Vec::new(), 0);
+    for i in 0..400u32 {
+        // no coordinate but the third is zero at these points (a value that vanishes at a
+        // point only is enclosed, not known, and may fall back)
+        let l1 = f64::from(i % 20 + 1) / 32.0;
+        let l2 = f64::from(i / 20 + 1) / 64.0;
+        points.extend([1.0 - l1 - l2, l1, l2]);
+        let z = match i % 40 {
+            7 => tiny,
+            13 => -tiny,
+            _ => 0.0,
+        };
+        off += usize::from(z != 0.0);
+        values.extend([l1, l2, z]);
+    }
+    for (tol, failed) in [("ulps=1/2", off), ("cond", off), ("ulps=1", 0)] {
+        let options = BatchOptions {
+            tolerance: Tolerance::parse(tol).unwrap(),
+            precision: Some(Precision::F64),
+            ..BatchOptions::default()
+        };
+        let c = BatchChecker::new(patch.clone(), &options).unwrap();
+        let r = c
+            .check_rows(&points, &values, 0, "<memory>", "plane")
+            .unwrap()
+            .0;
+        assert_eq!((r.checked, r.failed as usize), (400, failed), "{tol}");
+        assert_eq!(r.fell_back, 0, "{tol}");
+    }
+}

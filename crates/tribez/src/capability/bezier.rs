@@ -109,8 +109,8 @@ impl FloatEval for BezierPatch {
 
     fn float_program(&self, precision: Precision) -> Result<Box<dyn FloatProgram + '_>, CoreError> {
         Ok(match precision {
-            Precision::F64 => Box::new(Program::<f64>::new(&self.net)),
-            Precision::F32 => Box::new(Program::<f32>::new(&self.net)),
+            Precision::F64 => Box::new(Program::<f64>::new(&self.net)?),
+            Precision::F32 => Box::new(Program::<f32>::new(&self.net)?),
         })
     }
 }
@@ -122,10 +122,17 @@ struct Program<F: Narrow> {
 }
 
 impl<F: Narrow> Program<F> {
-    fn new(net: &ControlNet<BigRational>) -> Self {
-        Program {
-            cert: Certifier::new(net),
+    /// An error if a control point overflows `F` (its exact value would be unknown).
+    fn new(net: &ControlNet<BigRational>) -> Result<Self, CoreError> {
+        if net.coords().iter().any(|q| !F::round(q).finite()) {
+            return Err(CoreError::Overflows {
+                what: "a control point",
+                precision: F::PRECISION.name(),
+            });
         }
+        Ok(Program {
+            cert: Certifier::new(net),
+        })
     }
 }
 

@@ -169,6 +169,10 @@ impl<F: Narrow> ErrorBound for Program<F> {
         }
     }
 
+    fn no_bound_reason(&self) -> &'static str {
+        "the denominator's error bound e_D is not below |D| (its sign is not certain)"
+    }
+
     fn text(&self, algorithm: Algorithm) -> BoundText {
         let k = roundings(algorithm, self.cert.net.m(), self.cert.net.degree());
         BoundText {

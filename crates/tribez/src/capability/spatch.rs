@@ -190,6 +190,10 @@ impl<F: Narrow> ErrorBound for Program<F> {
         out
     }
 
+    fn no_bound_reason(&self) -> &'static str {
+        "it is on or too near an edge of the polygon (or its numbers too small) for the float Wachspress coordinates' bound"
+    }
+
     fn text(&self, algorithm: Algorithm) -> BoundText {
         let k = roundings(algorithm, self.cert.net.m(), self.cert.net.degree());
         BoundText {

@@ -219,6 +219,11 @@ pub trait ErrorBound: Send + Sync {
     fn certify(&self, algorithm: Algorithm, input: &[f64]) -> FloatCase;
     /// The bound explained, for `algorithm`.
     fn text(&self, algorithm: Algorithm) -> BoundText;
+    /// Why a point can lie outside the bound's hypotheses ([`Seen::bound`] is `None`), for
+    /// the message of `tolerance = "bound"` there.
+    fn no_bound_reason(&self) -> &'static str {
+        "the algorithm's a-priori bound does not apply (Kε ≥ 1)"
+    }
 }
 
 /// Capability: the constructions, exact, returning patches of the same kind.
@@ -321,10 +326,10 @@ pub(crate) fn round_input<F: Narrow>(input: &[BigRational]) -> Result<Vec<f64>, 
             if x.finite() {
                 Ok(x.widen())
             } else {
-                Err(CoreError::Invalid(format!(
-                    "an input overflows {}",
-                    F::PRECISION.name()
-                )))
+                Err(CoreError::Overflows {
+                    what: "an input",
+                    precision: F::PRECISION.name(),
+                })
             }
         })
         .collect()

@@ -222,7 +222,7 @@ impl<'a> Form<'a> {
                 }
             }
             OpName::Graph => {
-                let AnyPatch::Functional(p) = inputs.file.any_patch_for(inputs.claim)? else {
+                let AnyPatch::Functional(p) = inputs.file.patch_for(inputs.claim)?.as_any() else {
                     return Err(inputs.error(
                         "patch",
                         "`graph` needs a functional patch (kind = \"functional\")",

@@ -41,7 +41,7 @@ impl<'a> JoinOp<'a> {
                 .patches
                 .iter()
                 .find(|(n, _)| n == name)
-                .map(|(_, p)| p)
+                .map(|(_, p)| p.as_any())
                 .ok_or_else(|| {
                     inputs.error(
                         "patches",
