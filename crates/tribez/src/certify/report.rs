@@ -16,7 +16,7 @@ use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::api_error::Error;
+use crate::api_error::{Error, Lacks};
 use crate::capability::{FloatCase, FloatEval, FloatProgram, InputSpace};
 use crate::certify::bound::roundings;
 use crate::certify::measures::{Measures, sci};
@@ -360,12 +360,13 @@ fn algorithms(
         Some(a) if offered.contains(&a) => Ok(vec![a]),
         // a kind with one algorithm: its de Casteljau (homogeneous, or after Wachspress)
         Some(Algorithm::Casteljau) if offered.len() == 1 => Ok(offered.to_vec()),
-        Some(a) => Err(Error::Unsupported {
-            kind: patch.kind().plural(),
-            what: format!(
-                "certified with de Casteljau only, not with {}",
-                algorithm_key(a)
-            ),
+        Some(algorithm) => Err(Error::Unsupported {
+            kind: patch.as_any().described(),
+            what: Lacks::Algorithm {
+                algorithm,
+                has: offered,
+                path: float.algorithm_name(offered[0]),
+            },
         }),
     }
 }
@@ -453,8 +454,8 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
         Some(p) => vec![p],
     };
     let float = patch.float().ok_or(Error::Unsupported {
-        kind: patch.kind().plural(),
-        what: "have no float program to certify".into(),
+        kind: patch.as_any().described(),
+        what: Lacks::FloatProgram,
     })?;
     let algorithms = algorithms(options.algorithm, patch, float)?;
     let points = points_of(patch, options)?;
