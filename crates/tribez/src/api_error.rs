@@ -100,6 +100,15 @@ pub enum Lacks {
         /// The name of its float path (`"homogeneous de Casteljau"`).
         path: &'static str,
     },
+    /// Certification of this kind runs de Casteljau only (`kind` is then the plural).
+    #[error("certified with de Casteljau only, not with {algorithm}")]
+    CertifyAlgorithm {
+        /// The algorithm's name in reports.
+        algorithm: &'static str,
+    },
+    /// Nothing to certify (`kind` is then the plural).
+    #[error("have no float program to certify")]
+    FloatProgramToCertify,
     /// Its float program has no proven error bound.
     #[error("its float program has no error bound")]
     ErrorBound,

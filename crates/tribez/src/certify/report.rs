@@ -360,12 +360,10 @@ fn algorithms(
         Some(a) if offered.contains(&a) => Ok(vec![a]),
         // a kind with one algorithm: its de Casteljau (homogeneous, or after Wachspress)
         Some(Algorithm::Casteljau) if offered.len() == 1 => Ok(offered.to_vec()),
-        Some(algorithm) => Err(Error::Unsupported {
-            kind: patch.as_any().described(),
-            what: Lacks::Algorithm {
-                algorithm,
-                has: offered,
-                path: float.algorithm_name(offered[0]),
+        Some(a) => Err(Error::Unsupported {
+            kind: patch.kind().plural(),
+            what: Lacks::CertifyAlgorithm {
+                algorithm: algorithm_key(a),
             },
         }),
     }
@@ -454,8 +452,8 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
         Some(p) => vec![p],
     };
     let float = patch.float().ok_or(Error::Unsupported {
-        kind: patch.as_any().described(),
-        what: Lacks::FloatProgram,
+        kind: patch.kind().plural(),
+        what: Lacks::FloatProgramToCertify,
     })?;
     let algorithms = algorithms(options.algorithm, patch, float)?;
     let points = points_of(patch, options)?;

@@ -251,11 +251,7 @@ impl<'a> Inputs<'a> {
     }
 
     /// [`Inputs::point`] over the `m`-simplex, `cartesian` converted by `convert`.
-    fn point_in(
-        &self,
-        m: usize,
-        convert: &Convert<'_>,
-    ) -> Result<Point, InputError> {
+    fn point_in(&self, m: usize, convert: &Convert<'_>) -> Result<Point, InputError> {
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) if self.get("precision").is_some() => {
                 if at.len() != m + 1 {
