@@ -170,9 +170,11 @@ impl Rows {
     /// control points; as seen, both are rounded to the precision. Where they coincide (a net
     /// whose control points are floats of the precision, a row whose inputs are too: always in
     /// f64) the error at the inputs as intended is the error as seen, already known; otherwise it
-    /// is computed exactly. "Correctly rounded" is `ulps_seen <= 1/2` (1/2 is a boundary the
-    /// batch engine settles exactly), except at exactly 1/2, a possible tie, settled exactly.
-    fn detail(&self, verdicts: &[RowVerdict], first_row: usize) -> Detail {
+    /// is computed exactly, or, without `exact`, left unknown (NaN): the cheap detail, which is
+    /// what a report carries when it is pickled or merged before its rows were read.
+    /// "Correctly rounded" is `ulps_seen <= 1/2` (1/2 is a boundary the batch engine settles
+    /// exactly), except at exactly 1/2, a possible tie, settled exactly (rare: always done).
+    fn detail(&self, verdicts: &[RowVerdict], first_row: usize, exact: bool) -> Detail {
         let p = self.precision;
         let net = &self.patch.net;
         let seen_net: ControlNet<BigRational> =
@@ -206,6 +208,8 @@ impl Rows {
                 let inputs_seen = xs.iter().all(|&x| seen_float(x, p) == Some(x));
                 let ulps_intended = if net_is_seen && inputs_seen {
                     v.ulps
+                } else if !exact {
+                    f64::NAN
                 } else {
                     let lambda = xs
                         .iter()
@@ -289,12 +293,30 @@ impl NativeReport {
         let d = match &self.source {
             Some(rows) => {
                 let first = self.verdicts.first().map_or(0, |v| v.row);
-                py.detach(|| rows.detail(&self.verdicts, first))
+                py.detach(|| rows.detail(&self.verdicts, first, true))
             }
             None => Detail::default(),
         };
         let _ = self.detail.set(d);
         self.detail.get().expect("set just now")
+    }
+
+    /// The detail as far as it is known without exact arithmetic: the full detail if it was
+    /// computed, else the cheap one (errors at the intended inputs that differ from the seen
+    /// ones unknown, NaN). What merging and pickling carry, so that neither costs exact
+    /// arithmetic per row (a Dask partition of f32 results would otherwise pay it for every row).
+    fn known_detail(&self, py: Python<'_>) -> std::borrow::Cow<'_, Detail> {
+        use std::borrow::Cow;
+        if let Some(d) = self.detail.get() {
+            return Cow::Borrowed(d);
+        }
+        match &self.source {
+            Some(rows) => {
+                let first = self.verdicts.first().map_or(0, |v| v.row);
+                Cow::Owned(py.detach(|| rows.detail(&self.verdicts, first, false)))
+            }
+            None => Cow::Owned(Detail::default()),
+        }
     }
 }
 
@@ -397,7 +419,7 @@ impl NativeReport {
             report
                 .merge(&other.report)
                 .map_err(|e| input_error(py, format!("merge: {e}")))?;
-            let (a, b) = (self.detail(py), other.detail(py));
+            let (a, b) = (self.known_detail(py), other.known_detail(py));
             let mut rows: Vec<(RowVerdict, f64, bool)> = self
                 .verdicts
                 .iter()
@@ -469,8 +491,17 @@ impl NativeReport {
     /// The whole report as a JSON state (for pickling).
     fn state(&self, py: Python<'_>) -> PyResult<String> {
         guard(py, || {
-            let finite = |u: f64| if u.is_finite() { json!(u) } else { Json::Null };
-            let detail = self.detail(py);
+            // infinite: null; unknown (NaN): "nan"
+            let finite = |u: f64| {
+                if u.is_finite() {
+                    json!(u)
+                } else if u.is_nan() {
+                    json!("nan")
+                } else {
+                    Json::Null
+                }
+            };
+            let detail = self.known_detail(py);
             let verdicts: Vec<Json> = self
                 .verdicts
                 .iter()
@@ -501,7 +532,11 @@ impl NativeReport {
                                 fell_back: r[2].as_bool()?,
                                 ulps: r[3].as_f64().unwrap_or(f64::INFINITY),
                             },
-                            r[4].as_f64().unwrap_or(f64::INFINITY),
+                            r[4].as_f64().unwrap_or(if r[4] == "nan" {
+                                f64::NAN
+                            } else {
+                                f64::INFINITY
+                            }),
                             r[5].as_bool()?,
                         ))
                     })

@@ -96,6 +96,9 @@ class Report:
           the inputs as seen (ties to even);
         * ``fell_back`` (bool): the float filter left the row to exact arithmetic.
 
+        A report merged or unpickled before its rows were read has ``ulps_intended`` NaN (unknown)
+        where the intended inputs differ from those seen: read ``rows`` first to keep them.
+
         The arrays are read-only (copy them to change them). Computed on first access (exact arithmetic only where the inputs as intended differ
         from those as seen); until then the report keeps the rows' numbers.
         """
