@@ -63,6 +63,7 @@ mod error;
 mod exact;
 mod float;
 mod functional;
+mod fuzz;
 pub mod hazmat;
 mod io;
 mod join;

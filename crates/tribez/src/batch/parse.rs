@@ -762,7 +762,7 @@ pub(super) fn texts_of(
         .collect()
 }
 
-/// Fuzzing entry (see [`crate::io::fuzz`]): every row of `data` read as a results file in
+/// Fuzzing entry (see [`crate::fuzz`]): every row of `data` read as a results file in
 /// `format` and parsed; the first byte chooses the input width (1 to 4), the claimed dimension
 /// (1 to 3) and the precision (none, f64, f32). Errors are fine; a panic or a hang is the bug.
 pub(crate) fn fuzz_rows(format: Format, data: &[u8]) {

@@ -73,7 +73,7 @@ pub struct ClaimFile {
     pub source: Option<String>,
     /// Named patches: `""` for the file's `patch`, else the names under `[patches]` (any kind;
     /// [`ClaimFile::patch_for`] gives a claim's).
-    pub patches: Vec<(String, crate::Patch)>,
+    pub patches: Vec<(String, crate::patch_type::Patch)>,
     /// The claims in file order.
     pub claims: Vec<Claim>,
 }
@@ -168,7 +168,7 @@ fn resolve_patch(
     node: &Node,
     key: &str,
     dir: &Path,
-) -> Result<crate::Patch, InputError> {
+) -> Result<crate::patch_type::Patch, InputError> {
     match &node.value {
         NodeValue::String(rel) => {
             let path = dir.join(rel);
@@ -281,7 +281,7 @@ impl ClaimFile {
 
     /// The patch (of any kind) a claim refers to: `patch = "name"` in the claim (a name under
     /// `[patches]`), else the file's `patch`.
-    pub fn patch_for(&self, claim: &Claim) -> Result<&crate::Patch, InputError> {
+    pub fn patch_for(&self, claim: &Claim) -> Result<&crate::patch_type::Patch, InputError> {
         let t = self.doc.table(&claim.node, &claim.id)?;
         let name = match Document::get(t, "patch") {
             Some(n) => self

@@ -2,7 +2,6 @@
 //!
 //! This layer depends on the core and never the reverse.
 
-pub mod fuzz;
 pub mod patch_file;
 pub mod points;
 pub mod text;

@@ -220,7 +220,7 @@ impl<'a> Inputs<'a> {
 
     /// A point of `patch`'s domain in its kind's coordinates ([`InputSpace`]): for a simplex
     /// as [`Inputs::point`]; for a polygon (an S-patch) a Cartesian point from `cartesian`.
-    pub fn point_of(&self, patch: &crate::Patch) -> Result<Point, InputError> {
+    pub fn point_of(&self, patch: &crate::patch_type::Patch) -> Result<Point, InputError> {
         match patch.shape().input {
             InputSpace::Barycentric { m } => {
                 self.point_in(m, &|x: &[Q]| patch.exact().cartesian_input(x))

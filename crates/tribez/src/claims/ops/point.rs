@@ -425,7 +425,7 @@ pub fn eval_float(
             (Part::Patch, e) => inputs.error("patch", e.to_string()),
             (Part::Algorithm, e) => inputs.error("algorithm", e.to_string()),
             (Part::Input, e) => inputs.error(point.key(), e.to_string()),
-            (Part::Tolerance, crate::Error::Unsupported { what, .. }) => {
+            (Part::Tolerance, crate::api_error::Error::Unsupported { what, .. }) => {
                 inputs.error("tolerance", what.to_string())
             }
             (Part::Tolerance, e) => inputs.error("tolerance", e.to_string()),

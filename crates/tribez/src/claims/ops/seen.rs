@@ -79,7 +79,7 @@ pub fn point(
 pub fn input(
     inputs: &Inputs<'_>,
     point: &Point,
-    patch: &crate::Patch,
+    patch: &crate::patch_type::Patch,
     p: Precision,
 ) -> Result<Point, InputError> {
     match &point.cartesian {
