@@ -84,7 +84,7 @@ mod testing;
 pub use api_error::Error;
 pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
 pub use certify::measures::Tolerance;
-pub use certify::run::{
+pub use certify::report::{
     CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, RandomPoints, certify,
 };
 pub use error::CoreError;

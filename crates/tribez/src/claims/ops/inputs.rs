@@ -164,7 +164,7 @@ impl<'a> Inputs<'a> {
                 let key = format!("{}[{i}]", self.key(name));
                 let p = self.file.doc.rationals(n, &key)?;
                 crate::domain::check_barycentric(&p, m, "point")
-                    .map_err(|e| self.file.doc.error(n, &key, e.to_string()))?;
+                    .map_err(|e| self.file.doc.error(n, &key, e))?;
                 Ok(p)
             })
             .collect()
@@ -200,8 +200,7 @@ impl<'a> Inputs<'a> {
             .map(|n| self.file.doc.usize(n, &self.key("edge")))
             .collect::<Result<Vec<_>, _>>()?;
         match nums.as_slice() {
-            [i, j] => crate::subdivide::check_edge(m, *i, *j)
-                .map_err(|e| self.error("edge", e.to_string())),
+            [i, j] => crate::subdivide::check_edge(m, *i, *j).map_err(|e| self.error("edge", e)),
             _ => Err(self.error("edge", "an edge is two corner numbers, like [1, 2]")),
         }
     }
@@ -267,7 +266,7 @@ impl<'a> Inputs<'a> {
             }
             (Some(at), None) => {
                 crate::domain::check_barycentric(&at, m, "point `at`")
-                    .map_err(|e| self.error("at", e.to_string()))?;
+                    .map_err(|e| self.error("at", e))?;
                 Ok(Point {
                     at,
                     cartesian: None,

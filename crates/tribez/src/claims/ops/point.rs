@@ -207,7 +207,7 @@ impl<'a> PointOp<'a> {
         }
         if let Some(p) = patch.polynomial() {
             crate::derivative::check_order(out.len(), p.net.degree())
-                .map_err(|e| inputs.error("dirs", e.to_string()))?;
+                .map_err(|e| inputs.error("dirs", e))?;
         }
         Ok(out)
     }
@@ -277,7 +277,7 @@ impl<'a> PointOp<'a> {
                     AnyPatch::Rational(r) => r
                         .derivative_of_order(&point.at, &refs)
                         .map(|v| Value::numbers(&v))
-                        .map_err(|e| inputs.error(point.key(), e.to_string())),
+                        .map_err(|e| inputs.error(point.key(), e)),
                     other => {
                         let p = other.polynomial().expect("checked when parsed");
                         Ok(Value::numbers(&crate::derivative::directional_derivative(
@@ -300,14 +300,14 @@ impl<'a> PointOp<'a> {
                         )
                     }
                 }
-                .map_err(|e| inputs.error("at", e.to_string()))?;
+                .map_err(|e| inputs.error("at", e))?;
                 select_part(inputs, part.as_deref(), tangent_value(&f))
             }
             PointOp::Wachspress { patch, cartesian } => {
                 let lambda = patch
                     .polygon
                     .wachspress(cartesian)
-                    .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+                    .map_err(|e| inputs.error("cartesian", e))?;
                 let x = [cartesian[0].clone(), cartesian[1].clone()]; // checked by `wachspress`
                 Ok(Value::Map(vec![
                     ("A".into(), Value::numbers(&patch.polygon.areas(&x))),
@@ -325,9 +325,7 @@ impl<'a> PointOp<'a> {
                 } else {
                     ("point", domain.barycentric(x))
                 };
-                Ok(Value::numbers(
-                    &result.map_err(|e| inputs.error(name, e.to_string()))?,
-                ))
+                Ok(Value::numbers(&result.map_err(|e| inputs.error(name, e))?))
             }
         }
     }
@@ -420,11 +418,18 @@ pub fn eval_float(
         Some(point.input()),
     )
     .map_err(|(part, e)| {
+        use crate::api_error::Error;
         use crate::judge::Part;
+        let problem = |e: Error| -> crate::io::Problem {
+            match e {
+                Error::Core(core) => core.into(),
+                e => e.to_string().into(),
+            }
+        };
         match (part, e) {
-            (Part::Patch, e) => inputs.error("patch", e.to_string()),
-            (Part::Algorithm, e) => inputs.error("algorithm", e.to_string()),
-            (Part::Input, e) => inputs.error(point.key(), e.to_string()),
+            (Part::Patch, e) => inputs.error("patch", problem(e)),
+            (Part::Algorithm, e) => inputs.error("algorithm", problem(e)),
+            (Part::Input, e) => inputs.error(point.key(), problem(e)),
             (Part::Tolerance, crate::api_error::Error::Unsupported { what, .. }) => {
                 inputs.error("tolerance", what.to_string())
             }

@@ -58,7 +58,7 @@ pub fn point(
             Ok(Point {
                 at: domain
                     .barycentric(&xr)
-                    .map_err(|e| inputs.error("cartesian", e.to_string()))?,
+                    .map_err(|e| inputs.error("cartesian", e))?,
                 cartesian: Some(xr),
             })
         }
@@ -162,7 +162,7 @@ pub fn spatch(inputs: &Inputs<'_>, s: &SPatch, p: Precision) -> Result<SPatch, I
         return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
     }
     let mut out = SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
-        .map_err(|e| inputs.error("patch", e.to_string()))?;
+        .map_err(|e| inputs.error("patch", e))?;
     out.name = s.name.clone();
     Ok(out)
 }
