@@ -10,7 +10,11 @@ w = 1 - u - v in f64, some outside the triangle), values from the patch's own f6
 (`Patch.evaluate_float`), printed in the CSV with Python's shortest round-trip repr, which the
 CLI reads back to the same doubles (--precision f64). Both sides judge at cond=9.
 
-Prints the best of K wall-clock times of each side and their ratio (Python / CLI). The Python
+Prints the best of K wall-clock times of each side and their ratio (Python / CLI), the same
+ratio of CPU times (user + system over all threads: steadier on a machine shared with other
+work), and for
+`tribez.check` its CPU time over its wall time (about the number of cores busy: the GIL is
+released and rayon judges on every core). The Python
 time includes the conversion of the arrays; the CLI time includes reading and parsing the CSV
 (which is the point: numpy arrays need no text).
 """
@@ -20,6 +24,7 @@ from __future__ import annotations
 import argparse
 import os
 import pathlib
+import resource
 import subprocess
 import sys
 import tempfile
@@ -61,6 +66,56 @@ def best(f, repeat: int) -> float:
     return min(times)
 
 
+def best_cpu(f, repeat: int, children: bool = False) -> float:
+    """The least CPU time (user + system, every thread) of `repeat` calls of f: of this process,
+    or with `children` of the subprocesses it waited for. Less sensitive than wall-clock time to
+    other work on a shared machine."""
+    who = resource.RUSAGE_CHILDREN if children else resource.RUSAGE_SELF
+    times = []
+    for _ in range(repeat):
+        r0 = resource.getrusage(who)
+        f()
+        r1 = resource.getrusage(who)
+        times.append((r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime))
+    return min(times)
+
+
+def thread_cpu() -> dict:
+    """CPU ticks (user + system) of each thread of this process, from /proc (Linux; {} elsewhere)."""
+    out = {}
+    base = pathlib.Path("/proc/self/task")
+    if not base.is_dir():
+        return out
+    for t in base.iterdir():
+        try:
+            fields = (t / "stat").read_text().rsplit(")", 1)[1].split()
+            out[t.name] = int(fields[11]) + int(fields[12])  # utime, stime (fields 14, 15)
+        except (OSError, IndexError, ValueError):
+            pass
+    return out
+
+
+def threads_busy(f) -> str:
+    """Which threads did the work of f: their share of its CPU time (Linux only)."""
+    before = thread_cpu()
+    f()
+    after = thread_cpu()
+    deltas = sorted((after[t] - before.get(t, 0) for t in after), reverse=True)
+    total = sum(deltas)
+    if not total:
+        return "per-thread CPU time unavailable"
+    shares = [d / total for d in deltas if d / total >= 0.05]
+    return f"{len(shares)} threads did it (" + ", ".join(f"{x:.0%}" for x in shares) + " of its CPU time)"
+
+
+def cpu_per_wall(f) -> float:
+    """CPU time of this process (all its threads) over wall-clock time for one call of f: about
+    the number of cores busy meanwhile (2 when both cores judge)."""
+    c0, t0 = time.process_time(), time.perf_counter()
+    f()
+    return (time.process_time() - c0) / (time.perf_counter() - t0)
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rows", type=int, default=1_000_000)
@@ -77,8 +132,11 @@ def main() -> int:
 
     report = tribez.check(patch, points, values, tolerance=args.tolerance)
     t_py = best(lambda: tribez.check(patch, points, values, tolerance=args.tolerance), args.repeat)
+    busy = cpu_per_wall(lambda: tribez.check(patch, points, values, tolerance=args.tolerance))
+    c_py = best_cpu(lambda: tribez.check(patch, points, values, tolerance=args.tolerance), args.repeat)
+    spread = threads_busy(lambda: tribez.check(patch, points, values, tolerance=args.tolerance))
     print(f"tribez.check (numpy arrays):   {t_py:.3f} s   passed {report.passed}, failed {report.failed}, "
-          f"fell back {report.fell_back}")
+          f"fell back {report.fell_back}; CPU time / wall time {busy:.2f}; {spread}")
 
     if not os.path.exists(args.cli):
         print(f"no CLI at {args.cli}: build it with `cargo build --release -p tribez-cli`", file=sys.stderr)
@@ -94,8 +152,10 @@ def main() -> int:
             return 2
         last = out.stdout.strip().splitlines()[-1]
         t_cli = best(lambda: subprocess.run(cmd, capture_output=True), args.repeat)
+        c_cli = best_cpu(lambda: subprocess.run(cmd, capture_output=True), args.repeat, children=True)
     print(f"tribez check --results (CSV):  {t_cli:.3f} s   {last}")
-    print(f"ratio Python / CLI: {t_py / t_cli:.3f}")
+    print(f"ratio Python / CLI: {t_py / t_cli:.3f} (wall-clock time); "
+          f"{c_py / c_cli:.3f} (CPU time: {c_py:.3f} s / {c_cli:.3f} s)")
     return 0
 
 

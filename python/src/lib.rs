@@ -16,6 +16,7 @@ use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::PyType;
 
+mod claims;
 mod patch;
 mod report;
 
@@ -88,6 +89,10 @@ fn threads() -> usize {
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<patch::NativePatch>()?;
     m.add_class::<report::NativeReport>()?;
+    m.add_class::<claims::NativeDocument>()?;
+    m.add_function(wrap_pyfunction!(claims::check_claims, m)?)?;
+    m.add_function(wrap_pyfunction!(claims::certify, m)?)?;
+    m.add("MAX_RANDOM_POINTS", claims::MAX_RANDOM_POINTS)?;
     m.add_function(wrap_pyfunction!(report::check_rows, m)?)?;
     m.add_function(wrap_pyfunction!(patch::parse_number, m)?)?;
     m.add_function(wrap_pyfunction!(threads, m)?)?;

@@ -78,7 +78,7 @@ impl NativePatch {
     fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
         guard(py, || {
             let patch = py
-                .detach(|| read_any_patch(&path))
+                .detach(|| read_any_patch(&path).map_err(|e| e.to_string()))
                 .map_err(|e| input_error(py, e))?;
             Ok(NativePatch { patch })
         })
@@ -260,11 +260,14 @@ impl NativePatch {
     }
 
     /// The control points in canonical order, as exact texts.
-    fn control_points(&self) -> Vec<Vec<String>> {
-        self.net()
-            .points()
-            .map(|p| p.iter().map(format_rational).collect())
-            .collect()
+    fn control_points(&self, py: Python<'_>) -> PyResult<Vec<Vec<String>>> {
+        guard(py, || {
+            Ok(self
+                .net()
+                .points()
+                .map(|p| p.iter().map(format_rational).collect())
+                .collect())
+        })
     }
 
     /// The weights of a rational patch, as exact texts.
@@ -276,13 +279,13 @@ impl NativePatch {
     }
 
     /// The patch file (TOML).
-    fn to_toml(&self) -> String {
-        any_patch_to_toml(&self.patch)
+    fn to_toml(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || Ok(any_patch_to_toml(&self.patch)))
     }
 
     /// The patch file (JSON).
-    fn to_json(&self) -> String {
-        any_patch_to_json(&self.patch).to_string()
+    fn to_json(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || Ok(any_patch_to_json(&self.patch).to_string()))
     }
 
     fn __eq__(&self, other: &Self) -> bool {

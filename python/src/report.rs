@@ -58,7 +58,7 @@ pub fn check_rows(
             Tolerance::parse(tolerance).map_err(|e| input_error(py, format!("tolerance: {e}")))?;
         let precision: Precision = precision
             .parse()
-            .map_err(|e: String| input_error(py, format!("precision: {e}")))?;
+            .map_err(|e| input_error(py, format!("precision: {e}")))?;
         let algorithm = match algorithm {
             "bernstein" => Algorithm::Bernstein,
             _ => Algorithm::Casteljau,
@@ -76,7 +76,11 @@ pub fn check_rows(
         let (pts, vals) = (f64s(points), f64s(values));
         debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
         let (report, verdicts) = py
-            .detach(|| checker.check_rows(&pts, &vals, first_row, "<arrays>", &name))
+            .detach(|| {
+                checker
+                    .check_rows(&pts, &vals, first_row, "<arrays>", &name)
+                    .map_err(|e| e.to_string())
+            })
             .map_err(|e| input_error(py, e))?;
         let source = Rows {
             patch: poly,
@@ -166,9 +170,11 @@ impl Rows {
     /// control points; as seen, both are rounded to the precision. Where they coincide (a net
     /// whose control points are floats of the precision, a row whose inputs are too: always in
     /// f64) the error at the inputs as intended is the error as seen, already known; otherwise it
-    /// is computed exactly. "Correctly rounded" is `ulps_seen <= 1/2` (1/2 is a boundary the
-    /// batch engine settles exactly), except at exactly 1/2, a possible tie, settled exactly.
-    fn detail(&self, verdicts: &[RowVerdict], first_row: usize) -> Detail {
+    /// is computed exactly, or, without `exact`, left unknown (NaN): the cheap detail, which is
+    /// what a report carries when it is pickled or merged before its rows were read.
+    /// "Correctly rounded" is `ulps_seen <= 1/2` (1/2 is a boundary the batch engine settles
+    /// exactly), except at exactly 1/2, a possible tie, settled exactly (rare: always done).
+    fn detail(&self, verdicts: &[RowVerdict], first_row: usize, exact: bool) -> Detail {
         let p = self.precision;
         let net = &self.patch.net;
         let seen_net: ControlNet<BigRational> =
@@ -202,6 +208,8 @@ impl Rows {
                 let inputs_seen = xs.iter().all(|&x| seen_float(x, p) == Some(x));
                 let ulps_intended = if net_is_seen && inputs_seen {
                     v.ulps
+                } else if !exact {
+                    f64::NAN
                 } else {
                     let lambda = xs
                         .iter()
@@ -285,12 +293,30 @@ impl NativeReport {
         let d = match &self.source {
             Some(rows) => {
                 let first = self.verdicts.first().map_or(0, |v| v.row);
-                py.detach(|| rows.detail(&self.verdicts, first))
+                py.detach(|| rows.detail(&self.verdicts, first, true))
             }
             None => Detail::default(),
         };
         let _ = self.detail.set(d);
         self.detail.get().expect("set just now")
+    }
+
+    /// The detail as far as it is known without exact arithmetic: the full detail if it was
+    /// computed, else the cheap one (errors at the intended inputs that differ from the seen
+    /// ones unknown, NaN). What merging and pickling carry, so that neither costs exact
+    /// arithmetic per row (a Dask partition of f32 results would otherwise pay it for every row).
+    fn known_detail(&self, py: Python<'_>) -> std::borrow::Cow<'_, Detail> {
+        use std::borrow::Cow;
+        if let Some(d) = self.detail.get() {
+            return Cow::Borrowed(d);
+        }
+        match &self.source {
+            Some(rows) => {
+                let first = self.verdicts.first().map_or(0, |v| v.row);
+                Cow::Owned(py.detach(|| rows.detail(&self.verdicts, first, false)))
+            }
+            None => Cow::Owned(Detail::default()),
+        }
     }
 }
 
@@ -327,14 +353,19 @@ impl NativeReport {
     }
 
     /// The worst row as JSON (the `worst` object of the JSON report, with `row` for its index).
-    fn worst_json(&self) -> Option<String> {
-        let mut j = self.report.json();
-        let mut w = j.get_mut("worst")?.take();
-        let obj = w.as_object_mut()?;
-        // in-memory rows are named by index where a file's rows have line numbers
-        let row = obj.remove("line")?;
-        obj.insert("row".into(), row);
-        Some(w.to_string())
+    fn worst_json(&self, py: Python<'_>) -> PyResult<Option<String>> {
+        guard(py, || {
+            let worst = || {
+                let mut j = self.report.json();
+                let mut w = j.get_mut("worst")?.take();
+                let obj = w.as_object_mut()?;
+                // in-memory rows are named by index where a file's rows have line numbers
+                let row = obj.remove("line")?;
+                obj.insert("row".into(), row);
+                Some(w.to_string())
+            };
+            Ok(worst())
+        })
     }
 
     fn histogram(&self) -> Vec<(&'static str, u64)> {
@@ -345,12 +376,14 @@ impl NativeReport {
             .collect()
     }
 
-    fn text(&self) -> String {
-        self.report.text()
+    fn text(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || Ok(self.report.text()))
     }
 
-    fn json(&self) -> String {
-        self.report.json().to_string()
+    /// The JSON report, byte for byte the command line's `--format json` (pretty, a final
+    /// newline).
+    fn json(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || Ok(format!("{:#}\n", self.report.json())))
     }
 
     fn merge(&self, py: Python<'_>, other: &NativeReport) -> PyResult<NativeReport> {
@@ -386,7 +419,7 @@ impl NativeReport {
             report
                 .merge(&other.report)
                 .map_err(|e| input_error(py, format!("merge: {e}")))?;
-            let (a, b) = (self.detail(py), other.detail(py));
+            let (a, b) = (self.known_detail(py), other.known_detail(py));
             let mut rows: Vec<(RowVerdict, f64, bool)> = self
                 .verdicts
                 .iter()
@@ -420,52 +453,68 @@ impl NativeReport {
     fn row_arrays<'py>(
         &self,
         py: Python<'py>,
-    ) -> Vec<(&'static str, &'static str, Bound<'py, PyBytes>)> {
-        let rows = &self.verdicts;
-        let detail = self.detail(py);
-        let mut index = Vec::with_capacity(rows.len() * 8);
-        let mut passed = Vec::with_capacity(rows.len());
-        let mut ulps = Vec::with_capacity(rows.len() * 8);
-        let mut fell_back = Vec::with_capacity(rows.len());
-        for r in rows {
-            index.extend_from_slice(&(r.row as i64).to_ne_bytes());
-            passed.push(u8::from(r.pass));
-            ulps.extend_from_slice(&r.ulps.to_ne_bytes());
-            fell_back.push(u8::from(r.fell_back));
-        }
-        let intended: Vec<u8> = detail
-            .ulps_intended
-            .iter()
-            .flat_map(|u| u.to_ne_bytes())
-            .collect();
-        let cr: Vec<u8> = detail
-            .correctly_rounded
-            .iter()
-            .map(|&c| u8::from(c))
-            .collect();
-        vec![
-            ("row", "int64", PyBytes::new(py, &index)),
-            ("passed", "bool", PyBytes::new(py, &passed)),
-            ("ulps_seen", "float64", PyBytes::new(py, &ulps)),
-            ("ulps_intended", "float64", PyBytes::new(py, &intended)),
-            ("correctly_rounded", "bool", PyBytes::new(py, &cr)),
-            ("fell_back", "bool", PyBytes::new(py, &fell_back)),
-        ]
+    ) -> PyResult<Vec<(&'static str, &'static str, Bound<'py, PyBytes>)>> {
+        guard(py, || {
+            let rows = &self.verdicts;
+            let detail = self.detail(py);
+            let mut index = Vec::with_capacity(rows.len() * 8);
+            let mut passed = Vec::with_capacity(rows.len());
+            let mut ulps = Vec::with_capacity(rows.len() * 8);
+            let mut fell_back = Vec::with_capacity(rows.len());
+            for r in rows {
+                index.extend_from_slice(&(r.row as i64).to_ne_bytes());
+                passed.push(u8::from(r.pass));
+                ulps.extend_from_slice(&r.ulps.to_ne_bytes());
+                fell_back.push(u8::from(r.fell_back));
+            }
+            let intended: Vec<u8> = detail
+                .ulps_intended
+                .iter()
+                .flat_map(|u| u.to_ne_bytes())
+                .collect();
+            let cr: Vec<u8> = detail
+                .correctly_rounded
+                .iter()
+                .map(|&c| u8::from(c))
+                .collect();
+            Ok(vec![
+                ("row", "int64", PyBytes::new(py, &index)),
+                ("passed", "bool", PyBytes::new(py, &passed)),
+                ("ulps_seen", "float64", PyBytes::new(py, &ulps)),
+                ("ulps_intended", "float64", PyBytes::new(py, &intended)),
+                ("correctly_rounded", "bool", PyBytes::new(py, &cr)),
+                ("fell_back", "bool", PyBytes::new(py, &fell_back)),
+            ])
+        })
     }
 
     /// The whole report as a JSON state (for pickling).
-    fn state(&self, py: Python<'_>) -> String {
-        let finite = |u: f64| if u.is_finite() { json!(u) } else { Json::Null };
-        let detail = self.detail(py);
-        let verdicts: Vec<Json> = self
-            .verdicts
-            .iter()
-            .zip(detail.ulps_intended.iter().zip(&detail.correctly_rounded))
-            .map(|(v, (&ui, &cr))| {
-                json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr])
-            })
-            .collect();
-        json!({"report": state_of(&self.report), "verdicts": verdicts, "key": self.key}).to_string()
+    fn state(&self, py: Python<'_>) -> PyResult<String> {
+        guard(py, || {
+            // infinite: null; unknown (NaN): "nan"
+            let finite = |u: f64| {
+                if u.is_finite() {
+                    json!(u)
+                } else if u.is_nan() {
+                    json!("nan")
+                } else {
+                    Json::Null
+                }
+            };
+            let detail = self.known_detail(py);
+            let verdicts: Vec<Json> = self
+                .verdicts
+                .iter()
+                .zip(detail.ulps_intended.iter().zip(&detail.correctly_rounded))
+                .map(|(v, (&ui, &cr))| {
+                    json!([v.row, v.pass, v.fell_back, finite(v.ulps), finite(ui), cr])
+                })
+                .collect();
+            Ok(
+                json!({"report": state_of(&self.report), "verdicts": verdicts, "key": self.key})
+                    .to_string(),
+            )
+        })
     }
 
     #[staticmethod]
@@ -483,7 +532,11 @@ impl NativeReport {
                                 fell_back: r[2].as_bool()?,
                                 ulps: r[3].as_f64().unwrap_or(f64::INFINITY),
                             },
-                            r[4].as_f64().unwrap_or(f64::INFINITY),
+                            r[4].as_f64().unwrap_or(if r[4] == "nan" {
+                                f64::NAN
+                            } else {
+                                f64::INFINITY
+                            }),
                             r[5].as_bool()?,
                         ))
                     })

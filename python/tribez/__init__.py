@@ -29,12 +29,16 @@ import numpy as np
 from . import _native
 from ._convert import float_rows, matrix_texts, number_text
 from ._errors import CertificationError, InputError, InternalError, TribezError
-from ._report import Report
+from ._report import CertifyReport, ClaimsReport, Report
 
 __all__ = [
     "Patch",
     "Report",
+    "ClaimsReport",
+    "CertifyReport",
     "check",
+    "check_claims",
+    "certify",
     "threads",
     "TribezError",
     "InputError",
@@ -48,6 +52,7 @@ __version__ = "0.1.0"
 MAX_DEGREE: int = _native.MAX_DEGREE
 MAX_CONTROL_POINTS: int = _native.MAX_CONTROL_POINTS
 MAX_SIMPLEX_DIMENSION: int = _native.MAX_SIMPLEX_DIMENSION
+MAX_RANDOM_POINTS: int = _native.MAX_RANDOM_POINTS
 
 
 def parse_number(x) -> Fraction:
@@ -75,14 +80,15 @@ class Patch:
     interpolates ``c_{n e_k}``.
     """
 
-    __slots__ = ("_native",)
+    __slots__ = ("_native", "_path")
 
-    def __init__(self, native):
+    def __init__(self, native, _path: Optional[str] = None):
         if not isinstance(native, _native.NativePatch):
             raise TypeError(
                 "use Patch.from_file, Patch.from_toml, Patch.from_json or Patch.from_nodes"
             )
         self._native = native
+        self._path = _path
 
     # -- construction -------------------------------------------------------------------
 
@@ -96,7 +102,7 @@ class Patch:
             raise InputError(f"path: expected a str or os.PathLike, got {type(path).__name__}") from None
         if isinstance(path, bytes):
             path = os.fsdecode(path)
-        return cls(_native.NativePatch.from_file(path))
+        return cls(_native.NativePatch.from_file(path), path)
 
     @classmethod
     def from_toml(cls, text: str, name: str = "<toml>") -> "Patch":
@@ -351,3 +357,68 @@ def _native_width(patch: Patch, cartesian: bool) -> int:
     if patch.kind == "s-patch":
         return 2
     return patch.simplex if cartesian else patch.simplex + 1
+
+
+def check_claims(path) -> ClaimsReport:
+    """Check a claim file, or every claim file under a directory (``*.claims.toml``,
+    ``*.claims.json``, searched recursively): the library's report of ``tribez check PATH``.
+
+    Every claim is recomputed exactly and compared with the value its source printed, within the
+    claim's tolerance. Returns a :class:`ClaimsReport` (a :class:`Report`): ``passed``,
+    ``failed``, ``errata`` (claims wrong as printed, recorded as known errata: they do not fail),
+    ``claims``, ``ok``, ``str(report)`` (the command line's text), ``to_json()``, per-claim
+    ``results`` and ``rows``; ``raise_if_failed()``. Bad claim files raise :class:`InputError`
+    with the command line's message (file, line, key).
+    """
+    try:
+        path = os.fspath(path)
+    except TypeError:
+        raise InputError(f"path: expected a str or os.PathLike, got {type(path).__name__}") from None
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    return ClaimsReport(_native.check_claims(path))
+
+
+def certify(patch: Patch, points=None, random: Optional[int] = None, seed: Optional[int] = None,
+            precision: str = "all", algorithm: str = "all") -> CertifyReport:
+    """Certify tribez's own float evaluation of ``patch``: run its float program (de Casteljau
+    and the direct Bernstein form for polynomial patches; homogeneous de Casteljau and one
+    division for rational ones; float Wachspress coordinates then de Casteljau for S-patches) in
+    f64 and f32 and judge every result against the exact value and the proven a-priori error
+    bound (docs/theory.md §14): the library's report of ``tribez certify``.
+
+    ``points``: rows of points in the patch's coordinates (m + 1 barycentric coordinates; (x, y)
+    in the polygon of an S-patch), numbers as in :meth:`Patch.from_nodes` (each is rounded to
+    the precision as a float program would round it). Otherwise ``random`` reproducible random
+    points (1000 when neither is given; at most ``MAX_RANDOM_POINTS``) from ``seed`` (1 when
+    omitted, as the command line; the report gives it back as ``report.seed`` with the command
+    that reproduces the run). ``precision``: ``"f64"``, ``"f32"`` or ``"all"``; ``algorithm``:
+    ``"casteljau"``, ``"bernstein"`` or ``"all"``.
+
+    Returns a :class:`CertifyReport` (a :class:`Report`): ``ok`` when every result is within its
+    bound, per algorithm and precision ``results`` and ``rows``, ``max_ulps``, ``worst``,
+    ``seed``, ``str(report)``, ``to_json()``; ``raise_if_failed()``.
+    """
+    if not isinstance(patch, Patch):
+        raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
+    if points is not None and random is not None:
+        raise InputError("give points or random (a number of random points), not both")
+    rows = None
+    if points is not None:
+        rows = matrix_texts(points, "points", allow_vector=True)
+        if not rows:
+            raise InputError("points: no rows")
+    elif random is None:
+        random = 1000
+    if random is not None:
+        random = _count(random, "random")
+    seed = 1 if seed is None else _count(seed, "seed")
+    if seed >= 2**64:
+        raise InputError(f"seed: {seed} is above the limit of 2^64 - 1")
+    if not isinstance(precision, str) or precision not in ("f64", "f32", "all"):
+        raise InputError(f"precision: unknown precision `{precision}` (expected \"f64\", \"f32\" or \"all\")")
+    if not isinstance(algorithm, str):
+        raise InputError(f"algorithm: expected a str, got {type(algorithm).__name__}")
+    # the report names the patch as the command line does: by its file, when it came from one
+    label = patch._path or (f"<{patch.name}>" if patch.name else "<patch>")
+    return CertifyReport(_native.certify(patch._native, rows, random, seed, precision, algorithm, label))

@@ -50,6 +50,25 @@ impl From<TextOrJson> for Format {
     }
 }
 
+/// The algorithm a `bound` tolerance refers to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum AlgorithmChoice {
+    /// de Casteljau (bound γ_{(m+1)n} Σ|c_i|B_i(|λ|)).
+    Casteljau,
+    /// The direct Bernstein form (bound γ_{N+n+m+2} Σ|c_i|B_i(|λ|)).
+    Bernstein,
+}
+
+impl AlgorithmChoice {
+    /// The corresponding algorithm.
+    pub fn algorithm(self) -> tribez::Algorithm {
+        match self {
+            AlgorithmChoice::Casteljau => tribez::Algorithm::Casteljau,
+            AlgorithmChoice::Bernstein => tribez::Algorithm::Bernstein,
+        }
+    }
+}
+
 /// The largest `--random N` of `tribez certify` (each point is evaluated exactly).
 pub const MAX_RANDOM_POINTS: usize = 1_000_000;
 

@@ -34,6 +34,14 @@ pub enum CoreError {
         "derivative of order {order} requested, but the patch has degree {degree} (order must be at most the degree)"
     )]
     OrderTooHigh { order: usize, degree: usize },
+    /// A number that overflows the float format it is rounded to.
+    #[error("{what} overflows {precision}")]
+    Overflows {
+        /// What overflows (`"a control point"`, `"an input"`).
+        what: &'static str,
+        /// `"f64"` or `"f32"`.
+        precision: &'static str,
+    },
     /// Two patches that must match do not.
     #[error("{0}")]
     Mismatch(String),

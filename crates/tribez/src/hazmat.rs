@@ -23,6 +23,18 @@ macro_rules! hazmat {
     };
 }
 
+/// Files in: the document tree, patch files, point files; and the entry points of the fuzz
+/// targets.
+pub mod io {
+    pub use crate::io::*;
+
+    /// The entry points of the fuzz targets (they read claim files and batches too, so they sit
+    /// above the file layer: [`crate::hazmat::io`] only re-exports them here).
+    pub mod fuzz {
+        pub use crate::fuzz::*;
+    }
+}
+
 hazmat!(
     /// `AnyPatch`: the representation of a [`crate::Patch`] by kind.
     any_patch,
@@ -48,8 +60,6 @@ hazmat!(
     float,
     /// Functional (nonparametric) patches.
     functional,
-    /// Files in: the document tree, patch files, point files.
-    io,
     /// Joins: continuity between patches.
     join,
     /// Exact numbers: parsing, printing, correctly rounded conversions, ULPs.

@@ -39,10 +39,9 @@
 use num_rational::BigRational;
 use serde::Serialize;
 
-use crate::api_error::Error;
+use crate::api_error::{Error, Lacks};
 use crate::capability::InputSpace;
 use crate::certify::measures::{Leaf, Measures, Tolerance};
-use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
 use crate::patch_type::{Patch, PatchKind};
@@ -176,6 +175,190 @@ pub fn judge_with(
     )
 }
 
+/// Which argument of a judgement an [`Error`] is about ([`exact_side`]), so that a caller
+/// reading the arguments from a file can locate it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Part {
+    /// The patch (its float program: rounding overflows).
+    Patch,
+    /// The algorithm.
+    Algorithm,
+    /// The input.
+    Input,
+    /// The tolerance.
+    Tolerance,
+}
+
+/// The exact side of a judgement (steps 1, 2 and 4 of the module documentation): what every
+/// coordinate's verdict is measured against.
+pub(crate) struct Side {
+    /// The name of the float algorithm.
+    pub algorithm: &'static str,
+    /// The exact values of the input as seen.
+    pub input_seen: Vec<BigRational>,
+    /// The exact value at the input as seen (patch numbers as seen).
+    pub exact: Vec<BigRational>,
+    /// The exact value at the intended input, when given.
+    pub exact_intended: Option<Vec<BigRational>>,
+    /// The condition number per coordinate, where defined.
+    pub condition: Option<Vec<BigRational>>,
+    /// The proven a-priori bound per coordinate, where the point is inside its hypotheses.
+    pub bound: Option<Vec<BigRational>>,
+    /// Does `cond=K` mean anything for this kind?
+    pub cond_tolerance: bool,
+}
+
+impl Side {
+    /// What the tolerance may need at coordinate `c`.
+    pub fn leaf(&self, c: usize, precision: Precision) -> Leaf {
+        Leaf {
+            precision: Some(precision),
+            condition: self
+                .condition
+                .as_ref()
+                .filter(|_| self.cond_tolerance)
+                .and_then(|k| k.get(c).cloned()),
+            bound: self.bound.as_ref().and_then(|b| b.get(c).cloned()),
+        }
+    }
+}
+
+/// The exact side of judging `patch`'s float program of `precision` running `algorithm` at
+/// `input` with `tolerance`: the checks, then the exact value at the input as seen, the exact
+/// value at the `intended` input, the condition numbers and the bound. The one path of
+/// [`judge_algorithm`] and of `eval` claims with a precision ([`crate::claims`]).
+pub(crate) fn exact_side(
+    patch: &Patch,
+    algorithm: Algorithm,
+    input: &[f64],
+    tolerance: &Tolerance,
+    precision: Precision,
+    intended: Option<&[BigRational]>,
+) -> Result<Side, (Part, Error)> {
+    let described = patch.as_any().described();
+    let float = patch.float().ok_or((
+        Part::Patch,
+        Error::Unsupported {
+            kind: described,
+            what: Lacks::FloatProgram,
+        },
+    ))?;
+    if !float.float_algorithms().contains(&algorithm) {
+        return Err((
+            Part::Algorithm,
+            Error::Unsupported {
+                kind: described,
+                what: Lacks::Algorithm {
+                    algorithm,
+                    has: float.float_algorithms(),
+                    path: float.algorithm_name(float.float_algorithms()[0]),
+                },
+            },
+        ));
+    }
+    let shape = patch.shape();
+    let width = shape.input.len();
+    if input.len() != width {
+        return Err((
+            Part::Input,
+            Error::Size {
+                what: match shape.input {
+                    InputSpace::Barycentric { .. } => "barycentric coordinates of the input",
+                    InputSpace::Polygon { .. } => "Cartesian coordinates of the input",
+                },
+                expected: width,
+                found: input.len(),
+            },
+        ));
+    }
+    if let Some(i) = intended.filter(|i| i.len() != width) {
+        return Err((
+            Part::Input,
+            Error::Size {
+                what: "coordinates of the intended input",
+                expected: width,
+                found: i.len(),
+            },
+        ));
+    }
+    let exact_input: Vec<BigRational> = input
+        .iter()
+        .map(|&x| {
+            crate::number::exact_f64(x).ok_or((
+                Part::Input,
+                Error::NotFinite {
+                    what: "input",
+                    value: x,
+                },
+            ))
+        })
+        .collect::<Result<_, _>>()?;
+    let program = float
+        .float_program(precision)
+        .map_err(|e| (Part::Patch, e.into()))?;
+    let seen_input = program
+        .round_input(&exact_input)
+        .map_err(|e| (Part::Input, e.into()))?;
+    let bounds = program.error_bound().ok_or((
+        Part::Patch,
+        Error::Unsupported {
+            kind: described,
+            what: Lacks::ErrorBound,
+        },
+    ))?;
+    let seen = bounds.seen(algorithm, &seen_input);
+    if tolerance.is_cond() && !seen.cond_tolerance {
+        return Err((
+            Part::Tolerance,
+            Error::Unsupported {
+                kind: described,
+                what: Lacks::CondTolerance {
+                    tolerance: tolerance.clone(),
+                    kinds: patch.kind().plural(),
+                },
+            },
+        ));
+    }
+    let exact = seen.exact.clone().ok_or_else(|| {
+        (
+            Part::Input,
+            Error::Undefined {
+                kind: described,
+                input: seen.input.clone(),
+                precision,
+            },
+        )
+    })?;
+    if *tolerance == Tolerance::Bound && seen.bound.is_none() {
+        return Err((
+            Part::Tolerance,
+            Error::NoBound {
+                precision,
+                reason: bounds.no_bound_reason(),
+            },
+        ));
+    }
+    let exact_intended = match intended {
+        Some(i) => Some(
+            patch
+                .exact()
+                .exact_evaluator()
+                .evaluate(i)
+                .map_err(|e| (Part::Input, e.into()))?,
+        ),
+        None => None,
+    };
+    Ok(Side {
+        algorithm: float.algorithm_name(algorithm),
+        input_seen: seen.input,
+        exact,
+        exact_intended,
+        condition: seen.condition,
+        bound: seen.bound,
+        cond_tolerance: seen.cond_tolerance,
+    })
+}
+
 /// [`judge_with`] for a named float `algorithm` of the kind (a polynomial patch also has the
 /// direct Bernstein form, [`Algorithm::Bernstein`], whose bound differs).
 pub fn judge_algorithm(
@@ -187,32 +370,7 @@ pub fn judge_algorithm(
     precision: Precision,
     intended: Option<&[BigRational]>,
 ) -> Result<Judgement, Error> {
-    let described = patch.as_any().described();
-    let float = patch.float().ok_or_else(|| Error::Unsupported {
-        kind: described,
-        what: "it has no float program".into(),
-    })?;
-    if !float.float_algorithms().contains(&algorithm) {
-        return Err(Error::Unsupported {
-            kind: described,
-            what: format!(
-                "its float program has no algorithm {algorithm:?} (it has {:?})",
-                float.float_algorithms()
-            ),
-        });
-    }
     let shape = patch.shape();
-    let width = shape.input.len();
-    if input.len() != width {
-        return Err(Error::Size {
-            what: match shape.input {
-                InputSpace::Barycentric { .. } => "barycentric coordinates of the input",
-                InputSpace::Polygon { .. } => "Cartesian coordinates of the input",
-            },
-            expected: width,
-            found: input.len(),
-        });
-    }
     if claimed.len() != shape.dimension {
         return Err(Error::Size {
             what: "claimed coordinates",
@@ -220,59 +378,19 @@ pub fn judge_algorithm(
             found: claimed.len(),
         });
     }
-    if let Some(i) = intended.filter(|i| i.len() != width) {
-        return Err(Error::Size {
-            what: "coordinates of the intended input",
-            expected: width,
-            found: i.len(),
-        });
-    }
-    let exact_input: Vec<BigRational> = input
-        .iter()
-        .map(|&x| {
-            crate::number::exact_f64(x).ok_or_else(|| {
-                Error::Core(CoreError::Invalid(format!(
-                    "the input {x} is not a finite number"
-                )))
-            })
-        })
-        .collect::<Result<_, _>>()?;
-    let program = float.float_program(precision)?;
-    let seen_input = program.round_input(&exact_input)?;
-    let bounds = program.error_bound().ok_or_else(|| Error::Unsupported {
-        kind: described,
-        what: "its float program has no error bound".into(),
-    })?;
-    let seen = bounds.seen(algorithm, &seen_input);
-    if tolerance.is_cond() && !seen.cond_tolerance {
-        return Err(Error::Unsupported {
-            kind: described,
-            what: format!(
-                "tolerance `{tolerance}` is not defined (its float program adds an error the condition number does not measure): use `bound`"
-            ),
-        });
-    }
+    let side =
+        exact_side(patch, algorithm, input, tolerance, precision, intended).map_err(|(_, e)| e)?;
     let tolerance = &tolerance.for_patch(shape.simplex_dim, shape.degree);
-    let exact = seen.exact.clone().ok_or_else(|| {
-        Error::Core(CoreError::Invalid(format!(
-            "{described} is undefined at the input as seen {} (in {})",
-            crate::domain::format_tuple(&seen.input),
-            precision.name()
-        )))
-    })?;
-    let exact_intended = match intended {
-        Some(i) => Some(patch.exact().exact_evaluator().evaluate(i)?),
-        None => None,
-    };
     let mut coordinates = Vec::with_capacity(claimed.len());
     for (c, &y) in claimed.iter().enumerate() {
-        let condition = seen.condition.as_ref().map(|k| k[c].clone());
-        let bound = seen.bound.as_ref().map(|b| b[c].clone());
-        let intended_c = exact_intended.as_ref().map(|e| e[c].clone());
+        let condition = side.condition.as_ref().map(|k| k[c].clone());
+        let bound = side.bound.as_ref().map(|b| b[c].clone());
+        let intended_c = side.exact_intended.as_ref().map(|e| e[c].clone());
+        let exact = &side.exact[c];
         let judged = match crate::number::exact_f64(y) {
             None => CoordinateJudgement {
                 claimed: y,
-                exact: exact[c].clone(),
+                exact: exact.clone(),
                 exact_intended: intended_c,
                 ulps: None,
                 ulps_intended: None,
@@ -282,22 +400,16 @@ pub fn judge_algorithm(
                 passed: false,
             },
             Some(yq) => {
-                let m = Measures::new(&yq, &exact[c], Some(precision));
-                let leaf = Leaf {
-                    precision: Some(precision),
-                    condition: condition.clone().filter(|_| seen.cond_tolerance),
-                    bound: bound.clone(),
-                };
-                let passed =
-                    tolerance
-                        .accepts(&yq, &exact[c], &leaf)
-                        .map_err(|needs| Error::Tolerance {
-                            coordinate: c,
-                            needs,
-                        })?;
+                let m = Measures::new(&yq, exact, Some(precision));
+                let passed = tolerance
+                    .accepts(&yq, exact, &side.leaf(c, precision))
+                    .map_err(|needs| Error::Tolerance {
+                        coordinate: c,
+                        needs,
+                    })?;
                 CoordinateJudgement {
                     claimed: y,
-                    exact: exact[c].clone(),
+                    exact: exact.clone(),
                     ulps_intended: intended_c
                         .as_ref()
                         .and_then(|i| Measures::new(&yq, i, Some(precision)).ulps),
@@ -317,8 +429,8 @@ pub fn judge_algorithm(
         kind: patch.kind(),
         precision,
         tolerance: tolerance.clone(),
-        algorithm: float.algorithm_name(algorithm),
-        input_seen: seen.input,
+        algorithm: side.algorithm,
+        input_seen: side.input_seen,
         coordinates,
     })
 }

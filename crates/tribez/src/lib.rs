@@ -63,6 +63,7 @@ mod error;
 mod exact;
 mod float;
 mod functional;
+mod fuzz;
 pub mod hazmat;
 mod io;
 mod join;
@@ -83,7 +84,7 @@ mod testing;
 pub use api_error::Error;
 pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
 pub use certify::measures::Tolerance;
-pub use certify::run::{
+pub use certify::report::{
     CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, RandomPoints, certify,
 };
 pub use error::CoreError;

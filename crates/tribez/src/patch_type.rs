@@ -278,10 +278,12 @@ impl Patch {
             AnyPatch::Bezier(p) => Some(Box::new(Polynomial {
                 patch: p,
                 wrap: AnyPatch::Bezier,
+                functional: false,
             })),
             AnyPatch::Functional(p) => Some(Box::new(Polynomial {
                 patch: p,
                 wrap: AnyPatch::Functional,
+                functional: true,
             })),
             AnyPatch::Rational(r) => Some(Box::new(r)),
             AnyPatch::SPatch(_) => None,

@@ -253,3 +253,133 @@ fn rows_in_memory_and_in_a_csv_file_agree() {
     same(&memory, &file);
     assert!(memory.failed > 0 && memory.passed > 0);
 }
+
+/// A planar patch embedded in R^3: degree 4 on the triangle with c_α = (α_1/4, α_2/4, 0), so by
+/// linear precision P(λ) = (λ_1, λ_2, 0) exactly (every control value a float). The third
+/// coordinate is zero at every point: the float filter decides it without exact arithmetic, so
+/// no row falls back; a claimed third coordinate of ±2^-1074 is exactly 1 ulp of 0 (hand
+/// derivation: ulp_f64(0) is the smallest subnormal), failing `ulps=1/2` and `cond` (whose
+/// threshold is K·ε·0 = 0 there) and passing `ulps=1`.
+#[test]
+fn an_identically_zero_coordinate_never_falls_back() {
+    use tribez::hazmat::patch::{BezierPatch, ControlNet};
+    use tribez::hazmat::simplex::Simplex;
+    let simplex = Simplex::new(2, 4);
+    let coords: Vec<tribez::Rational> = simplex
+        .iter()
+        .flat_map(|a| {
+            [
+                tribez::Rational::new(i64::from(a[1]).into(), 4.into()),
+                tribez::Rational::new(i64::from(a[2]).into(), 4.into()),
+                tribez::Rational::from_integer(0.into()),
+            ]
+        })
+        .collect();
+    let patch = BezierPatch::new(ControlNet::new(simplex, 3, coords));
+    let tiny = f64::from_bits(1);
+    let (mut points, mut values, mut off) = (Vec::new(), Vec::new(), 0);
+    for i in 0..400u32 {
+        // no coordinate but the third is zero at these points (a value that vanishes at a
+        // point only is enclosed, not known, and may fall back)
+        let l1 = f64::from(i % 20 + 1) / 32.0;
+        let l2 = f64::from(i / 20 + 1) / 64.0;
+        points.extend([1.0 - l1 - l2, l1, l2]);
+        let z = match i % 40 {
+            7 => tiny,
+            13 => -tiny,
+            _ => 0.0,
+        };
+        off += usize::from(z != 0.0);
+        values.extend([l1, l2, z]);
+    }
+    for (tol, failed) in [("ulps=1/2", off), ("cond", off), ("ulps=1", 0)] {
+        let options = BatchOptions {
+            tolerance: Tolerance::parse(tol).unwrap(),
+            precision: Some(Precision::F64),
+            ..BatchOptions::default()
+        };
+        let c = BatchChecker::new(patch.clone(), &options).unwrap();
+        let r = c
+            .check_rows(&points, &values, 0, "<memory>", "plane")
+            .unwrap()
+            .0;
+        assert_eq!((r.checked, r.failed as usize), (400, failed), "{tol}");
+        assert_eq!(r.fell_back, 0, "{tol}");
+    }
+}
+
+/// `--cartesian` rows go through the float filter (docs/theory.md §14.5). A cubic with control
+/// values k/8 − 1 (floats, so the code sees them exactly) over a triangle (0,0), (3,0), (1, h);
+/// at 300 float points the claimed values are the correctly rounded exact values (the generic
+/// exact path: exact barycentric coordinates by Cramer's rule, rational de Casteljau), so every
+/// row meets `ulps=1/2` and `ulps=64`; moved by a relative 2^-30 on one coordinate (about 2^22
+/// ulps), every row fails `ulps=64`. For h = 2 the filter decides most rows at `ulps=64` (260 of
+/// 300 when written; the others, near cancellation, fall back)
+/// (the conversion's rounding costs a few ulps of the condition number); `ulps=1/2` is too tight
+/// for any Cartesian enclosure and falls back, with the same verdicts. For the thin h = 2^-20
+/// (barycentric coordinates known in floats to about 2^20 ε) the verdicts are the same.
+#[test]
+fn cartesian_rows_are_decided_by_the_filter_and_agree_with_the_exact_path() {
+    use tribez::Rational;
+    use tribez::hazmat::domain::Domain;
+    use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
+    use tribez::hazmat::number::{exact_f64, round_f64};
+    use tribez::hazmat::patch::{BezierPatch, ControlNet};
+    use tribez::hazmat::simplex::Simplex;
+    let q = |x: f64| exact_f64(x).unwrap();
+    let simplex = Simplex::new(2, 3);
+    let coords: Vec<Rational> = (0..simplex.len() * 2)
+        .map(|i| {
+            Rational::new(((i * 7919) % 23).into(), 8.into()) - Rational::from_integer(1.into())
+        })
+        .collect();
+    let net = ControlNet::new(simplex, 2, coords);
+    let exact = ExactEvaluator::new(&net);
+    for h in [2.0, 2f64.powi(-20)] {
+        let domain = Domain::new(vec![
+            vec![q(0.0), q(0.0)],
+            vec![q(3.0), q(0.0)],
+            vec![q(1.0), q(h)],
+        ])
+        .unwrap();
+        let mut patch = BezierPatch::new(net.clone());
+        patch.domain = Some(domain.clone());
+        let (mut points, mut good, mut bad) = (Vec::new(), Vec::new(), Vec::new());
+        for i in 0..300u32 {
+            let s = f64::from(i % 17) / 17.0 + 0.01;
+            let t = f64::from(i / 17) / 19.0 * (1.0 - s);
+            let x = [3.0 * s + t, t * h + 1e-9 * f64::from(i % 3)];
+            let lam = domain.barycentric(&[q(x[0]), q(x[1])]).unwrap();
+            let p = exact.evaluate(&lam, Algorithm::Casteljau);
+            let y = [round_f64(&p[0]), round_f64(&p[1])];
+            points.extend(x);
+            good.extend(y);
+            bad.extend([y[0] + y[0].abs() * 2f64.powi(-30) + 1e-300, y[1]]);
+        }
+        let check = |tol: &str, values: &[f64]| {
+            let options = BatchOptions {
+                tolerance: Tolerance::parse(tol).unwrap(),
+                precision: Some(Precision::F64),
+                cartesian: true,
+                ..BatchOptions::default()
+            };
+            BatchChecker::new(patch.clone(), &options)
+                .unwrap()
+                .check_rows(&points, values, 0, "<memory>", "triangle")
+                .unwrap()
+                .0
+        };
+        let r = check("ulps=1/2", &good);
+        assert_eq!((r.checked, r.passed), (300, 300), "h={h}");
+        let r = check("ulps=64", &good);
+        assert_eq!((r.checked, r.passed), (300, 300), "h={h}");
+        if h == 2.0 {
+            assert!(r.fell_back <= 60, "fell back {}", r.fell_back);
+        }
+        let r = check("ulps=64", &bad);
+        assert_eq!((r.checked, r.failed), (300, 300), "h={h}");
+        if h == 2.0 {
+            assert!(r.fell_back <= 60, "fell back {}", r.fell_back);
+        }
+    }
+}

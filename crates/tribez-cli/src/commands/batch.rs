@@ -8,31 +8,11 @@ use serde_json::Value as Json;
 
 use super::check::Args;
 use super::{CliError, Outcome};
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport};
 use tribez::hazmat::certify::measures::Tolerance;
-use tribez::hazmat::exact::Algorithm;
 use tribez::hazmat::float::Precision;
 use tribez::hazmat::io::patch_file::read_patch;
-
-/// The algorithm a `bound` tolerance refers to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum AlgorithmChoice {
-    /// de Casteljau (bound γ_{(m+1)n} Σ|c_i|B_i(|λ|)).
-    Casteljau,
-    /// The direct Bernstein form (bound γ_{N+n+m+2} Σ|c_i|B_i(|λ|)).
-    Bernstein,
-}
-
-impl AlgorithmChoice {
-    /// The corresponding algorithm.
-    pub fn algorithm(self) -> Algorithm {
-        match self {
-            AlgorithmChoice::Casteljau => Algorithm::Casteljau,
-            AlgorithmChoice::Bernstein => Algorithm::Bernstein,
-        }
-    }
-}
 
 /// The batch options of `tribez check`'s arguments.
 fn options(args: &Args) -> Result<BatchOptions, CliError> {
@@ -68,8 +48,13 @@ impl From<BatchError> for CliError {
     }
 }
 
-/// Run the batch mode of `tribez check`.
+/// Run the batch mode of `tribez check` (`--patch PATCH --results FILE`).
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    if !args.paths.is_empty() {
+        return Err(CliError::Usage(
+            "give either claim files or --patch/--results, not both".into(),
+        ));
+    }
     let patch_path = args
         .patch
         .as_ref()
@@ -92,7 +77,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let report = report?;
     let success = report.failed == 0;
     if let Some(path) = &args.junit {
-        super::write_atomically(path, report.junit().as_bytes())?;
+        super::write_junit(path, &report)?;
     }
     let worst = worst_errors(&report);
     let regressions = super::baseline::judge(
@@ -130,12 +115,10 @@ impl Render for BatchReport {
     }
 
     fn json(&self) -> Json {
-        BatchReport::json(self)
+        to_json(self)
     }
-}
 
-impl Exporter for BatchReport {
-    fn junit(&self) -> String {
+    fn junit(&self) -> Option<JunitSuite> {
         let mut failures: Vec<String> = self
             .failures
             .iter()
@@ -147,13 +130,13 @@ impl Exporter for BatchReport {
                 self.failed as usize - self.failures.len()
             ));
         }
-        junit_xml(
-            "check",
-            &[JunitCase {
+        Some(JunitSuite {
+            suite: "check",
+            cases: vec![JunitCase {
                 name: self.file.clone(),
                 checks: self.checked as usize,
                 failures,
             }],
-        )
+        })
     }
 }

@@ -1,18 +1,19 @@
 //! `tribez blossom`: the blossom (polar form) `b[u_1, …, u_n]` of a patch (docs/theory.md §4).
 //!
-//! For a rational patch it is the rational blossom `X[u_1, …, u_n] / W[u_1, …, u_n]`, the blossom
-//! of the homogeneous net `(w c, w)` projected ([`tribez::hazmat::rational::RationalPatch::blossom`]); an
-//! error where the weight blossom `W` is 0.
+//! Through the kind's [`tribez::Constructions::blossom`]: for a rational patch the rational
+//! blossom `X[u_1, …, u_n] / W[u_1, …, u_n]`, the blossom of the homogeneous net `(w c, w)`
+//! projected; an error where the weight blossom `W` is 0.
 
 use std::path::PathBuf;
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::construct::barycentric_points;
-use super::{CliError, Outcome, points_patch};
+use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
+use crate::report::{Render, to_json, tuple};
+use tribez::Patch;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
@@ -28,17 +29,21 @@ pub struct Args {
     pub out: OutputArgs,
 }
 
-/// The blossom value.
+/// The blossom value; JSON `{"point": [..]}`.
+#[derive(serde::Serialize)]
 pub struct BlossomReport {
+    #[serde(skip)]
     args: Vec<Vec<BigRational>>,
+    #[serde(serialize_with = "crate::report::ser::rationals")]
     point: Vec<BigRational>,
 }
 
 /// Run `tribez blossom`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = points_patch(&file, "blossom", read_any_patch(&args.patch)?)?;
-    let n = patch.net.degree();
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let constructions = super::constructions(&patch, &file, "blossom")?;
+    let n = patch.degree();
     if args.args.len() != n {
         return Err(CliError::core(
             "--arg",
@@ -48,12 +53,10 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             },
         ));
     }
-    let points = barycentric_points(&args.args, "arg", patch.net.m())?;
-    let point = match &rational {
-        None => tribez::hazmat::blossom::blossom(&patch.net, &points),
-        Some(r) => r.blossom(&points),
-    }
-    .map_err(|e| CliError::core("--arg", e))?;
+    let points = barycentric_points(&args.args, "arg", patch.simplex_dim())?;
+    let point = constructions
+        .blossom(&points)
+        .map_err(|e| CliError::core("--arg", e))?;
     Outcome::rendered(
         &BlossomReport {
             args: points,
@@ -77,6 +80,6 @@ impl Render for BlossomReport {
         )
     }
     fn json(&self) -> Json {
-        json!({ "point": json_rationals(&self.point) })
+        to_json(self)
     }
 }

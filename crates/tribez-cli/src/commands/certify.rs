@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use serde_json::Value as Json;
 use tribez::hazmat::exact::Algorithm;
 use tribez::hazmat::float::Precision;
@@ -123,7 +123,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     )?;
     let success = report.success();
     if let Some(path) = &args.junit {
-        super::write_atomically(path, report.junit().as_bytes())?;
+        super::write_junit(path, &report)?;
     }
     Outcome::rendered(&report, args.out.format, success)
 }
@@ -134,25 +134,26 @@ impl Render for CertifyReport {
     }
 
     fn json(&self) -> Json {
-        serde_json::to_value(self).unwrap_or(Json::Null)
+        to_json(self)
     }
-}
 
-impl Exporter for CertifyReport {
-    fn junit(&self) -> String {
+    fn junit(&self) -> Option<JunitSuite> {
         let cases: Vec<JunitCase> = self
             .rows
             .iter()
             .map(|r| JunitCase {
                 name: format!(
                     "{} {}",
-                    tribez::hazmat::certify::run::algorithm_name(r.algorithm),
+                    tribez::hazmat::certify::report::algorithm_key(r.algorithm),
                     r.precision.name()
                 ),
                 checks: r.coordinates,
                 failures: r.violations.clone(),
             })
             .collect();
-        junit_xml("certify", &cases)
+        Some(JunitSuite {
+            suite: "certify",
+            cases,
+        })
     }
 }

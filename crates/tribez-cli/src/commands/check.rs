@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use serde_json::Value as Json;
 
 use super::{CliError, Outcome};
-use crate::cli::OutputArgs;
-use crate::report::{Exporter, JunitCase, Render, junit_xml};
+use crate::cli::{AlgorithmChoice, OutputArgs};
+use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::claims::{self, ClaimsOptions, ClaimsReport};
 
 /// Arguments of `tribez check`.
@@ -36,8 +36,8 @@ pub struct Args {
     #[arg(long)]
     pub cartesian: bool,
     /// Batch mode: the algorithm whose a-priori bound `--tolerance bound` uses.
-    #[arg(long, value_enum, default_value_t = super::batch::AlgorithmChoice::Casteljau)]
-    pub algorithm: super::batch::AlgorithmChoice,
+    #[arg(long, value_enum, default_value_t = AlgorithmChoice::Casteljau)]
+    pub algorithm: AlgorithmChoice,
     /// Also write a JUnit XML report to FILE (one test case per claim file).
     #[arg(long, value_name = "FILE")]
     pub junit: Option<PathBuf>,
@@ -63,16 +63,8 @@ pub fn judge_paths(paths: &[PathBuf], options: &ClaimsOptions) -> Result<ClaimsR
     Ok(claims::check_files(&found.files, options)?)
 }
 
-/// Run `tribez check`.
+/// Run `tribez check` on claim files (the dispatcher sends `--results` to [`super::batch`]).
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    if args.results.is_some() {
-        if !args.paths.is_empty() {
-            return Err(CliError::Usage(
-                "give either claim files or --patch/--results, not both".into(),
-            ));
-        }
-        return super::batch::run(args);
-    }
     for (flag, given) in [
         ("--tolerance", args.tolerance.is_some()),
         ("--precision", args.precision.is_some()),
@@ -98,7 +90,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     )?;
     let success = report.success();
     if let Some(path) = &args.junit {
-        super::write_atomically(path, report.junit().as_bytes())?;
+        super::write_junit(path, &report)?;
     }
     Outcome::rendered(&report, args.out.format, success)
 }
@@ -109,12 +101,10 @@ impl Render for ClaimsReport {
     }
 
     fn json(&self) -> Json {
-        serde_json::to_value(self).unwrap_or(Json::Null)
+        to_json(self)
     }
-}
 
-impl Exporter for ClaimsReport {
-    fn junit(&self) -> String {
+    fn junit(&self) -> Option<JunitSuite> {
         let cases: Vec<JunitCase> = self
             .files
             .iter()
@@ -137,6 +127,9 @@ impl Exporter for ClaimsReport {
                     .collect(),
             })
             .collect();
-        junit_xml("check", &cases)
+        Some(JunitSuite {
+            suite: "check",
+            cases,
+        })
     }
 }

@@ -1,16 +1,19 @@
-//! Shared by the construction commands (blossom, subpatch, subdivide, halve, elevate, matrix):
-//! parsing of points and edges, child patches, and patch-valued reports written in the
-//! patch-file format so that commands compose.
+//! Shared by the construction commands (blossom, subpatch, subdivide, halve, elevate, matrix,
+//! graph): parsing of points and edges, child patches, and patch-valued reports written in the
+//! patch-file format (polynomial or any kind) so that commands compose.
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde::Serialize;
+use serde_json::Value as Json;
 
 use super::{CliError, check_barycentric, parse_list};
-use crate::report::Render;
+use crate::report::{Render, to_json};
+use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::domain::Domain;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::{
-    MAX_CONTROL_POINTS, MAX_DEGREE, patch_to_json, patch_to_toml,
+    MAX_CONTROL_POINTS, MAX_DEGREE, any_patch_to_json, any_patch_to_toml, patch_to_json,
+    patch_to_toml,
 };
 use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
 use tribez::hazmat::simplex;
@@ -117,7 +120,7 @@ pub fn rational_pieces(
     parent: &tribez::hazmat::rational::RationalPatch,
     pieces: Vec<tribez::hazmat::subdivide::Piece<BigRational>>,
     label: impl Fn(usize) -> String,
-) -> Result<super::graph::AnyPiecesReport, CliError> {
+) -> Result<AnyPiecesReport, CliError> {
     let mut out = Vec::with_capacity(pieces.len());
     for (k, p) in pieces.into_iter().enumerate() {
         let mut piece =
@@ -129,12 +132,9 @@ pub fn rational_pieces(
             Some(&p.domain_in_parent),
             &label(k),
         )?;
-        out.push((
-            p.domain_in_parent,
-            tribez::hazmat::any_patch::AnyPatch::Rational(piece),
-        ));
+        out.push((p.domain_in_parent, AnyPatch::Rational(piece)));
     }
-    Ok(super::graph::AnyPiecesReport(out))
+    Ok(AnyPiecesReport(out))
 }
 
 fn strings(p: &[BigRational]) -> Vec<String> {
@@ -175,13 +175,50 @@ fn toml_with(patch: &Patch, f: Option<&[Vec<BigRational>]>, prefix: &str) -> Str
     out
 }
 
+/// A patch file's JSON, followed by `domain_in_parent` when the patch is a subpatch.
+#[derive(Serialize)]
+struct PatchJson {
+    #[serde(flatten)]
+    patch: Json,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    domain_in_parent: Option<Vec<Vec<String>>>,
+}
+
+/// One piece of a split: its simplex in the parent's barycentric coordinates and its patch file.
+#[derive(Serialize)]
+pub struct PieceJson {
+    /// The piece's simplex.
+    pub domain_in_parent: Vec<Vec<String>>,
+    /// The patch file's JSON.
+    pub patch: Json,
+}
+
+/// The pieces of a split, as JSON.
+#[derive(Serialize)]
+pub struct PiecesJson {
+    /// The pieces.
+    pub pieces: Vec<PieceJson>,
+}
+
+/// Points as lists of exact strings.
+pub fn point_strings(f: &[Vec<BigRational>]) -> Vec<Vec<String>> {
+    f.iter().map(|p| strings(p)).collect()
+}
+
 /// The JSON patch file, with `domain_in_parent` if given.
 pub fn json_with(patch: &Patch, f: Option<&[Vec<BigRational>]>) -> Json {
-    let mut j = patch_to_json(patch);
-    if let Some(f) = f {
-        j["domain_in_parent"] = json!(f.iter().map(|p| strings(p)).collect::<Vec<_>>());
-    }
-    j
+    to_json(&PatchJson {
+        patch: patch_to_json(patch),
+        domain_in_parent: f.map(point_strings),
+    })
+}
+
+/// The JSON patch file of a patch of any kind, with `domain_in_parent` if given.
+pub fn json_with_any(patch: &AnyPatch, f: Option<&[Vec<BigRational>]>) -> Json {
+    to_json(&PatchJson {
+        patch: any_patch_to_json(patch),
+        domain_in_parent: f.map(point_strings),
+    })
 }
 
 /// A patch-valued result: text is the TOML patch file, JSON the JSON patch file.
@@ -224,9 +261,76 @@ impl Render for PiecesReport {
         out
     }
     fn json(&self) -> Json {
-        json!({ "pieces": self.pieces.iter().map(|(f, p)| json!({
-            "domain_in_parent": f.iter().map(|v| strings(v)).collect::<Vec<_>>(),
-            "patch": patch_to_json(p),
-        })).collect::<Vec<_>>() })
+        to_json(&PiecesJson {
+            pieces: self
+                .pieces
+                .iter()
+                .map(|(f, p)| PieceJson {
+                    domain_in_parent: point_strings(f),
+                    patch: patch_to_json(p),
+                })
+                .collect(),
+        })
+    }
+}
+
+/// A patch of any kind, written as a patch file (TOML text, or JSON): the output of commands that
+/// construct rational patches (`elevate`, `subpatch`).
+pub struct AnyPatchReport(pub AnyPatch);
+
+impl Render for AnyPatchReport {
+    fn text(&self) -> String {
+        any_patch_to_toml(&self.0)
+    }
+
+    fn json(&self) -> Json {
+        any_patch_to_json(&self.0)
+    }
+}
+
+/// Pieces of a rational patch (`subdivide`), in the layout of the polynomial pieces report:
+/// `[[pieces]]` with `domain_in_parent` and a `[pieces.patch]` table (now with `weights`).
+pub struct AnyPiecesReport(pub Vec<(Vec<Vec<num_rational::BigRational>>, AnyPatch)>);
+
+fn toml_rows(f: &[Vec<num_rational::BigRational>]) -> String {
+    let rows: Vec<String> = f
+        .iter()
+        .map(|p| {
+            let xs: Vec<String> = p.iter().map(|x| format!("\"{x}\"")).collect();
+            format!("[{}]", xs.join(", "))
+        })
+        .collect();
+    format!("[{}]", rows.join(", "))
+}
+
+impl Render for AnyPiecesReport {
+    fn text(&self) -> String {
+        let mut out = String::new();
+        for (i, (f, p)) in self.0.iter().enumerate() {
+            if i > 0 {
+                out.push('\n');
+            }
+            out += &format!(
+                "[[pieces]]\ndomain_in_parent = {}\n\n[pieces.patch]\n",
+                toml_rows(f)
+            );
+            out += &any_patch_to_toml(p)
+                .replace("\n[control_points]\n", "\n[pieces.patch.control_points]\n")
+                .replace("\n[weights]\n", "\n[pieces.patch.weights]\n");
+        }
+        out
+    }
+
+    fn json(&self) -> Json {
+        to_json(&PiecesJson {
+            pieces: self
+                .0
+                .iter()
+                .map(|(f, p)| PieceJson {
+                    domain_in_parent: point_strings(f),
+                    patch: any_patch_to_json(p),
+                })
+                .collect(),
+        })
     }
 }

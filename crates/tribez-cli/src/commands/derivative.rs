@@ -3,12 +3,13 @@
 use std::path::PathBuf;
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
-use super::{CliError, Outcome, at_point, check_direction, parse_list, points_patch};
+use super::{CliError, Outcome, at_point, check_direction, parse_list};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
-use tribez::hazmat::derivative::{check_order, directional_derivative};
+use crate::report::{Render, to_json, tuple};
+use tribez::Patch;
+use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez derivative`.
@@ -40,12 +41,37 @@ pub struct DerivativeReport {
     value: Vec<BigRational>,
 }
 
+/// The JSON of `tribez derivative`.
+#[derive(serde::Serialize)]
+struct DerivativeJson<'a> {
+    patch: &'a str,
+    at: Vec<String>,
+    order: usize,
+    directions: Vec<Vec<String>>,
+    value: Vec<String>,
+}
+
+impl serde::Serialize for DerivativeReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use crate::report::strings;
+        DerivativeJson {
+            patch: &self.file,
+            at: strings(&self.at),
+            order: self.directions.len(),
+            directions: self.directions.iter().map(|d| strings(d)).collect(),
+            value: strings(&self.value),
+        }
+        .serialize(s)
+    }
+}
+
 /// Run `tribez derivative`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = points_patch(&file, "derivative", read_any_patch(&args.patch)?)?;
-    let (m, n) = (patch.net.m(), patch.net.degree());
-    let domain = patch.domain_or_reference();
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let constructions = super::constructions(&patch, &file, "derivative")?;
+    let m = patch.simplex_dim();
+    let domain = constructions.domain();
     let at = at_point(&args.at, args.cartesian, &domain, m)?;
     let mut directions = Vec::new();
     for d in &args.dir {
@@ -67,16 +93,11 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         ));
     }
     let refs: Vec<&[BigRational]> = directions.iter().map(Vec::as_slice).collect();
-    let value = match &rational {
-        None => {
-            check_order(directions.len(), n).map_err(|e| CliError::core(&file, e))?;
-            directional_derivative(&patch.net, &refs, &at)
-        }
-        // rational patches: any order, by Leibniz's rule on the homogeneous net
-        Some(r) => r
-            .derivative_of_order(&at, &refs)
-            .map_err(|e| CliError::core(format!("--at {}", args.at), e))?,
-    };
+    // an order above the degree concerns the patch; anything else the point
+    let value = constructions.derivative(&at, &refs).map_err(|e| match e {
+        CoreError::OrderTooHigh { .. } => CliError::core(&file, e),
+        e => CliError::core(format!("--at {}", args.at), e),
+    })?;
     Outcome::rendered(
         &DerivativeReport {
             file,
@@ -107,12 +128,6 @@ impl Render for DerivativeReport {
     }
 
     fn json(&self) -> Json {
-        json!({
-            "patch": self.file,
-            "at": json_rationals(&self.at),
-            "order": self.directions.len(),
-            "directions": self.directions.iter().map(|d| json_rationals(d)).collect::<Vec<_>>(),
-            "value": json_rationals(&self.value),
-        })
+        to_json(self)
     }
 }

@@ -2,8 +2,8 @@
 
 use std::path::PathBuf;
 
+use super::construct::AnyPatchReport;
 use super::construct::{PatchReport, check_size, child_patch};
-use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::hazmat::any_patch::AnyPatch;

@@ -3,17 +3,11 @@
 
 use std::path::PathBuf;
 
-use serde_json::Value as Json;
-
+use super::construct::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use crate::report::Render;
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::functional::graph;
-use tribez::hazmat::io::patch_file::{
-    any_patch_to_json, any_patch_to_toml, patch_to_json, patch_to_toml, read_any_patch,
-};
-use tribez::hazmat::patch::BezierPatch as Patch;
+use tribez::Patch;
+use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez graph`.
 #[derive(Debug, clap::Args)]
@@ -24,102 +18,16 @@ pub struct Args {
     pub out: OutputArgs,
 }
 
-/// The graph patch; text output is the TOML patch file itself.
-pub struct GraphReport {
-    patch: Patch,
-}
-
 /// Run `tribez graph`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = match read_any_patch(&args.patch)? {
-        AnyPatch::Functional(p) => p,
-        other => {
-            return Err(CliError::Usage(format!(
-                "{file}: `tribez graph` takes a functional patch (kind = \"functional\"), this is a {} patch",
-                other.kind_name()
-            )));
-        }
-    };
-    let g = graph(&patch).map_err(|e| CliError::core(&file, e))?;
-    Outcome::rendered(&GraphReport { patch: g }, args.out.format, true)
-}
-
-impl Render for GraphReport {
-    fn text(&self) -> String {
-        patch_to_toml(&self.patch)
-    }
-
-    fn json(&self) -> Json {
-        patch_to_json(&self.patch)
-    }
-}
-
-/// A patch of any kind, written as a patch file (TOML text, or JSON): the output of commands that
-/// construct rational patches (`elevate`, `subpatch`).
-pub struct AnyPatchReport(pub AnyPatch);
-
-impl Render for AnyPatchReport {
-    fn text(&self) -> String {
-        any_patch_to_toml(&self.0)
-    }
-
-    fn json(&self) -> Json {
-        any_patch_to_json(&self.0)
-    }
-}
-
-/// Pieces of a rational patch (`subdivide`), in the layout of the polynomial pieces report:
-/// `[[pieces]]` with `domain_in_parent` and a `[pieces.patch]` table (now with `weights`).
-pub struct AnyPiecesReport(pub Vec<(Vec<Vec<num_rational::BigRational>>, AnyPatch)>);
-
-fn toml_rows(f: &[Vec<num_rational::BigRational>]) -> String {
-    let rows: Vec<String> = f
-        .iter()
-        .map(|p| {
-            let xs: Vec<String> = p.iter().map(|x| format!("\"{x}\"")).collect();
-            format!("[{}]", xs.join(", "))
-        })
-        .collect();
-    format!("[{}]", rows.join(", "))
-}
-
-impl Render for AnyPiecesReport {
-    fn text(&self) -> String {
-        let mut out = String::new();
-        for (i, (f, p)) in self.0.iter().enumerate() {
-            if i > 0 {
-                out.push('\n');
-            }
-            out += &format!(
-                "[[pieces]]\ndomain_in_parent = {}\n\n[pieces.patch]\n",
-                toml_rows(f)
-            );
-            out += &any_patch_to_toml(p)
-                .replace("\n[control_points]\n", "\n[pieces.patch.control_points]\n")
-                .replace("\n[weights]\n", "\n[pieces.patch.weights]\n");
-        }
-        out
-    }
-
-    fn json(&self) -> Json {
-        Json::Object(
-            [(
-                "pieces".to_string(),
-                Json::Array(
-                    self.0
-                        .iter()
-                        .map(|(f, p)| {
-                            serde_json::json!({
-                                "domain_in_parent": f.iter().map(|v| v.iter().map(ToString::to_string).collect::<Vec<_>>()).collect::<Vec<_>>(),
-                                "patch": any_patch_to_json(p),
-                            })
-                        })
-                        .collect(),
-                ),
-            )]
-            .into_iter()
-            .collect(),
-        )
-    }
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let graph = patch.constructions().and_then(|c| c.graph()).ok_or_else(|| {
+        CliError::Usage(format!(
+            "{file}: `tribez graph` takes a functional patch (kind = \"functional\"), this is a {} patch",
+            patch.kind().name()
+        ))
+    })?;
+    let g = graph.map_err(|e| CliError::core(&file, e))?;
+    Outcome::rendered(&AnyPatchReport(g), args.out.format, true)
 }

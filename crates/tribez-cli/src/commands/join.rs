@@ -2,14 +2,16 @@
 
 use std::path::PathBuf;
 
-use serde_json::{Map, Value as Json, json};
+use serde::Serialize;
+use serde_json::Value as Json;
 
+use super::construct::AnyPatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
-use tribez::hazmat::io::patch_file::{index_key, patch_to_json, patch_to_toml, read_patch};
+use crate::report::{Render, strings, to_json, tuple};
+use tribez::hazmat::any_patch::AnyPatch;
+use tribez::hazmat::io::patch_file::{index_key, read_patch};
 use tribez::hazmat::join::{Join, Violation, analyse, c1_neighbour};
-use tribez::hazmat::patch::BezierPatch as Patch;
 
 /// Arguments of `tribez join`.
 #[derive(Debug, clap::Args)]
@@ -44,18 +46,6 @@ pub struct JoinReport {
     join: Join,
 }
 
-/// A patch written as a patch file (TOML for text, JSON for json).
-pub struct PatchOutput(pub Patch);
-
-impl Render for PatchOutput {
-    fn text(&self) -> String {
-        patch_to_toml(&self.0)
-    }
-    fn json(&self) -> Json {
-        patch_to_json(&self.0)
-    }
-}
-
 /// Run `tribez join`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let afile = args.a.display().to_string();
@@ -83,7 +73,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             })?;
         let b = c1_neighbour(&a, &edge, v)
             .map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
-        return Outcome::rendered(&PatchOutput(b), args.out.format, true);
+        return Outcome::rendered(&AnyPatchReport(AnyPatch::Bezier(b)), args.out.format, true);
     }
     let bpath = args.b.as_ref().ok_or_else(|| {
         CliError::Usage("give two patches (A B), or one with --make-c1 --domain X,Y".into())
@@ -107,62 +97,106 @@ fn condition(rho: usize) -> String {
     format!("C{rho}")
 }
 
-fn points_json(points: &[(Vec<u32>, Vec<num_rational::BigRational>)], labels: &[&str]) -> Json {
-    Json::Array(
-        points
-            .iter()
-            .zip(labels)
-            .map(|((idx, p), who)| json!({"patch": who, "index": index_key(idx), "point": json_rationals(p)}))
-            .collect(),
-    )
+/// One corner of a quadrilateral in a coplanarity violation.
+#[derive(Serialize)]
+struct CornerJson {
+    patch: &'static str,
+    index: String,
+    point: Vec<String>,
 }
 
-/// One violation as JSON (shared with the claim op).
-pub fn violation_json(v: &Violation) -> Json {
-    match v {
-        Violation::Row {
-            rho,
-            index,
-            actual,
-            required,
-            difference,
-        } => json!({
-            "condition": condition(*rho),
-            "index": index_key(index),
-            "actual": json_rationals(actual),
-            "required": json_rationals(required),
-            "difference": json_rationals(difference),
-        }),
-        Violation::Coplanarity {
-            index,
-            points,
-            volume,
-        } => json!({
-            "condition": "coplanarity",
-            "index": index_key(index),
-            "points": points_json(points, &["A", "A", "A", "B"]),
-            "volume": volume.to_string(),
-        }),
-        Violation::G1 {
-            reason,
-            determinant,
-            witness,
-        } => {
-            let mut o = Map::new();
-            o.insert("condition".into(), json!("G1"));
-            o.insert("reason".into(), json!(reason));
-            if let Some(d) = determinant {
-                o.insert("determinant".into(), json!(d.to_text(&["t"])));
-            }
-            if let Some(w) = witness {
-                let mut wj = json!({"t": w.t.to_string(), "at": json_rationals(&w.at), "value": w.value.to_string()});
-                if let (Some(na), Some(nb)) = (&w.normal_a, &w.normal_b) {
-                    wj["normal_a"] = json_rationals(na);
-                    wj["normal_b"] = json_rationals(nb);
-                }
-                o.insert("witness".into(), wj);
-            }
-            Json::Object(o)
+/// Where a G1 violation shows: the parameter, A's point, the value, and the normals.
+#[derive(Serialize)]
+struct WitnessJson {
+    t: String,
+    at: Vec<String>,
+    value: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    normal_a: Option<Vec<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    normal_b: Option<Vec<String>>,
+}
+
+/// One violated condition, as JSON: `condition` names it (`C1`, `coplanarity`, `G1`).
+#[derive(Serialize)]
+#[serde(untagged)]
+enum ViolationJson<'a> {
+    Row {
+        condition: String,
+        index: String,
+        actual: Vec<String>,
+        required: Vec<String>,
+        difference: Vec<String>,
+    },
+    Coplanarity {
+        condition: &'static str,
+        index: String,
+        points: Vec<CornerJson>,
+        volume: String,
+    },
+    G1 {
+        condition: &'static str,
+        reason: &'a str,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        determinant: Option<String>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        witness: Option<WitnessJson>,
+    },
+}
+
+impl<'a> From<&'a Violation> for ViolationJson<'a> {
+    fn from(v: &'a Violation) -> Self {
+        match v {
+            Violation::Row {
+                rho,
+                index,
+                actual,
+                required,
+                difference,
+            } => ViolationJson::Row {
+                condition: condition(*rho),
+                index: index_key(index),
+                actual: strings(actual),
+                required: strings(required),
+                difference: strings(difference),
+            },
+            Violation::Coplanarity {
+                index,
+                points,
+                volume,
+            } => ViolationJson::Coplanarity {
+                condition: "coplanarity",
+                index: index_key(index),
+                points: points
+                    .iter()
+                    .zip(["A", "A", "A", "B"])
+                    .map(|((idx, p), patch)| CornerJson {
+                        patch,
+                        index: index_key(idx),
+                        point: strings(p),
+                    })
+                    .collect(),
+                volume: volume.to_string(),
+            },
+            Violation::G1 {
+                reason,
+                determinant,
+                witness,
+            } => ViolationJson::G1 {
+                condition: "G1",
+                reason,
+                determinant: determinant.as_ref().map(|d| d.to_text(&["t"])),
+                witness: witness.as_ref().map(|w| {
+                    let normals = w.normal_a.as_ref().zip(w.normal_b.as_ref());
+                    WitnessJson {
+                        t: w.t.to_string(),
+                        at: strings(&w.at),
+                        value: w.value.to_string(),
+                        normal_a: normals.map(|(na, _)| strings(na)),
+                        normal_b: normals.map(|(_, nb)| strings(nb)),
+                    }
+                }),
+            },
         }
     }
 }
@@ -223,8 +257,62 @@ fn violation_text(v: &Violation) -> String {
     }
 }
 
-fn opt_bool(b: Option<bool>) -> Json {
-    b.map_or(Json::Null, Json::Bool)
+/// The domain edge two patches share.
+#[derive(Serialize)]
+struct SharedEdgeJson {
+    vertices: Vec<Vec<String>>,
+    a_vertices: Vec<usize>,
+    b_vertices: Vec<usize>,
+}
+
+/// The JSON of `tribez join`.
+#[derive(Serialize)]
+struct JoinJson<'a> {
+    a: &'a str,
+    b: &'a str,
+    degree: usize,
+    shared_edge: SharedEdgeJson,
+    mu: Vec<String>,
+    opposite_sides: bool,
+    c0: bool,
+    c1: bool,
+    g1: Option<bool>,
+    coplanarity: Option<bool>,
+    max_smoothness: i64,
+    rows_agree: &'a [bool],
+    g1_minors: Vec<String>,
+    violations: Vec<ViolationJson<'a>>,
+    notes: &'a [String],
+}
+
+impl Serialize for JoinReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let j = &self.join;
+        let f = &j.facet;
+        let one = |v: &[usize]| v.iter().map(|k| k + 1).collect::<Vec<_>>();
+        JoinJson {
+            a: &self.a,
+            b: &self.b,
+            degree: self.degree,
+            shared_edge: SharedEdgeJson {
+                vertices: f.vertices.iter().map(|v| strings(v)).collect(),
+                a_vertices: one(&f.a),
+                b_vertices: one(&f.b),
+            },
+            mu: strings(&j.mu),
+            opposite_sides: j.opposite_sides,
+            c0: j.c0,
+            c1: j.c1,
+            g1: j.g1,
+            coplanarity: j.coplanarity,
+            max_smoothness: j.max_smoothness,
+            rows_agree: &j.rows_agree,
+            g1_minors: j.g1_minors.iter().map(|p| p.to_text(&["t"])).collect(),
+            violations: j.violations.iter().map(ViolationJson::from).collect(),
+            notes: &j.notes,
+        }
+        .serialize(s)
+    }
 }
 
 impl Render for JoinReport {
@@ -286,29 +374,6 @@ impl Render for JoinReport {
     }
 
     fn json(&self) -> Json {
-        let j = &self.join;
-        let f = &j.facet;
-        let one = |v: &[usize]| v.iter().map(|k| k + 1).collect::<Vec<_>>();
-        json!({
-            "a": self.a,
-            "b": self.b,
-            "degree": self.degree,
-            "shared_edge": {
-                "vertices": f.vertices.iter().map(|v| json_rationals(v)).collect::<Vec<_>>(),
-                "a_vertices": one(&f.a),
-                "b_vertices": one(&f.b),
-            },
-            "mu": json_rationals(&j.mu),
-            "opposite_sides": j.opposite_sides,
-            "c0": j.c0,
-            "c1": j.c1,
-            "g1": opt_bool(j.g1),
-            "coplanarity": opt_bool(j.coplanarity),
-            "max_smoothness": j.max_smoothness,
-            "rows_agree": j.rows_agree,
-            "g1_minors": j.g1_minors.iter().map(|p| p.to_text(&["t"])).collect::<Vec<_>>(),
-            "violations": j.violations.iter().map(violation_json).collect::<Vec<_>>(),
-            "notes": j.notes,
-        })
+        to_json(self)
     }
 }

@@ -3,12 +3,12 @@
 //! the canonical order of docs/theory.md §1 (the order of the Wikipedia article's 10×10 matrix).
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::construct::{barycentric_points, parse_edge};
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
-use crate::report::Render;
+use crate::report::{Render, to_json};
 use tribez::hazmat::blossom::subpatch_matrix;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::simplex::{self, Simplex};
@@ -154,6 +154,27 @@ fn latex_number(q: &BigRational) -> String {
     }
 }
 
+/// The JSON of `tribez matrix`: the multi-indices in the canonical order, and the rows.
+#[derive(serde::Serialize)]
+struct MatrixJson {
+    order: Vec<Vec<u32>>,
+    rows: Vec<Vec<String>>,
+}
+
+impl serde::Serialize for MatrixReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        MatrixJson {
+            order: self.order.iter().map(<[u32]>::to_vec).collect(),
+            rows: self
+                .rows
+                .iter()
+                .map(|r| crate::report::strings(r))
+                .collect(),
+        }
+        .serialize(s)
+    }
+}
+
 impl Render for MatrixReport {
     fn text(&self) -> String {
         let cells: Vec<Vec<String>> = self
@@ -192,10 +213,7 @@ impl Render for MatrixReport {
         out
     }
     fn json(&self) -> Json {
-        json!({
-            "order": self.order.iter().map(<[u32]>::to_vec).collect::<Vec<_>>(),
-            "rows": self.rows.iter().map(|r| r.iter().map(ToString::to_string).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        })
+        to_json(self)
     }
     fn latex(&self) -> Option<String> {
         let rows: Vec<String> = self

@@ -30,7 +30,7 @@ use std::path::PathBuf;
 use clap::Parser;
 
 use crate::cli::{LatexOutputArgs, OutputArgs, examples};
-use crate::report::{Format, Render, render};
+use crate::report::{Exporter, Format, JunitExporter, Render, render};
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::InputError;
 use tribez::hazmat::number::parse_rational;
@@ -188,6 +188,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
         Command::Graph(a) => (graph::run(a), &a.out),
+        Command::Check(a) if a.results.is_some() => (batch::run(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),
@@ -231,6 +232,14 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     output::stage(path, bytes)
 }
 
+/// Stage the JUnit XML of `report` as `path` (see [`write_atomically`]).
+pub fn write_junit(path: &Path, report: &dyn Render) -> Result<(), CliError> {
+    let xml = JunitExporter
+        .export(report)
+        .ok_or_else(|| CliError::Usage("--junit is not available for this command".into()))?;
+    output::stage(path, xml.as_bytes())
+}
+
 /// Parse a comma-separated list of exact numbers from the command line (`1/2,1/3,1/6`).
 pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> {
     text.split(',')
@@ -263,6 +272,21 @@ pub fn at_point(
         check_barycentric(&p, m, "point").map_err(|e| CliError::core(&what, e))?;
         Ok(p)
     }
+}
+
+/// The constructions of `patch` (read from `file`) for `tribez {command}`; a kind without them
+/// (S-patches) is a usage error naming the command.
+pub fn constructions<'a>(
+    patch: &'a tribez::Patch,
+    file: &str,
+    command: &str,
+) -> Result<Box<dyn tribez::Constructions + 'a>, CliError> {
+    patch.constructions().ok_or_else(|| {
+        CliError::Usage(format!(
+            "{file}: `tribez {command}` does not take {}",
+            patch.kind().plural()
+        ))
+    })
 }
 
 /// A patch for the commands that take polynomial and rational patches alike: its points patch,

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use serde_json::Value as Json;
 
+use super::construct::AnyPatchReport;
 use super::construct::{PatchReport, barycentric_points, child_patch};
-use super::graph::AnyPatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
@@ -55,14 +55,7 @@ impl Render for RationalSubpatchReport {
         }
     }
     fn json(&self) -> Json {
-        let mut j = AnyPatchReport(self.patch.clone()).json();
-        j["domain_in_parent"] = Json::Array(
-            self.domain_in_parent
-                .iter()
-                .map(|p| Json::Array(p.iter().map(|x| Json::String(x.to_string())).collect()))
-                .collect(),
-        );
-        j
+        super::construct::json_with_any(&self.patch, Some(&self.domain_in_parent))
     }
 }
 

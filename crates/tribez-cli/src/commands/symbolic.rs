@@ -1,21 +1,20 @@
 //! `tribez symbolic`: the patch as polynomials with exact coefficients.
 //!
-//! A rational patch prints its numerators `Σ w_α c_α B_α` and the common denominator
-//! `Σ w_α B_α`; an S-patch prints its rational form in `x, y` (docs/theory.md §12): numerators
-//! `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
+//! Every kind gives its form through [`tribez::ExactEval::symbolic`]: a rational patch its
+//! numerators `Σ w_α c_α B_α` and the common denominator `Σ w_α B_α`; an S-patch its rational
+//! form in `x, y` (docs/theory.md §12): numerators `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d`.
 
 use std::path::PathBuf;
 
-use serde_json::{Value as Json, json};
+use serde::Serialize;
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
-use crate::report::Render;
-use tribez::hazmat::any_patch::AnyPatch;
+use crate::report::{Render, to_json};
+use tribez::Patch;
 use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::symbolic::{
-    Polynomial, barycentric_form, barycentric_names, cartesian_form, cartesian_names,
-};
+use tribez::hazmat::symbolic::Polynomial;
 
 /// Arguments of `tribez symbolic`.
 #[derive(Debug, clap::Args)]
@@ -40,54 +39,13 @@ pub struct SymbolicReport {
 
 /// Run `tribez symbolic`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let patch = match read_any_patch(&args.patch)? {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p,
-        AnyPatch::Rational(r) => {
-            let m = r.patch.net.m();
-            let mut h = r.homogeneous_form();
-            let names = if args.cartesian {
-                let subs = tribez::hazmat::symbolic::barycentric_of_cartesian(
-                    &r.patch.domain_or_reference(),
-                );
-                h = h.iter().map(|p| p.compose(&subs)).collect();
-                cartesian_names(m)
-            } else {
-                barycentric_names(m)
-            };
-            let denominator = h.pop();
-            let report = SymbolicReport {
-                file: args.patch.display().to_string(),
-                names,
-                components: h,
-                denominator,
-            };
-            return Outcome::rendered(&report, args.out.format, true);
-        }
-        AnyPatch::SPatch(s) => {
-            let (components, den) = s.rational_form();
-            let report = SymbolicReport {
-                file: args.patch.display().to_string(),
-                names: cartesian_names(2),
-                components,
-                denominator: Some(den),
-            };
-            return Outcome::rendered(&report, args.out.format, true);
-        }
-    };
-    let m = patch.net.m();
-    let (names, components) = if args.cartesian {
-        (
-            cartesian_names(m),
-            cartesian_form(&patch.net, &patch.domain_or_reference()),
-        )
-    } else {
-        (barycentric_names(m), barycentric_form(&patch.net))
-    };
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let form = patch.exact().symbolic(args.cartesian);
     let report = SymbolicReport {
         file: args.patch.display().to_string(),
-        names,
-        components,
-        denominator: None,
+        names: form.names,
+        components: form.components,
+        denominator: form.denominator,
     };
     Outcome::rendered(&report, args.out.format, true)
 }
@@ -95,6 +53,46 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 impl SymbolicReport {
     fn names(&self) -> Vec<&str> {
         self.names.iter().map(String::as_str).collect()
+    }
+}
+
+/// One term of a polynomial in JSON: its exact coefficient and the exponents of the variables.
+#[derive(Serialize)]
+struct TermJson<'a> {
+    coefficient: String,
+    exponents: &'a [u32],
+}
+
+/// The JSON of `tribez symbolic`: the variables, each component as its list of terms, and the
+/// common denominator (rational patches, S-patches) as text.
+#[derive(Serialize)]
+struct SymbolicJson<'a> {
+    variables: &'a [String],
+    components: Vec<Vec<TermJson<'a>>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    denominator: Option<String>,
+}
+
+impl Serialize for SymbolicReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        SymbolicJson {
+            variables: &self.names,
+            components: self
+                .components
+                .iter()
+                .map(|p| {
+                    p.terms()
+                        .into_iter()
+                        .map(|(e, c)| TermJson {
+                            coefficient: c.to_string(),
+                            exponents: e,
+                        })
+                        .collect()
+                })
+                .collect(),
+            denominator: self.denominator.as_ref().map(|d| d.to_text(&self.names())),
+        }
+        .serialize(s)
     }
 }
 
@@ -116,23 +114,7 @@ impl Render for SymbolicReport {
     }
 
     fn json(&self) -> Json {
-        let components: Vec<Json> = self
-            .components
-            .iter()
-            .map(|p| {
-                Json::Array(
-                    p.terms()
-                        .into_iter()
-                        .map(|(e, c)| json!({ "coefficient": c.to_string(), "exponents": e }))
-                        .collect(),
-                )
-            })
-            .collect();
-        let mut out = json!({ "variables": self.names, "components": components });
-        if let Some(d) = &self.denominator {
-            out["denominator"] = json!(d.to_text(&self.names()));
-        }
-        out
+        to_json(self)
     }
 
     fn latex(&self) -> Option<String> {

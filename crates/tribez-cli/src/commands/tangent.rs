@@ -3,12 +3,14 @@
 use std::path::PathBuf;
 
 use num_rational::BigRational;
-use serde_json::{Map, Value as Json, json};
+use serde_json::Value as Json;
 
-use super::{CliError, Outcome, at_point, points_patch};
+use super::{CliError, Outcome, at_point};
 use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
-use tribez::hazmat::derivative::{TangentFrame, tangent_frame};
+use crate::report::ser::OrderedMap;
+use crate::report::{Render, strings, to_json, tuple};
+use tribez::Patch;
+use tribez::hazmat::derivative::TangentFrame;
 use tribez::hazmat::io::patch_file::{index_key, read_any_patch};
 use tribez::hazmat::symbolic::cartesian_names;
 
@@ -39,21 +41,23 @@ pub struct TangentReport {
 /// Run `tribez tangent`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (patch, rational) = points_patch(&file, "tangent", read_any_patch(&args.patch)?)?;
-    let m = patch.net.m();
-    let domain = patch.domain_or_reference();
-    let at = at_point(&args.at, args.cartesian, &domain, m)?;
-    let frame = match &rational {
-        None => tangent_frame(&patch.net, &domain, &at),
-        Some(r) => r.tangent_frame(&domain, &at),
-    }
-    .map_err(|e| CliError::core(&file, e))?;
-    let rational = rational.is_some();
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let constructions = super::constructions(&patch, &file, "tangent")?;
+    let at = at_point(
+        &args.at,
+        args.cartesian,
+        &constructions.domain(),
+        patch.simplex_dim(),
+    )?;
+    let frame = constructions
+        .tangent_frame(&at)
+        .map_err(|e| CliError::core(&file, e))?;
+    let rational = constructions.projected();
     Outcome::rendered(
         &TangentReport {
             file,
             rational,
-            degree: patch.net.degree(),
+            degree: patch.degree(),
             at,
             frame,
         },
@@ -67,6 +71,51 @@ impl TangentReport {
         let mut e = vec![0u32; self.at.len()];
         e[k] = 1;
         index_key(&e)
+    }
+}
+
+/// The JSON of `tribez tangent`.
+#[derive(serde::Serialize)]
+struct TangentJson<'a> {
+    patch: &'a str,
+    at: Vec<String>,
+    point: Vec<String>,
+    /// `"1,0,0"` → the de Casteljau point of level n − 1 at that unit index.
+    intermediate: OrderedMap<Vec<String>>,
+    /// `"x"` → the partial derivative.
+    partials: OrderedMap<Vec<String>>,
+    normal: Option<Vec<String>>,
+    normal_from_intermediate: Option<Vec<String>>,
+    regular: bool,
+}
+
+impl serde::Serialize for TangentReport {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let f = &self.frame;
+        let m = self.at.len() - 1;
+        TangentJson {
+            patch: &self.file,
+            at: strings(&self.at),
+            point: strings(&f.point),
+            intermediate: OrderedMap(
+                f.intermediate
+                    .iter()
+                    .enumerate()
+                    .map(|(k, p)| (self.unit_key(k), strings(p)))
+                    .collect(),
+            ),
+            partials: OrderedMap(
+                cartesian_names(m)
+                    .into_iter()
+                    .zip(&f.partials)
+                    .map(|(name, p)| (name, strings(p)))
+                    .collect(),
+            ),
+            normal: f.normal.as_deref().map(strings),
+            normal_from_intermediate: f.normal_from_intermediate.as_deref().map(strings),
+            regular: f.regular,
+        }
+        .serialize(s)
     }
 }
 
@@ -120,27 +169,6 @@ impl Render for TangentReport {
     }
 
     fn json(&self) -> Json {
-        let f = &self.frame;
-        let m = self.at.len() - 1;
-        let mut inter = Map::new();
-        for (k, p) in f.intermediate.iter().enumerate() {
-            inter.insert(self.unit_key(k), json_rationals(p));
-        }
-        let mut partials = Map::new();
-        for (name, p) in cartesian_names(m).iter().zip(&f.partials) {
-            partials.insert(name.clone(), json_rationals(p));
-        }
-        let opt =
-            |v: &Option<Vec<BigRational>>| v.as_ref().map_or(Json::Null, |x| json_rationals(x));
-        json!({
-            "patch": self.file,
-            "at": json_rationals(&self.at),
-            "point": json_rationals(&f.point),
-            "intermediate": inter,
-            "partials": partials,
-            "normal": opt(&f.normal),
-            "normal_from_intermediate": opt(&f.normal_from_intermediate),
-            "regular": f.regular,
-        })
+        to_json(self)
     }
 }

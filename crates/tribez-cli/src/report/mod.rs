@@ -1,5 +1,6 @@
-//! Reports out: every command's result renders as text for people, JSON for machines and,
-//! where it makes sense, LaTeX.
+//! Reports out: every command produces a report value ([`Render`]); one [`Exporter`] per
+//! format writes it: text for people, JSON for machines, LaTeX where the result is a formula or
+//! a matrix, JUnit XML for the judging reports.
 
 use serde_json::Value as Json;
 
@@ -14,7 +15,10 @@ pub enum Format {
     Latex,
 }
 
-/// A command's result, renderable in each format.
+/// A command's result: what every command produces, rendered by one of the [`Exporter`]s.
+///
+/// Reports are typed values; their JSON comes from `#[derive(Serialize)]` (with [`to_json`]),
+/// never from hand-built JSON.
 pub trait Render {
     /// Text for people.
     fn text(&self) -> String;
@@ -24,26 +28,85 @@ pub trait Render {
     fn latex(&self) -> Option<String> {
         None
     }
+    /// JUnit test cases, for the judging reports (`check`, `certify`).
+    fn junit(&self) -> Option<JunitSuite> {
+        None
+    }
+}
+
+/// One way of writing a report: text, JSON, LaTeX or JUnit XML (as hyperfine's exporters).
+pub trait Exporter {
+    /// The report in this format; `None` when the format does not apply to it.
+    fn export(&self, report: &dyn Render) -> Option<String>;
+}
+
+/// Text for people.
+pub struct TextExporter;
+/// Pretty-printed JSON (two-space indents), with a final newline.
+pub struct JsonExporter;
+/// LaTeX, for formulas and matrices.
+pub struct LatexExporter;
+/// JUnit XML, for CI dashboards: one `<testsuite>`, one `<testcase>` per claim file (or
+/// results file, or algorithm and precision), with a `<failure>` listing what failed.
+pub struct JunitExporter;
+
+impl Exporter for TextExporter {
+    fn export(&self, report: &dyn Render) -> Option<String> {
+        Some(report.text())
+    }
+}
+
+impl Exporter for JsonExporter {
+    fn export(&self, report: &dyn Render) -> Option<String> {
+        Some(format!("{:#}\n", report.json()))
+    }
+}
+
+impl Exporter for LatexExporter {
+    fn export(&self, report: &dyn Render) -> Option<String> {
+        report.latex()
+    }
+}
+
+impl Exporter for JunitExporter {
+    fn export(&self, report: &dyn Render) -> Option<String> {
+        report.junit().map(|s| junit_xml(s.suite, &s.cases))
+    }
+}
+
+/// The exporter of an output format.
+pub fn exporter(format: Format) -> &'static dyn Exporter {
+    match format {
+        Format::Text => &TextExporter,
+        Format::Json => &JsonExporter,
+        Format::Latex => &LatexExporter,
+    }
 }
 
 /// Render `r` in `format`; `None` when the format does not apply to this result.
 pub fn render(r: &dyn Render, format: Format) -> Option<String> {
-    match format {
-        Format::Text => Some(r.text()),
-        Format::Json => Some(format!("{:#}\n", r.json())),
-        Format::Latex => r.latex(),
-    }
+    exporter(format).export(r)
 }
 
-/// `value` as pretty-printed JSON (two-space indents) and a final newline: how every JSON
-/// report and file is written.
+/// A typed report as JSON (through its `Serialize` impl).
+pub fn to_json(report: &impl serde::Serialize) -> Json {
+    serde_json::to_value(report).unwrap_or(Json::Null)
+}
+
+/// `value` as pretty-printed JSON (two-space indents) and a final newline: how JSON files are
+/// written.
 pub fn pretty_json(value: &impl serde::Serialize) -> String {
     let mut text = serde_json::to_string_pretty(value).unwrap_or_else(|_| "null".into());
     text.push('\n');
     text
 }
 
-/// Exact rationals as JSON strings.
+/// Exact rationals as strings `p/q` (lowest terms), for JSON.
+pub fn strings(xs: &[num_rational::BigRational]) -> Vec<String> {
+    xs.iter().map(ToString::to_string).collect()
+}
+
+/// Exact rationals as a JSON array of strings.
 pub fn json_rationals(xs: &[num_rational::BigRational]) -> Json {
     Json::Array(xs.iter().map(|x| Json::String(x.to_string())).collect())
 }
@@ -53,12 +116,12 @@ pub fn tuple(xs: &[num_rational::BigRational]) -> String {
     tribez::hazmat::domain::format_tuple(xs)
 }
 
-/// The reports of `check` and `certify`: text and JSON (through [`Render`]) plus JUnit XML for
-/// CI dashboards. One trait for the three formats of a judging report.
-pub trait Exporter: Render {
-    /// JUnit XML: one `<testsuite>`, one `<testcase>` per claim file (or results file, or
-    /// algorithm), with a `<failure>` listing what failed.
-    fn junit(&self) -> String;
+/// The test cases of a JUnit report, under the suite name `suite` (`check`, `certify`).
+pub struct JunitSuite {
+    /// The suite's name.
+    pub suite: &'static str,
+    /// Its cases.
+    pub cases: Vec<JunitCase>,
 }
 
 /// One JUnit test case: name, number of failures and the failure text (empty when it passed).
@@ -72,7 +135,7 @@ pub struct JunitCase {
 }
 
 /// JUnit XML for `cases` under the suite name `suite`.
-pub fn junit_xml(suite: &str, cases: &[JunitCase]) -> String {
+fn junit_xml(suite: &str, cases: &[JunitCase]) -> String {
     let failed = cases.iter().filter(|c| !c.failures.is_empty()).count();
     let mut out = format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"tribez\" tests=\"{}\" failures=\"{failed}\">\n  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failed}\" errors=\"0\">\n",
@@ -116,4 +179,28 @@ pub fn xml_escape(s: &str) -> String {
         }
     }
     out
+}
+
+/// Serialization helpers of the typed reports.
+pub mod ser {
+    use num_rational::BigRational;
+    use serde::ser::{SerializeMap, Serializer};
+
+    /// Exact rationals as a list of strings `p/q` (`#[serde(serialize_with)]`).
+    pub fn rationals<S: Serializer>(xs: &[BigRational], s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(xs.iter().map(ToString::to_string))
+    }
+
+    /// A JSON object whose keys keep their order.
+    pub struct OrderedMap<V>(pub Vec<(String, V)>);
+
+    impl<V: serde::Serialize> serde::Serialize for OrderedMap<V> {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            let mut map = s.serialize_map(Some(self.0.len()))?;
+            for (k, v) in &self.0 {
+                map.serialize_entry(k, v)?;
+            }
+            map.end()
+        }
+    }
 }

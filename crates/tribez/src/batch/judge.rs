@@ -7,6 +7,7 @@ use super::parse::Num;
 use super::report::FailedCoord;
 use super::{BatchError, BatchOptions};
 use crate::certify::bound::{a_priori, condition};
+use crate::certify::filter::cartesian::CartesianMap;
 use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
 use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
 use crate::exact::{Algorithm, ExactEvaluator};
@@ -42,6 +43,8 @@ pub(super) struct Prepared {
     pub(super) cartesian: bool,
     pub(super) row_detail: bool,
     pub(super) filter: Option<(Filter, Thresholds)>,
+    /// Cartesian rows: the barycentric map in floats, with radii (docs/theory.md §14.5).
+    pub(super) cartesian_map: Option<CartesianMap>,
     pub(super) seen: ExactEvaluator,
     pub(super) seen_net: ControlNet<BigRational>,
     pub(super) intended: ExactEvaluator,
@@ -70,13 +73,20 @@ impl Prepared {
         };
         let (m, n) = (patch.net.m(), patch.net.degree());
         let tolerance = tolerance.for_patch(m, n);
-        let filter = precision.filter(|_| !cartesian).map(|p| {
-            let fnet = seen_net.map(crate::number::round_f64);
-            (
-                Filter::new(&fnet),
-                Thresholds::new(&tolerance, p, algorithm, m, n),
-            )
-        });
+        let cartesian_map = if cartesian {
+            CartesianMap::new(&patch.domain_or_reference())
+        } else {
+            None
+        };
+        let filter = precision
+            .filter(|_| !cartesian || cartesian_map.is_some())
+            .map(|p| {
+                let fnet = seen_net.map(crate::number::round_f64);
+                (
+                    Filter::new(&fnet),
+                    Thresholds::new(&tolerance, p, algorithm, m, n),
+                )
+            });
         Ok(Prepared {
             seen: ExactEvaluator::new(&seen_net),
             intended: ExactEvaluator::new(&patch.net),
@@ -88,6 +98,7 @@ impl Prepared {
             cartesian,
             row_detail,
             filter,
+            cartesian_map,
         })
     }
 
@@ -260,7 +271,25 @@ impl Prepared {
                 ulps,
                 ulps_lower,
                 tight,
-            } = filter.judge_tight(th, lambda, ys, sc, enc);
+            } = match &self.cartesian_map {
+                None => filter.judge_tight(th, lambda, ys, sc, enc),
+                Some(map) => {
+                    let (mut bary, mut radius) = (Vec::new(), Vec::new());
+                    if map.barycentric(lambda, &mut bary, &mut radius) {
+                        filter.judge_tight_uncertain(th, &bary, &radius, ys, sc, enc)
+                    } else {
+                        RowJudgement {
+                            decision: Decision::Undecided,
+                            ulps: f64::INFINITY,
+                            ulps_lower: 0.0,
+                            tight: false,
+                        }
+                    }
+                }
+            };
+            // Cartesian figures are rigorous but never "loose" plain-stage ones: the settling
+            // pass (barycentric inputs only) computes straddling rows exactly instead
+            let tight = tight || self.cartesian_map.is_some();
             match decision {
                 Decision::Pass => {
                     return RowOutcome {
@@ -344,6 +373,12 @@ impl Prepared {
             return;
         };
         if !o.ulps.is_finite() {
+            return;
+        }
+        // Cartesian rows: the widened enclosure's ends are the figures (upper bounds, like every
+        // filter-decided row's); settling straddling rows exactly would cost the exact
+        // arithmetic the filter saved for most rows (their enclosures are a few ulps wide)
+        if self.cartesian_map.is_some() {
             return;
         }
         if o.loose {

@@ -68,7 +68,7 @@ pub(super) fn parse_num(
         line: Some(line),
         column: Some(f.column),
         key: None,
-        problem: msg.into(),
+        problem: Box::new(msg.into()),
         named_at: None,
     };
     match precision {
@@ -330,11 +330,13 @@ impl<R: BufRead> RowReader<R> {
                     line: Some(self.line),
                     column: None,
                     key: None,
-                    problem: format!(
-                        "the line is longer than the limit of {} MiB",
-                        MAX_ROW_BYTES >> 20
-                    )
-                    .into(),
+                    problem: Box::new(
+                        format!(
+                            "the line is longer than the limit of {} MiB",
+                            MAX_ROW_BYTES >> 20
+                        )
+                        .into(),
+                    ),
                     named_at: None,
                 });
             }
@@ -386,7 +388,7 @@ impl<R: BufRead> RowReader<R> {
                                     line: Some(self.line),
                                     column: None,
                                     key: None,
-                                    problem: Problem::HeaderWidth { names, expected: n },
+                                    problem: Box::new(Problem::HeaderWidth { names, expected: n }),
                                     named_at: None,
                                 });
                             }
@@ -580,7 +582,7 @@ fn located(file: &str, line: usize, col: usize, message: String) -> InputError {
         line: Some(line),
         column: Some(col),
         key: None,
-        problem: message.into(),
+        problem: Box::new(message.into()),
         named_at: None,
     }
 }
@@ -600,7 +602,7 @@ pub(super) fn split_json_row<'a>(
         line: Some(l),
         column: Some(c),
         key: None,
-        problem: message.into(),
+        problem: Box::new(message.into()),
         named_at: None,
     };
     if let Err(e) = serde_json::from_str::<serde::de::IgnoredAny>(text.trim_end()) {
@@ -713,12 +715,14 @@ pub(super) fn parse_row(
             line: Some(line),
             column: (format == Format::JsonArray).then_some(col),
             key: None,
-            problem: format!(
+            problem: Box::new(
+            format!(
                 "{} columns, expected {} ({width} input coordinates, then the {dim} claimed coordinates of the point)",
                 fields.len(),
                 width + dim
             )
             .into(),
+            ),
             named_at: None,
         });
     }
@@ -758,7 +762,7 @@ pub(super) fn texts_of(
         .collect()
 }
 
-/// Fuzzing entry (see [`crate::io::fuzz`]): every row of `data` read as a results file in
+/// Fuzzing entry (see [`crate::fuzz`]): every row of `data` read as a results file in
 /// `format` and parsed; the first byte chooses the input width (1 to 4), the claimed dimension
 /// (1 to 3) and the precision (none, f64, f32). Errors are fine; a panic or a hang is the bug.
 pub(crate) fn fuzz_rows(format: Format, data: &[u8]) {

@@ -14,7 +14,8 @@ use num_rational::BigRational;
 use crate::any_patch::AnyPatch;
 use crate::capability::traits::{
     BoundText, Constructions, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
-    InputSpace, Narrow, PointEvaluator, Seen, Shape, exact_values, narrowed, round_input,
+    InputSpace, Narrow, PointEvaluator, Seen, Shape, SymbolicForm, exact_values, narrowed,
+    round_input,
 };
 use crate::certify::Certifier;
 use crate::error::CoreError;
@@ -70,6 +71,26 @@ impl ExactEval for BezierPatch {
     fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         self.domain_or_reference().barycentric(x)
     }
+
+    fn symbolic(&self, cartesian: bool) -> SymbolicForm {
+        use crate::symbolic::{
+            barycentric_form, barycentric_names, cartesian_form, cartesian_names,
+        };
+        let m = self.net.m();
+        let (names, components) = if cartesian {
+            (
+                cartesian_names(m),
+                cartesian_form(&self.net, &self.domain_or_reference()),
+            )
+        } else {
+            (barycentric_names(m), barycentric_form(&self.net))
+        };
+        SymbolicForm {
+            names,
+            components,
+            denominator: None,
+        }
+    }
 }
 
 const ALGORITHMS: &[Algorithm] = &[Algorithm::Casteljau, Algorithm::Bernstein];
@@ -88,8 +109,8 @@ impl FloatEval for BezierPatch {
 
     fn float_program(&self, precision: Precision) -> Result<Box<dyn FloatProgram + '_>, CoreError> {
         Ok(match precision {
-            Precision::F64 => Box::new(Program::<f64>::new(&self.net)),
-            Precision::F32 => Box::new(Program::<f32>::new(&self.net)),
+            Precision::F64 => Box::new(Program::<f64>::new(&self.net)?),
+            Precision::F32 => Box::new(Program::<f32>::new(&self.net)?),
         })
     }
 }
@@ -101,10 +122,17 @@ struct Program<F: Narrow> {
 }
 
 impl<F: Narrow> Program<F> {
-    fn new(net: &ControlNet<BigRational>) -> Self {
-        Program {
-            cert: Certifier::new(net),
+    /// An error if a control point overflows `F` (its exact value would be unknown).
+    fn new(net: &ControlNet<BigRational>) -> Result<Self, CoreError> {
+        if net.coords().iter().any(|q| !F::round(q).finite()) {
+            return Err(CoreError::Overflows {
+                what: "a control point",
+                precision: F::PRECISION.name(),
+            });
         }
+        Ok(Program {
+            cert: Certifier::new(net),
+        })
     }
 }
 
@@ -193,6 +221,8 @@ pub(crate) struct Polynomial<'a> {
     pub patch: &'a BezierPatch,
     /// Back to the kind.
     pub wrap: fn(BezierPatch) -> AnyPatch,
+    /// A functional patch (it has a graph).
+    pub functional: bool,
 }
 
 impl Constructions for Polynomial<'_> {
@@ -216,5 +246,34 @@ impl Constructions for Polynomial<'_> {
             .into_iter()
             .map(|net| (self.wrap)(with_net(self.patch, net)))
             .collect())
+    }
+
+    fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {
+        self.functional
+            .then(|| crate::functional::graph(self.patch).map(AnyPatch::Bezier))
+    }
+
+    fn domain(&self) -> crate::domain::Domain {
+        self.patch.domain_or_reference()
+    }
+
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        crate::derivative::check_order(directions.len(), self.patch.net.degree())?;
+        Ok(crate::derivative::directional_derivative(
+            &self.patch.net,
+            directions,
+            at,
+        ))
+    }
+
+    fn tangent_frame(
+        &self,
+        at: &[BigRational],
+    ) -> Result<crate::derivative::TangentFrame, CoreError> {
+        crate::derivative::tangent_frame(&self.patch.net, &self.domain(), at)
     }
 }

@@ -10,5 +10,5 @@ pub mod traits;
 
 pub use traits::{
     BoundText, Constructions, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase,
-    FloatEval, FloatProgram, InputSpace, PointEvaluator, Seen, Shape,
+    FloatEval, FloatProgram, InputSpace, PointEvaluator, Seen, Shape, SymbolicForm,
 };

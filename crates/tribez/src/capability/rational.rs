@@ -9,6 +9,8 @@
 
 use num_rational::BigRational;
 
+use crate::capability::traits::SymbolicForm;
+
 use crate::any_patch::AnyPatch;
 use crate::capability::bezier::check_len;
 use crate::capability::traits::{
@@ -51,6 +53,27 @@ impl ExactEval for RationalPatch {
 
     fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         self.patch.domain_or_reference().barycentric(x)
+    }
+
+    /// The homogeneous form `(Σ w_α c_α B_α, Σ w_α B_α)`, in Cartesian variables composed with
+    /// the barycentric coordinates of the domain.
+    fn symbolic(&self, cartesian: bool) -> SymbolicForm {
+        use crate::symbolic::{barycentric_names, barycentric_of_cartesian, cartesian_names};
+        let m = self.patch.net.m();
+        let mut h = self.homogeneous_form();
+        let names = if cartesian {
+            let subs = barycentric_of_cartesian(&self.patch.domain_or_reference());
+            h = h.iter().map(|p| p.compose(&subs)).collect();
+            cartesian_names(m)
+        } else {
+            barycentric_names(m)
+        };
+        let denominator = h.pop();
+        SymbolicForm {
+            names,
+            components: h,
+            denominator,
+        }
     }
 }
 
@@ -146,6 +169,10 @@ impl<F: Narrow> ErrorBound for Program<F> {
         }
     }
 
+    fn no_bound_reason(&self) -> &'static str {
+        "the denominator's error bound e_D is not below |D| (its sign is not certain)"
+    }
+
     fn text(&self, algorithm: Algorithm) -> BoundText {
         let k = roundings(algorithm, self.cert.net.m(), self.cert.net.degree());
         BoundText {
@@ -178,5 +205,28 @@ impl Constructions for RationalPatch {
             .into_iter()
             .map(AnyPatch::Rational)
             .collect())
+    }
+
+    fn domain(&self) -> crate::domain::Domain {
+        self.patch.domain_or_reference()
+    }
+
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        self.derivative_of_order(at, directions)
+    }
+
+    fn tangent_frame(
+        &self,
+        at: &[BigRational],
+    ) -> Result<crate::derivative::TangentFrame, CoreError> {
+        RationalPatch::tangent_frame(self, &self.patch.domain_or_reference(), at)
+    }
+
+    fn projected(&self) -> bool {
+        true
     }
 }

@@ -10,6 +10,8 @@
 
 use num_rational::BigRational;
 
+use crate::capability::traits::SymbolicForm;
+
 use crate::capability::bezier::check_len;
 use crate::capability::traits::{
     BoundText, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval,
@@ -58,6 +60,17 @@ impl ExactEval for SPatch {
     fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         check_len(x, 2)?;
         Ok(x.to_vec())
+    }
+
+    /// The rational form in `x, y`: `Σ_α P_α C(d;α) Π ω_i^{α_i}` over `(Σ ω)^d` (the variables
+    /// are Cartesian whatever `cartesian` says: an S-patch has no barycentric variables).
+    fn symbolic(&self, _cartesian: bool) -> SymbolicForm {
+        let (components, denominator) = self.rational_form();
+        SymbolicForm {
+            names: crate::symbolic::cartesian_names(2),
+            components,
+            denominator: Some(denominator),
+        }
     }
 }
 
@@ -175,6 +188,10 @@ impl<F: Narrow> ErrorBound for Program<F> {
         out.outside = case.total_bound.is_none();
         out.bound = case.total_bound;
         out
+    }
+
+    fn no_bound_reason(&self) -> &'static str {
+        "it is on or too near an edge of the polygon (or its numbers too small) for the float Wachspress coordinates' bound"
     }
 
     fn text(&self, algorithm: Algorithm) -> BoundText {

@@ -16,9 +16,12 @@
 use num_rational::BigRational;
 
 use crate::any_patch::AnyPatch;
+use crate::derivative::TangentFrame;
+use crate::domain::Domain;
 use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
+use crate::symbolic::Polynomial;
 
 /// How a point of a kind's domain is given.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -85,6 +88,24 @@ pub trait ExactEval {
     /// The kind's input at a Cartesian point of its domain (`m` coordinates for a simplex,
     /// converted to barycentric coordinates by Cramer's rule; `(x, y)` for an S-patch).
     fn cartesian_input(&self, x: &[BigRational]) -> Result<Vec<BigRational>, CoreError>;
+    /// The patch as polynomials with exact coefficients ([`SymbolicForm`]): in the barycentric
+    /// variables `u, v, w, …` of its simplex, or with `cartesian` in the Cartesian variables
+    /// `x, y, …` of its domain (docs/theory.md §3, §9). A rational patch gives its numerators
+    /// `Σ w_α c_α B_α` over the denominator `Σ w_α B_α` (§10); an S-patch its rational form in
+    /// `x, y` whatever `cartesian` says (§12).
+    fn symbolic(&self, cartesian: bool) -> SymbolicForm;
+}
+
+/// A patch as polynomials ([`ExactEval::symbolic`]): component `k` is
+/// `components[k] / denominator` (no denominator: a polynomial patch).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SymbolicForm {
+    /// The variables' names, in the order of the exponents of each term.
+    pub names: Vec<String>,
+    /// One polynomial per coordinate of the points (numerators, for a rational form).
+    pub components: Vec<Polynomial>,
+    /// The common denominator of a rational patch or an S-patch.
+    pub denominator: Option<Polynomial>,
 }
 
 /// Capability: the float program of a kind, as a float implementation runs it.
@@ -198,6 +219,11 @@ pub trait ErrorBound: Send + Sync {
     fn certify(&self, algorithm: Algorithm, input: &[f64]) -> FloatCase;
     /// The bound explained, for `algorithm`.
     fn text(&self, algorithm: Algorithm) -> BoundText;
+    /// Why a point can lie outside the bound's hypotheses ([`Seen::bound`] is `None`), for
+    /// the message of `tolerance = "bound"` there.
+    fn no_bound_reason(&self) -> &'static str {
+        "the algorithm's a-priori bound does not apply (Kε ≥ 1)"
+    }
 }
 
 /// Capability: the constructions, exact, returning patches of the same kind.
@@ -210,6 +236,32 @@ pub trait Constructions {
     fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError>;
     /// Split at the barycentric point `t` into `m + 1` pieces.
     fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError>;
+    /// The graph `(x, y, f(x, y))` of a functional patch as a parametric patch, control points
+    /// `(ξ_α, b_α)` at the Bézier abscissae (docs/theory.md §13); `None` for the kinds that are
+    /// not functions.
+    fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {
+        None
+    }
+    /// The domain simplex (the patch's own, or the reference simplex), for Cartesian points and
+    /// directions.
+    fn domain(&self) -> Domain;
+    /// The mixed directional derivative `D_{d^{(1)}} ⋯ D_{d^{(r)}} p(λ)` at the barycentric point
+    /// `at` along the barycentric `directions` (docs/theory.md §7). A polynomial patch refuses
+    /// an order above its degree ([`CoreError::OrderTooHigh`]); a rational patch takes any
+    /// order (Leibniz's rule, §10).
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError>;
+    /// The tangent frame at the barycentric point `at` over [`Self::domain`]: the de Casteljau
+    /// points of level `n − 1`, the partial derivatives and the normal (docs/theory.md §7).
+    fn tangent_frame(&self, at: &[BigRational]) -> Result<TangentFrame, CoreError>;
+    /// The patch's points are projections `X/W` of a homogeneous net (rational patches): the
+    /// de Casteljau points of a tangent frame are projected ones.
+    fn projected(&self) -> bool {
+        false
+    }
 }
 
 impl<T: Constructions + ?Sized> Constructions for &T {
@@ -224,6 +276,25 @@ impl<T: Constructions + ?Sized> Constructions for &T {
     }
     fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
         (**self).split_at(t)
+    }
+    fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {
+        (**self).graph()
+    }
+    fn domain(&self) -> Domain {
+        (**self).domain()
+    }
+    fn derivative(
+        &self,
+        at: &[BigRational],
+        directions: &[&[BigRational]],
+    ) -> Result<Vec<BigRational>, CoreError> {
+        (**self).derivative(at, directions)
+    }
+    fn tangent_frame(&self, at: &[BigRational]) -> Result<TangentFrame, CoreError> {
+        (**self).tangent_frame(at)
+    }
+    fn projected(&self) -> bool {
+        (**self).projected()
     }
 }
 
@@ -255,10 +326,10 @@ pub(crate) fn round_input<F: Narrow>(input: &[BigRational]) -> Result<Vec<f64>, 
             if x.finite() {
                 Ok(x.widen())
             } else {
-                Err(CoreError::Invalid(format!(
-                    "an input overflows {}",
-                    F::PRECISION.name()
-                )))
+                Err(CoreError::Overflows {
+                    what: "an input",
+                    precision: F::PRECISION.name(),
+                })
             }
         })
         .collect()

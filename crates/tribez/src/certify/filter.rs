@@ -26,6 +26,11 @@
 //! [`Decision::Pass`] when every value in the enclosure passes, [`Decision::Fail`] when every one
 //! fails, and [`Decision::Undecided`] otherwise (the caller then computes exactly). Non-finite
 //! intermediates are undecided.
+//!
+//! A coordinate whose control values are all zero is exactly 0 at every finite `λ`
+//! (`Σ_α 0·B_α(λ) = 0`), with condition number 0: both stages give it
+//! [`Enclosure::EXACT_ZERO`], against which the error of a claim `y` is exactly `|y|`, so it is
+//! decided in floats (a planar patch embedded in R^3 never falls back for its zero coordinate).
 
 use crate::certify::bound::roundings;
 use crate::exact::Algorithm;
@@ -36,6 +41,7 @@ use crate::simplex::Simplex;
 
 use super::measures::Tolerance;
 
+pub mod cartesian;
 mod kernel;
 
 /// Safety margin of the comparisons (relative).
@@ -71,6 +77,25 @@ pub struct Enclosure {
     pub s_hi: f64,
 }
 
+impl Enclosure {
+    /// The enclosure of a coordinate that is exactly zero at every point (all its control values
+    /// are zero, so `P(λ) = Σ_α 0·B_α(λ) = 0` and `Σ|c_α|B_α(|λ|) = 0` for every finite `λ`):
+    /// value, correction, bound and condition number all exactly 0.
+    pub const EXACT_ZERO: Enclosure = Enclosure {
+        value: 0.0,
+        corr: 0.0,
+        mu: 0.0,
+        s_lo: 0.0,
+        s_hi: 0.0,
+    };
+
+    /// Is this [`Enclosure::EXACT_ZERO`]? (No computed enclosure is: their bounds and condition
+    /// numbers carry a positive underflow allowance.)
+    pub fn is_exact_zero(&self) -> bool {
+        self.value == 0.0 && self.corr == 0.0 && self.mu == 0.0 && self.s_hi == 0.0
+    }
+}
+
 /// A tolerance prepared as f64 thresholds (each exact threshold enclosed by two floats).
 #[derive(Clone, Debug)]
 pub struct Thresholds {
@@ -89,6 +114,10 @@ fn enclose(q: &num_rational::BigRational) -> (f64, f64) {
     let x = round_f64(q);
     if !x.is_finite() {
         return (f64::MAX, f64::INFINITY);
+    }
+    // a number that is a float (ulps=1, abs=2^-30, …) is its own enclosure
+    if crate::number::exact_f64(x).as_ref() == Some(q) {
+        return (x, x);
     }
     (
         (x * (1.0 - 4.0 * EPS)).max(0.0),
@@ -138,6 +167,11 @@ impl Thresholds {
         if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
             return f64::INFINITY;
         }
+        if e.is_exact_zero() {
+            // P = 0: the error is |y| and ulp_p(0) a power of two, so the quotient is exact
+            // (or overflows to +inf, an upper bound)
+            return y.abs() / ulp_of(0.0, self.precision);
+        }
         // as in `decide`: the error |y − P| ≤ |y − value − corr| + μ, widened for the roundings
         let d1 = y - e.value;
         let d = d1 - e.corr;
@@ -156,6 +190,10 @@ impl Thresholds {
         if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
             return 0.0;
         }
+        if e.is_exact_zero() {
+            // exact, as in `ulps_upper`; an overflowed quotient exceeds f64::MAX
+            return (y.abs() / ulp_of(0.0, self.precision)).min(f64::MAX);
+        }
         let d1 = y - e.value;
         let d = d1 - e.corr;
         let mu_eff = e.mu + 2.0 * EPS * (d1.abs() + e.corr.abs()) + TINY;
@@ -170,6 +208,11 @@ impl Thresholds {
     pub fn decide(&self, y: f64, e: &Enclosure, s: f64) -> Decision {
         if !(e.value.is_finite() && e.mu.is_finite() && e.s_hi.is_finite()) {
             return Decision::Undecided;
+        }
+        if e.is_exact_zero()
+            && let Some(d) = self.decide_at_zero(y)
+        {
+            return d;
         }
         let d1 = y - e.value;
         let d = d1 - e.corr;
@@ -276,6 +319,46 @@ impl Thresholds {
     }
 }
 
+impl Thresholds {
+    /// Decide `y` against the exact value `P = 0` with condition number `Σ|c|B = 0`
+    /// ([`Enclosure::EXACT_ZERO`]): the error is exactly `|y|`, a float. `None` leaves it to the
+    /// general enclosure test (`bound`, whose underflow allowance is not zero).
+    fn decide_at_zero(&self, y: f64) -> Option<Decision> {
+        if !y.is_finite() {
+            return Some(Decision::Undecided);
+        }
+        // no error meets every tolerance (every threshold is ≥ 0)
+        if y == 0.0 {
+            return Some(Decision::Pass);
+        }
+        let a = y.abs();
+        let by_threshold = |x: f64| {
+            if x <= self.k_lo {
+                Decision::Pass
+            } else if x > self.k_hi {
+                Decision::Fail
+            } else {
+                Decision::Undecided
+            }
+        };
+        Some(match self.tolerance {
+            // the threshold is exactly 0: E·|P|, K·ε·Σ|c|B, and RN_p(0) = 0 is the only float
+            // that rounds or faithfully represents 0
+            Tolerance::Exact
+            | Tolerance::Rel(_)
+            | Tolerance::Cond(_)
+            | Tolerance::CondDegree
+            | Tolerance::CorrectlyRounded
+            | Tolerance::Faithful => Decision::Fail,
+            Tolerance::Abs(_) => by_threshold(a),
+            // |y| / ulp_p(0): a division by a power of two, exact unless it overflows (+inf,
+            // which fails every finite N and is left undecided against an infinite one)
+            Tolerance::Ulps(_) => by_threshold(a / ulp_of(0.0, self.precision)),
+            Tolerance::Bound => return None,
+        })
+    }
+}
+
 /// The floats of precision `p` just below and above `y` (a float of that precision).
 fn neighbours(y: f64, p: Precision) -> (f64, f64) {
     match p {
@@ -344,6 +427,9 @@ pub struct Filter {
     lean: Option<kernel::Lean>,
     /// The largest control coordinate in magnitude (the scale of `abs=E` tolerances).
     scale: f64,
+    /// Per coordinate: every control value is zero, so the coordinate is exactly 0 everywhere
+    /// ([`Enclosure::EXACT_ZERO`]).
+    zero: Vec<bool>,
 }
 
 /// Reusable buffers for [`Filter::evaluate`] (one per thread).
@@ -356,6 +442,9 @@ pub struct Scratch {
     mu2: Vec<f64>,
     s2: Vec<f64>,
     lean: kernel::LeanScratch,
+    /// Cartesian rows: the outer point `|λ̂| + d` and its enclosures.
+    outer: Vec<f64>,
+    wide: Vec<Enclosure>,
 }
 
 impl Filter {
@@ -388,6 +477,21 @@ impl Filter {
             },
             lean: kernel::Lean::new(m, n, dim, net.coords()),
             scale: net.coords().iter().fold(0.0, |a: f64, x| a.max(x.abs())),
+            zero: (0..dim)
+                .map(|c| net.coords().iter().skip(c).step_by(dim).all(|x| *x == 0.0))
+                .collect(),
+        }
+    }
+
+    /// Replace the enclosures of the coordinates that are exactly zero everywhere by
+    /// [`Enclosure::EXACT_ZERO`] (for a finite `λ`; non-finite inputs stay undecided).
+    fn mark_zeros(&self, lambda: &[f64], out: &mut [Enclosure]) {
+        if self.zero.iter().any(|z| *z) && lambda.iter().all(|x| x.is_finite()) {
+            for (o, z) in out.iter_mut().zip(&self.zero) {
+                if *z {
+                    *o = Enclosure::EXACT_ZERO;
+                }
+            }
         }
     }
 
@@ -405,6 +509,7 @@ impl Filter {
         } else {
             self.evaluate_generic(lambda, scratch, out);
         }
+        self.mark_zeros(lambda, out);
     }
 
     /// The plain stage for any m and dim (the lean kernel computes the same numbers).
@@ -528,6 +633,25 @@ pub struct RowJudgement {
     pub tight: bool,
 }
 
+/// Widen enclosures at `λ̂` to hold at every `λ` within the radii: `wide[c].mu ≥
+/// S(|λ̂| + d) − S(|λ̂|)` bounds the move of `P`, `wide[c].s_hi ≥ S(|λ̂| + d)` the condition
+/// number (docs/theory.md §14.5).
+fn widen(enc: &mut [Enclosure], wide: &[Enclosure]) {
+    for (e, w) in enc.iter_mut().zip(wide) {
+        if e.is_exact_zero() && w.is_exact_zero() {
+            continue;
+        }
+        e.mu = (e.mu + w.mu) * (1.0 + 2.0 * EPS);
+        let lo = e.s_lo - w.mu;
+        e.s_lo = if lo > 0.0 {
+            lo * (1.0 - 2.0 * EPS)
+        } else {
+            0.0
+        };
+        e.s_hi = w.s_hi;
+    }
+}
+
 /// The row's conclusion from one set of enclosures.
 fn conclude(th: &Thresholds, claimed: &[f64], enc: &[Enclosure], s: f64) -> RowJudgement {
     let mut all_pass = true;
@@ -638,6 +762,125 @@ impl Filter {
         self.judge_in_order(th, lambda, claimed, scratch, enc, true)
     }
 
+    /// [`Filter::judge_tight`] at the exact point `λ` known only as `λ̂ = lambda` with radii
+    /// `|λ_k − λ̂_k| ≤ radius[k]` (a Cartesian input converted in floats,
+    /// [`cartesian::CartesianMap`]): every enclosure is widened by `S(|λ̂| + d) − S(|λ̂|)`
+    /// (docs/theory.md §14.5), its condition-number bounds made to hold at every such `λ`.
+    pub fn judge_tight_uncertain(
+        &self,
+        th: &Thresholds,
+        lambda: &[f64],
+        radius: &[f64],
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        let undecided = RowJudgement {
+            decision: Decision::Undecided,
+            ulps: f64::INFINITY,
+            ulps_lower: 0.0,
+            tight: false,
+        };
+        // |λ̂| and the radii; Σ_k (|λ̂_k| + d_k) ≥ Σ|λ_k| for the a-priori bound's underflow term
+        let mut outer = std::mem::take(&mut scratch.outer);
+        let mut wide = std::mem::take(&mut scratch.wide);
+        outer.clear();
+        outer.extend(lambda.iter().map(|l| l.abs()));
+        let s_abs: f64 = outer.iter().zip(radius).map(|(a, d)| a + d).sum::<f64>()
+            * (1.0 + 2.0 * (self.m + 2) as f64 * EPS);
+        wide.clear();
+        wide.resize(enc.len(), Enclosure::default());
+        self.widening(&outer, radius, scratch, &mut wide);
+        let ok = wide.iter().all(|w| w.mu.is_finite() && w.s_hi.is_finite()) && s_abs.is_finite();
+        let result = if ok {
+            let first = self.lean.is_some();
+            let mut r = undecided;
+            for stage in 0..2 {
+                if (stage == 0) == first {
+                    self.evaluate_compensated(lambda, scratch, enc);
+                } else {
+                    self.evaluate(lambda, scratch, enc);
+                }
+                widen(enc, &wide);
+                r = conclude(th, claimed, enc, s_abs);
+                r.tight = false;
+                if r.decision != Decision::Undecided {
+                    break;
+                }
+            }
+            r
+        } else {
+            undecided
+        };
+        scratch.outer = outer;
+        scratch.wide = wide;
+        result
+    }
+
+    /// Per coordinate, upper bounds of `Δ = S(a + d) − S(a)` (in `mu`) and of `S(a + d)` (in
+    /// `s_hi`), `a = |λ̂| ≥ 0`, `d ≥ 0`, `S(μ) = Σ_α |c_α| B_α(μ)` (docs/theory.md §14.5).
+    ///
+    /// de Casteljau on `|c|` at `a + d`, each node split into the part `A` at `a` and the rest:
+    /// `A = Σ_k a_k A_k`, `Δ = Σ_k (a_k + d_k) Δ_k + Σ_k d_k A_k`, from `A = |c|`, `Δ = 0`. Every
+    /// term is non-negative, so with `K = (4m + 4)n` roundings per path the computed values are
+    /// within a factor `1 + γ_K` of the exact ones; we inflate by `1 + 4Kε` and add an absolute
+    /// `2^-1074` per operation, scaled by `Σ_{j≤n} (Σ_k (a_k + d_k))^j`, for underflow.
+    fn widening(&self, a: &[f64], d: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+        let (m, dim, n) = (self.m, self.dim, self.n);
+        let Scratch { v, mu, v2, mu2, .. } = scratch;
+        v.clear();
+        v.extend(self.coords.iter().map(|x| x.abs()));
+        mu.clear();
+        mu.resize(v.len(), 0.0);
+        for stencil in &self.stencils {
+            v2.clear();
+            mu2.clear();
+            for children in stencil.chunks_exact(m + 1) {
+                for c in 0..dim {
+                    let mut acc = 0.0;
+                    let mut delta = 0.0;
+                    for k in 0..=m {
+                        let r = children[k] * dim + c;
+                        acc += a[k] * v[r];
+                        delta += (a[k] + d[k]) * mu[r] + d[k] * v[r];
+                    }
+                    v2.push(acc);
+                    mu2.push(delta);
+                }
+            }
+            std::mem::swap(v, v2);
+            std::mem::swap(mu, mu2);
+        }
+        let k = ((4 * m + 4) * n.max(1)) as f64;
+        let inflate = 1.0 + 4.0 * k * EPS;
+        let sum: f64 =
+            a.iter().zip(d).map(|(x, y)| x + y).sum::<f64>() * (1.0 + 2.0 * (m + 2) as f64 * EPS);
+        let mut geometric = 0.0;
+        let mut power = 1.0;
+        for _ in 0..=n {
+            geometric += power;
+            power *= sum;
+        }
+        let nodes = crate::simplex::count(m, n) as f64 * (n as f64 + 1.0);
+        let absolute = nodes * (6 * m + 8) as f64 * TINY * geometric * (1.0 + R);
+        for c in 0..dim {
+            let delta = mu[c] * inflate + absolute;
+            let s_at_a = v[c] * inflate + absolute;
+            let zero = self.zero[c];
+            out[c] = Enclosure {
+                value: 0.0,
+                corr: 0.0,
+                mu: if zero { 0.0 } else { delta },
+                s_lo: 0.0,
+                s_hi: if zero {
+                    0.0
+                } else {
+                    (s_at_a + delta) * (1.0 + 2.0 * EPS)
+                },
+            };
+        }
+    }
+
     fn judge_in_order(
         &self,
         th: &Thresholds,
@@ -719,6 +962,7 @@ impl Filter {
             Some(lean) => self.evaluate_lean(lean, lambda, scratch, out),
             None => self.evaluate_compensated_generic(lambda, scratch, out),
         }
+        self.mark_zeros(lambda, out);
     }
 
     /// Whether the lean compensated kernel serves this net (`m ≤ 3`, `dim ≤ 4`, `n ≥ 1`).
@@ -1496,6 +1740,7 @@ mod tests {
             let mut generic = vec![Enclosure::default(); dim];
             f.evaluate(lam, &mut sc, &mut plain);
             f.evaluate_generic(lam, &mut sc, &mut generic);
+            f.mark_zeros(lam, &mut generic);
             proptest::prop_assert_eq!(&plain, &generic);
             let mut comp = plain.clone();
             f.evaluate_compensated(lam, &mut sc, &mut comp);
@@ -1506,6 +1751,222 @@ mod tests {
                         proptest::prop_assert!(err <= exact_f64(e.mu).unwrap());
                         proptest::prop_assert!(exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap());
                     }
+                }
+            }
+        }
+
+        /// Coordinates whose control values are all zero are exactly 0 at every point: the
+        /// filter decides them without exact arithmetic (a claimed 0 always passes; a non-zero
+        /// claim fails every tolerance whose threshold is 0 there), and every row decision
+        /// agrees with the exact judgement (the generic exact path, [`ExactEvaluator`]).
+        #[test]
+        fn zero_coordinates_are_decided_and_agree_with_the_exact_path(
+            m in 1usize..=4,
+            n in 1usize..=4,
+            dim in 1usize..=5,
+            zero_mask in 1u32..32,
+            values in proptest::collection::vec(scaled(), 140),
+            lam in proptest::collection::vec(-3.0f64..3.0, 5),
+            zero_claims in proptest::collection::vec((0u8..6, 0u32..4), 5),
+        ) {
+            use crate::certify::measures::{Leaf, Tolerance};
+            let simplex = Simplex::new(m, n);
+            let zero = |c: usize| zero_mask & (1 << c) != 0;
+            let coords: Vec<f64> = (0..simplex.len() * dim)
+                .map(|i| if zero(i % dim) { 0.0 } else { values[i % values.len()] })
+                .collect();
+            let net = ControlNet::new(simplex, dim, coords);
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let lam = &lam[..=m];
+            let l: Vec<BigRational> = lam.iter().map(|x| exact_f64(*x).unwrap()).collect();
+            let pe = ExactEvaluator::new(&exact_net).evaluate(&l, Algorithm::Casteljau);
+            let s = crate::certify::bound::condition(&exact_net, &l);
+            for p in [Precision::F64, Precision::F32] {
+                // claimed: the rounded exact value on the other coordinates; on the zero ones 0,
+                // −0, a few of the smallest subnormals of the precision, or a normal number
+                let tiny = match p { Precision::F64 => f64::from_bits(1), Precision::F32 => f64::from(f32::from_bits(1)) };
+                let ys: Vec<f64> = (0..dim).map(|c| {
+                    if zero(c) {
+                        let (kind, k) = zero_claims[c];
+                        match kind {
+                            0 | 1 => 0.0,
+                            2 => -0.0,
+                            3 => f64::from(k) * tiny,
+                            4 => -f64::from(k + 1) * tiny,
+                            _ => f64::from(k + 1) * 1e-3,
+                        }
+                    } else {
+                        match p {
+                            Precision::F64 => round_f64(&pe[c]),
+                            Precision::F32 => f64::from(crate::number::round_f32(&pe[c])),
+                        }
+                    }
+                }).collect();
+                if ys.iter().any(|y| !y.is_finite()) {
+                    continue;
+                }
+                for t in ["exact", "ulps=1", "ulps=2", "ulps=1/2", "abs=1e-300", "rel=1e-12", "correctly_rounded", "faithful", "cond", "cond=64", "bound"] {
+                    let tol = Tolerance::parse(t).unwrap();
+                    let th = Thresholds::new(&tol, p, Algorithm::Casteljau, m, n);
+                    let leaf = |c: usize| Leaf {
+                        precision: Some(p),
+                        condition: Some(s[c].clone()),
+                        bound: crate::certify::bound::a_priori(Algorithm::Casteljau, p, m, n, &s[c], &l),
+                    };
+                    let tol_k = tol.for_patch(m, n);
+                    let truth_c = |c: usize| tol_k.accepts(&exact_f64(ys[c]).unwrap(), &pe[c], &leaf(c)).unwrap();
+                    let truth = (0..dim).all(truth_c);
+                    let mut sc = Scratch::default();
+                    let mut enc = vec![Enclosure::default(); dim];
+                    let r = f.judge(&th, lam, &ys, &mut sc, &mut enc);
+                    match r.decision {
+                        Decision::Pass => proptest::prop_assert!(truth, "{} {:?} {:?}", t, p, ys),
+                        Decision::Fail => proptest::prop_assert!(!truth, "{} {:?} {:?}", t, p, ys),
+                        Decision::Undecided => {}
+                    }
+                    let sabs: f64 = lam.iter().map(|x| x.abs()).sum();
+                    for c in (0..dim).filter(|c| zero(*c)) {
+                        proptest::prop_assert!(pe[c] == BigRational::from_integer(0.into()));
+                        for stage in 0..2 {
+                            if stage == 0 { f.evaluate(lam, &mut sc, &mut enc) } else { f.evaluate_compensated(lam, &mut sc, &mut enc) }
+                            proptest::prop_assert!(enc[c].is_exact_zero());
+                            let d = th.decide(ys[c], &enc[c], sabs);
+                            match d {
+                                Decision::Pass => proptest::prop_assert!(truth_c(c), "{} {:?} {}", t, p, ys[c]),
+                                Decision::Fail => proptest::prop_assert!(!truth_c(c), "{} {:?} {}", t, p, ys[c]),
+                                Decision::Undecided => {}
+                            }
+                            // decided without big integers: a claimed zero always, any claim
+                            // against a zero threshold, and ulps (|y| is k ulps of 0, k an
+                            // integer, and N a float: compared exactly, even at k = N)
+                            if ys[c] == 0.0 || !matches!(t, "bound" | "abs=1e-300") {
+                                proptest::prop_assert!(d != Decision::Undecided, "{} {:?} {}", t, p, ys[c]);
+                            }
+                            // the ULP figures are exact: |y| / ulp(0)
+                            if p == Precision::F64 {
+                                let u = crate::number::ulps_error_f64(&exact_f64(ys[c]).unwrap(), &pe[c]);
+                                let max = BigRational::from_float(f64::MAX).unwrap();
+                                let (lo, hi) = (th.ulps_lower(ys[c], &enc[c]), th.ulps_upper(ys[c], &enc[c]));
+                                if hi.is_finite() {
+                                    proptest::prop_assert_eq!(BigRational::from_float(hi).unwrap(), u.clone());
+                                    proptest::prop_assert_eq!(BigRational::from_float(lo).unwrap(), u);
+                                } else {
+                                    // |y| / ulp(0) beyond the largest float
+                                    proptest::prop_assert!(u > max && lo == f64::MAX);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+
+        /// Cartesian rows (docs/theory.md §14.5): on random domain simplices, many of them
+        /// nearly degenerate (a vertex within 2^-40·t of the opposite face, far away, or huge),
+        /// the float conversion's radii contain the exact barycentric coordinates, the widened
+        /// enclosures contain the exact value and condition number at them, and every decision
+        /// of the filter agrees with the exact judgement (the generic exact path).
+        #[test]
+        fn cartesian_rows_are_enclosed_and_judged_soundly(
+            m in 1usize..=3,
+            n in 1usize..=4,
+            dim in 1usize..=3,
+            values in proptest::collection::vec(scaled(), 60),
+            verts in proptest::collection::vec(-4.0f64..4.0, 12),
+            squash in 0u8..4,
+            x01 in proptest::collection::vec(-0.2f64..1.2, 3),
+            steps in proptest::collection::vec(-2i32..=2, 3),
+        ) {
+            use crate::certify::measures::{Leaf, Tolerance};
+            use crate::domain::Domain;
+            use cartesian::CartesianMap;
+            // the vertices: random, then (squash) the last one pushed towards the opposite face,
+            // or scaled up
+            let mut v: Vec<Vec<f64>> = (0..=m).map(|k| verts[k * m..(k + 1) * m].to_vec()).collect();
+            match squash {
+                1 => {
+                    // last vertex = mean of the others + 2^-40 · a random offset
+                    for j in 0..m {
+                        let mean = v[..m].iter().map(|p| p[j]).sum::<f64>() / m as f64;
+                        v[m][j] = mean + v[m][j] * 2f64.powi(-40);
+                    }
+                }
+                2 => v.iter_mut().for_each(|p| p.iter_mut().for_each(|c| *c *= 1e6)),
+                3 => v.iter_mut().for_each(|p| p.iter_mut().for_each(|c| *c = *c / 3.0 + 1e3)),
+                _ => {}
+            }
+            let vq: Vec<Vec<BigRational>> = v.iter().map(|p| p.iter().map(|c| exact_f64(*c).unwrap()).collect()).collect();
+            let Ok(domain) = Domain::new(vq) else { return Ok(()); };
+            let Some(map) = CartesianMap::new(&domain) else { return Ok(()); };
+            // a float point: an affine combination of the vertices, computed in floats
+            let w: Vec<f64> = {
+                let mut w: Vec<f64> = x01[..m].to_vec();
+                let rest = 1.0 - w.iter().sum::<f64>();
+                w.insert(0, rest);
+                w
+            };
+            let x: Vec<f64> = (0..m).map(|j| (0..=m).map(|k| w[k] * v[k][j]).sum()).collect();
+            let xq: Vec<BigRational> = x.iter().map(|c| exact_f64(*c).unwrap()).collect();
+            let lam = domain.barycentric(&xq).unwrap();
+            let (mut lh, mut d) = (Vec::new(), Vec::new());
+            proptest::prop_assert!(map.barycentric(&x, &mut lh, &mut d));
+            for k in 0..=m {
+                let err = (exact_f64(lh[k]).unwrap() - &lam[k]).abs();
+                proptest::prop_assert!(err <= exact_f64(d[k]).unwrap(), "k={} {} > {}", k, err, d[k]);
+            }
+            let simplex = Simplex::new(m, n);
+            let coords: Vec<f64> = (0..simplex.len() * dim).map(|i| values[i % values.len()]).collect();
+            let net = ControlNet::new(simplex, dim, coords);
+            let f = Filter::new(&net);
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let pe = ExactEvaluator::new(&exact_net).evaluate(&lam, Algorithm::Casteljau);
+            let s = crate::certify::bound::condition(&exact_net, &lam);
+            let ys: Vec<f64> = (0..dim).map(|c| {
+                let mut y = round_f64(&pe[c]);
+                for _ in 0..steps[c].abs() {
+                    y = if steps[c] > 0 { y.next_up() } else { y.next_down() };
+                }
+                y
+            }).collect();
+            if ys.iter().any(|y| !y.is_finite()) {
+                return Ok(());
+            }
+            let mut sc = Scratch::default();
+            let mut enc = vec![Enclosure::default(); dim];
+            for t in ["exact", "ulps=1", "ulps=4", "ulps=64", "abs=1e-12", "rel=1e-12", "correctly_rounded", "faithful", "cond", "cond=2", "bound"] {
+                let tol = Tolerance::parse(t).unwrap().for_patch(m, n);
+                let p = Precision::F64;
+                let th = Thresholds::new(&tol, p, Algorithm::Casteljau, m, n);
+                let truth = (0..dim).all(|c| {
+                    let leaf = Leaf {
+                        precision: Some(p),
+                        condition: Some(s[c].clone()),
+                        bound: crate::certify::bound::a_priori(Algorithm::Casteljau, p, m, n, &s[c], &lam),
+                    };
+                    tol.accepts(&exact_f64(ys[c]).unwrap(), &pe[c], &leaf).unwrap()
+                });
+                let r = f.judge_tight_uncertain(&th, &lh, &d, &ys, &mut sc, &mut enc);
+                // the deciding enclosures hold at the exact point
+                for c in 0..dim {
+                    let e = &enc[c];
+                    if e.mu.is_finite() && e.value.is_finite() && e.corr.is_finite() {
+                        let err = (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap() - &pe[c]).abs();
+                        proptest::prop_assert!(err <= exact_f64(e.mu).unwrap(), "{} c={}", t, c);
+                        if e.s_hi.is_finite() {
+                            proptest::prop_assert!(exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap(), "{} c={} cond", t, c);
+                        }
+                    }
+                }
+                match r.decision {
+                    Decision::Pass => proptest::prop_assert!(truth, "{} {:?} {:?}", t, x, ys),
+                    Decision::Fail => proptest::prop_assert!(!truth, "{} {:?} {:?}", t, x, ys),
+                    Decision::Undecided => {}
+                }
+                if r.ulps.is_finite() {
+                    let e_max = (0..dim).map(|c| crate::number::ulps_error_f64(&exact_f64(ys[c]).unwrap(), &pe[c])).max().unwrap();
+                    proptest::prop_assert!(e_max <= BigRational::from_float(r.ulps).unwrap());
+                    proptest::prop_assert!(BigRational::from_float(r.ulps_lower).unwrap() <= e_max);
                 }
             }
         }

@@ -41,13 +41,12 @@ pub use report::{
 
 use std::path::{Path, PathBuf};
 
-use crate::any_patch::AnyPatch;
 use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::float::Precision;
 use crate::io::patch_file::any_patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::io::{InputError, NamedAt};
-use crate::patch::BezierPatch as Patch;
+use crate::patch::BezierPatch;
 use value::{Mismatch, Value, compare};
 
 /// Keys a claim file may have at its top level.
@@ -72,9 +71,9 @@ pub struct ClaimFile {
     pub doc: Document,
     /// Where the claims come from.
     pub source: Option<String>,
-    /// Named patches: `""` for the file's `patch`, else the names under `[patches]` (any kind:
-    /// [`ClaimFile::patch_for`] gives the polynomial ones, [`ClaimFile::any_patch_for`] all).
-    pub patches: Vec<(String, AnyPatch)>,
+    /// Named patches: `""` for the file's `patch`, else the names under `[patches]` (any kind;
+    /// [`ClaimFile::patch_for`] gives a claim's).
+    pub patches: Vec<(String, crate::patch_type::Patch)>,
     /// The claims in file order.
     pub claims: Vec<Claim>,
 }
@@ -169,22 +168,24 @@ fn resolve_patch(
     node: &Node,
     key: &str,
     dir: &Path,
-) -> Result<AnyPatch, InputError> {
+) -> Result<crate::patch_type::Patch, InputError> {
     match &node.value {
         NodeValue::String(rel) => {
             let path = dir.join(rel);
-            crate::io::patch_file::read_any_patch(&path).map_err(|mut e| {
-                if e.line.is_none() {
-                    e.named_at = Some(NamedAt {
-                        file: doc.file.clone(),
-                        line: node.line,
-                        key: key.to_string(),
-                    });
-                }
-                e
-            })
+            crate::io::patch_file::read_any_patch(&path)
+                .map(Into::into)
+                .map_err(|mut e| {
+                    if e.line.is_none() {
+                        e.named_at = Some(Box::new(NamedAt {
+                            file: doc.file.clone(),
+                            line: node.line,
+                            key: key.to_string(),
+                        }));
+                    }
+                    e
+                })
         }
-        NodeValue::Table(_) => any_patch_from_document(doc, node, key),
+        NodeValue::Table(_) => any_patch_from_document(doc, node, key).map(Into::into),
         other => Err(doc.error(
             node,
             key,
@@ -261,10 +262,10 @@ impl ClaimFile {
         })
     }
 
-    /// The polynomial patch a claim refers to (`patch = "name"` in the claim, else the file's
-    /// patch); a rational patch or an S-patch is an error for the claim's operation.
-    pub fn patch_for(&self, claim: &Claim) -> Result<&Patch, InputError> {
-        let any = self.any_patch_for(claim)?;
+    /// The polynomial patch a claim refers to; a rational patch or an S-patch is an error for
+    /// the claim's operation.
+    pub(crate) fn polynomial_for(&self, claim: &Claim) -> Result<&BezierPatch, InputError> {
+        let any = self.patch_for(claim)?.as_any();
         any.polynomial().ok_or_else(|| {
             self.doc.error(
                 &claim.node,
@@ -278,8 +279,9 @@ impl ClaimFile {
         })
     }
 
-    /// The patch (of any kind) a claim refers to.
-    pub fn any_patch_for(&self, claim: &Claim) -> Result<&AnyPatch, InputError> {
+    /// The patch (of any kind) a claim refers to: `patch = "name"` in the claim (a name under
+    /// `[patches]`), else the file's `patch`.
+    pub fn patch_for(&self, claim: &Claim) -> Result<&crate::patch_type::Patch, InputError> {
         let t = self.doc.table(&claim.node, &claim.id)?;
         let name = match Document::get(t, "patch") {
             Some(n) => self
@@ -399,6 +401,7 @@ impl ClaimFile {
             precision,
             condition: float_eval
                 .as_ref()
+                .filter(|f| f.cond_tolerance)
                 .and_then(|f| f.condition.get(k).cloned()),
             bound: float_eval
                 .as_ref()

@@ -2,7 +2,6 @@
 //!
 //! This layer depends on the core and never the reverse.
 
-pub mod fuzz;
 pub mod patch_file;
 pub mod points;
 pub mod text;
@@ -29,11 +28,11 @@ pub struct InputError {
     pub column: Option<usize>,
     /// The key or field, e.g. `control_points."1,1,0"`.
     pub key: Option<String>,
-    /// What is wrong.
-    pub problem: Problem,
+    /// What is wrong (boxed: errors stay small on the happy path's stack).
+    pub problem: Box<Problem>,
     /// For an error in a file named by another one (a patch file named by a claim file): where
     /// it was named.
-    pub named_at: Option<NamedAt>,
+    pub named_at: Option<Box<NamedAt>>,
 }
 
 /// Where a file was named by another file ([`InputError::named_at`]).
@@ -238,7 +237,7 @@ impl InputError {
             line: None,
             column: None,
             key: None,
-            problem: problem.into(),
+            problem: Box::new(problem.into()),
             named_at: None,
         }
     }

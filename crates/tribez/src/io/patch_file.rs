@@ -178,10 +178,10 @@ pub fn any_patch_from_document(
             .enumerate()
             .map(|(i, r)| doc.rationals(r, &format!("{}[{i}]", key("polygon"))))
             .collect::<Result<Vec<_>, _>>()?;
-        let polygon = Polygon::new(vertices)
-            .map_err(|e| doc.error(poly_node, &key("polygon"), e.to_string()))?;
-        let mut s = SPatch::new(polygon, net)
-            .map_err(|e| doc.error(cp_node, &key("control_points"), e.to_string()))?;
+        let polygon =
+            Polygon::new(vertices).map_err(|e| doc.error(poly_node, &key("polygon"), e))?;
+        let mut s =
+            SPatch::new(polygon, net).map_err(|e| doc.error(cp_node, &key("control_points"), e))?;
         s.name = name;
         return Ok(AnyPatch::SPatch(s));
     }
@@ -371,7 +371,7 @@ pub fn domain(doc: &Document, node: &Node, m: usize, key: &str) -> Result<Domain
         .enumerate()
         .map(|(i, r)| doc.rationals(r, &format!("{key}[{i}]")))
         .collect::<Result<Vec<_>, _>>()?;
-    Domain::new(vertices).map_err(|e| doc.error(node, key, e.to_string()))
+    Domain::new(vertices).map_err(|e| doc.error(node, key, e))
 }
 
 /// `"1,0,2"` for a multi-index.

@@ -217,7 +217,7 @@ mod tests {
     fn invalid_utf8_names_the_line_and_column() {
         let e = text_from_bytes(b"a = 1\nb = \"\xc3\xa9\xff\"\n".to_vec(), "f.toml").unwrap_err();
         assert_eq!((e.line, e.column), (Some(2), Some(7)));
-        assert!(e.problem == Problem::NotUtf8 { byte: 0xff }, "{e}");
+        assert!(*e.problem == Problem::NotUtf8 { byte: 0xff }, "{e}");
     }
 
     #[test]

@@ -545,7 +545,7 @@ mod tests {
         let e = Document::parse_json("x.json", "{\"a\": 1,\n \"a\": 2}").unwrap_err();
         assert_eq!(e.line, Some(2));
         assert_eq!(
-            e.problem,
+            *e.problem,
             Problem::Json(JsonSyntax::DuplicateKey { key: "a".into() })
         );
         assert!(e.to_string().contains("duplicate key \"a\""), "{e}");
@@ -565,7 +565,7 @@ mod tests {
 
     #[test]
     fn empty_and_garbage_are_errors() {
-        assert!(Document::parse_json("x.json", "  ").unwrap_err().problem == Problem::EmptyFile);
+        assert!(*Document::parse_json("x.json", "  ").unwrap_err().problem == Problem::EmptyFile);
         assert_eq!(
             Document::parse_json("x.json", "{\"a\": }")
                 .unwrap_err()

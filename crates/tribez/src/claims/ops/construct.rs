@@ -231,7 +231,7 @@ impl<'a> Construction<'a> {
                 let mode = match (inputs.opt_rationals("at")?, midpoints) {
                     (Some(t), false) => {
                         crate::domain::check_barycentric(&t, m, "point `at`")
-                            .map_err(|e| inputs.error("at", e.to_string()))?;
+                            .map_err(|e| inputs.error("at", e))?;
                         SubdivideMode::At(t)
                     }
                     (None, true) => SubdivideMode::Midpoints,
@@ -371,15 +371,14 @@ impl<'a> Construction<'a> {
         };
         Ok(match self {
             Construction::Blossom { patch, args } => match patch.as_ref() {
-                AnyPatch::Rational(r) => Value::numbers(
-                    &r.blossom(args)
-                        .map_err(|e| inputs.error("args", e.to_string()))?,
-                ),
+                AnyPatch::Rational(r) => {
+                    Value::numbers(&r.blossom(args).map_err(|e| inputs.error("args", e))?)
+                }
                 other => {
                     let p = other.polynomial().expect("checked when parsed");
                     Value::numbers(
                         &crate::blossom::blossom(&p.net, args)
-                            .map_err(|e| inputs.error("args", e.to_string()))?,
+                            .map_err(|e| inputs.error("args", e))?,
                     )
                 }
             },
@@ -388,7 +387,7 @@ impl<'a> Construction<'a> {
                     // the subpatch of the homogeneous net (w c, w), with its place in the parent
                     let sub = r
                         .subpatch(vertices)
-                        .map_err(|e| inputs.error("vertices", e.to_string()))?;
+                        .map_err(|e| inputs.error("vertices", e))?;
                     Value::Map(vec![
                         ("control_points".into(), net_value(&sub.patch.net)),
                         (
@@ -408,19 +407,17 @@ impl<'a> Construction<'a> {
                     let p = other.polynomial().expect("checked when parsed");
                     net_value(
                         &crate::blossom::subpatch(&p.net, vertices)
-                            .map_err(|e| inputs.error("vertices", e.to_string()))?,
+                            .map_err(|e| inputs.error("vertices", e))?,
                     )
                 }
             },
             Construction::Subdivide { patch, mode } => match mode {
-                SubdivideMode::At(t) => pieces(
-                    split_at_pieces(&patch.net, t)
-                        .map_err(|e| inputs.error("at", e.to_string()))?,
-                ),
-                SubdivideMode::Midpoints => pieces(
-                    midpoint_split(&patch.net)
-                        .map_err(|e| inputs.error("midpoints", e.to_string()))?,
-                ),
+                SubdivideMode::At(t) => {
+                    pieces(split_at_pieces(&patch.net, t).map_err(|e| inputs.error("at", e))?)
+                }
+                SubdivideMode::Midpoints => {
+                    pieces(midpoint_split(&patch.net).map_err(|e| inputs.error("midpoints", e))?)
+                }
             },
             Construction::Halve {
                 patch,
@@ -445,7 +442,7 @@ impl<'a> Construction<'a> {
                     MatrixKind::Subpatch { vertices } => (vertices.len() - 1, vertices.clone()),
                 };
                 let rows = crate::blossom::subpatch_matrix(m, *degree, &f)
-                    .map_err(|e| inputs.error("vertices", e.to_string()))?;
+                    .map_err(|e| inputs.error("vertices", e))?;
                 Value::List(rows.iter().map(|r| Value::numbers(r)).collect())
             }
             Construction::EdgeCurve { patch, from, to } => {

@@ -222,7 +222,7 @@ impl<'a> Form<'a> {
                 }
             }
             OpName::Graph => {
-                let AnyPatch::Functional(p) = inputs.file.any_patch_for(inputs.claim)? else {
+                let AnyPatch::Functional(p) = inputs.file.patch_for(inputs.claim)?.as_any() else {
                     return Err(inputs.error(
                         "patch",
                         "`graph` needs a functional patch (kind = \"functional\")",
@@ -358,15 +358,14 @@ impl<'a> Form<'a> {
                 function,
             } => {
                 let b: Vec<Q> = crate::functional::ordinates(domain, *degree, function)
-                    .map_err(|e| inputs.error("function", e.to_string()))?;
+                    .map_err(|e| inputs.error("function", e))?;
                 Ok(keyed(
                     &Simplex::new(domain.m(), *degree),
                     b.into_iter().map(Value::Number),
                 ))
             }
             Form::Graph { patch } => {
-                let g = crate::functional::graph(patch)
-                    .map_err(|e| inputs.error("patch", e.to_string()))?;
+                let g = crate::functional::graph(patch).map_err(|e| inputs.error("patch", e))?;
                 Ok(keyed(g.net.simplex(), g.net.points().map(Value::numbers)))
             }
         }

@@ -7,11 +7,15 @@ use num_rational::BigRational;
 
 use super::super::{Claim, ClaimFile};
 use crate::any_patch::AnyPatch;
+use crate::capability::InputSpace;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::io::{InputError, Problem};
 use crate::patch::BezierPatch as Patch;
 
 type Q = BigRational;
+
+/// Cartesian to barycentric coordinates.
+type Convert<'c> = dyn Fn(&[Q]) -> Result<Vec<Q>, crate::error::CoreError> + 'c;
 
 /// Typed access to one claim's inputs.
 pub struct Inputs<'a> {
@@ -33,6 +37,14 @@ pub struct Point {
 }
 
 impl Point {
+    /// The point in the kind's own coordinates: barycentric, or Cartesian for an S-patch.
+    pub fn input(&self) -> &[Q] {
+        match &self.cartesian {
+            Some(x) if self.at.is_empty() => x,
+            _ => &self.at,
+        }
+    }
+
     /// The key the point was given under.
     pub fn key(&self) -> &'static str {
         if self.cartesian.is_some() {
@@ -152,7 +164,7 @@ impl<'a> Inputs<'a> {
                 let key = format!("{}[{i}]", self.key(name));
                 let p = self.file.doc.rationals(n, &key)?;
                 crate::domain::check_barycentric(&p, m, "point")
-                    .map_err(|e| self.file.doc.error(n, &key, e.to_string()))?;
+                    .map_err(|e| self.file.doc.error(n, &key, e))?;
                 Ok(p)
             })
             .collect()
@@ -188,26 +200,57 @@ impl<'a> Inputs<'a> {
             .map(|n| self.file.doc.usize(n, &self.key("edge")))
             .collect::<Result<Vec<_>, _>>()?;
         match nums.as_slice() {
-            [i, j] => crate::subdivide::check_edge(m, *i, *j)
-                .map_err(|e| self.error("edge", e.to_string())),
+            [i, j] => crate::subdivide::check_edge(m, *i, *j).map_err(|e| self.error("edge", e)),
             _ => Err(self.error("edge", "an edge is two corner numbers, like [1, 2]")),
         }
     }
 
-    /// The claim's patch, of any kind.
+    /// The claim's patch, of any kind, by its representation.
     pub fn any_patch(&self) -> Result<Cow<'a, AnyPatch>, InputError> {
-        self.file.any_patch_for(self.claim).map(Cow::Borrowed)
+        self.file
+            .patch_for(self.claim)
+            .map(|p| Cow::Borrowed(p.as_any()))
     }
 
     /// The claim's patch, which must be polynomial (Bézier or functional).
     pub fn patch(&self) -> Result<Cow<'a, Patch>, InputError> {
-        self.file.patch_for(self.claim).map(Cow::Borrowed)
+        self.file.polynomial_for(self.claim).map(Cow::Borrowed)
+    }
+
+    /// A point of `patch`'s domain in its kind's coordinates ([`InputSpace`]): for a simplex
+    /// as [`Inputs::point`]; for a polygon (an S-patch) a Cartesian point from `cartesian`.
+    pub fn point_of(&self, patch: &crate::patch_type::Patch) -> Result<Point, InputError> {
+        match patch.shape().input {
+            InputSpace::Barycentric { m } => {
+                self.point_in(m, &|x: &[Q]| patch.exact().cartesian_input(x))
+            }
+            InputSpace::Polygon { .. } => {
+                if self.get("at").is_some() {
+                    return Err(self.error(
+                        "at",
+                        format!(
+                            "{} takes Cartesian points: use `cartesian`",
+                            patch.as_any().described()
+                        ),
+                    ));
+                }
+                Ok(Point {
+                    at: Vec::new(),
+                    cartesian: Some(self.rationals("cartesian")?),
+                })
+            }
+        }
     }
 
     /// A barycentric point from `at` (checked to sum to one, except for float claims: what a
     /// float program uses need not), or a Cartesian one from `cartesian`.
     pub fn point(&self, patch: &Patch) -> Result<Point, InputError> {
-        let m = patch.net.m();
+        let domain = patch.domain_or_reference();
+        self.point_in(patch.net.m(), &|x: &[Q]| domain.barycentric(x))
+    }
+
+    /// [`Inputs::point`] over the `m`-simplex, `cartesian` converted by `convert`.
+    fn point_in(&self, m: usize, convert: &Convert<'_>) -> Result<Point, InputError> {
         match (self.opt_rationals("at")?, self.opt_rationals("cartesian")?) {
             (Some(at), None) if self.get("precision").is_some() => {
                 if at.len() != m + 1 {
@@ -223,17 +266,14 @@ impl<'a> Inputs<'a> {
             }
             (Some(at), None) => {
                 crate::domain::check_barycentric(&at, m, "point `at`")
-                    .map_err(|e| self.error("at", e.to_string()))?;
+                    .map_err(|e| self.error("at", e))?;
                 Ok(Point {
                     at,
                     cartesian: None,
                 })
             }
             (None, Some(x)) => Ok(Point {
-                at: patch
-                    .domain_or_reference()
-                    .barycentric(&x)
-                    .map_err(|e| self.error("cartesian", e.to_string()))?,
+                at: convert(&x).map_err(|e| self.error("cartesian", e))?,
                 cartesian: Some(x),
             }),
             _ => Err(self.error(

@@ -41,7 +41,7 @@ impl<'a> JoinOp<'a> {
                 .patches
                 .iter()
                 .find(|(n, _)| n == name)
-                .map(|(_, p)| p)
+                .map(|(_, p)| p.as_any())
                 .ok_or_else(|| {
                     inputs.error(
                         "patches",
@@ -82,8 +82,7 @@ impl<'a> JoinOp<'a> {
     /// claimed part). Violations are keyed `"C1 1,0,1"` (row ρ at B's index, the difference)
     /// and `"coplanarity 0,1,1"` (the volume).
     pub fn compute(&self, inputs: &Inputs<'_>) -> Result<Value, InputError> {
-        let j = crate::join::analyse(&self.a, &self.b)
-            .map_err(|e| inputs.error("patches", e.to_string()))?;
+        let j = crate::join::analyse(&self.a, &self.b).map_err(|e| inputs.error("patches", e))?;
         let mut kv = vec![
             ("c0".to_string(), Value::Bool(j.c0)),
             ("c1".to_string(), Value::Bool(j.c1)),

@@ -10,8 +10,9 @@ use super::inputs::{Inputs, Point, select_part};
 use super::{OpName, Value, seen};
 use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
-use crate::exact::{Algorithm, ExactEvaluator};
+use crate::exact::Algorithm;
 use crate::io::InputError;
+use crate::patch_type::Patch;
 use crate::spatch::SPatch;
 
 type Q = BigRational;
@@ -22,7 +23,7 @@ pub enum PointOp<'a> {
     /// `eval`: the patch (any kind) at a point; `algorithm` names the float path of `bound`.
     Eval {
         /// The patch.
-        patch: Cow<'a, AnyPatch>,
+        patch: Cow<'a, Patch>,
         /// The point (Cartesian only, `at` empty, for an S-patch).
         point: Point,
         /// The float algorithm whose a-priori bound `tolerance = "bound"` uses.
@@ -67,13 +68,9 @@ pub enum PointOp<'a> {
 }
 
 fn parse_algorithm(inputs: &Inputs<'_>) -> Result<Algorithm, InputError> {
-    match inputs.opt_string("algorithm")?.as_deref() {
-        None | Some("casteljau") => Ok(Algorithm::Casteljau),
-        Some("bernstein") => Ok(Algorithm::Bernstein),
-        Some(other) => Err(inputs.error(
-            "algorithm",
-            format!("unknown algorithm `{other}` (known: casteljau, bernstein)"),
-        )),
+    match inputs.opt_string("algorithm")? {
+        None => Ok(Algorithm::Casteljau),
+        Some(text) => text.parse().map_err(|e| inputs.error("algorithm", e)),
     }
 }
 
@@ -118,11 +115,11 @@ impl<'a> PointOp<'a> {
     pub fn parse(inputs: &Inputs<'a>, name: OpName) -> Result<Self, InputError> {
         Ok(match name {
             OpName::Eval => {
-                let patch = inputs.any_patch()?;
-                let point = patch_point(inputs, &patch)?;
+                let patch = inputs.file.patch_for(inputs.claim)?;
+                let point = inputs.point_of(patch)?;
                 PointOp::Eval {
                     algorithm: parse_algorithm(inputs)?,
-                    patch,
+                    patch: Cow::Borrowed(patch),
                     point,
                 }
             }
@@ -156,7 +153,7 @@ impl<'a> PointOp<'a> {
                 }
             }
             OpName::Wachspress => {
-                let AnyPatch::SPatch(s) = inputs.file.any_patch_for(inputs.claim)? else {
+                let AnyPatch::SPatch(s) = inputs.file.patch_for(inputs.claim)?.as_any() else {
                     return Err(inputs.error(
                         "patch",
                         "`wachspress` needs an S-patch (a patch file with `polygon`)",
@@ -210,7 +207,7 @@ impl<'a> PointOp<'a> {
         }
         if let Some(p) = patch.polynomial() {
             crate::derivative::check_order(out.len(), p.net.degree())
-                .map_err(|e| inputs.error("dirs", e.to_string()))?;
+                .map_err(|e| inputs.error("dirs", e))?;
         }
         Ok(out)
     }
@@ -227,8 +224,8 @@ impl<'a> PointOp<'a> {
                 point,
                 algorithm,
             } => PointOp::Eval {
-                point: seen::point(inputs, point, domain_of(patch).as_ref(), p)?,
-                patch: Cow::Owned(seen::any_patch(inputs, patch, p)?),
+                point: seen::input(inputs, point, patch, p)?,
+                patch: Cow::Owned(seen::any_patch(inputs, patch.as_any(), p)?.into()),
                 algorithm: *algorithm,
             },
             PointOp::Derivative {
@@ -266,21 +263,12 @@ impl<'a> PointOp<'a> {
     /// The exact value.
     pub fn compute(&self, inputs: &Inputs<'_>) -> Result<Value, InputError> {
         match self {
-            PointOp::Eval { patch, point, .. } => match patch.as_ref() {
-                AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok(Value::numbers(
-                    &ExactEvaluator::new(&p.net).evaluate_fast(&point.at),
-                )),
-                AnyPatch::Rational(r) => r
-                    .evaluate(&point.at)
-                    .map(|v| Value::numbers(&v))
-                    .map_err(|e| inputs.error(point.key(), e.to_string())),
-                AnyPatch::SPatch(s) => {
-                    let x = point.cartesian.as_deref().unwrap_or_default();
-                    s.evaluate(x)
-                        .map(|(_, v)| Value::numbers(&v))
-                        .map_err(|e| inputs.error("cartesian", e.to_string()))
-                }
-            },
+            PointOp::Eval { patch, point, .. } => patch
+                .exact()
+                .exact_evaluator()
+                .evaluate(point.input())
+                .map(|v| Value::numbers(&v))
+                .map_err(|e| inputs.error(point.key(), e)),
             PointOp::Derivative { patch, point, .. } => {
                 let dirs = self.directions(inputs)?;
                 let refs: Vec<&[Q]> = dirs.iter().map(Vec::as_slice).collect();
@@ -289,7 +277,7 @@ impl<'a> PointOp<'a> {
                     AnyPatch::Rational(r) => r
                         .derivative_of_order(&point.at, &refs)
                         .map(|v| Value::numbers(&v))
-                        .map_err(|e| inputs.error(point.key(), e.to_string())),
+                        .map_err(|e| inputs.error(point.key(), e)),
                     other => {
                         let p = other.polynomial().expect("checked when parsed");
                         Ok(Value::numbers(&crate::derivative::directional_derivative(
@@ -312,14 +300,14 @@ impl<'a> PointOp<'a> {
                         )
                     }
                 }
-                .map_err(|e| inputs.error("at", e.to_string()))?;
+                .map_err(|e| inputs.error("at", e))?;
                 select_part(inputs, part.as_deref(), tangent_value(&f))
             }
             PointOp::Wachspress { patch, cartesian } => {
                 let lambda = patch
                     .polygon
                     .wachspress(cartesian)
-                    .map_err(|e| inputs.error("cartesian", e.to_string()))?;
+                    .map_err(|e| inputs.error("cartesian", e))?;
                 let x = [cartesian[0].clone(), cartesian[1].clone()]; // checked by `wachspress`
                 Ok(Value::Map(vec![
                     ("A".into(), Value::numbers(&patch.polygon.areas(&x))),
@@ -337,9 +325,7 @@ impl<'a> PointOp<'a> {
                 } else {
                     ("point", domain.barycentric(x))
                 };
-                Ok(Value::numbers(
-                    &result.map_err(|e| inputs.error(name, e.to_string()))?,
-                ))
+                Ok(Value::numbers(&result.map_err(|e| inputs.error(name, e))?))
             }
         }
     }
@@ -381,33 +367,28 @@ fn tangent_value(f: &crate::derivative::TangentFrame) -> Value {
 pub struct FloatEval {
     /// The exact values of the inputs as the code saw them (rounded to the precision).
     pub seen_inputs: Vec<Q>,
-    /// `P` at those inputs, with the control points rounded to the precision too (homogeneous form).
+    /// `P` at those inputs, with the patch's numbers rounded to the precision too.
     pub exact_seen: Vec<Q>,
     /// `P` at the intended inputs (the exact text, the exact patch).
     pub exact_intended: Vec<Q>,
-    /// `Σ|c_i| B_i(|λ|)` per coordinate, at the inputs as seen.
+    /// The condition number per coordinate, at the inputs as seen.
     pub condition: Vec<Q>,
     /// The a-priori bound of the claim's `algorithm` per coordinate.
     pub bound: Vec<Option<Q>>,
+    /// Does `cond=K` mean anything for this kind of patch?
+    pub cond_tolerance: bool,
     /// `(m, n)`: the simplex dimension and degree of the net evaluated (what `cond` without `K`
     /// resolves against, [`crate::certify::measures::Tolerance::for_patch`]).
     pub simplex_degree: (usize, usize),
 }
 
-/// The float view of an `eval` claim in precision `p`. A Cartesian point is rounded to `p` and
-/// converted to barycentric coordinates exactly.
-///
-/// Rational patches: `bound` is the proven a-priori bound
-/// [`crate::certify::bound::rational_a_priori`] of homogeneous de Casteljau plus one division,
-/// and `cond=K` means `|y − q| ≤ K ε κ` with the rational condition number
-/// [`crate::certify::bound::rational_condition`]; the homogeneous net `(w c, w)` is what is
-/// rounded.
-///
-/// S-patches: `bound` is the proven bound of the whole float path (float Wachspress
-/// coordinates, then de Casteljau: [`crate::certify::beyond::SPatchCase::total_bound`]);
-/// `cond=K` is refused (the coordinates have a condition of their own that `Σ|P_α|B_α` does
-/// not measure). The condition shown is `Σ|P_α|B_α(λ)` at the exact Wachspress coordinates of
-/// the rounded point.
+/// The float view of an `eval` claim in precision `p`: the exact side of the library's judge
+/// ([`crate::judge_algorithm`]), for any kind of patch through its capabilities. The input is
+/// rounded to `p` (a Cartesian point of a simplex is rounded, then converted to barycentric
+/// coordinates exactly), and the kind's float program holds its numbers rounded to `p` (for a
+/// rational patch its homogeneous net `(w c, w)`; for an S-patch its polygon too); `bound` is
+/// the proven bound of that program, and `cond=K` is refused where the program adds an error
+/// the condition number does not measure (S-patches: the float Wachspress coordinates).
 pub fn eval_float(
     inputs: &Inputs<'_>,
     op: &PointOp<'_>,
@@ -421,148 +402,56 @@ pub fn eval_float(
     else {
         unreachable!("the float view is of `eval`")
     };
-    let patch = match patch.as_ref() {
-        AnyPatch::Rational(r) => return eval_float_rational(inputs, r, point, *algorithm, p),
-        AnyPatch::SPatch(s) => return eval_float_spatch(inputs, s, point, p),
-        AnyPatch::Bezier(patch) | AnyPatch::Functional(patch) => patch,
-    };
-    let seen_patch = seen::patch(inputs, patch, p)?;
-    let seen_inputs = seen::point(inputs, point, Some(&patch.domain_or_reference()), p)?.at;
-    let seen_net = &seen_patch.net;
-    let exact_seen = ExactEvaluator::new(seen_net).evaluate(&seen_inputs, Algorithm::Casteljau);
-    let exact_intended = ExactEvaluator::new(&patch.net).evaluate(&point.at, Algorithm::Casteljau);
-    let condition = crate::certify::bound::condition(seen_net, &seen_inputs);
-    let (m, n) = (patch.net.m(), patch.net.degree());
-    let bound = condition
+    let seen = seen::input(inputs, point, patch, p)?;
+    let input: Vec<f64> = seen
+        .input()
         .iter()
-        .map(|s| crate::certify::bound::a_priori(*algorithm, p, m, n, s, &seen_inputs))
+        .map(crate::number::round_f64) // exact: floats of precision p
         .collect();
-    Ok(FloatEval {
-        seen_inputs,
-        exact_seen,
-        exact_intended,
-        condition,
-        bound,
-        simplex_degree: (m, n),
-    })
-}
-
-fn refuse_cond_tolerance(inputs: &Inputs<'_>) -> Result<(), InputError> {
     let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
-    if tolerance.is_cond() {
-        return Err(inputs.error(
-            "tolerance",
-            format!("tolerance `{tolerance}` is not defined for S-patches (the float Wachspress coordinates add an error Σ|P_α|B_α does not measure): use `bound`, the proven bound of the whole float path"),
-        ));
-    }
-    Ok(())
-}
-
-/// The float view of an `eval` claim on a rational patch.
-fn eval_float_rational(
-    inputs: &Inputs<'_>,
-    r: &crate::rational::RationalPatch,
-    point: &Point,
-    algorithm: Algorithm,
-    p: crate::float::Precision,
-) -> Result<FloatEval, InputError> {
-    if algorithm != Algorithm::Casteljau {
-        return Err(inputs.error(
-            "algorithm",
-            "`bernstein`: a rational patch's float path is homogeneous de Casteljau (algorithm `casteljau`) only",
-        ));
-    }
-    let key = point.key();
-    let seen_inputs = seen::point(inputs, point, Some(&r.patch.domain_or_reference()), p)?.at;
-    let seen = seen::rational(inputs, r, p)?;
-    let hr = seen.homogeneous();
-    let exact_seen = seen
-        .evaluate(&seen_inputs)
-        .map_err(|e| inputs.error(key, format!("as the code saw it: {e}")))?;
-    let exact_intended = r
-        .evaluate(&point.at)
-        .map_err(|e| inputs.error(key, e.to_string()))?;
-    use crate::certify::bound;
-    let condition = bound::rational_condition(&hr, &seen_inputs)
-        .ok_or_else(|| inputs.error(key, "the denominator vanishes as the code saw it"))?;
-    let (m, n) = (hr.m(), hr.degree());
-    let errs: Option<Vec<Q>> = bound::condition(&hr, &seen_inputs)
-        .iter()
-        .map(|s| bound::a_priori(Algorithm::Casteljau, p, m, n, s, &seen_inputs))
-        .collect();
-    let den = ExactEvaluator::new(&seen.denominator())
-        .evaluate(&seen_inputs, Algorithm::Casteljau)
-        .remove(0);
-    let bounds = errs.and_then(|e| {
-        let (e_den, e_num) = e.split_last()?;
-        bound::rational_a_priori(p, e_num, e_den, &exact_seen, &den)
-    });
-    let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
-    if tolerance == crate::certify::measures::Tolerance::Bound && bounds.is_none() {
-        return Err(inputs.error(
-            "tolerance",
-            format!("no bound at this point: the denominator's error bound e_D is not below |D| in {} (its sign is not certain)", p.name()),
-        ));
-    }
-    let d = exact_seen.len();
-    let bound = bounds.map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect());
+    let side = crate::judge::exact_side(
+        patch,
+        *algorithm,
+        &input,
+        &tolerance,
+        p,
+        Some(point.input()),
+    )
+    .map_err(|(part, e)| {
+        use crate::api_error::Error;
+        use crate::judge::Part;
+        let problem = |e: Error| -> crate::io::Problem {
+            match e {
+                Error::Core(core) => core.into(),
+                e => e.to_string().into(),
+            }
+        };
+        match (part, e) {
+            (Part::Patch, e) => inputs.error("patch", problem(e)),
+            (Part::Algorithm, e) => inputs.error("algorithm", problem(e)),
+            (Part::Input, e) => inputs.error(point.key(), problem(e)),
+            (Part::Tolerance, crate::api_error::Error::Unsupported { what, .. }) => {
+                inputs.error("tolerance", what.to_string())
+            }
+            (Part::Tolerance, e) => inputs.error("tolerance", e.to_string()),
+        }
+    })?;
+    let d = side.exact.len();
+    let condition = side.condition.ok_or_else(|| {
+        inputs.error(
+            point.key(),
+            "the condition number is undefined as the code saw it",
+        )
+    })?;
     Ok(FloatEval {
-        seen_inputs,
-        exact_seen,
-        exact_intended,
+        seen_inputs: side.input_seen,
+        exact_seen: side.exact,
+        exact_intended: side.exact_intended.unwrap_or_default(),
         condition,
-        bound,
-        simplex_degree: (m, n),
-    })
-}
-
-/// The float view of an `eval` claim on an S-patch (Cartesian point).
-fn eval_float_spatch(
-    inputs: &Inputs<'_>,
-    s: &SPatch,
-    point: &Point,
-    p: crate::float::Precision,
-) -> Result<FloatEval, InputError> {
-    refuse_cond_tolerance(inputs)?;
-    let x = point.cartesian.as_deref().unwrap_or_default();
-    let (_, exact_intended) = s
-        .evaluate(x)
-        .map_err(|e| inputs.error("cartesian", e.to_string()))?;
-    let seen_inputs = seen::numbers(inputs, "cartesian", x, p)?;
-    let seen = seen::spatch(inputs, s, p)?;
-    let (lambda, exact_seen) = seen
-        .evaluate(&seen_inputs)
-        .map_err(|e| inputs.error("cartesian", format!("as the code saw it: {e}")))?;
-    let condition = crate::certify::bound::condition(&seen.net, &lambda);
-    let d = exact_seen.len();
-    // the proven bound of the float path, run as the code runs it
-    use crate::certify::beyond::SPatchCertifier;
-    use crate::float::Precision;
-    use crate::number::{round_f32, round_f64};
-    let total = match p {
-        Precision::F64 => SPatchCertifier::<f64>::new(s).ok().and_then(|c| {
-            c.check(&[round_f64(&seen_inputs[0]), round_f64(&seen_inputs[1])])
-                .total_bound
-        }),
-        Precision::F32 => SPatchCertifier::<f32>::new(s).ok().and_then(|c| {
-            c.check(&[round_f32(&seen_inputs[0]), round_f32(&seen_inputs[1])])
-                .total_bound
-        }),
-    };
-    let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
-    if tolerance == crate::certify::measures::Tolerance::Bound && total.is_none() {
-        return Err(inputs.error(
-            "tolerance",
-            format!("no bound at this point in {}: it is on or too near an edge of the polygon (or its numbers too small) for the float Wachspress coordinates' bound", p.name()),
-        ));
-    }
-    let bound = total.map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect());
-    Ok(FloatEval {
-        seen_inputs,
-        exact_seen,
-        exact_intended,
-        condition,
-        bound,
-        simplex_degree: (seen.net.m(), seen.net.degree()),
+        bound: side
+            .bound
+            .map_or_else(|| vec![None; d], |b| b.into_iter().map(Some).collect()),
+        cond_tolerance: side.cond_tolerance,
+        simplex_degree: (patch.simplex_dim(), patch.degree()),
     })
 }

@@ -6,6 +6,7 @@ use num_rational::BigRational;
 
 use super::inputs::{Inputs, Point};
 use crate::any_patch::AnyPatch;
+use crate::capability::InputSpace;
 use crate::domain::Domain;
 use crate::float::Precision;
 use crate::io::InputError;
@@ -57,7 +58,7 @@ pub fn point(
             Ok(Point {
                 at: domain
                     .barycentric(&xr)
-                    .map_err(|e| inputs.error("cartesian", e.to_string()))?,
+                    .map_err(|e| inputs.error("cartesian", e))?,
                 cartesian: Some(xr),
             })
         }
@@ -66,6 +67,37 @@ pub fn point(
             cartesian: Some(numbers(inputs, "cartesian", x, p)?),
         }),
         (None, _) => Ok(Point {
+            at: numbers(inputs, "at", &point.at, p)?,
+            cartesian: None,
+        }),
+    }
+}
+
+/// A point of `patch` as seen: `at` rounded, or the Cartesian point rounded and then (for a
+/// patch over a simplex) converted exactly to barycentric coordinates
+/// ([`crate::ExactEval::cartesian_input`]).
+pub fn input(
+    inputs: &Inputs<'_>,
+    point: &Point,
+    patch: &crate::patch_type::Patch,
+    p: Precision,
+) -> Result<Point, InputError> {
+    match &point.cartesian {
+        Some(x) => {
+            let xr = numbers(inputs, "cartesian", x, p)?;
+            let at = match patch.shape().input {
+                InputSpace::Barycentric { .. } => patch
+                    .exact()
+                    .cartesian_input(&xr)
+                    .map_err(|e| inputs.error("cartesian", e))?,
+                InputSpace::Polygon { .. } => Vec::new(),
+            };
+            Ok(Point {
+                at,
+                cartesian: Some(xr),
+            })
+        }
+        None => Ok(Point {
             at: numbers(inputs, "at", &point.at, p)?,
             cartesian: None,
         }),
@@ -130,7 +162,7 @@ pub fn spatch(inputs: &Inputs<'_>, s: &SPatch, p: Precision) -> Result<SPatch, I
         return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
     }
     let mut out = SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
-        .map_err(|e| inputs.error("patch", e.to_string()))?;
+        .map_err(|e| inputs.error("patch", e))?;
     out.name = s.name.clone();
     Ok(out)
 }

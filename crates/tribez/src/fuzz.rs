@@ -6,9 +6,9 @@
 
 use std::path::PathBuf;
 
-use super::patch_file::{any_patch_from_document, any_patch_to_json, any_patch_to_toml};
-use super::points::{parse_csv_points, points_from_document};
-use super::tree::Document;
+use crate::io::patch_file::{any_patch_from_document, any_patch_to_json, any_patch_to_toml};
+use crate::io::points::{parse_csv_points, points_from_document};
+use crate::io::tree::Document;
 
 /// Every target's name, as in `fuzz/Cargo.toml` and `fuzz/regressions/`.
 pub const TARGETS: &[&str] = &[
@@ -68,7 +68,7 @@ pub fn polynomial(data: &[u8]) {
 }
 
 /// A patch read from a document, then written back and read again: the same patch.
-fn patch(doc: Result<Document, super::InputError>) {
+fn patch(doc: Result<Document, crate::io::InputError>) {
     let Ok(doc) = doc else { return };
     let Ok(p) = any_patch_from_document(&doc, &doc.root, "") else {
         return;

@@ -16,7 +16,7 @@ use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::api_error::Error;
+use crate::api_error::{Error, Lacks};
 use crate::capability::{FloatCase, FloatEval, FloatProgram, InputSpace};
 use crate::certify::bound::roundings;
 use crate::certify::measures::{Measures, sci};
@@ -131,7 +131,7 @@ pub struct CertifyReport {
 }
 
 /// The name of an algorithm in certification reports.
-pub fn algorithm_name(a: Algorithm) -> &'static str {
+pub fn algorithm_key(a: Algorithm) -> &'static str {
     match a {
         Algorithm::Casteljau => "casteljau",
         Algorithm::Bernstein => "bernstein",
@@ -362,10 +362,9 @@ fn algorithms(
         Some(Algorithm::Casteljau) if offered.len() == 1 => Ok(offered.to_vec()),
         Some(a) => Err(Error::Unsupported {
             kind: patch.kind().plural(),
-            what: format!(
-                "certified with de Casteljau only, not with {}",
-                algorithm_name(a)
-            ),
+            what: Lacks::CertifyAlgorithm {
+                algorithm: algorithm_key(a),
+            },
         }),
     }
 }
@@ -454,7 +453,7 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
     };
     let float = patch.float().ok_or(Error::Unsupported {
         kind: patch.kind().plural(),
-        what: "have no float program to certify".into(),
+        what: Lacks::FloatProgramToCertify,
     })?;
     let algorithms = algorithms(options.algorithm, patch, float)?;
     let points = points_of(patch, options)?;
@@ -485,7 +484,7 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
                 "tribez certify {} --random {count} --seed {seed} --precision {} --algorithm {}",
                 options.label,
                 options.precision.map_or("all", |p| p.name()),
-                options.algorithm.map_or("all", algorithm_name)
+                options.algorithm.map_or("all", algorithm_key)
             ),
         }),
         CertifyPoints::Given { .. } => None,
@@ -527,7 +526,7 @@ impl CertifyReport {
             .iter()
             .map(|r| WorstError {
                 op: "eval".into(),
-                algorithm: algorithm_name(r.algorithm).into(),
+                algorithm: algorithm_key(r.algorithm).into(),
                 precision: r.precision.name().into(),
                 ulps: r.max_ulps,
                 at: r
@@ -563,7 +562,7 @@ impl CertifyReport {
         for r in &self.rows {
             out += &format!(
                 "{:<10} {:<5} {:>9} {:>10} {:>8.2}% {:>11} {:>11} {:>8} {:>9} {:>8}\n",
-                algorithm_name(r.algorithm),
+                algorithm_key(r.algorithm),
                 r.precision.name(),
                 r.coordinates,
                 g(r.max_ulps),
@@ -583,7 +582,7 @@ impl CertifyReport {
         }
         out += &format!("\n{}\n", self.bound_note);
         for r in &self.rows {
-            let (a, p) = (algorithm_name(r.algorithm), r.precision.name());
+            let (a, p) = (algorithm_key(r.algorithm), r.precision.name());
             for line in &r.notes {
                 out += &format!("{a} {p}: {line}\n");
             }
@@ -654,7 +653,7 @@ impl Serialize for CertifyReport {
                 .rows
                 .iter()
                 .map(|r| RowJson {
-                    algorithm: algorithm_name(r.algorithm),
+                    algorithm: algorithm_key(r.algorithm),
                     precision: r.precision.name(),
                     coordinates: r.coordinates,
                     max_ulps: r.max_ulps,
