@@ -29,7 +29,8 @@ use num_traits::{CheckedSub, One, Signed, ToPrimitive, Zero};
 /// use tribez::hazmat::number::gcd;
 /// let a = BigUint::from(10u32).pow(1000) * 21u32;
 /// let b = BigUint::from(10u32).pow(900) * 35u32;
-/// assert_eq!(gcd(&a, &b), BigUint::from(10u32).pow(900) * 7u32);
+/// // 21·10^1000 = 21·10^100 · 10^900 and 21·10^100 is a multiple of 7 and of 5: the gcd is 35·10^900.
+/// assert_eq!(gcd(&a, &b), BigUint::from(10u32).pow(900) * 35u32);
 /// ```
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
     let (mut u, mut v) = if a >= b {
