@@ -47,6 +47,7 @@
 //! The exact core never depends on the outer layers (files, claims, the command line, which is
 //! the separate `tribez-cli` crate).
 
+pub mod algebraic;
 mod any_patch;
 mod api_error;
 pub mod batch;
