@@ -30,7 +30,7 @@ pub struct IntersectReport {
     result: CurveIntersections,
 }
 
-fn curve(path: &PathBuf, which: &str) -> Result<Curve, CliError> {
+fn curve(path: &std::path::Path, which: &str) -> Result<Curve, CliError> {
     let file = path.display().to_string();
     let patch = Patch::from(read_any_patch(path)?);
     Curve::from_patch(&patch, which).map_err(|e| CliError::Usage(format!("{file}: {e}")))
@@ -41,11 +41,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let a = curve(&args.a, "the curve")?;
     let b = curve(&args.b, "the curve")?;
     let result = intersect_curves(&a, &b).map_err(|e| {
-        CliError::Usage(format!(
-            "{} × {}: {e}",
-            args.a.display(),
-            args.b.display()
-        ))
+        CliError::Usage(format!("{} × {}: {e}", args.a.display(), args.b.display()))
     })?;
     Outcome::rendered(
         &IntersectReport {
@@ -58,8 +54,12 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     )
 }
 
-fn number_text(x: &RealAlgebraic) -> String {
-    x.to_text()
+/// `name = p/q`, or `name ≈ 0.707… (root of … in (lo, hi))`.
+fn number_text(name: &str, x: &RealAlgebraic) -> String {
+    match x.as_rational() {
+        Some(r) => format!("{name} = {r}"),
+        None => format!("{name} {}", x.to_text()),
+    }
 }
 
 impl Render for IntersectReport {
@@ -80,14 +80,14 @@ impl Render for IntersectReport {
         for (k, p) in r.points.iter().enumerate() {
             let [x, y] = point_text(&p.point);
             out += &format!(
-                "{}. s = {}\n   t = {}\n   point ({x}, {y}){}\n",
+                "{}. {}\n   {}\n   point ({x}, {y}){}\n",
                 k + 1,
-                number_text(&p.s),
-                number_text(&p.t),
+                number_text("s", &p.s),
+                number_text("t", &p.t),
                 match (p.tangential, p.multiplicity) {
                     (true, Some(m)) => format!(", tangential (multiplicity {m})"),
-                    (true, None) => ", tangential (the curves touch at the end of a shared piece)"
-                        .to_string(),
+                    (true, None) =>
+                        ", tangential (the curves touch at the end of a shared piece)".to_string(),
                     (false, Some(m)) if m > 1 => format!(", multiplicity {m}"),
                     _ => String::new(),
                 }
@@ -96,10 +96,10 @@ impl Render for IntersectReport {
         for o in &r.overlaps {
             out += &format!(
                 "overlap: s from {} to {}, t from {} to {}\n",
-                number_text(&o.s[0]),
-                number_text(&o.s[1]),
-                number_text(&o.t[0]),
-                number_text(&o.t[1])
+                o.s[0].to_text(),
+                o.s[1].to_text(),
+                o.t[0].to_text(),
+                o.t[1].to_text()
             );
         }
         out

@@ -1,6 +1,6 @@
 //! Bivariate polynomials with rational coefficients, and elimination: the resultant and the
 //! first subresultant with respect to one variable, computed by evaluation at integer points,
-//! fraction-free determinants (Bareiss) and Newton interpolation (docs/theory.md §17.4).
+//! fraction-free determinants (Bareiss) and Newton interpolation (docs/theory.md §16.4).
 
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -29,11 +29,7 @@ impl BiPoly {
     pub fn deg_x(&self) -> usize {
         self.c
             .iter()
-            .map(|p| {
-                p.iter()
-                    .rposition(|x| !x.is_zero())
-                    .unwrap_or(0)
-            })
+            .map(|p| p.iter().rposition(|x| !x.is_zero()).unwrap_or(0))
             .max()
             .unwrap_or(0)
     }

@@ -1,4 +1,4 @@
-//! Every intersection of two planar Bézier curves, exactly (docs/theory.md §17.5).
+//! Every intersection of two planar Bézier curves, exactly (docs/theory.md §16.5).
 //!
 //! With `A(s) = (X_A, Y_A)/W_A` and `B(t) = (X_B, Y_B)/W_B` (a polynomial curve has `W = 1`),
 //! the intersections are the common zeros of
@@ -158,9 +158,7 @@ impl Curve {
                 check_input("a weight", x)?;
             }
             let wp = IntPoly::from_rationals(&power_basis(w));
-            if wp.is_zero()
-                || !RealAlgebraic::roots_in(&wp, &q(0), &q(1))?.is_empty()
-            {
+            if wp.is_zero() || !RealAlgebraic::roots_in(&wp, &q(0), &q(1))?.is_empty() {
                 return Err(AlgebraicError::Unsupported(
                     "a rational curve whose weight function vanishes on [0, 1]".into(),
                 ));
@@ -248,10 +246,7 @@ fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> Q {
         if ahi < blo {
             return simplest_between(&ahi, &blo);
         }
-        if ahi == blo && a.as_rational().is_none() && b.as_rational().is_none() {
-            // both enclosures touch at a point strictly between them
-        }
-        w = w / q(16);
+        w /= q(16);
     }
 }
 
@@ -325,7 +320,7 @@ fn enclose_ratio(beta: &RealAlgebraic, num: &[Q], den: &[Q], width: &Q) -> (Q, Q
                 return (a, b);
             }
         }
-        w = w / q(1 << 16);
+        w /= q(1 << 16);
     }
 }
 
@@ -367,7 +362,10 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
         (true, true) => {
             let mut out = CurveIntersections::default();
             if a.points[0] == b.points[0] {
-                out.overlaps.push(Overlap { s: full(), t: full() });
+                out.overlaps.push(Overlap {
+                    s: full(),
+                    t: full(),
+                });
             }
             return Ok(out);
         }
@@ -483,8 +481,7 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
         }
         let k = match_value(beta, &nc0, &c1, &alpha_values).ok_or_else(|| {
             AlgebraicError::Unsupported(
-                "an intersection parameter that matches no root of the resultant (internal)"
-                    .into(),
+                "an intersection parameter that matches no root of the resultant (internal)".into(),
             )
         })?;
         matched_alpha[k] = true;
@@ -558,7 +555,11 @@ fn tiny() -> Q {
 }
 
 /// The parameter on `c` nearest (by value) to `near` among those mapping to `p`.
-fn nearest_parameter(c: &Curve, p: &[Q; 2], near: &Q) -> Result<Option<RealAlgebraic>, AlgebraicError> {
+fn nearest_parameter(
+    c: &Curve,
+    p: &[Q; 2],
+    near: &Q,
+) -> Result<Option<RealAlgebraic>, AlgebraicError> {
     let Some(ts) = c.parameters_of(p)? else {
         return Ok(None);
     };
@@ -653,7 +654,10 @@ pub fn point_text(point: &[(Q, Q); 2]) -> [String; 2] {
             if a == crate::number::to_decimal_string(&hi, 17) {
                 a
             } else {
-                format!("≈{}", crate::number::to_decimal_string(&((lo + hi) / q(2)), 17))
+                format!(
+                    "≈{}",
+                    crate::number::to_decimal_string(&((lo + hi) / q(2)), 17)
+                )
             }
         }
     })

@@ -1,6 +1,6 @@
 //! Real root isolation in the Bernstein basis: Descartes' rule of signs on the Bernstein
 //! coefficients over an interval, with de Casteljau subdivision at the midpoint, in integer
-//! arithmetic (docs/theory.md §17.2).
+//! arithmetic (docs/theory.md §16.2).
 //!
 //! Over `[a, b]` a polynomial of degree `n` is `Σ b_i C(n, i) t^i (1 − t)^(n−i)` with
 //! `x = a + (b − a) t`; the number of sign changes `V` of `(b_0, …, b_n)` (zeros skipped)
@@ -14,8 +14,8 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::poly::IntPoly;
 use super::AlgebraicError;
+use super::poly::IntPoly;
 
 /// Where a root lies: exactly at a rational, or alone in an open interval whose end points
 /// the polynomial does not vanish at (and has opposite signs at).

@@ -1,4 +1,4 @@
-//! Real algebraic numbers and the inverse problems they answer exactly (docs/theory.md §17).
+//! Real algebraic numbers and the inverse problems they answer exactly (docs/theory.md §16).
 //!
 //! * [`IntPoly`]: univariate integer polynomials (primitive part, gcd, square-free part and
 //!   factorisation, exact sign at a rational);
@@ -10,9 +10,7 @@
 //! * [`BiPoly`]: bivariate polynomials with rational coefficients, their resultant and first
 //!   subresultant by evaluation and interpolation;
 //! * [`intersect_curves`]: every intersection of two planar Bézier curves (polynomial or
-//!   rational), with tangency, multiplicity and overlaps; [`locate`] and [`ray_hits`]: the
-//!   parameters of a planar triangle patch that map to a point, and the hits of a ray on a
-//!   patch in ℝ³.
+//!   rational), with tangency, multiplicity and overlaps.
 //!
 //! Every size the input controls is capped ([`MAX_DEGREE`], [`MAX_BITS`],
 //! [`MAX_CURVE_DEGREE`], [`MAX_PATCH_DEGREE`]) with a typed error ([`AlgebraicError`]).
@@ -24,9 +22,7 @@ mod number;
 mod poly;
 
 pub use bivariate::{BiPoly, resultant, subresultant1};
-pub use curves::{
-    Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text,
-};
+pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
@@ -105,7 +101,10 @@ pub(crate) fn check_poly(p: &IntPoly) -> Result<(), AlgebraicError> {
 }
 
 /// Check a rational input number against [`MAX_INPUT_BITS`].
-pub(crate) fn check_input(what: &'static str, x: &num_rational::BigRational) -> Result<(), AlgebraicError> {
+pub(crate) fn check_input(
+    what: &'static str,
+    x: &num_rational::BigRational,
+) -> Result<(), AlgebraicError> {
     let bits = x.numer().bits().max(x.denom().bits());
     if bits > MAX_INPUT_BITS {
         return Err(AlgebraicError::CoefficientTooLarge {

@@ -1,6 +1,6 @@
 //! [`RealAlgebraic`]: a real algebraic number, exactly — a rational, or the only root of a
 //! square-free primitive integer polynomial in an open interval with rational end points
-//! (docs/theory.md §17.3).
+//! (docs/theory.md §16.3).
 
 use std::cmp::Ordering;
 
@@ -119,7 +119,10 @@ impl Root {
     pub fn bisect(&mut self) {
         let mid = (&self.lo + &self.hi) / BigRational::from_integer(BigInt::from(2));
         let s = self.poly.sign_at(&mid);
-        debug_assert!(s != Ordering::Equal, "an irrational root is never a midpoint");
+        debug_assert!(
+            s != Ordering::Equal,
+            "an irrational root is never a midpoint"
+        );
         if s == self.lo_sign {
             self.lo = mid;
         } else {
@@ -211,11 +214,11 @@ impl RealAlgebraic {
         }
         // the irrational roots keep the polynomial left after every rational root is divided out
         for r in out.iter_mut() {
-            if let RealAlgebraic::Root(root) = r {
-                if root.poly != poly {
-                    root.poly = poly.clone();
-                    root.lo_sign = poly.sign_at(&root.lo);
-                }
+            if let RealAlgebraic::Root(root) = r
+                && root.poly != poly
+            {
+                root.poly = poly.clone();
+                root.lo_sign = poly.sign_at(&root.lo);
             }
         }
         Ok(out)

@@ -1,7 +1,7 @@
 //! Univariate polynomials with integer coefficients ([`IntPoly`]): content and primitive part,
 //! exact division, pseudo-remainders, gcd by the primitive remainder sequence, square-free part
 //! and square-free factorisation (Yun), and the exact sign at a rational point
-//! (docs/theory.md §17.1).
+//! (docs/theory.md §16.1).
 
 use std::cmp::Ordering;
 
@@ -43,9 +43,7 @@ impl IntPoly {
     /// ascending): the coefficients times the lcm of their denominators, divided by their gcd,
     /// with a positive leading coefficient. Zero for the zero polynomial.
     pub fn from_rationals(q: &[BigRational]) -> Self {
-        let l = q
-            .iter()
-            .fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+        let l = q.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
         Self::new(q.iter().map(|x| x.numer() * (&l / x.denom())).collect()).primitive()
     }
 
@@ -259,7 +257,7 @@ impl IntPoly {
     pub fn sign_at(&self, x: &BigRational) -> Ordering {
         let v = self.eval_scaled(x.numer(), x.denom());
         let s = v.sign();
-        let s = if x.denom().is_negative() && self.c.len() % 2 == 0 {
+        let s = if x.denom().is_negative() && self.c.len().is_multiple_of(2) {
             // d^(deg) with an odd degree and a negative d flips the sign
             flip(s)
         } else {
@@ -316,4 +314,3 @@ fn flip(s: Sign) -> Sign {
         Sign::NoSign => Sign::NoSign,
     }
 }
-

@@ -22,7 +22,10 @@ fn gcd_and_square_free() {
     assert_eq!(p3.square_free(), IntPoly::from_i64(&[-1, -1, 2]));
     assert_eq!(
         p3.square_free_factors(),
-        vec![(IntPoly::from_i64(&[1, 2]), 1), (IntPoly::from_i64(&[-1, 1]), 3)]
+        vec![
+            (IntPoly::from_i64(&[1, 2]), 1),
+            (IntPoly::from_i64(&[-1, 1]), 3)
+        ]
     );
 }
 
@@ -41,7 +44,10 @@ fn isolation_counts_and_orders_roots() {
     assert_eq!(r[2].to_f64(), std::f64::consts::FRAC_1_SQRT_2);
     assert_eq!(r[3].as_rational(), Some(&q("3/4")));
     // the irrational root keeps only the factor 2x^2 − 1
-    assert_eq!(r[2].as_root().unwrap().poly(), &IntPoly::from_i64(&[-1, 0, 2]));
+    assert_eq!(
+        r[2].as_root().unwrap().poly(),
+        &IntPoly::from_i64(&[-1, 0, 2])
+    );
     // roots at the interval's ends count
     let e = RealAlgebraic::roots_in(&IntPoly::from_i64(&[0, -1, 1]), &q("0"), &q("1")).unwrap();
     assert_eq!(e.len(), 2);
@@ -61,7 +67,10 @@ fn close_roots_are_separated() {
     assert_eq!(r[0].as_rational(), Some(&q("1/3")));
     assert_eq!(
         r[1].as_rational(),
-        Some(&BigRational::new(&d + BigInt::from(3), &d * BigInt::from(3)))
+        Some(&BigRational::new(
+            &d + BigInt::from(3),
+            &d * BigInt::from(3)
+        ))
     );
 }
 
