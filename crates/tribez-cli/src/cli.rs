@@ -143,7 +143,6 @@ Examples:
 Examples:
   tribez check fixtures/finn_day30.claims.toml
   tribez check fixtures --junit junit.xml --record-baseline baseline.json
-  tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --tolerance ulps=4 --precision f64
   tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --precision f64 --tolerance ulps=4 --plot map.svg --html report.html";
     /// `tribez certify`.
     pub const CERTIFY: &str = "\

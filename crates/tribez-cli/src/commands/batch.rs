@@ -69,7 +69,11 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let mut map = if pictures.any() {
         let outline = crate::picture::reports::outline(
             &tribez::Patch::from(tribez::hazmat::any_patch::AnyPatch::Bezier(patch.clone())),
-            if args.plot.is_some() { "--plot" } else { "--html" },
+            if args.plot.is_some() {
+                "--plot"
+            } else {
+                "--html"
+            },
         )?;
         Some(crate::picture::errmap::MapBuilder::new(outline))
     } else {

@@ -150,7 +150,11 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 
 /// The `tribez certify` arguments that reproduce a run (for the HTML report).
 fn reproduce(args: &Args) -> Vec<String> {
-    let mut c = vec!["tribez".into(), "certify".into(), args.patch.display().to_string()];
+    let mut c = vec![
+        "tribez".into(),
+        "certify".into(),
+        args.patch.display().to_string(),
+    ];
     match (&args.points, args.random) {
         (Some(p), _) => c.extend(["--points".into(), p.display().to_string()]),
         (None, Some(n)) => c.extend([

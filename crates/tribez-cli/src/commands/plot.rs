@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use super::{CliError, OutputTarget, Outcome};
+use super::{CliError, Outcome, OutputTarget};
 use crate::picture::patch::{Labels, MAX_SAMPLES, PlotOptions};
 use crate::picture::project::{DEFAULT_VIEW, View};
 use tribez::Patch;

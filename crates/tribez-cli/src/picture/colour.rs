@@ -51,7 +51,7 @@ impl LogScale {
 
     /// The position of an error of `u` ULPs on the scale, from 0 to 1.
     pub fn t(&self, u: f64) -> f64 {
-        if !(self.hi > self.floor) || self.floor <= 0.0 {
+        if self.hi <= self.floor || self.floor <= 0.0 {
             // one value (or only zeros): the middle of the map for all
             return if self.hi > self.lo && u >= self.hi {
                 1.0
@@ -74,10 +74,13 @@ impl LogScale {
 
     /// Powers of ten strictly inside the logarithmic part (colour bar ticks), at most 12.
     pub fn ticks(&self) -> Vec<f64> {
-        if !(self.hi > self.floor) || self.floor <= 0.0 {
+        if self.hi <= self.floor || self.floor <= 0.0 {
             return Vec::new();
         }
-        let (a, b) = (self.floor.log10().floor() as i32, self.hi.log10().ceil() as i32);
+        let (a, b) = (
+            self.floor.log10().floor() as i32,
+            self.hi.log10().ceil() as i32,
+        );
         let step = ((b - a) / 10).max(1);
         (a..=b)
             .step_by(step as usize)
@@ -98,7 +101,8 @@ mod tests {
         assert_eq!(map(-3.0), ANCHORS[0]);
         assert_eq!(map(f64::NAN), ANCHORS[0]);
         // luminance grows along the map
-        let lum = |c: Rgb| 0.2126 * f64::from(c.0) + 0.7152 * f64::from(c.1) + 0.0722 * f64::from(c.2);
+        let lum =
+            |c: Rgb| 0.2126 * f64::from(c.0) + 0.7152 * f64::from(c.1) + 0.0722 * f64::from(c.2);
         let mut last = -1.0;
         for k in 0..=20 {
             let l = lum(map(f64::from(k) / 20.0));

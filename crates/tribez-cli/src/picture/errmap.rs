@@ -152,7 +152,9 @@ impl MapBuilder {
     /// sizes beyond it on each side.
     fn limits(&self) -> ([f64; 2], [f64; 2]) {
         let (dlo, dhi) = bbox(self.outline.iter().copied());
-        let span = (dhi[0] - dlo[0]).max(dhi[1] - dlo[1]).max(f64::MIN_POSITIVE);
+        let span = (dhi[0] - dlo[0])
+            .max(dhi[1] - dlo[1])
+            .max(f64::MIN_POSITIVE);
         let (rlo, rhi) = bbox(self.dots.iter().map(|d| d.at));
         let mut lo = [0.0; 2];
         let mut hi = [0.0; 2];
@@ -309,16 +311,11 @@ impl MapData {
     /// The smallest and the largest error (the colour bar's labels): the rows' smallest, and the
     /// report's largest (`max_ulps`) when given.
     pub fn range(&self, max_ulps: Option<f64>) -> Option<(f64, f64)> {
-        let hi = max_ulps.filter(|u| u.is_finite()).or_else(|| {
-            (self.b.max >= self.b.min).then_some(self.b.max)
-        })?;
+        let hi = max_ulps
+            .filter(|u| u.is_finite())
+            .or_else(|| (self.b.max >= self.b.min).then_some(self.b.max))?;
         let lo = if self.b.min <= hi { self.b.min } else { hi };
         Some((lo, hi))
-    }
-
-    /// The rows placed on the map.
-    pub fn rows(&self) -> u64 {
-        self.b.rows
     }
 
     /// The position of row `row` if it may be the worst (see [`WorstCandidates`]).
@@ -331,20 +328,29 @@ impl MapData {
         let b = &self.b;
         svg.open_group(&[("id", id.to_string()), ("class", "error-map".into())]);
         svg.text([MAP_X, y0 + 26.0], 15.0, "start", INK, &panel.title, &[]);
-        let (lo, hi) = b
-            .grid
-            .as_ref()
-            .map_or_else(|| self.b.limits(), |g| (g.lo, [g.lo[0] + g.size[0], g.lo[1] + g.size[1]]));
-        let frame = Frame::fit(&[lo, hi], (MAP_X + 8.0, y0 + MAP_Y + 8.0, MAP_W - 16.0, MAP_H - 16.0));
+        let (lo, hi) = b.grid.as_ref().map_or_else(
+            || self.b.limits(),
+            |g| (g.lo, [g.lo[0] + g.size[0], g.lo[1] + g.size[1]]),
+        );
+        let frame = Frame::fit(
+            &[lo, hi],
+            (MAP_X + 8.0, y0 + MAP_Y + 8.0, MAP_W - 16.0, MAP_H - 16.0),
+        );
         let range = self.range(panel.max_ulps);
-        let scale = range.map(|(lo, hi)| {
-            LogScale::new(lo, b.min_positive.filter(|&f| f <= hi), hi)
-        });
+        let scale =
+            range.map(|(lo, hi)| LogScale::new(lo, b.min_positive.filter(|&f| f <= hi), hi));
         let colour = |u: f64| match scale {
             Some(s) if u.is_finite() => s.colour(u),
             _ => NOT_FINITE,
         };
-        svg.rect(MAP_X, y0 + MAP_Y, MAP_W, MAP_H, Rgb(250, 250, 250), Some((Rgb(220, 220, 220), 1.0)));
+        svg.rect(
+            MAP_X,
+            y0 + MAP_Y,
+            MAP_W,
+            MAP_H,
+            Rgb(250, 250, 250),
+            Some((Rgb(220, 220, 220), 1.0)),
+        );
         let mut attrs: Vec<(&str, String)> = vec![("class", "map".into())];
         attrs.extend(frame.attrs());
         svg.open_group(&attrs);
@@ -364,20 +370,27 @@ impl MapData {
                         continue;
                     }
                     let corner = frame.px([g.lo[0] + i as f64 * cw, g.lo[1] + (j + 1) as f64 * ch]);
-                    let fill = if c.not_finite { NOT_FINITE } else { colour(c.max) };
+                    let fill = if c.not_finite {
+                        NOT_FINITE
+                    } else {
+                        colour(c.max)
+                    };
                     let stroke = (c.failed > 0).then_some((FAILED, 0.8));
-                    svg.rect(corner[0], corner[1], cw * frame.s, ch * frame.s, fill, stroke);
+                    svg.rect(
+                        corner[0],
+                        corner[1],
+                        cw * frame.s,
+                        ch * frame.s,
+                        fill,
+                        stroke,
+                    );
                 }
             }
         } else {
             let r = if b.dots.len() <= 2_000 { 3.2 } else { 1.8 };
             let mut order: Vec<&Dot> = b.dots.iter().collect();
             // larger errors on top; failed rows above passing ones
-            order.sort_by(|x, y| {
-                (!x.pass, x.ulps.is_finite().then_some(x.ulps).unwrap_or(f64::INFINITY))
-                    .partial_cmp(&(!y.pass, y.ulps.is_finite().then_some(y.ulps).unwrap_or(f64::INFINITY)))
-                    .unwrap_or(std::cmp::Ordering::Equal)
-            });
+            order.sort_by(|x, y| (!x.pass).cmp(&!y.pass).then(x.ulps.total_cmp(&y.ulps)));
             for d in order {
                 let p = place(d.at);
                 let out = !inside(&b.outline, d.at);
@@ -393,38 +406,44 @@ impl MapData {
             }
         }
         // the worst row
-        if let Some((row, label)) = &panel.worst {
-            if let Some(at) = self.worst_at(*row) {
-                let p = place(at);
-                let top = range.map_or(NOT_FINITE, |(_, hi)| colour(hi));
-                svg.circle(p, 4.0, Some(top), None, &[]);
-                svg.circle(
-                    p,
-                    10.0,
-                    None,
-                    Some((WORST, 2.5)),
-                    &[
-                        ("id", format!("{id}-worst")),
-                        ("class", "worst".into()),
-                        ("data-row", row.to_string()),
-                    ],
-                );
-                let right = p[0] < MAP_X + MAP_W - 200.0;
-                svg.text(
-                    [if right { p[0] + 14.0 } else { p[0] - 14.0 }, p[1] - 12.0],
-                    12.0,
-                    if right { "start" } else { "end" },
-                    WORST,
-                    label,
-                    &[("class", "worst-label".into())],
-                );
-            }
+        if let Some((row, label)) = &panel.worst
+            && let Some(at) = self.worst_at(*row)
+        {
+            let p = place(at);
+            let top = range.map_or(NOT_FINITE, |(_, hi)| colour(hi));
+            svg.circle(p, 3.0, Some(top), None, &[]);
+            svg.circle(
+                p,
+                10.0,
+                None,
+                Some((WORST, 2.5)),
+                &[
+                    ("id", format!("{id}-worst")),
+                    ("class", "worst".into()),
+                    ("data-row", row.to_string()),
+                ],
+            );
+            let right = p[0] < MAP_X + MAP_W - 200.0;
+            svg.text(
+                [if right { p[0] + 14.0 } else { p[0] - 14.0 }, p[1] - 12.0],
+                12.0,
+                if right { "start" } else { "end" },
+                WORST,
+                label,
+                &[("class", "worst-label".into())],
+            );
         }
         svg.close_group();
         // the legend under the map
         let ly = y0 + MAP_Y + MAP_H + 22.0;
         let mut x = MAP_X;
-        svg.circle([x + 5.0, ly - 4.0], 4.5, Some(Rgb(255, 255, 255)), Some((FAILED, 1.4)), &[]);
+        svg.circle(
+            [x + 5.0, ly - 4.0],
+            4.5,
+            Some(Rgb(255, 255, 255)),
+            Some((FAILED, 1.4)),
+            &[],
+        );
         x += 14.0;
         let failed = format!("failed ({})", b.failed);
         svg.text([x, ly], 12.0, "start", INK, &failed, &[]);
@@ -433,7 +452,13 @@ impl MapData {
         x += 16.0;
         svg.text([x, ly], 12.0, "start", INK, "worst row", &[]);
         x += 80.0;
-        svg.circle([x + 5.0, ly - 4.0], 4.0, Some(Rgb(255, 255, 255)), Some((OUTLINE, 0.8)), &[]);
+        svg.circle(
+            [x + 5.0, ly - 4.0],
+            4.0,
+            Some(Rgb(255, 255, 255)),
+            Some((OUTLINE, 0.8)),
+            &[],
+        );
         x += 14.0;
         svg.text(
             [x, ly],
@@ -451,7 +476,10 @@ impl MapData {
             ));
         }
         if b.unplaced > 0 {
-            notes.push(format!("{} rows with a non-finite input not drawn", b.unplaced));
+            notes.push(format!(
+                "{} rows with a non-finite input not drawn",
+                b.unplaced
+            ));
         }
         if b.not_finite > 0 {
             notes.push(format!("{} non-finite results in black", b.not_finite));
@@ -459,10 +487,24 @@ impl MapData {
         if !panel.note.is_empty() {
             notes.push(panel.note.clone());
         }
-        svg.text([MAP_X, ly + 20.0], 11.0, "start", OUTLINE, &notes.join("; "), &[]);
+        svg.text(
+            [MAP_X, ly + 20.0],
+            11.0,
+            "start",
+            OUTLINE,
+            &notes.join("; "),
+            &[],
+        );
         // the colour bar
         let (bx, by, bw, bh) = (MAP_X + MAP_W + 22.0, y0 + MAP_Y + 20.0, 18.0, MAP_H - 40.0);
-        svg.text([bx - 4.0, by - 10.0], 12.0, "start", INK, "error (ulp)", &[]);
+        svg.text(
+            [bx - 4.0, by - 10.0],
+            12.0,
+            "start",
+            INK,
+            "error (ulp)",
+            &[],
+        );
         let steps = 64;
         let spread = range.is_some_and(|(lo, hi)| hi > lo);
         for k in 0..steps {
@@ -488,7 +530,14 @@ impl MapData {
                 let y = by + bh - s.t(v) * bh;
                 if (y - by).abs() > 14.0 && (y - by - bh).abs() > 14.0 {
                     svg.line([bx + bw, y], [bx + bw + 4.0, y], INK, 1.0);
-                    svg.text([bx + bw + 6.0, y + 4.0], 10.0, "start", OUTLINE, &ulps_text(v), &[]);
+                    svg.text(
+                        [bx + bw + 6.0, y + 4.0],
+                        10.0,
+                        "start",
+                        OUTLINE,
+                        &ulps_text(v),
+                        &[],
+                    );
                 }
             }
             if s.lo < s.floor {
@@ -504,7 +553,14 @@ impl MapData {
         }
         // the histogram
         let hx = bx + 110.0;
-        svg.text([hx, y0 + MAP_Y + 10.0], 12.0, "start", INK, "histogram (rows per error in ulp)", &[]);
+        svg.text(
+            [hx, y0 + MAP_Y + 10.0],
+            12.0,
+            "start",
+            INK,
+            "histogram (rows per error in ulp)",
+            &[],
+        );
         let most = panel.histogram.iter().copied().max().unwrap_or(0).max(1);
         let row_h = (MAP_H - 40.0) / 8.0;
         let bar_x = hx + 78.0;
@@ -512,10 +568,24 @@ impl MapData {
         svg.open_group(&[("class", "histogram".into())]);
         for (k, (&label, &count)) in ULP_BUCKETS.iter().zip(&panel.histogram).enumerate() {
             let y = y0 + MAP_Y + 24.0 + k as f64 * row_h;
-            svg.text([bar_x - 6.0, y + row_h * 0.5 + 4.0], 11.0, "end", INK, label, &[]);
+            svg.text(
+                [bar_x - 6.0, y + row_h * 0.5 + 4.0],
+                11.0,
+                "end",
+                INK,
+                label,
+                &[],
+            );
             let w = bar_w * count as f64 / most as f64;
             if count > 0 {
-                svg.rect(bar_x, y + 4.0, w.max(1.0), row_h - 8.0, Rgb(96, 125, 160), None);
+                svg.rect(
+                    bar_x,
+                    y + 4.0,
+                    w.max(1.0),
+                    row_h - 8.0,
+                    Rgb(96, 125, 160),
+                    None,
+                );
             }
             svg.text(
                 [bar_x + w + 4.0, y + row_h * 0.5 + 4.0],
@@ -523,7 +593,10 @@ impl MapData {
                 "start",
                 INK,
                 &count.to_string(),
-                &[("class", "bucket".into()), ("data-count", count.to_string())],
+                &[
+                    ("class", "bucket".into()),
+                    ("data-count", count.to_string()),
+                ],
             );
         }
         svg.close_group();
@@ -537,7 +610,12 @@ pub fn svg(panels: &[(MapData, Panel)], title: &str) -> String {
     let mut svg = Svg::new(WIDTH, height, &[]);
     svg.title(title);
     for (i, (data, panel)) in panels.iter().enumerate() {
-        data.draw(&mut svg, i as f64 * PANEL_H, panel, &format!("map{}", i + 1));
+        data.draw(
+            &mut svg,
+            i as f64 * PANEL_H,
+            panel,
+            &format!("map{}", i + 1),
+        );
     }
     svg.finish()
 }
@@ -569,7 +647,7 @@ mod tests {
         }
         let m = b.finish();
         assert!(m.b.grid.is_some() && m.b.dots.is_empty());
-        assert_eq!(m.rows(), n as u64);
+        assert_eq!(m.b.rows, n as u64);
         assert_eq!(m.worst_at(8), Some([7.0 / n as f64 * 0.5, 0.25]));
         assert_eq!(m.range(None), Some((0.0, 100.0)));
         let cells = m.b.grid.as_ref().unwrap().cells.iter();

@@ -130,9 +130,8 @@ pub fn shell_line(args: &[String]) -> String {
     args.iter()
         .map(|a| {
             let plain = !a.is_empty()
-                && a.bytes().all(|b| {
-                    b.is_ascii_alphanumeric() || b"-_./=,:+@%".contains(&b)
-                });
+                && a.bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || b"-_./=,:+@%".contains(&b));
             if plain {
                 a.clone()
             } else {

@@ -72,9 +72,13 @@ pub fn rasterise(svg: &str, zoom: f32, fonts: bool) -> Result<resvg::tiny_skia::
         options.fontdb_mut().load_system_fonts();
     }
     let tree = resvg::usvg::Tree::from_str(svg, &options).map_err(|e| e.to_string())?;
-    let size = tree.size().to_int_size().scale_by(zoom).ok_or("empty picture")?;
-    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or("picture too large")?;
+    let size = tree
+        .size()
+        .to_int_size()
+        .scale_by(zoom)
+        .ok_or("empty picture")?;
+    let mut pixmap =
+        resvg::tiny_skia::Pixmap::new(size.width(), size.height()).ok_or("picture too large")?;
     resvg::render(
         &tree,
         resvg::tiny_skia::Transform::from_scale(zoom, zoom),

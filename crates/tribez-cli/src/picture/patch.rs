@@ -99,7 +99,11 @@ impl Geometry<'_> {
 
     /// Does the picture live in R^3 (projected and shaded)?
     fn three_d(&self) -> bool {
-        let m = if self.polygon { 2 } else { self.vertices.len() - 1 };
+        let m = if self.polygon {
+            2
+        } else {
+            self.vertices.len() - 1
+        };
         self.d == 3 || (self.d == 1 && m == 2)
     }
 
@@ -349,7 +353,10 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
         .net
         .entries()
         .map(|(alpha, c)| {
-            let w: Vec<BigRational> = alpha.iter().map(|&a| q(a as usize, degree.max(1))).collect();
+            let w: Vec<BigRational> = alpha
+                .iter()
+                .map(|&a| q(a as usize, degree.max(1)))
+                .collect();
             let w = if degree == 0 {
                 vec![q(1, alpha.len()); alpha.len()]
             } else {
@@ -477,10 +484,7 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
     );
     let mut plot_attrs: Vec<(&str, String)> = vec![("id", "plot".into())];
     plot_attrs.extend(frame.attrs());
-    plot_attrs.push((
-        "data-view",
-        format!("{} {}", view.azimuth, view.elevation),
-    ));
+    plot_attrs.push(("data-view", format!("{} {}", view.azimuth, view.elevation)));
     svg.open_group(&plot_attrs);
     // the surface (or the plane's image), far triangles first
     let light = normalize([
@@ -505,7 +509,13 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
             } else {
                 // the orientation, decided below
                 let area = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pc[0] - pa[0]) * (pb[1] - pa[1]);
-                if area < 0.0 { PLANE } else if area > 0.0 { FOLDED } else { ISO }
+                if area < 0.0 {
+                    PLANE
+                } else if area > 0.0 {
+                    FOLDED
+                } else {
+                    ISO
+                }
             };
             Some((depth, [pa, pb, pc], colour))
         })
@@ -513,12 +523,27 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
     if !scene.three_d {
         // folds: the triangles of the orientation fewer triangles have
         let (neg, pos) = faces.iter().fold((0, 0), |(n, p), f| {
-            (n + usize::from(f.2 == PLANE), p + usize::from(f.2 == FOLDED))
+            (
+                n + usize::from(f.2 == PLANE),
+                p + usize::from(f.2 == FOLDED),
+            )
         });
         for f in &mut faces {
             f.2 = match (f.2 == PLANE, f.2 == FOLDED) {
-                (true, _) => if neg >= pos { PLANE } else { FOLDED },
-                (_, true) => if neg >= pos { FOLDED } else { PLANE },
+                (true, _) => {
+                    if neg >= pos {
+                        PLANE
+                    } else {
+                        FOLDED
+                    }
+                }
+                (_, true) => {
+                    if neg >= pos {
+                        FOLDED
+                    } else {
+                        PLANE
+                    }
+                }
                 _ => PLANE,
             };
         }
@@ -612,7 +637,11 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
         ISO,
         &format!(
             "{how}sampled from exact values, {} segments per domain edge",
-            if scene.triangles.is_empty() { 8 * options.samples } else { options.samples }
+            if scene.triangles.is_empty() {
+                8 * options.samples
+            } else {
+                options.samples
+            }
         ),
         &[],
     );

@@ -42,10 +42,7 @@ impl View {
         };
         match (number(a), number(e)) {
             (Some(azimuth), Some(elevation)) if (-90.0..=90.0).contains(&elevation) => {
-                Ok(View {
-                    azimuth,
-                    elevation,
-                })
+                Ok(View { azimuth, elevation })
             }
             _ => Err(bad()),
         }
@@ -60,12 +57,6 @@ impl View {
             [-se * ca, -se * sa, ce],
             [ce * ca, ce * sa, se],
         )
-    }
-
-    /// Picture coordinates `(p, q)` and depth of `x`.
-    pub fn project(&self, x: [f64; 3]) -> ([f64; 2], f64) {
-        let (r, u, v) = self.axes();
-        ([dot(r, x), dot(u, x)], dot(v, x))
     }
 }
 
@@ -134,7 +125,11 @@ impl Frame {
         for k in 0..2 {
             if hi[k] - lo[k] <= f64::EPSILON * (hi[k].abs() + lo[k].abs()).max(1e-300) {
                 let c = 0.5 * (hi[k] + lo[k]);
-                let half = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]).max(c.abs() * 1e-6).max(1e-12);
+                let half = 0.5
+                    * (hi[0] - lo[0])
+                        .max(hi[1] - lo[1])
+                        .max(c.abs() * 1e-6)
+                        .max(1e-12);
                 lo[k] = c - half;
                 hi[k] = c + half;
             }
@@ -178,7 +173,9 @@ mod tests {
             }
         );
         assert_eq!(View::parse(" 10 , 90 ").unwrap().elevation, 90.0);
-        for bad in ["", "1", "1,2,3", "a,b", "0,91", "0,-90.5", "nan,0", "inf,0", "1e9,0"] {
+        for bad in [
+            "", "1", "1,2,3", "a,b", "0,91", "0,-90.5", "nan,0", "inf,0", "1e9,0",
+        ] {
             assert!(View::parse(bad).is_err(), "{bad}");
         }
     }
@@ -190,11 +187,23 @@ mod tests {
             elevation: 90.0,
         };
         // from above with azimuth −90°: x to the right, y up the picture
-        let (p, depth) = top.project([1.0, 2.0, 3.0]);
-        assert!((p[0] - 1.0).abs() < 1e-12 && (p[1] - 2.0).abs() < 1e-12, "{p:?}");
+        let (r, u, v) = top.axes();
+        let x = [1.0, 2.0, 3.0];
+        let (p, depth) = ([dot(r, x), dot(u, x)], dot(v, x));
+        assert!(
+            (p[0] - 1.0).abs() < 1e-12 && (p[1] - 2.0).abs() < 1e-12,
+            "{p:?}"
+        );
         assert!((depth - 3.0).abs() < 1e-12);
         let (r, u, v) = DEFAULT_VIEW.axes();
-        for (a, b, want) in [(r, r, 1.0), (u, u, 1.0), (v, v, 1.0), (r, u, 0.0), (r, v, 0.0), (u, v, 0.0)] {
+        for (a, b, want) in [
+            (r, r, 1.0),
+            (u, u, 1.0),
+            (v, v, 1.0),
+            (r, u, 0.0),
+            (r, v, 0.0),
+            (u, v, 0.0),
+        ] {
             assert!((dot(a, b) - want).abs() < 1e-12);
         }
         // right-handed: r × u = v

@@ -47,7 +47,9 @@ impl Pictures {
 pub fn outline(patch: &Patch, flag: &str) -> Result<Vec<[f64; 2]>, CliError> {
     use tribez::hazmat::any_patch::AnyPatch;
     let vertices: Vec<Vec<BigRational>> = match patch.as_any() {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p.domain_or_reference().vertices().to_vec(),
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+            p.domain_or_reference().vertices().to_vec()
+        }
         AnyPatch::Rational(r) => r.patch.domain_or_reference().vertices().to_vec(),
         AnyPatch::SPatch(s) => s.polygon.vertices().iter().map(|v| v.to_vec()).collect(),
     };
@@ -196,7 +198,14 @@ pub fn batch(
         for f in &report.failures {
             let mut r = coord_rows(&f.coords, f.line);
             if r.is_empty() {
-                r.push(vec![f.line.to_string(), "-".into(), f.reason.clone(), "-".into(), "-".into(), "-".into()]);
+                r.push(vec![
+                    f.line.to_string(),
+                    "-".into(),
+                    f.reason.clone(),
+                    "-".into(),
+                    "-".into(),
+                    "-".into(),
+                ]);
             }
             rows.extend(r);
         }
@@ -204,7 +213,10 @@ pub fn batch(
         sections.push(Section::Table {
             heading: format!("Failures ({} of {})", report.failures.len(), report.failed),
             note: if more > 0 {
-                format!("The first {} failed rows; {more} more are counted, not listed.", report.failures.len())
+                format!(
+                    "The first {} failed rows; {more} more are counted, not listed.",
+                    report.failures.len()
+                )
             } else {
                 String::new()
             },
@@ -216,7 +228,10 @@ pub fn batch(
         title: format!("tribez check: {}", report.file),
         passed,
         verdict: if passed {
-            format!("all {} rows within tolerance {}", report.checked, report.tolerance)
+            format!(
+                "all {} rows within tolerance {}",
+                report.checked, report.tolerance
+            )
         } else {
             format!(
                 "{} of {} rows fail tolerance {}",
@@ -239,14 +254,25 @@ pub fn certify(
     report: &CertifyReport,
     command: &[String],
 ) -> Result<(), CliError> {
-    let outline = outline(patch, if pictures.plot.is_some() { "--plot" } else { "--html" })?;
+    let outline = outline(
+        patch,
+        if pictures.plot.is_some() {
+            "--plot"
+        } else {
+            "--html"
+        },
+    )?;
     let polygon = outline.len() != 3 || matches!(patch.kind(), tribez::PatchKind::SPatch);
     let positions: Vec<[f64; 2]> = report
         .inputs
         .iter()
         .map(|p| {
             let x: Vec<f64> = p.iter().map(round_f64).collect();
-            if polygon { [x[0], x[1]] } else { position(&outline, &x) }
+            if polygon {
+                [x[0], x[1]]
+            } else {
+                position(&outline, &x)
+            }
         })
         .collect();
     let mut panels = Vec::new();
@@ -270,7 +296,11 @@ pub fn certify(
                     report.patch,
                     report.points,
                     ulps_text(row.max_ulps),
-                    if row.within_bound() { "within the bound" } else { "BOUND EXCEEDED" }
+                    if row.within_bound() {
+                        "within the bound"
+                    } else {
+                        "BOUND EXCEEDED"
+                    }
                 ),
                 max_ulps: Some(row.max_ulps),
                 worst: worst.map(|i| {
@@ -281,7 +311,10 @@ pub fn certify(
                 }),
                 histogram: histogram.counts,
                 note: if row.outside_hypothesis > 0 {
-                    format!("{} points outside the bound's hypotheses (not judged)", row.outside_hypothesis)
+                    format!(
+                        "{} points outside the bound's hypotheses (not judged)",
+                        row.outside_hypothesis
+                    )
                 } else {
                     String::new()
                 },
@@ -301,7 +334,10 @@ pub fn certify(
         ("points".into(), report.points.to_string()),
     ];
     if let Some(r) = &report.random {
-        summary.push(("random points".into(), format!("{}, seed {}", r.count, r.seed)));
+        summary.push((
+            "random points".into(),
+            format!("{}, seed {}", r.count, r.seed),
+        ));
     }
     for (row, (data, _)) in report.rows.iter().zip(&panels) {
         let range = data.range(Some(row.max_ulps));
@@ -313,7 +349,11 @@ pub fn certify(
                 ulps_text(row.max_ulps),
                 100.0 * row.correctly_rounded as f64 / row.coordinates.max(1) as f64,
                 ulps_text(row.max_bound_ratio),
-                if row.within_bound() { "within the bound" } else { "BOUND EXCEEDED" }
+                if row.within_bound() {
+                    "within the bound"
+                } else {
+                    "BOUND EXCEEDED"
+                }
             ),
         ));
     }
@@ -335,7 +375,10 @@ pub fn certify(
             format!("{} {}", algorithm_key(row.algorithm), row.precision.name()),
             format_tuple(point),
             ulps_text(row.max_ulps),
-            y.iter().map(|v| format!("{v:?}")).collect::<Vec<_>>().join(", "),
+            y.iter()
+                .map(|v| format!("{v:?}"))
+                .collect::<Vec<_>>()
+                .join(", "),
             exact.map_or("undefined".into(), |e| {
                 e.iter().map(exact_text).collect::<Vec<_>>().join(", ")
             }),

@@ -53,8 +53,6 @@ impl Rgb {
 /// An SVG document being written.
 pub struct Svg {
     out: String,
-    width: f64,
-    height: f64,
 }
 
 impl Svg {
@@ -78,17 +76,7 @@ impl Svg {
             num(width),
             num(height)
         );
-        Svg { out, width, height }
-    }
-
-    /// The document's width in pixels.
-    pub fn width(&self) -> f64 {
-        self.width
-    }
-
-    /// The document's height in pixels.
-    pub fn height(&self) -> f64 {
-        self.height
+        Svg { out }
     }
 
     /// Open a group with attributes (values escaped here).
@@ -181,7 +169,12 @@ impl Svg {
             fill.map_or("none".to_string(), Rgb::hex)
         );
         if let Some((s, w)) = stroke {
-            let _ = write!(self.out, r#" stroke="{}" stroke-width="{}""#, s.hex(), num(w));
+            let _ = write!(
+                self.out,
+                r#" stroke="{}" stroke-width="{}""#,
+                s.hex(),
+                num(w)
+            );
         }
         self.attrs(attrs);
         self.out.push_str("/>\n");
@@ -199,7 +192,12 @@ impl Svg {
             fill.hex()
         );
         if let Some((s, sw)) = stroke {
-            let _ = write!(self.out, r#" stroke="{}" stroke-width="{}""#, s.hex(), num(sw));
+            let _ = write!(
+                self.out,
+                r#" stroke="{}" stroke-width="{}""#,
+                s.hex(),
+                num(sw)
+            );
         }
         self.out.push_str("/>\n");
     }
@@ -231,11 +229,6 @@ impl Svg {
     /// A `<title>` (a tooltip in browsers, the accessible name).
     pub fn title(&mut self, text: &str) {
         let _ = writeln!(self.out, "<title>{}</title>", escape(text));
-    }
-
-    /// Raw markup (already valid and escaped).
-    pub fn raw(&mut self, markup: &str) {
-        self.out.push_str(markup);
     }
 
     /// The finished document.

@@ -195,7 +195,15 @@ impl BatchChecker {
         patch_name: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<BatchReport, BatchError> {
-        check_reader(&self.prepared, reader, format, file, patch_name, progress, None)
+        check_reader(
+            &self.prepared,
+            reader,
+            format,
+            file,
+            patch_name,
+            progress,
+            None,
+        )
     }
 }
 
