@@ -143,12 +143,13 @@ Examples:
 Examples:
   tribez check fixtures/finn_day30.claims.toml
   tribez check fixtures --junit junit.xml --record-baseline baseline.json
-  tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --tolerance ulps=4 --precision f64";
+  tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --precision f64 --tolerance ulps=4 --plot map.svg --html report.html";
     /// `tribez certify`.
     pub const CERTIFY: &str = "\
 Examples:
   tribez certify fixtures/certify/finn_quadratic.toml --random 1000 --seed 7
-  tribez certify fixtures/finn_day30.toml --random 200 --precision f32 --junit certify.xml";
+  tribez certify fixtures/finn_day30.toml --random 200 --precision f32 --junit certify.xml
+  tribez certify fixtures/certify/finn_quadratic.toml --random 2000 --plot certify.svg --html certify.html";
     /// `tribez blossom`.
     pub const BLOSSOM: &str = "\
 Examples:
@@ -190,6 +191,11 @@ Examples:
     pub const TANGENT: &str = "\
 Examples:
   tribez tangent fixtures/finn_day30.toml --at 1/2,1/3,1/6";
+    /// `tribez plot`.
+    pub const PLOT: &str = "\
+Examples:
+  tribez plot fixtures/finn_day30.toml -o finn.svg --labels
+  tribez plot fixtures/peers/peer_cubic.toml -o cubic.png --view 30,20 --samples 64";
     /// `tribez join`.
     pub const JOIN: &str = "\
 Examples:

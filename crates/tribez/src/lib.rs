@@ -85,7 +85,7 @@ pub use api_error::Error;
 pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
 pub use certify::measures::Tolerance;
 pub use certify::report::{
-    CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, RandomPoints, certify,
+    CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, PointResult, RandomPoints, certify,
 };
 pub use error::CoreError;
 pub use exact::Algorithm;

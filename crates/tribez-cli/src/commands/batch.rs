@@ -60,7 +60,25 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         .as_ref()
         .expect("clap requires --patch with --results");
     let results = args.results.as_ref().expect("checked by the caller");
+    let pictures = crate::picture::reports::Pictures {
+        plot: args.plot.clone(),
+        html: args.html.clone(),
+    };
+    pictures.check_names()?;
     let patch = read_patch(patch_path)?;
+    let mut map = if pictures.any() {
+        let outline = crate::picture::reports::outline(
+            &tribez::Patch::from(tribez::hazmat::any_patch::AnyPatch::Bezier(patch.clone())),
+            if args.plot.is_some() {
+                "--plot"
+            } else {
+                "--html"
+            },
+        )?;
+        Some(crate::picture::errmap::MapBuilder::new(outline))
+    } else {
+        None
+    };
     let options = options(args)?;
     let checker = BatchChecker::new(patch, &options)?;
     let show = std::io::stderr().is_terminal();
@@ -70,7 +88,22 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             let _ = std::io::stderr().flush();
         }
     };
-    let report = checker.check_file(results, &patch_path.display().to_string(), &mut progress);
+    let name = patch_path.display().to_string();
+    let report = match &mut map {
+        None => checker.check_file(results, &name, &mut progress),
+        Some(map) => {
+            let cartesian = args.cartesian;
+            let outline = map.outline().to_vec();
+            checker.check_file_each_row(results, &name, &mut progress, &mut |r| {
+                let at = if cartesian {
+                    [r.inputs[0], r.inputs[1]]
+                } else {
+                    crate::picture::reports::position(&outline, &r.inputs)
+                };
+                map.add(r.row, at, r.ulps, r.ulps_lower, r.pass);
+            })
+        }
+    };
     if show {
         eprintln!();
     }
@@ -78,6 +111,17 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let success = report.failed == 0;
     if let Some(path) = &args.junit {
         super::write_junit(path, &report)?;
+    }
+    if let Some(map) = map {
+        let command = crate::picture::reports::batch_command(
+            patch_path,
+            results,
+            args.tolerance.as_deref(),
+            args.precision.as_deref(),
+            args.cartesian,
+            tribez::hazmat::certify::report::algorithm_key(args.algorithm.algorithm()),
+        );
+        crate::picture::reports::batch(&pictures, &report, map.finish(), &command)?;
     }
     let worst = worst_errors(&report);
     let regressions = super::baseline::judge(

@@ -46,6 +46,15 @@ pub struct Args {
     /// Also write a JUnit XML report (one test case per algorithm and precision).
     #[arg(long, value_name = "FILE")]
     pub junit: Option<PathBuf>,
+    /// Also draw the error maps (one per algorithm and precision: every point at its place,
+    /// coloured by its error in ULPs, bound violations and the worst point marked, with the
+    /// histogram) to FILE (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
+    /// Also write a self-contained HTML report (summary, histograms, error maps, worst points
+    /// with exact values, violations, the command to reproduce) to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub html: Option<PathBuf>,
     #[command(flatten)]
     pub out: OutputArgs,
 }
@@ -76,7 +85,15 @@ fn algorithm(args: &Args, patch: &Patch) -> Result<Option<Algorithm>, CliError> 
 
 /// Run `tribez certify`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let pictures = crate::picture::reports::Pictures {
+        plot: args.plot.clone(),
+        html: args.html.clone(),
+    };
+    pictures.check_names()?;
     let patch = Patch::from(read_any_patch(&args.patch)?);
+    if pictures.any() {
+        crate::picture::reports::outline(&patch, "--plot")?;
+    }
     let precision = match args.precision.as_str() {
         "all" => None,
         p => Some(
@@ -125,7 +142,36 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if let Some(path) = &args.junit {
         super::write_junit(path, &report)?;
     }
+    if pictures.any() {
+        crate::picture::reports::certify(&pictures, &patch, &report, &reproduce(args))?;
+    }
     Outcome::rendered(&report, args.out.format, success)
+}
+
+/// The `tribez certify` arguments that reproduce a run (for the HTML report).
+fn reproduce(args: &Args) -> Vec<String> {
+    let mut c = vec![
+        "tribez".into(),
+        "certify".into(),
+        args.patch.display().to_string(),
+    ];
+    match (&args.points, args.random) {
+        (Some(p), _) => c.extend(["--points".into(), p.display().to_string()]),
+        (None, Some(n)) => c.extend([
+            "--random".into(),
+            n.to_string(),
+            "--seed".into(),
+            args.seed.to_string(),
+        ]),
+        (None, None) => {}
+    }
+    c.extend([
+        "--precision".into(),
+        args.precision.clone(),
+        "--algorithm".into(),
+        args.algorithm.clone(),
+    ]);
+    c
 }
 
 impl Render for CertifyReport {

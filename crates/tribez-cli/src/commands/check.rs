@@ -49,6 +49,15 @@ pub struct Args {
     /// Fail when any worst error is larger than recorded in FILE.
     #[arg(long, value_name = "FILE")]
     pub baseline: Option<PathBuf>,
+    /// Batch mode: also draw the error map (every row at its place in the domain, coloured by
+    /// its error in ULPs; failed and worst rows marked; the histogram beside it) to FILE (.svg
+    /// or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
+    /// Batch mode: also write a self-contained HTML report (summary, histogram, error map,
+    /// failures and the worst row with exact values, the command to reproduce) to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub html: Option<PathBuf>,
     #[command(flatten)]
     pub out: OutputArgs,
 }
@@ -69,6 +78,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         ("--tolerance", args.tolerance.is_some()),
         ("--precision", args.precision.is_some()),
         ("--cartesian", args.cartesian),
+        ("--plot", args.plot.is_some()),
+        ("--html", args.html.is_some()),
     ] {
         if given {
             return Err(CliError::Usage(format!(

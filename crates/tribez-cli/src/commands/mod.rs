@@ -14,6 +14,7 @@ pub mod halve;
 pub mod join;
 pub mod matrix;
 pub mod output;
+pub mod plot;
 pub mod reproduce;
 pub mod subdivide;
 pub mod subpatch;
@@ -90,6 +91,9 @@ pub enum Command {
     /// Tangent plane at a point: the de Casteljau intermediate points, the partial derivatives and the normal.
     #[command(after_help = examples::TANGENT)]
     Tangent(tangent::Args),
+    /// Draw a patch with its control net (SVG or PNG): shaded surfaces, planar images with iso-parameter lines, curves, graphs.
+    #[command(after_help = examples::PLOT)]
+    Plot(plot::Args),
     /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, Finn's coplanarity), or build a C1 neighbour.
     #[command(after_help = examples::JOIN)]
     Join(join::Args),
@@ -200,6 +204,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Derivative(a) => (derivative::run(a), &a.out),
         Command::Tangent(a) => (tangent::run(a), &a.out),
         Command::Join(a) => (join::run(a), &a.out),
+        Command::Plot(a) => (plot::run(a), a),
     };
     let finished = result.and_then(|o| {
         emit(&o, out)?;

@@ -162,6 +162,30 @@ impl BatchChecker {
         self.check_reader(reader, format, &file, patch_name, progress)
     }
 
+    /// [`Self::check_file`], and `row(point)` called with every judged row's [`RowPoint`], in
+    /// input order (what an error map draws; the rows are not kept).
+    pub fn check_file_each_row(
+        &self,
+        path: &Path,
+        patch_name: &str,
+        progress: &mut dyn FnMut(u64, u64),
+        row: &mut dyn FnMut(RowPoint),
+    ) -> Result<BatchReport, BatchError> {
+        let file = path.display().to_string();
+        let format = Format::of(path, &file)?;
+        let reader = std::fs::File::open(path)
+            .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+        check_reader(
+            &self.prepared,
+            reader,
+            format,
+            &file,
+            patch_name,
+            progress,
+            Some(row),
+        )
+    }
+
     /// Check the rows read from `reader` in `format`; `file` names it in errors and the report.
     pub fn check_reader<R: Read + Send>(
         &self,
@@ -171,7 +195,15 @@ impl BatchChecker {
         patch_name: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<BatchReport, BatchError> {
-        check_reader(&self.prepared, reader, format, file, patch_name, progress)
+        check_reader(
+            &self.prepared,
+            reader,
+            format,
+            file,
+            patch_name,
+            progress,
+            None,
+        )
     }
 }
 
@@ -182,6 +214,7 @@ fn check_reader<R: Read + Send>(
     file: &str,
     patch_name: &str,
     progress: &mut dyn FnMut(u64, u64),
+    mut each_row: Option<&mut dyn FnMut(RowPoint)>,
 ) -> Result<BatchReport, BatchError> {
     let (width, dim) = (p.width(), p.patch.net.dim());
     let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file)
@@ -225,6 +258,9 @@ fn check_reader<R: Read + Send>(
         let next_eof = read?;
         for (i, o) in outcomes.into_iter().enumerate() {
             let Some(o) = o else { continue };
+            if let Some(f) = each_row.as_mut() {
+                f(RowPoint::of(&o.outcome));
+            }
             acc.add(o, &Source::Text(chunk.row(i), chunk.position(i).1));
         }
         progress(acc.report.checked, acc.report.failed);
@@ -276,6 +312,43 @@ pub struct RowVerdict {
     /// computed exactly, else the upper end of a compensated enclosure, tight to a small
     /// fraction of an ulp; infinite for a non-finite number).
     pub ulps: f64,
+}
+
+/// One judged row as an error map draws it ([`BatchChecker::check_file_each_row`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RowPoint {
+    /// The row's number (as [`FailedRow::line`]).
+    pub row: usize,
+    /// Its input coordinates as the code saw them (barycentric, or Cartesian with
+    /// [`BatchOptions::cartesian`]); NaN where a number is not finite.
+    pub inputs: Vec<f64>,
+    /// Within the tolerance.
+    pub pass: bool,
+    /// The largest error in ULPs over its coordinates, as the histogram counts it (exact, or
+    /// the upper end of a compensated enclosure for a row the float filter decided; infinite
+    /// for a non-finite number).
+    pub ulps: f64,
+    /// A lower bound on that error (equal to `ulps` when it was computed exactly).
+    pub ulps_lower: f64,
+}
+
+impl RowPoint {
+    fn of(o: &RowOutcome) -> Self {
+        RowPoint {
+            row: o.line,
+            inputs: o
+                .inputs
+                .iter()
+                .map(|x| match x {
+                    Num::Value { float, .. } => *float,
+                    Num::NotFinite(_) => f64::NAN,
+                })
+                .collect(),
+            pass: o.pass,
+            ulps: o.ulps,
+            ulps_lower: o.ulps_lower,
+        }
+    }
 }
 
 /// Where a row came from, to find its inputs as intended: a file's row text (and the column it

@@ -99,6 +99,21 @@ pub struct CertifyRow {
     pub label: Option<String>,
     /// Further lines printed under the table.
     pub notes: Vec<String>,
+    /// Each point's result, in the order of [`CertifyReport::inputs`] (what an error map draws).
+    pub per_point: Vec<PointResult>,
+}
+
+/// One point's result in a [`CertifyRow`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointResult {
+    /// The largest error in ULPs over the result's coordinates against the exact value at the
+    /// inputs as seen (infinite for a non-finite result); [`CertifyRow::max_ulps`] is the
+    /// largest of these.
+    pub ulps: f64,
+    /// The error exceeded the proven bound there (a violation).
+    pub exceeded: bool,
+    /// Outside the bound's hypotheses (overflow, underflow, an uncertain sign): not judged.
+    pub outside_hypothesis: bool,
 }
 
 /// `--random N` points: how many, the seed, and the command that reproduces the run.
@@ -119,6 +134,9 @@ pub struct CertifyReport {
     pub patch: String,
     /// How many points.
     pub points: usize,
+    /// The points, in the kind's coordinates (barycentric; `(x, y)` for an S-patch), exact as
+    /// given or generated (each row's [`CertifyRow::per_point`] follows this order).
+    pub inputs: Vec<Vec<BigRational>>,
     /// The random points' parameters, for a random run.
     pub random: Option<RandomPoints>,
     /// One row per precision and algorithm.
@@ -161,6 +179,7 @@ impl CertifyRow {
             gamma_k,
             label,
             notes: Vec::new(),
+            per_point: Vec::new(),
         }
     }
 
@@ -173,7 +192,13 @@ impl CertifyRow {
     /// error of the float coordinates [`Acc::lambda_ulps`].
     fn fold(&mut self, accs: Vec<Acc>, points: &[Vec<BigRational>]) -> f64 {
         let mut lambda_ulps = 0.0f64;
+        self.per_point.reserve(accs.len());
         for (i, c) in accs.into_iter().enumerate() {
+            self.per_point.push(PointResult {
+                ulps: c.ulps,
+                exceeded: c.violation.is_some(),
+                outside_hypothesis: c.outside,
+            });
             if c.ulps > self.max_ulps {
                 self.max_ulps = c.ulps;
                 self.worst_point = Some(points[i].clone());
@@ -492,6 +517,7 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
     Ok(CertifyReport {
         patch: options.label.clone(),
         points: points.len(),
+        inputs: points,
         random,
         rows,
         baseline_regressions: Vec::new(),

@@ -1,0 +1,465 @@
+//! `--plot FILE` and `--html FILE` of `tribez check --patch P --results R` and `tribez
+//! certify`: the error maps of their runs and the HTML report, staged with the run's other
+//! outputs.
+
+use std::path::{Path, PathBuf};
+
+use num_rational::BigRational;
+
+use super::errmap::{self, MapBuilder, MapData, Panel, ulps_text};
+use super::html::{self, HtmlReport, Section};
+use crate::commands::CliError;
+use tribez::batch::{BatchReport, FailedCoord, UlpHistogram};
+use tribez::hazmat::certify::report::algorithm_key;
+use tribez::hazmat::domain::format_tuple;
+use tribez::hazmat::number::{format_rational, round_f64, to_decimal_string};
+use tribez::{CertifyReport, Patch};
+
+/// The picture outputs a run asked for.
+#[derive(Clone, Debug, Default)]
+pub struct Pictures {
+    /// `--plot FILE`.
+    pub plot: Option<PathBuf>,
+    /// `--html FILE`.
+    pub html: Option<PathBuf>,
+}
+
+impl Pictures {
+    /// Any picture asked for?
+    pub fn any(&self) -> bool {
+        self.plot.is_some() || self.html.is_some()
+    }
+
+    /// Refuse bad file names before the run (one line, exit status 2).
+    pub fn check_names(&self) -> Result<(), CliError> {
+        if let Some(p) = &self.plot {
+            super::format_of(p, "--plot")?;
+        }
+        if let Some(h) = &self.html {
+            super::check_html_name(h)?;
+        }
+        Ok(())
+    }
+}
+
+/// The outline of a patch's domain for an error map (its triangle, or an S-patch's polygon),
+/// or why there is no map (`flag` names the option).
+pub fn outline(patch: &Patch, flag: &str) -> Result<Vec<[f64; 2]>, CliError> {
+    use tribez::hazmat::any_patch::AnyPatch;
+    let vertices: Vec<Vec<BigRational>> = match patch.as_any() {
+        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
+            p.domain_or_reference().vertices().to_vec()
+        }
+        AnyPatch::Rational(r) => r.patch.domain_or_reference().vertices().to_vec(),
+        AnyPatch::SPatch(s) => s.polygon.vertices().iter().map(|v| v.to_vec()).collect(),
+    };
+    if vertices.first().is_none_or(|v| v.len() != 2) {
+        return Err(CliError::Usage(format!(
+            "{flag}: error maps are drawn over triangles and polygons; this patch is over the {}-simplex",
+            patch.simplex_dim()
+        )));
+    }
+    Ok(vertices
+        .iter()
+        .map(|v| [round_f64(&v[0]), round_f64(&v[1])])
+        .collect())
+}
+
+/// The position in the domain (Cartesian) of barycentric coordinates `lambda` (homogeneous:
+/// divided by their sum) over the triangle `outline`.
+pub fn position(outline: &[[f64; 2]], lambda: &[f64]) -> [f64; 2] {
+    let total: f64 = lambda.iter().sum();
+    let mut p = [0.0; 2];
+    for (l, v) in lambda.iter().zip(outline) {
+        p[0] += l * v[0];
+        p[1] += l * v[1];
+    }
+    [p[0] / total, p[1] / total]
+}
+
+/// A rational exactly (lowest terms) and, when it is not an integer, to 17 significant digits.
+fn exact_text(q: &BigRational) -> String {
+    let exact = format_rational(q);
+    if q.is_integer() {
+        exact
+    } else {
+        format!("{exact} ≈ {}", to_decimal_string(q, 17))
+    }
+}
+
+fn coord_rows(coords: &[FailedCoord], line: usize) -> Vec<Vec<String>> {
+    coords
+        .iter()
+        .map(|c| {
+            vec![
+                line.to_string(),
+                c.index.to_string(),
+                format!("{} ({})", c.decimal, c.hex),
+                exact_text(&c.exact_seen),
+                c.seen
+                    .ulps
+                    .as_ref()
+                    .map_or("-".into(), |u| ulps_text(round_f64(u))),
+                c.exact_intended.as_ref().map_or("-".into(), exact_text),
+            ]
+        })
+        .collect()
+}
+
+const COORD_HEADER: [&str; 6] = [
+    "line",
+    "coordinate",
+    "claimed (shortest decimal, hexadecimal)",
+    "exact value at the inputs as seen",
+    "error (ulp)",
+    "exact value at the inputs as intended",
+];
+
+/// The panel of a batch's error map.
+fn batch_panel(report: &BatchReport) -> Panel {
+    Panel {
+        title: format!(
+            "{}: {} rows against {}, tolerance {} — {} failed",
+            report.file, report.checked, report.patch, report.tolerance, report.failed
+        ),
+        max_ulps: report.max_ulps,
+        worst: report.worst.as_ref().map(|w| {
+            (
+                w.line,
+                format!("worst: line {}, {} ulp", w.line, ulps_text(w.ulps)),
+            )
+        }),
+        histogram: report.histogram.counts,
+        note: if report.histogram_upper_bounds {
+            "rows the float filter decided: the upper end of their error's enclosure".into()
+        } else {
+            String::new()
+        },
+    }
+}
+
+/// Stage `--plot` and `--html` of a batch run (`command`: the arguments that reproduce it).
+pub fn batch(
+    pictures: &Pictures,
+    report: &BatchReport,
+    map: MapData,
+    command: &[String],
+) -> Result<(), CliError> {
+    let panel = batch_panel(report);
+    let range = map.range(panel.max_ulps);
+    let panels = [(map, panel)];
+    let svg = errmap::svg(&panels, &format!("error map of {}", report.file));
+    if let Some(path) = &pictures.plot {
+        super::stage(path, &svg, "--plot")?;
+    }
+    let Some(path) = &pictures.html else {
+        return Ok(());
+    };
+    let passed = report.failed == 0;
+    let mut summary = vec![
+        ("results".to_string(), report.file.clone()),
+        ("patch".into(), report.patch.clone()),
+        ("tolerance".into(), report.tolerance.to_string()),
+        (
+            "numbers".into(),
+            report
+                .precision
+                .map_or("exact".into(), |p| format!("each the nearest {}", p.name())),
+        ),
+        ("rows checked".into(), report.checked.to_string()),
+        ("passed".into(), report.passed.to_string()),
+        ("failed".into(), report.failed.to_string()),
+    ];
+    if report.histogram_upper_bounds {
+        summary.push((
+            "decided by the float filter / exact arithmetic".into(),
+            format!(
+                "{} / {}",
+                report.checked - report.fell_back,
+                report.fell_back
+            ),
+        ));
+    }
+    if let Some((lo, hi)) = range {
+        summary.push(("smallest error (ulp)".into(), ulps_text(lo)));
+        summary.push(("largest error (ulp)".into(), ulps_text(hi)));
+    }
+    let mut sections = Vec::new();
+    if let Some(w) = &report.worst {
+        sections.push(Section::Table {
+            heading: format!("Worst row: line {} ({} ulp)", w.line, ulps_text(w.ulps)),
+            note: "The error is computed exactly against the exact value at the inputs as the code saw them (the floats).".into(),
+            header: COORD_HEADER.map(String::from).to_vec(),
+            rows: coord_rows(&w.coords, w.line),
+        });
+    }
+    if !report.failures.is_empty() {
+        let mut rows = Vec::new();
+        for f in &report.failures {
+            let mut r = coord_rows(&f.coords, f.line);
+            if r.is_empty() {
+                r.push(vec![
+                    f.line.to_string(),
+                    "-".into(),
+                    f.reason.clone(),
+                    "-".into(),
+                    "-".into(),
+                    "-".into(),
+                ]);
+            }
+            rows.extend(r);
+        }
+        let more = report.failures_not_listed();
+        sections.push(Section::Table {
+            heading: format!("Failures ({} of {})", report.failures.len(), report.failed),
+            note: if more > 0 {
+                format!(
+                    "The first {} failed rows; {more} more are counted, not listed.",
+                    report.failures.len()
+                )
+            } else {
+                String::new()
+            },
+            header: COORD_HEADER.map(String::from).to_vec(),
+            rows,
+        });
+    }
+    let page = html::render(&HtmlReport {
+        title: format!("tribez check: {}", report.file),
+        passed,
+        verdict: if passed {
+            format!(
+                "all {} rows within tolerance {}",
+                report.checked, report.tolerance
+            )
+        } else {
+            format!(
+                "{} of {} rows fail tolerance {}",
+                report.failed, report.checked, report.tolerance
+            )
+        },
+        summary,
+        reproduce: html::shell_line(command),
+        pictures: svg,
+        sections,
+        text: report.text(),
+    });
+    crate::commands::output::stage(path, page.as_bytes())
+}
+
+/// Stage `--plot` and `--html` of a certification run (one panel per algorithm and precision).
+pub fn certify(
+    pictures: &Pictures,
+    patch: &Patch,
+    report: &CertifyReport,
+    command: &[String],
+) -> Result<(), CliError> {
+    let outline = outline(
+        patch,
+        if pictures.plot.is_some() {
+            "--plot"
+        } else {
+            "--html"
+        },
+    )?;
+    let polygon = outline.len() != 3 || matches!(patch.kind(), tribez::PatchKind::SPatch);
+    let positions: Vec<[f64; 2]> = report
+        .inputs
+        .iter()
+        .map(|p| {
+            let x: Vec<f64> = p.iter().map(round_f64).collect();
+            if polygon {
+                [x[0], x[1]]
+            } else {
+                position(&outline, &x)
+            }
+        })
+        .collect();
+    let mut panels = Vec::new();
+    for row in &report.rows {
+        let mut b = MapBuilder::new(outline.clone());
+        let mut histogram = UlpHistogram::default();
+        for (i, (r, &at)) in row.per_point.iter().zip(&positions).enumerate() {
+            b.add(i + 1, at, r.ulps, r.ulps, !r.exceeded);
+            histogram.add(r.ulps);
+        }
+        let worst = row
+            .per_point
+            .iter()
+            .position(|r| r.ulps == row.max_ulps && row.worst_point.is_some());
+        let (a, p) = (algorithm_key(row.algorithm), row.precision.name());
+        panels.push((
+            b.finish(),
+            Panel {
+                title: format!(
+                    "{}: {a} in {p}, {} points — max {} ulp, {}",
+                    report.patch,
+                    report.points,
+                    ulps_text(row.max_ulps),
+                    if row.within_bound() {
+                        "within the bound"
+                    } else {
+                        "BOUND EXCEEDED"
+                    }
+                ),
+                max_ulps: Some(row.max_ulps),
+                worst: worst.map(|i| {
+                    (
+                        i + 1,
+                        format!("worst: point {}, {} ulp", i + 1, ulps_text(row.max_ulps)),
+                    )
+                }),
+                histogram: histogram.counts,
+                note: if row.outside_hypothesis > 0 {
+                    format!(
+                        "{} points outside the bound's hypotheses (not judged)",
+                        row.outside_hypothesis
+                    )
+                } else {
+                    String::new()
+                },
+            },
+        ));
+    }
+    let svg = errmap::svg(&panels, &format!("error maps of {}", report.patch));
+    if let Some(path) = &pictures.plot {
+        super::stage(path, &svg, "--plot")?;
+    }
+    let Some(path) = &pictures.html else {
+        return Ok(());
+    };
+    let passed = report.success();
+    let mut summary = vec![
+        ("patch".to_string(), report.patch.clone()),
+        ("points".into(), report.points.to_string()),
+    ];
+    if let Some(r) = &report.random {
+        summary.push((
+            "random points".into(),
+            format!("{}, seed {}", r.count, r.seed),
+        ));
+    }
+    for (row, (data, _)) in report.rows.iter().zip(&panels) {
+        let range = data.range(Some(row.max_ulps));
+        summary.push((
+            format!("{} {}", algorithm_key(row.algorithm), row.precision.name()),
+            format!(
+                "errors from {} to {} ulp; {:.2}% correctly rounded; largest error ÷ bound {}; {}",
+                range.map_or("-".into(), |r| ulps_text(r.0)),
+                ulps_text(row.max_ulps),
+                100.0 * row.correctly_rounded as f64 / row.coordinates.max(1) as f64,
+                ulps_text(row.max_bound_ratio),
+                if row.within_bound() {
+                    "within the bound"
+                } else {
+                    "BOUND EXCEEDED"
+                }
+            ),
+        ));
+    }
+    let float = patch.float();
+    let mut worst_rows = Vec::new();
+    for row in &report.rows {
+        let Some(point) = &row.worst_point else {
+            continue;
+        };
+        let case = float
+            .and_then(|f| f.float_program(row.precision).ok())
+            .and_then(|prog| {
+                let input = prog.round_input(point).ok()?;
+                let y = prog.run(row.algorithm, &input);
+                Some((y, prog.exact_seen(&input)))
+            });
+        let (y, exact) = case.unwrap_or_default();
+        worst_rows.push(vec![
+            format!("{} {}", algorithm_key(row.algorithm), row.precision.name()),
+            format_tuple(point),
+            ulps_text(row.max_ulps),
+            y.iter()
+                .map(|v| format!("{v:?}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            exact.map_or("undefined".into(), |e| {
+                e.iter().map(exact_text).collect::<Vec<_>>().join(", ")
+            }),
+        ]);
+    }
+    let mut sections = vec![Section::Table {
+        heading: "Worst points".into(),
+        note: "The float result is the float program's, rerun at the point rounded to the precision; the exact value is at that rounded point.".into(),
+        header: ["run", "point (exact)", "error (ulp)", "float result", "exact value"]
+            .map(String::from)
+            .to_vec(),
+        rows: worst_rows,
+    }];
+    let violations: Vec<Vec<String>> = report
+        .rows
+        .iter()
+        .flat_map(|r| {
+            r.violations.iter().take(100).map(move |v| {
+                vec![
+                    format!("{} {}", algorithm_key(r.algorithm), r.precision.name()),
+                    v.clone(),
+                ]
+            })
+        })
+        .collect();
+    if !violations.is_empty() {
+        sections.push(Section::Table {
+            heading: "Bound exceeded".into(),
+            note: "At most 100 per run.".into(),
+            header: vec!["run".into(), "where and by how much".into()],
+            rows: violations,
+        });
+    }
+    let page = html::render(&HtmlReport {
+        title: format!("tribez certify: {}", report.patch),
+        passed,
+        verdict: if passed {
+            "every result within its proven bound".into()
+        } else {
+            "some result exceeds its proven bound (or a baseline regressed)".into()
+        },
+        summary,
+        reproduce: report
+            .random
+            .as_ref()
+            .map_or_else(|| html::shell_line(command), |r| r.reproduce.clone()),
+        pictures: svg,
+        sections,
+        text: report.text(),
+    });
+    crate::commands::output::stage(path, page.as_bytes())
+}
+
+/// The arguments of `tribez check` that reproduce a batch run.
+pub fn batch_command(
+    patch: &Path,
+    results: &Path,
+    tolerance: Option<&str>,
+    precision: Option<&str>,
+    cartesian: bool,
+    algorithm: &str,
+) -> Vec<String> {
+    let mut c: Vec<String> = vec![
+        "tribez".into(),
+        "check".into(),
+        "--patch".into(),
+        patch.display().to_string(),
+        "--results".into(),
+        results.display().to_string(),
+    ];
+    if let Some(t) = tolerance {
+        c.extend(["--tolerance".into(), t.into()]);
+    }
+    if let Some(p) = precision {
+        c.extend(["--precision".into(), p.into()]);
+    }
+    if cartesian {
+        c.push("--cartesian".into());
+    }
+    if algorithm != "casteljau" {
+        c.extend(["--algorithm".into(), algorithm.into()]);
+    }
+    c
+}
