@@ -241,7 +241,11 @@ fn main() {
             // three. One thread; best of 3 (one pass with --once, to be timed as a process).
             let path = &args[2];
             let d64 = dvec3_points(&net_f64(&net));
-            let passes = if args.iter().any(|a| a == "--once") { 1 } else { 3 };
+            let passes = if args.iter().any(|a| a == "--once") {
+                1
+            } else {
+                3
+            };
             let (secs, differ) = best_of(passes, || {
                 let text = std::fs::read_to_string(path).expect("read csv");
                 let mut differ = 0usize;
