@@ -683,3 +683,38 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
     assert!(err.contains("--html"), "{err}");
     assert_eq!(listing(dir.path()), ["linear.toml", "results.csv"]);
 }
+
+#[test]
+fn the_readme_pictures_are_made_by_the_commands_it_shows() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let joined = readme.replace("\\\n", " ");
+    let commands: Vec<&str> = joined
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("tribez ") && l.contains("docs/pictures/"))
+        .collect();
+    assert_eq!(commands.len(), 2, "{commands:?}");
+    let dir = tempfile::tempdir().unwrap();
+    for command in commands {
+        let mut args: Vec<String> = command
+            .split_whitespace()
+            .skip(1)
+            .map(String::from)
+            .collect();
+        let at = args
+            .iter()
+            .position(|a| a.starts_with("docs/pictures/"))
+            .unwrap();
+        let committed = root.join(&args[at]);
+        let fresh = dir.path().join(committed.file_name().unwrap());
+        args[at] = fresh.display().to_string();
+        let out = tribez().current_dir(&root).args(&args).output().unwrap();
+        assert!(matches!(out.status.code(), Some(0 | 1)), "{command}");
+        assert!(
+            std::fs::read(&fresh).unwrap() == std::fs::read(&committed).unwrap(),
+            "{} is not what `{command}` draws now: run it from the repository root",
+            committed.display()
+        );
+    }
+}
