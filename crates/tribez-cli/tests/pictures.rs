@@ -664,7 +664,10 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
             .arg(fixtures().join("finn_day30.claims.toml"))
             .args(["--plot", "m.svg"]),
     );
-    assert!(err.contains("--plot applies to batches"), "{err}");
+    assert!(
+        err.contains("--plot draws the error map of a batch"),
+        "{err}"
+    );
     let err = one_line_exit_2(
         tribez()
             .current_dir(dir.path())
@@ -717,4 +720,38 @@ fn the_readme_pictures_are_made_by_the_commands_it_shows() {
             committed.display()
         );
     }
+}
+
+#[test]
+fn claim_files_get_an_html_report_with_their_errata() {
+    let dir = tempfile::tempdir().unwrap();
+    let html = dir.path().join("claims.html");
+    tribez()
+        .arg("check")
+        .arg(fixtures().join("finn_day30.claims.toml"))
+        .arg("--html")
+        .arg(&html)
+        .assert()
+        .code(0);
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert_self_contained(&page);
+    let doc = parse_html(&page);
+    let cell = |key: &str| {
+        doc.descendants()
+            .find(|n| n.has_tag_name("th") && n.text() == Some(key))
+            .and_then(|th| th.next_sibling_element())
+            .and_then(|td| td.text())
+            .unwrap_or_else(|| panic!("{key}"))
+            .to_string()
+    };
+    assert_eq!(cell("failed"), "0");
+    // Finn's notes print the first component of example (b)'s closed form wrongly
+    // (README, "Reproduce a textbook"): a known erratum, listed with its exact value
+    assert_ne!(cell("known errata"), "0");
+    let cells: Vec<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("td"))
+        .filter_map(|n| n.text())
+        .collect();
+    assert!(cells.contains(&"worked-example-b-x"), "{cells:?}");
 }

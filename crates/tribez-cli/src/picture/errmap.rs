@@ -530,14 +530,12 @@ impl MapData {
                 let y = by + bh - s.t(v) * bh;
                 if (y - by).abs() > 14.0 && (y - by - bh).abs() > 14.0 {
                     svg.line([bx + bw, y], [bx + bw + 4.0, y], INK, 1.0);
-                    svg.text(
-                        [bx + bw + 6.0, y + 4.0],
-                        10.0,
-                        "start",
-                        OUTLINE,
-                        &ulps_text(v),
-                        &[],
-                    );
+                    let text = if (1e-3..1e6).contains(&v) {
+                        ulps_text(v)
+                    } else {
+                        format!("1e{}", v.log10().round())
+                    };
+                    svg.text([bx + bw + 6.0, y + 4.0], 10.0, "start", OUTLINE, &text, &[]);
                 }
             }
             if s.lo < s.floor {
@@ -552,56 +550,61 @@ impl MapData {
             }
         }
         // the histogram
-        let hx = bx + 110.0;
-        svg.text(
-            [hx, y0 + MAP_Y + 10.0],
-            12.0,
-            "start",
-            INK,
-            "histogram (rows per error in ulp)",
-            &[],
-        );
-        let most = panel.histogram.iter().copied().max().unwrap_or(0).max(1);
-        let row_h = (MAP_H - 40.0) / 8.0;
-        let bar_x = hx + 78.0;
-        let bar_w = WIDTH - bar_x - 70.0;
-        svg.open_group(&[("class", "histogram".into())]);
-        for (k, (&label, &count)) in ULP_BUCKETS.iter().zip(&panel.histogram).enumerate() {
-            let y = y0 + MAP_Y + 24.0 + k as f64 * row_h;
-            svg.text(
-                [bar_x - 6.0, y + row_h * 0.5 + 4.0],
-                11.0,
-                "end",
-                INK,
-                label,
-                &[],
-            );
-            let w = bar_w * count as f64 / most as f64;
-            if count > 0 {
-                svg.rect(
-                    bar_x,
-                    y + 4.0,
-                    w.max(1.0),
-                    row_h - 8.0,
-                    Rgb(96, 125, 160),
-                    None,
-                );
-            }
-            svg.text(
-                [bar_x + w + 4.0, y + row_h * 0.5 + 4.0],
-                11.0,
-                "start",
-                INK,
-                &count.to_string(),
-                &[
-                    ("class", "bucket".into()),
-                    ("data-count", count.to_string()),
-                ],
-            );
-        }
-        svg.close_group();
+        histogram(svg, bx + 110.0, y0 + MAP_Y, &panel.histogram, "rows");
         svg.close_group();
     }
+}
+
+/// The histogram of errors in ULPs ([`ULP_BUCKETS`]) with its top left corner at `(hx, top)`:
+/// one bar per bucket, its count beside it; `what` names what is counted.
+pub fn histogram(svg: &mut Svg, hx: f64, top: f64, counts: &[u64; 8], what: &str) {
+    svg.text(
+        [hx, top + 10.0],
+        12.0,
+        "start",
+        INK,
+        &format!("histogram ({what} per error in ulp)"),
+        &[],
+    );
+    let most = counts.iter().copied().max().unwrap_or(0).max(1);
+    let row_h = (MAP_H - 40.0) / 8.0;
+    let bar_x = hx + 78.0;
+    let bar_w = 156.0;
+    svg.open_group(&[("class", "histogram".into())]);
+    for (k, (&label, &count)) in ULP_BUCKETS.iter().zip(counts).enumerate() {
+        let y = top + 24.0 + k as f64 * row_h;
+        svg.text(
+            [bar_x - 6.0, y + row_h * 0.5 + 4.0],
+            11.0,
+            "end",
+            INK,
+            label,
+            &[],
+        );
+        let w = bar_w * count as f64 / most as f64;
+        if count > 0 {
+            svg.rect(
+                bar_x,
+                y + 4.0,
+                w.max(1.0),
+                row_h - 8.0,
+                Rgb(96, 125, 160),
+                None,
+            );
+        }
+        svg.text(
+            [bar_x + w + 4.0, y + row_h * 0.5 + 4.0],
+            11.0,
+            "start",
+            INK,
+            &count.to_string(),
+            &[
+                ("class", "bucket".into()),
+                ("data-count", count.to_string()),
+            ],
+        );
+    }
+    svg.close_group();
 }
 
 /// An SVG of one or more panels, one under the other.

@@ -10,6 +10,7 @@ use super::errmap::{self, MapBuilder, MapData, Panel, ulps_text};
 use super::html::{self, HtmlReport, Section};
 use crate::commands::CliError;
 use tribez::batch::{BatchReport, FailedCoord, UlpHistogram};
+use tribez::claims::ClaimsReport;
 use tribez::hazmat::certify::report::algorithm_key;
 use tribez::hazmat::domain::format_tuple;
 use tribez::hazmat::number::{format_rational, round_f64, to_decimal_string};
@@ -426,6 +427,90 @@ pub fn certify(
             .as_ref()
             .map_or_else(|| html::shell_line(command), |r| r.reproduce.clone()),
         pictures: svg,
+        sections,
+        text: report.text(),
+    });
+    crate::commands::output::stage(path, page.as_bytes())
+}
+
+/// Stage the `--html` report of `tribez check` on claim files (`paths` as given).
+pub fn claims(path: &Path, report: &ClaimsReport, paths: &[PathBuf]) -> Result<(), CliError> {
+    let histogram = report.histogram();
+    let pictures = if histogram.is_empty() {
+        String::new()
+    } else {
+        let mut svg = super::svg::Svg::new(340.0, 420.0, &[]);
+        svg.title("the histogram of the float claims' errors");
+        errmap::histogram(&mut svg, 10.0, 10.0, &histogram.counts, "float claims");
+        svg.finish()
+    };
+    let row = |j: &tribez::claims::Judged| {
+        vec![
+            j.file.clone(),
+            j.id.clone(),
+            j.op.clone(),
+            j.claimed.to_text(),
+            j.exact.to_text(),
+            j.tolerance.to_string(),
+        ]
+    };
+    let all = || report.files.iter().flat_map(|f| &f.claims);
+    let failures: Vec<Vec<String>> = all().filter(|j| j.verdict.fails_run()).map(row).collect();
+    let errata: Vec<Vec<String>> = all()
+        .filter(|j| matches!(j.verdict, tribez::claims::Verdict::KnownErratum(_)))
+        .map(row)
+        .collect();
+    let header = [
+        "file",
+        "claim",
+        "operation",
+        "claimed",
+        "exact",
+        "tolerance",
+    ]
+    .map(String::from)
+    .to_vec();
+    let mut sections = Vec::new();
+    if !failures.is_empty() {
+        sections.push(Section::Table {
+            heading: format!("Failures ({})", failures.len()),
+            note: String::new(),
+            header: header.clone(),
+            rows: failures,
+        });
+    }
+    if !errata.is_empty() {
+        sections.push(Section::Table {
+            heading: format!("Known errata ({})", errata.len()),
+            note: "Values printed in the sources that the exact computation contradicts (they do not fail the run).".into(),
+            header,
+            rows: errata,
+        });
+    }
+    let mut command = vec!["tribez".to_string(), "check".into()];
+    command.extend(paths.iter().map(|p| p.display().to_string()));
+    let passed = report.success();
+    let page = html::render(&HtmlReport {
+        title: format!(
+            "tribez check: {} claims in {} files",
+            report.claims(),
+            report.files.len()
+        ),
+        passed,
+        verdict: if passed {
+            format!("all {} claims hold", report.claims())
+        } else {
+            format!("{} of {} claims fail", report.failed(), report.claims())
+        },
+        summary: vec![
+            ("files".into(), report.files.len().to_string()),
+            ("claims".into(), report.claims().to_string()),
+            ("passed".into(), report.passed().to_string()),
+            ("known errata".into(), report.errata().to_string()),
+            ("failed".into(), report.failed().to_string()),
+        ],
+        reproduce: html::shell_line(&command),
+        pictures,
         sections,
         text: report.text(),
     });
