@@ -201,6 +201,11 @@ Examples:
 Examples:
   tribez join fixtures/joins/quad_a.toml fixtures/joins/quad_b_c1.toml
   tribez join fixtures/joins/quad_a.toml --make-c1 --domain 6,-3 -o neighbour.toml";
+    /// `tribez intersect`.
+    pub const INTERSECT: &str = "\
+Examples:
+  tribez intersect fixtures/inverse/parabola.toml fixtures/inverse/line_half.toml
+  tribez intersect fixtures/inverse/cubic_a.toml fixtures/inverse/cubic_b.toml --format json";
 }
 
 #[cfg(test)]

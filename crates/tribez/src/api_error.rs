@@ -21,6 +21,10 @@ pub enum Error {
     /// degenerate domain, a vanishing denominator, a number that overflows a precision).
     #[error(transparent)]
     Core(#[from] CoreError),
+    /// An inverse problem (roots, intersections, locate, ray) that cannot be answered: a cap
+    /// exceeded, a shape the operation does not take, a configuration it does not resolve.
+    #[error(transparent)]
+    Algebraic(#[from] crate::algebraic::AlgebraicError),
     /// Sizes that do not match.
     #[error("{what}: expected {expected}, found {found}")]
     Size {

@@ -41,12 +41,15 @@
 //!   numbers, precisions and tolerances, parsed from the same strings as the command line;
 //! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
 //!   results, judged in parallel;
+//! * [`algebraic`]: real algebraic numbers ([`RealAlgebraic`]) and the inverse problems they
+//!   answer exactly: [`intersect_curves`] for two planar curves ([`Curve`]);
 //! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
 //! * [`hazmat`]: the low-level building blocks, **unstable**.
 //!
 //! The exact core never depends on the outer layers (files, claims, the command line, which is
 //! the separate `tribez-cli` crate).
 
+pub mod algebraic;
 mod any_patch;
 mod api_error;
 pub mod batch;
@@ -81,6 +84,7 @@ mod symbolic;
 #[cfg(test)]
 mod testing;
 
+pub use algebraic::{AlgebraicError, Curve, CurveIntersections, RealAlgebraic, intersect_curves};
 pub use api_error::Error;
 pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
 pub use certify::measures::Tolerance;

@@ -11,6 +11,7 @@ pub mod elevate;
 pub mod eval;
 pub mod graph;
 pub mod halve;
+pub mod intersect;
 pub mod join;
 pub mod matrix;
 pub mod output;
@@ -97,6 +98,9 @@ pub enum Command {
     /// Smoothness of two patches across their common domain edge (C0, C1, C^r, G1, Finn's coplanarity), or build a C1 neighbour.
     #[command(after_help = examples::JOIN)]
     Join(join::Args),
+    /// Every intersection of two planar curves, exactly: parameters as real algebraic numbers, tangency, overlaps.
+    #[command(after_help = examples::INTERSECT)]
+    Intersect(intersect::Args),
 }
 
 /// Where a command's output goes: `-o FILE`, or standard output.
@@ -204,6 +208,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Derivative(a) => (derivative::run(a), &a.out),
         Command::Tangent(a) => (tangent::run(a), &a.out),
         Command::Join(a) => (join::run(a), &a.out),
+        Command::Intersect(a) => (intersect::run(a), &a.out),
         Command::Plot(a) => (plot::run(a), a),
     };
     let finished = result.and_then(|o| {

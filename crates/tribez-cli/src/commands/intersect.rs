@@ -1,0 +1,127 @@
+//! `tribez intersect`: every intersection of two planar curves, exactly (real algebraic
+//! parameters, tangency and multiplicity, overlaps).
+
+use std::path::PathBuf;
+
+use serde_json::{Value as Json, json};
+
+use super::{CliError, Outcome};
+use crate::cli::OutputArgs;
+use crate::report::Render;
+use tribez::Patch;
+use tribez::algebraic::{Curve, CurveIntersections, RealAlgebraic, intersect_curves, point_text};
+use tribez::hazmat::io::patch_file::read_any_patch;
+
+/// Arguments of `tribez intersect`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The first curve (a patch file with m = 1 and points in the plane; Bézier or rational).
+    pub a: PathBuf,
+    /// The second curve.
+    pub b: PathBuf,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// The report of `tribez intersect`.
+pub struct IntersectReport {
+    a: String,
+    b: String,
+    result: CurveIntersections,
+}
+
+fn curve(path: &std::path::Path, which: &str) -> Result<Curve, CliError> {
+    let file = path.display().to_string();
+    let patch = Patch::from(read_any_patch(path)?);
+    Curve::from_patch(&patch, which).map_err(|e| CliError::Usage(format!("{file}: {e}")))
+}
+
+/// Run `tribez intersect`.
+pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let a = curve(&args.a, "the curve")?;
+    let b = curve(&args.b, "the curve")?;
+    let result = intersect_curves(&a, &b).map_err(|e| {
+        CliError::Usage(format!("{} × {}: {e}", args.a.display(), args.b.display()))
+    })?;
+    Outcome::rendered(
+        &IntersectReport {
+            a: args.a.display().to_string(),
+            b: args.b.display().to_string(),
+            result,
+        },
+        args.out.format,
+        true,
+    )
+}
+
+/// `name = p/q`, or `name ≈ 0.707… (root of … in (lo, hi))`.
+fn number_text(name: &str, x: &RealAlgebraic) -> String {
+    match x.as_rational() {
+        Some(r) => format!("{name} = {r}"),
+        None => format!("{name} {}", x.to_text()),
+    }
+}
+
+impl Render for IntersectReport {
+    fn text(&self) -> String {
+        let r = &self.result;
+        let mut out = format!(
+            "{} × {}: {} intersection point{}{}\n",
+            self.a,
+            self.b,
+            r.points.len(),
+            if r.points.len() == 1 { "" } else { "s" },
+            match r.overlaps.len() {
+                0 => String::new(),
+                1 => ", 1 overlap".into(),
+                n => format!(", {n} overlaps"),
+            }
+        );
+        for (k, p) in r.points.iter().enumerate() {
+            let [x, y] = point_text(&p.point);
+            out += &format!(
+                "{}. {}\n   {}\n   point ({x}, {y}){}\n",
+                k + 1,
+                number_text("s", &p.s),
+                number_text("t", &p.t),
+                match (p.tangential, p.multiplicity) {
+                    (true, Some(m)) => format!(", tangential (multiplicity {m})"),
+                    (true, None) =>
+                        ", tangential (the curves touch at the end of a shared piece)".to_string(),
+                    (false, Some(m)) if m > 1 => format!(", multiplicity {m}"),
+                    _ => String::new(),
+                }
+            );
+        }
+        for o in &r.overlaps {
+            out += &format!(
+                "overlap: s from {} to {}, t from {} to {}\n",
+                o.s[0].to_text(),
+                o.s[1].to_text(),
+                o.t[0].to_text(),
+                o.t[1].to_text()
+            );
+        }
+        out
+    }
+
+    fn json(&self) -> Json {
+        let r = &self.result;
+        json!({
+            "a": self.a,
+            "b": self.b,
+            "count": r.points.len(),
+            "intersections": r.points.iter().map(|p| json!({
+                "s": p.s.to_json(),
+                "t": p.t.to_json(),
+                "point": point_text(&p.point),
+                "tangential": p.tangential,
+                "multiplicity": p.multiplicity,
+            })).collect::<Vec<_>>(),
+            "overlaps": r.overlaps.iter().map(|o| json!({
+                "s": [o.s[0].to_json(), o.s[1].to_json()],
+                "t": [o.t[0].to_json(), o.t[1].to_json()],
+            })).collect::<Vec<_>>(),
+        })
+    }
+}

@@ -1,0 +1,129 @@
+//! `tribez intersect` as a user runs it. Expected values: fixtures/inverse/derive.py (SymPy) and
+//! hand derivations in the comments.
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+
+fn tribez() -> Command {
+    Command::cargo_bin("tribez").expect("binary built")
+}
+
+fn fx(name: &str) -> String {
+    let p: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fixtures")
+        .join(name);
+    p.display().to_string()
+}
+
+/// Exit status 2, nothing on standard output, one line on standard error containing `words`.
+fn fails_with(args: &[&str], words: &[&str]) {
+    let out = tribez().args(args).assert().code(2).get_output().clone();
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    for w in words {
+        assert!(err.contains(w), "{args:?}: {w:?} not in {err:?}");
+    }
+}
+
+#[test]
+fn intersect_prints_algebraic_parameters_in_json() {
+    // x = s, y = s^2 meets y = 1/2 at s = 1/√2 (a root of 2x^2 − 1), t = 1/√2
+    let out = tribez()
+        .args([
+            "intersect",
+            &fx("inverse/parabola.toml"),
+            &fx("inverse/line_half.toml"),
+            "--format",
+            "json",
+        ])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(j["count"], 1);
+    let s = &j["intersections"][0]["s"];
+    assert_eq!(s["polynomial"], serde_json::json!(["-1", "0", "2"]));
+    // 1/√2 = 0.70710678118654752440…: f64 0x1.6a09e667f3bcdp-1
+    assert_eq!(s["f64"], "0x1.6a09e667f3bcdp-1");
+    assert_eq!(s["decimal"], "0.70710678118654752");
+    assert_eq!(j["intersections"][0]["point"][1], "1/2");
+    assert_eq!(j["intersections"][0]["tangential"], false);
+}
+
+#[test]
+fn intersect_flags_a_tangency_and_reports_an_overlap() {
+    // y = x − 1/4 touches y = x^2 at x = 1/2: s = t = 1/2, multiplicity 2
+    let out = tribez()
+        .args([
+            "intersect",
+            &fx("inverse/parabola.toml"),
+            &fx("inverse/tangent_line.toml"),
+        ])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    assert!(text.contains("s = 1/2"), "{text}");
+    assert!(text.contains("tangential (multiplicity 2)"), "{text}");
+    let out = tribez()
+        .args([
+            "intersect",
+            &fx("inverse/cubic_a.toml"),
+            &fx("inverse/cubic_a_reversed_shifted.toml"),
+        ])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("overlap: s from 1/4 to 3/4, t from 1 to 0"),
+        "{text}"
+    );
+}
+
+#[test]
+fn intersect_rejects_what_is_not_a_planar_curve() {
+    fails_with(
+        &[
+            "intersect",
+            &fx("finn_day30.toml"),
+            &fx("inverse/parabola.toml"),
+        ],
+        &["finn_day30.toml", "planar curve (m = 1, d = 2)"],
+    );
+    fails_with(
+        &[
+            "intersect",
+            &fx("inverse/parabola.toml"),
+            &fx("inverse/nope.toml"),
+        ],
+        &["nope.toml"],
+    );
+}
+
+#[test]
+fn intersect_caps_the_degree() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("deg13.toml");
+    let mut text = String::from("degree = 13\n\n[control_points]\n");
+    for i in 0..=13 {
+        text += &format!("\"{},{i}\" = [{i}, 0]\n", 13 - i);
+    }
+    std::fs::write(&path, text).unwrap();
+    fails_with(
+        &[
+            "intersect",
+            path.to_str().unwrap(),
+            &fx("inverse/parabola.toml"),
+        ],
+        &["degree 13, above the limit 12"],
+    );
+}

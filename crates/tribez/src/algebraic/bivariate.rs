@@ -1,0 +1,283 @@
+//! Bivariate polynomials with rational coefficients, and elimination: the resultant and the
+//! first subresultant with respect to one variable, computed by evaluation at integer points,
+//! fraction-free determinants (Bareiss) and Newton interpolation (docs/theory.md §16.4).
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+type Q = BigRational;
+
+/// `Σ c[j][i] x^i y^j`: a polynomial in `y` whose coefficients are polynomials in `x`
+/// (ascending in both). The *formal* degree in `y` is `c.len() − 1`: leading coefficients
+/// that vanish are kept, so the Sylvester matrix has the size the formal degrees give and its
+/// determinant is a polynomial identity (evaluation commutes with it).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct BiPoly {
+    /// `c[j]`: the coefficient of `y^j`, a polynomial in `x` (ascending).
+    pub c: Vec<Vec<Q>>,
+}
+
+impl BiPoly {
+    /// The formal degree in `y`.
+    pub fn deg_y(&self) -> usize {
+        self.c.len().saturating_sub(1)
+    }
+
+    /// The degree in `x` (of the largest coefficient list).
+    pub fn deg_x(&self) -> usize {
+        self.c
+            .iter()
+            .map(|p| p.iter().rposition(|x| !x.is_zero()).unwrap_or(0))
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// The polynomial in `y` at `x` (formal length kept).
+    pub fn at_x(&self, x: &Q) -> Vec<Q> {
+        self.c.iter().map(|p| horner(p, x)).collect()
+    }
+
+    /// The same polynomial with the roles of `x` and `y` exchanged.
+    pub fn swap(&self) -> BiPoly {
+        let dx = self.c.iter().map(Vec::len).max().unwrap_or(0);
+        let mut c = vec![vec![Q::zero(); self.c.len()]; dx];
+        for (j, p) in self.c.iter().enumerate() {
+            for (i, a) in p.iter().enumerate() {
+                c[i][j] = a.clone();
+            }
+        }
+        BiPoly { c }
+    }
+
+    /// Is every coefficient zero?
+    pub fn is_zero(&self) -> bool {
+        self.c.iter().all(|p| p.iter().all(Zero::is_zero))
+    }
+
+    /// `Σ_j c_j(x) num(x)^j den(x)^(N − j)` with `N` the formal degree in `y`: the polynomial
+    /// in `x` that `den^N · F(x, num/den)` is.
+    pub fn substitute_y(&self, num: &[Q], den: &[Q]) -> Vec<Q> {
+        let n = self.deg_y();
+        let mut out = vec![Q::zero()];
+        let mut np = vec![Q::one()];
+        let mut dp: Vec<Vec<Q>> = vec![vec![Q::one()]];
+        for _ in 0..n {
+            let next = mul(dp.last().expect("non-empty"), den);
+            dp.push(next);
+        }
+        for (j, cj) in self.c.iter().enumerate() {
+            let term = mul(&mul(cj, &np), &dp[n - j]);
+            out = add(&out, &term);
+            np = mul(&np, num);
+        }
+        trim(out)
+    }
+}
+
+/// The value of `Σ p_i x^i` at `x`.
+pub fn horner(p: &[Q], x: &Q) -> Q {
+    let mut acc = Q::zero();
+    for c in p.iter().rev() {
+        acc = acc * x + c;
+    }
+    acc
+}
+
+/// The product of two polynomials (ascending).
+pub fn mul(a: &[Q], b: &[Q]) -> Vec<Q> {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut c = vec![Q::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        for (j, y) in b.iter().enumerate() {
+            c[i + j] += x * y;
+        }
+    }
+    c
+}
+
+/// The sum of two polynomials (ascending).
+pub fn add(a: &[Q], b: &[Q]) -> Vec<Q> {
+    let n = a.len().max(b.len());
+    (0..n)
+        .map(|i| {
+            let mut s = a.get(i).cloned().unwrap_or_else(Q::zero);
+            if let Some(y) = b.get(i) {
+                s += y;
+            }
+            s
+        })
+        .collect()
+}
+
+/// Drop trailing zeros.
+pub fn trim(mut p: Vec<Q>) -> Vec<Q> {
+    while p.last().is_some_and(Zero::is_zero) {
+        p.pop();
+    }
+    p
+}
+
+/// The determinant of a square matrix of rationals: rows scaled to integers, then Bareiss's
+/// fraction-free elimination.
+pub fn det(m: &[Vec<Q>]) -> Q {
+    let n = m.len();
+    if n == 0 {
+        return Q::one();
+    }
+    let mut scale = BigInt::one();
+    let mut a: Vec<Vec<BigInt>> = m
+        .iter()
+        .map(|row| {
+            let l = row.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+            scale *= &l;
+            row.iter().map(|x| x.numer() * (&l / x.denom())).collect()
+        })
+        .collect();
+    let mut sign = 1;
+    let mut prev = BigInt::one();
+    for k in 0..n - 1 {
+        if a[k][k].is_zero() {
+            let Some(p) = (k + 1..n).find(|&i| !a[i][k].is_zero()) else {
+                return Q::zero();
+            };
+            a.swap(k, p);
+            sign = -sign;
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let v = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
+                a[i][j] = v / &prev;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    let d = a[n - 1][n - 1].clone() * BigInt::from(sign);
+    Q::new(d, scale)
+}
+
+/// The rows of the Sylvester-type matrix for subresultant index `j`: `q − j` shifted copies of
+/// `f` and `p − j` of `g` (coefficients descending), `p + q − j` columns.
+fn rows(f: &[Q], g: &[Q], j: usize) -> Vec<Vec<Q>> {
+    let (p, q) = (f.len() - 1, g.len() - 1);
+    let cols = p + q - j;
+    let mut out = Vec::with_capacity(p + q - 2 * j);
+    for (poly, copies, deg) in [(f, q - j, p), (g, p - j, q)] {
+        for i in 0..copies {
+            let mut row = vec![Q::zero(); cols];
+            for (k, c) in poly.iter().rev().enumerate() {
+                row[i + k] = c.clone();
+            }
+            debug_assert!(i + deg < cols);
+            out.push(row);
+        }
+    }
+    out
+}
+
+/// The resultant of two polynomials in `y` (formal degrees `p, q ≥ 0`, not both zero),
+/// coefficients descending in the Sylvester matrix.
+fn res_univariate(f: &[Q], g: &[Q]) -> Q {
+    det(&rows(f, g, 0))
+}
+
+/// The first subresultant `(s1, s0)` of two polynomials in `y` of formal degrees `p, q ≥ 2`.
+fn sres1_univariate(f: &[Q], g: &[Q]) -> (Q, Q) {
+    let m = rows(f, g, 1);
+    let n = m.len(); // p + q − 2 rows, p + q − 1 columns
+    let c1: Vec<Vec<Q>> = m.iter().map(|r| r[..n].to_vec()).collect();
+    let c0: Vec<Vec<Q>> = m
+        .iter()
+        .map(|r| {
+            let mut v = r[..n - 1].to_vec();
+            v.push(r[n].clone());
+            v
+        })
+        .collect();
+    (det(&c1), det(&c0))
+}
+
+/// Newton interpolation through `(k, v_k)`, `k = 0, 1, …`: the coefficients (ascending).
+fn interpolate(values: &[Q]) -> Vec<Q> {
+    let n = values.len();
+    let mut d = values.to_vec();
+    for level in 1..n {
+        for i in (level..n).rev() {
+            d[i] = (&d[i] - &d[i - 1]) / Q::from_integer(BigInt::from(level));
+        }
+    }
+    // Σ d_i Π_{k<i} (x − k), by Horner from the top
+    let mut out = vec![Q::zero(); n];
+    let mut len = 0;
+    for i in (0..n).rev() {
+        // out ← out·(x − i) + d_i
+        let mut next = vec![Q::zero(); n];
+        for (e, c) in out.iter().enumerate().take(len) {
+            if c.is_zero() {
+                continue;
+            }
+            next[e + 1] += c;
+            next[e] -= c * Q::from_integer(BigInt::from(i));
+        }
+        next[0] += &d[i];
+        out = next;
+        len = (len + 1).min(n);
+    }
+    trim(out)
+}
+
+/// The degree bound in `x` of the resultant and subresultants of `f` and `g` in `y`.
+fn bound(f: &BiPoly, g: &BiPoly) -> usize {
+    g.deg_y() * f.deg_x() + f.deg_y() * g.deg_x()
+}
+
+/// `Res_y(f, g)`, a polynomial in `x` (ascending, trailing zeros dropped: empty when the
+/// resultant vanishes identically, i.e. `f` and `g` share a factor of positive degree in `y`
+/// or both formal leading coefficients vanish identically).
+///
+/// ```
+/// use tribez::algebraic::{BiPoly, resultant};
+/// use tribez::parse_rational;
+/// let q = |s: &str| parse_rational(s).unwrap();
+/// // f = y − x, g = y^2 − 2: Res_y = x^2 − 2
+/// let f = BiPoly { c: vec![vec![q("0"), q("-1")], vec![q("1")]] };
+/// let g = BiPoly { c: vec![vec![q("-2")], vec![], vec![q("1")]] };
+/// assert_eq!(resultant(&f, &g), vec![q("-2"), q("0"), q("1")]);
+/// ```
+pub fn resultant(f: &BiPoly, g: &BiPoly) -> Vec<Q> {
+    let d = bound(f, g);
+    let values: Vec<Q> = (0..=d)
+        .map(|k| {
+            let x = Q::from_integer(BigInt::from(k));
+            res_univariate(&f.at_x(&x), &g.at_x(&x))
+        })
+        .collect();
+    interpolate(&values)
+}
+
+/// The first subresultant of `f` and `g` with respect to `y`: `(s1(x), s0(x))` with
+/// `S_1 = s1·y + s0` (formal degrees at least 1; when one of them is 1 that polynomial itself).
+/// Where `s1(x0) ≠ 0` and `Res_y(f, g)(x0) = 0`, the common root in `y` is unique and equals
+/// `−s0(x0)/s1(x0)`.
+pub fn subresultant1(f: &BiPoly, g: &BiPoly) -> (Vec<Q>, Vec<Q>) {
+    for h in [f, g] {
+        if h.deg_y() == 1 {
+            return (trim(h.c[1].clone()), trim(h.c[0].clone()));
+        }
+    }
+    let d = bound(f, g);
+    let (mut v1, mut v0) = (Vec::with_capacity(d + 1), Vec::with_capacity(d + 1));
+    for k in 0..=d {
+        let x = Q::from_integer(BigInt::from(k));
+        let (a, b) = sres1_univariate(&f.at_x(&x), &g.at_x(&x));
+        v1.push(a);
+        v0.push(b);
+    }
+    (interpolate(&v1), interpolate(&v0))
+}

@@ -1,0 +1,120 @@
+//! Real algebraic numbers and the inverse problems they answer exactly (docs/theory.md §16).
+//!
+//! * [`IntPoly`]: univariate integer polynomials (primitive part, gcd, square-free part and
+//!   factorisation, exact sign at a rational);
+//! * root isolation in the Bernstein basis (Descartes' rule of signs on the Bernstein
+//!   coefficients, de Casteljau subdivision at midpoints, integer arithmetic);
+//! * [`RealAlgebraic`]: a rational, or the only root of a square-free primitive integer
+//!   polynomial in a rational interval — exact comparison, sign of a polynomial at it,
+//!   refinement, correctly rounded `f64`/`f32`, JSON;
+//! * [`BiPoly`]: bivariate polynomials with rational coefficients, their resultant and first
+//!   subresultant by evaluation and interpolation;
+//! * [`intersect_curves`]: every intersection of two planar Bézier curves (polynomial or
+//!   rational), with tangency, multiplicity and overlaps.
+//!
+//! Every size the input controls is capped ([`MAX_DEGREE`], [`MAX_BITS`],
+//! [`MAX_CURVE_DEGREE`], [`MAX_PATCH_DEGREE`]) with a typed error ([`AlgebraicError`]).
+
+mod bivariate;
+mod curves;
+mod isolate;
+mod number;
+mod poly;
+
+pub use bivariate::{BiPoly, resultant, subresultant1};
+pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
+pub use isolate::{Cell, isolate};
+pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
+pub use poly::IntPoly;
+
+/// The largest degree of a univariate polynomial whose roots are isolated.
+pub const MAX_DEGREE: usize = 2_000;
+/// The largest bit length of a coefficient of such a polynomial.
+pub const MAX_BITS: u64 = 1 << 20;
+/// The largest degree of a curve given to [`intersect_curves`].
+pub const MAX_CURVE_DEGREE: usize = 12;
+/// The largest degree of a patch given to `locate` and `ray`.
+pub const MAX_PATCH_DEGREE: usize = 6;
+/// The largest bit length of a numerator or denominator of a control point, weight or query
+/// coordinate given to the inverse problems.
+pub const MAX_INPUT_BITS: u64 = 4096;
+
+/// Why an algebraic computation could not give an answer.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum AlgebraicError {
+    /// A polynomial whose roots were asked for is zero.
+    #[error("the polynomial is zero (every number is a root)")]
+    ZeroPolynomial,
+    /// A degree above its cap.
+    #[error("{what} has degree {degree}, above the limit {max}")]
+    DegreeTooHigh {
+        /// What has the degree.
+        what: &'static str,
+        /// Its degree.
+        degree: usize,
+        /// The cap.
+        max: usize,
+    },
+    /// A number too large.
+    #[error("{what} has a {bits}-bit coefficient, above the limit of {max} bits")]
+    CoefficientTooLarge {
+        /// What has the coefficient.
+        what: &'static str,
+        /// Its bit length.
+        bits: u64,
+        /// The cap.
+        max: u64,
+    },
+    /// Root isolation did not finish within its subdivision budget.
+    #[error("root isolation stopped after {subdivisions} subdivisions")]
+    Isolation {
+        /// The budget.
+        subdivisions: usize,
+    },
+    /// The input is of a shape the operation does not take.
+    #[error("{0}")]
+    Shape(String),
+    /// A configuration the exact algorithm does not resolve (said precisely).
+    #[error("not supported: {0}")]
+    Unsupported(String),
+}
+
+/// Check a polynomial against [`MAX_DEGREE`] and [`MAX_BITS`].
+pub(crate) fn check_poly(p: &IntPoly) -> Result<(), AlgebraicError> {
+    let degree = p.degree().unwrap_or(0);
+    if degree > MAX_DEGREE {
+        return Err(AlgebraicError::DegreeTooHigh {
+            what: "a polynomial",
+            degree,
+            max: MAX_DEGREE,
+        });
+    }
+    let bits = p.max_bits();
+    if bits > MAX_BITS {
+        return Err(AlgebraicError::CoefficientTooLarge {
+            what: "a polynomial",
+            bits,
+            max: MAX_BITS,
+        });
+    }
+    Ok(())
+}
+
+/// Check a rational input number against [`MAX_INPUT_BITS`].
+pub(crate) fn check_input(
+    what: &'static str,
+    x: &num_rational::BigRational,
+) -> Result<(), AlgebraicError> {
+    let bits = x.numer().bits().max(x.denom().bits());
+    if bits > MAX_INPUT_BITS {
+        return Err(AlgebraicError::CoefficientTooLarge {
+            what,
+            bits,
+            max: MAX_INPUT_BITS,
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;
