@@ -755,3 +755,40 @@ fn claim_files_get_an_html_report_with_their_errata() {
         .collect();
     assert!(cells.contains(&"worked-example-b-x"), "{cells:?}");
 }
+
+/// The colour bar of `bezier`'s results: its ends are the smallest and the largest error of the
+/// 2,000 rows, computed independently by fixtures/peers/exact_errors.py (plain Python fractions):
+/// line 1319 at 0.00096857501577748387 ulp and line 417 at 320.7 ulp. The smallest is exact even
+/// though the float filter decided that row (its figure in the histogram is an upper bound).
+#[test]
+fn the_colour_bar_of_the_bezier_results_ends_at_their_exact_smallest_and_largest_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let map = dir.path().join("bezier.svg");
+    let peers = fixtures().join("peers");
+    tribez()
+        .args(["check", "--patch"])
+        .arg(peers.join("peer_cubic.toml"))
+        .arg("--results")
+        .arg(peers.join("bezier_results.csv"))
+        .args(["--precision", "f64", "--tolerance", "cond=9", "--plot"])
+        .arg(&map)
+        .assert()
+        .code(0);
+    let svg = std::fs::read_to_string(&map).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let value = |class: &str| -> f64 {
+        doc.descendants()
+            .find(|n| n.attribute("class") == Some(class))
+            .and_then(|n| n.attribute("data-value"))
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    assert_eq!(value("scale-min"), 0.000_968_575_015_777_483_87);
+    assert!((value("scale-max") - 320.7).abs() < 0.05);
+    let worst = doc
+        .descendants()
+        .find(|n| n.attribute("class") == Some("worst"))
+        .unwrap();
+    assert_eq!(worst.attribute("data-row"), Some("417"));
+}

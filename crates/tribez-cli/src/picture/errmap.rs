@@ -274,6 +274,8 @@ pub struct Panel {
     pub title: String,
     /// The largest error the report states (the colour bar's top label; `None`: the rows').
     pub max_ulps: Option<f64>,
+    /// The smallest error, computed exactly (the bottom label; `None`: the rows' figures').
+    pub min_ulps: Option<f64>,
     /// The worst row: its number, its label's text. Its position is the row's own.
     pub worst: Option<(usize, String)>,
     /// The histogram's counts ([`ULP_BUCKETS`]).
@@ -310,12 +312,12 @@ const MAP_H: f64 = 400.0;
 impl MapData {
     /// The smallest and the largest error (the colour bar's labels): the rows' smallest, and the
     /// report's largest (`max_ulps`) when given.
-    pub fn range(&self, max_ulps: Option<f64>) -> Option<(f64, f64)> {
+    pub fn range(&self, max_ulps: Option<f64>, min_ulps: Option<f64>) -> Option<(f64, f64)> {
         let hi = max_ulps
             .filter(|u| u.is_finite())
             .or_else(|| (self.b.max >= self.b.min).then_some(self.b.max))?;
-        let lo = if self.b.min <= hi { self.b.min } else { hi };
-        Some((lo, hi))
+        let lo = min_ulps.filter(|u| u.is_finite()).unwrap_or(self.b.min);
+        Some((lo.min(hi), hi))
     }
 
     /// The position of row `row` if it may be the worst (see [`WorstCandidates`]).
@@ -336,9 +338,17 @@ impl MapData {
             &[lo, hi],
             (MAP_X + 8.0, y0 + MAP_Y + 8.0, MAP_W - 16.0, MAP_H - 16.0),
         );
-        let range = self.range(panel.max_ulps);
-        let scale =
-            range.map(|(lo, hi)| LogScale::new(lo, b.min_positive.filter(|&f| f <= hi), hi));
+        let range = self.range(panel.max_ulps, panel.min_ulps);
+        // the logarithmic part starts at the smallest error, or at the smallest positive one
+        // when some errors are 0
+        let scale = range.map(|(lo, hi)| {
+            let floor = if lo > 0.0 {
+                Some(lo)
+            } else {
+                b.min_positive.filter(|&f| f <= hi)
+            };
+            LogScale::new(lo, floor, hi)
+        });
         let colour = |u: f64| match scale {
             Some(s) if u.is_finite() => s.colour(u),
             _ => NOT_FINITE,
@@ -652,7 +662,8 @@ mod tests {
         assert!(m.b.grid.is_some() && m.b.dots.is_empty());
         assert_eq!(m.b.rows, n as u64);
         assert_eq!(m.worst_at(8), Some([7.0 / n as f64 * 0.5, 0.25]));
-        assert_eq!(m.range(None), Some((0.0, 100.0)));
+        assert_eq!(m.range(None, None), Some((0.0, 100.0)));
+        assert_eq!(m.range(Some(90.0), Some(0.5)), Some((0.5, 90.0)));
         let cells = m.b.grid.as_ref().unwrap().cells.iter();
         assert_eq!(cells.map(|c| u64::from(c.rows)).sum::<u64>(), n as u64);
     }
