@@ -669,6 +669,7 @@ fn report_of(j: &Json) -> Option<BatchReport> {
             Some(j["worst"]["ulps"].as_f64()?)
         },
         rows: None,
+        baseline_regressions: Vec::new(),
         failures: j["failures"]
             .as_array()?
             .iter()

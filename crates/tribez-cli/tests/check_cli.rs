@@ -568,6 +568,79 @@ fn baselines_catch_regressions() {
     .stderr(predicate::str::contains("not a baseline file"));
 }
 
+/// A regression against a baseline is part of the report in every format: with `--format json`
+/// the output stays one JSON document (the regression under `baseline_regressions`), and JUnit
+/// gets a failed `baseline` case. [`ROW`] is not correctly rounded at its inputs as seen (its
+/// worst error is above 0 ulp), so a baseline of 0 ulp regresses.
+#[test]
+fn a_baseline_regression_is_in_the_json_report_and_in_junit() {
+    let (d, p, r) = batch_dir(&format!("{ROW}\n"), "csv");
+    let zero = write(
+        d.path(),
+        "zero.json",
+        "{\"worst\": [{\"op\": \"eval\", \"algorithm\": \"claimed\", \"precision\": \"f64\", \"ulps\": 0}]}",
+    );
+    let junit = d.path().join("j.xml");
+    let out = batch(
+        &p,
+        &r,
+        &[
+            "--precision",
+            "f64",
+            "--tolerance",
+            "ulps=4",
+            "--format",
+            "json",
+            "--baseline",
+            zero.to_str().unwrap(),
+            "--junit",
+            junit.to_str().unwrap(),
+        ],
+    )
+    .code(1)
+    .get_output()
+    .stdout
+    .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).expect("one JSON document");
+    let regressions = v["baseline_regressions"].as_array().expect("an array");
+    assert_eq!(regressions.len(), 1, "{v}");
+    assert!(
+        regressions[0]
+            .as_str()
+            .unwrap()
+            .starts_with("eval claimed f64: worst error"),
+        "{v}"
+    );
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(
+        xml.contains("name=\"baseline\"") && xml.contains("<failure"),
+        "{xml}"
+    );
+}
+
+/// A baseline that cannot be read ends the run with exit status 2 before any output file is
+/// written (the JUnit report used to be committed first).
+#[test]
+fn a_bad_baseline_leaves_no_junit_file() {
+    let (d, p, r) = batch_dir(&format!("{ROW}\n"), "csv");
+    let broken = write(d.path(), "broken.json", "{\"worst\": 3}");
+    let junit = d.path().join("j.xml");
+    batch(
+        &p,
+        &r,
+        &[
+            "--precision",
+            "f64",
+            "--baseline",
+            broken.to_str().unwrap(),
+            "--junit",
+            junit.to_str().unwrap(),
+        ],
+    )
+    .code(2);
+    assert!(!junit.exists());
+}
+
 /// issue 10: `--baseline` is read before `--record-baseline` is written, and a run with a
 /// regression records nothing; with one file for both, a regression fails the run and leaves the
 /// baseline as it was. At (1/2, 1/4, 1/4) Finn's patch is exactly (3/8, 5/8, 11/16) (Bernstein

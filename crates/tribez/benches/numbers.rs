@@ -2,7 +2,8 @@
 //! each must take well under a second. `cargo bench --bench numbers`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use tribez::hazmat::number::{MAX_DIGITS, parse_rational};
+use num_bigint::BigUint;
+use tribez::hazmat::number::{MAX_DIGITS, parse_rational, push_decimal};
 
 fn numbers(c: &mut Criterion) {
     let n = MAX_DIGITS;
@@ -24,6 +25,23 @@ fn numbers(c: &mut Criterion) {
     for (name, text) in &cases {
         c.bench_function(&format!("parse {name} of {} characters", text.len()), |b| {
             b.iter(|| parse_rational(text).unwrap())
+        });
+    }
+    // printing: tribez's decimal digits against num-bigint's, from the sizes of exact results at
+    // degree 3 to 20 (5 and 33 limbs) to the digit limit
+    for limbs in [5u32, 33, 5200] {
+        let x = (BigUint::from(3u32).pow(limbs * 41) * 7u32) >> 1u32;
+        let shift = x.bits() - u64::from(limbs) * 64 + 1;
+        let x = x >> shift;
+        c.bench_function(&format!("print {limbs} limbs, tribez"), |b| {
+            b.iter(|| {
+                let mut s = String::new();
+                push_decimal(&mut s, &x);
+                s
+            })
+        });
+        c.bench_function(&format!("print {limbs} limbs, num-bigint"), |b| {
+            b.iter(|| x.to_string())
         });
     }
 }

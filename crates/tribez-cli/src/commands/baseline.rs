@@ -19,27 +19,36 @@ struct BaselineFile<'a> {
     worst: &'a [Worst],
 }
 
-/// The baselines of a run: `--baseline FILE` is read and compared first; `--record-baseline
-/// FILE` is written only when the run succeeds (`success`: every claim holds) and nothing
-/// regressed, so a regression never raises the baseline, even when both name the same file.
-/// Returns the regressions.
-pub fn judge(
-    baseline: Option<&Path>,
+/// The regressions against `--baseline FILE`: read and compared before anything is written,
+/// so `--baseline` and `--record-baseline` may name the same file.
+pub fn regressions(baseline: Option<&Path>, worst: &[Worst]) -> Result<Vec<String>, CliError> {
+    match baseline {
+        Some(path) => compare(path, worst),
+        None => Ok(Vec::new()),
+    }
+}
+
+/// Write `--record-baseline FILE` when the run succeeded (`success`: every claim holds and
+/// nothing regressed), so a regression never raises the baseline. Called after every other
+/// output file is written, so a run that ends with exit status 2 leaves no new baseline.
+pub fn record_if_clean(
     record_baseline: Option<&Path>,
     worst: &[Worst],
     success: bool,
-) -> Result<Vec<String>, CliError> {
-    let regressions = match baseline {
-        Some(path) => compare(path, worst)?,
-        None => Vec::new(),
-    };
-    if let Some(path) = record_baseline
-        && success
-        && regressions.is_empty()
-    {
-        record(path, worst)?;
+) -> Result<(), CliError> {
+    match record_baseline {
+        Some(path) if success => record(path, worst),
+        _ => Ok(()),
     }
-    Ok(regressions)
+}
+
+/// A JUnit case of the baseline regressions (none when nothing regressed).
+pub fn junit_case(regressions: &[String]) -> Option<crate::report::JunitCase> {
+    (!regressions.is_empty()).then(|| crate::report::JunitCase {
+        name: "baseline".into(),
+        checks: regressions.len(),
+        failures: regressions.to_vec(),
+    })
 }
 
 /// Write the baseline file (whole or not at all).

@@ -109,8 +109,10 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if show {
         eprintln!();
     }
-    let report = report?;
-    let success = report.failed == 0;
+    let mut report = report?;
+    let worst = worst_errors(&report);
+    report.baseline_regressions = super::baseline::regressions(args.baseline.as_deref(), &worst)?;
+    let success = report.failed == 0 && report.baseline_regressions.is_empty();
     if let Some(path) = &args.junit {
         super::write_junit(path, &report)?;
     }
@@ -126,19 +128,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         let min_ulps = smallest.settle(&checker);
         crate::picture::reports::batch(&pictures, &report, map.finish(), min_ulps, &command)?;
     }
-    let worst = worst_errors(&report);
-    let regressions = super::baseline::judge(
-        args.baseline.as_deref(),
-        args.record_baseline.as_deref(),
-        &worst,
-        success,
-    )?;
-    let mut outcome =
-        Outcome::rendered(&report, args.out.format, success && regressions.is_empty())?;
-    for r in regressions {
-        outcome.output += &format!("baseline regression: {r}\n");
-    }
-    Ok(outcome)
+    super::baseline::record_if_clean(args.record_baseline.as_deref(), &worst, success)?;
+    Outcome::rendered(&report, args.out.format, success)
 }
 
 /// The worst error for baselines: (eval, claimed, precision).
@@ -177,13 +168,15 @@ impl Render for BatchReport {
                 self.failed as usize - self.failures.len()
             ));
         }
+        let mut cases = vec![JunitCase {
+            name: self.file.clone(),
+            checks: self.checked as usize,
+            failures,
+        }];
+        cases.extend(super::baseline::junit_case(&self.baseline_regressions));
         Some(JunitSuite {
             suite: "check",
-            cases: vec![JunitCase {
-                name: self.file.clone(),
-                checks: self.checked as usize,
-                failures,
-            }],
+            cases,
         })
     }
 }

@@ -132,12 +132,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         label: args.patch.display().to_string(),
     };
     let mut report = tribez::certify(&patch, &options)?;
-    report.baseline_regressions = super::baseline::judge(
-        args.baseline.as_deref(),
-        args.record_baseline.as_deref(),
-        &report.worst_errors(),
-        report.success(),
-    )?;
+    let worst = report.worst_errors();
+    report.baseline_regressions = super::baseline::regressions(args.baseline.as_deref(), &worst)?;
     let success = report.success();
     if let Some(path) = &args.junit {
         super::write_junit(path, &report)?;
@@ -145,6 +141,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if pictures.any() {
         crate::picture::reports::certify(&pictures, &patch, &report, &reproduce(args))?;
     }
+    super::baseline::record_if_clean(args.record_baseline.as_deref(), &worst, success)?;
     Outcome::rendered(&report, args.out.format, success)
 }
 
@@ -184,7 +181,7 @@ impl Render for CertifyReport {
     }
 
     fn junit(&self) -> Option<JunitSuite> {
-        let cases: Vec<JunitCase> = self
+        let mut cases: Vec<JunitCase> = self
             .rows
             .iter()
             .map(|r| JunitCase {
@@ -197,6 +194,7 @@ impl Render for CertifyReport {
                 failures: r.violations.clone(),
             })
             .collect();
+        cases.extend(super::baseline::junit_case(&self.baseline_regressions));
         Some(JunitSuite {
             suite: "certify",
             cases,

@@ -100,12 +100,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         crate::picture::check_html_name(html)?;
     }
     let mut report = judge_paths(&args.paths, &ClaimsOptions::default())?;
-    report.baseline_regressions = super::baseline::judge(
-        args.baseline.as_deref(),
-        args.record_baseline.as_deref(),
-        &report.worst_errors(),
-        report.success(),
-    )?;
+    let worst = report.worst_errors();
+    report.baseline_regressions = super::baseline::regressions(args.baseline.as_deref(), &worst)?;
     let success = report.success();
     if let Some(path) = &args.junit {
         super::write_junit(path, &report)?;
@@ -113,6 +109,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     if let Some(path) = &args.html {
         crate::picture::reports::claims(path, &report, &args.paths)?;
     }
+    super::baseline::record_if_clean(args.record_baseline.as_deref(), &worst, success)?;
     Outcome::rendered(&report, args.out.format, success)
 }
 
@@ -126,7 +123,7 @@ impl Render for ClaimsReport {
     }
 
     fn junit(&self) -> Option<JunitSuite> {
-        let cases: Vec<JunitCase> = self
+        let mut cases: Vec<JunitCase> = self
             .files
             .iter()
             .map(|f| JunitCase {
@@ -148,6 +145,7 @@ impl Render for ClaimsReport {
                     .collect(),
             })
             .collect();
+        cases.extend(super::baseline::junit_case(&self.baseline_regressions));
         Some(JunitSuite {
             suite: "check",
             cases,

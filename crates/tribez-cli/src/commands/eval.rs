@@ -9,17 +9,19 @@ use std::path::PathBuf;
 
 use num_rational::BigRational;
 use rayon::prelude::*;
-use serde_json::{Value as Json, json};
+use serde::{Serialize, Serializer};
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome, check_barycentric, parse_list};
-use crate::cli::OutputArgs;
-use crate::report::{Render, json_rationals, tuple};
+use crate::cli::{OutputArgs, TextOrJson};
+use crate::report::{Render, to_json};
 use tribez::capability::{FloatProgram, InputSpace};
 use tribez::hazmat::error::CoreError;
+use tribez::hazmat::exact::word_point;
 use tribez::hazmat::float::Precision;
 use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::hazmat::io::points::read_points;
-use tribez::hazmat::number::to_decimal_string;
+use tribez::hazmat::number::{push_rational, to_decimal_string};
 use tribez::{Patch, PatchKind};
 
 /// Arguments of `tribez eval`.
@@ -68,45 +70,107 @@ impl FloatChoice {
 }
 
 /// One float coordinate, judged.
+#[derive(Serialize)]
 pub struct FloatCoordinate {
     decimal: String,
     hex: String,
+    #[serde(serialize_with = "opt_rational")]
     exact: Option<BigRational>,
     /// Error in ULPs against the exact value at the inputs as the float code saw them.
+    #[serde(rename = "ulps_vs_exact_at_inputs", serialize_with = "opt_rational")]
     ulps_algorithm: Option<BigRational>,
     /// Error in ULPs against the exact value at the intended inputs.
+    #[serde(
+        rename = "ulps_vs_exact_at_intended_inputs",
+        serialize_with = "opt_rational"
+    )]
     ulps_total: Option<BigRational>,
 }
 
 /// One float path's result at one point.
+#[derive(Serialize)]
 pub struct FloatResult {
+    #[serde(serialize_with = "precision_name")]
     precision: Precision,
     algorithm: &'static str,
     /// The exact values of the rounded inputs.
+    #[serde(serialize_with = "rationals")]
     inputs: Vec<BigRational>,
     /// The exact value at those inputs (`None`: undefined there).
+    #[serde(serialize_with = "opt_rationals")]
     exact_at_inputs: Option<Vec<BigRational>>,
+    #[serde(rename = "value")]
     coords: Vec<FloatCoordinate>,
 }
 
 /// The result at one point.
+#[derive(Serialize)]
 pub struct PointResult {
+    #[serde(serialize_with = "rationals")]
     at: Vec<BigRational>,
+    #[serde(serialize_with = "rationals")]
+    point: Vec<BigRational>,
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "opt_rationals"
+    )]
     cartesian: Option<Vec<BigRational>>,
     /// The barycentric coordinates the kind computed on its way (an S-patch's Wachspress
     /// coordinates).
+    #[serde(
+        rename = "wachspress",
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "opt_rationals"
+    )]
     lambda: Option<Vec<BigRational>>,
-    point: Vec<BigRational>,
+    #[serde(rename = "float", skip_serializing_if = "Vec::is_empty")]
     floats: Vec<FloatResult>,
 }
 
 /// The whole evaluation report.
+#[derive(Serialize)]
 pub struct EvalReport {
+    #[serde(rename = "patch")]
     file: String,
     /// `"rational"`, `"s-patch"`; `None` for polynomial patches.
+    #[serde(skip_serializing_if = "Option::is_none")]
     kind: Option<&'static str>,
+    #[serde(skip)]
     header: String,
     results: Vec<PointResult>,
+}
+
+/// An exact rational as a JSON string `p/q` in lowest terms.
+struct Exact<'a>(&'a BigRational);
+
+impl Serialize for Exact<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut text = String::new();
+        push_rational(&mut text, self.0);
+        s.serialize_str(&text)
+    }
+}
+
+fn rationals<S: Serializer>(xs: &[BigRational], s: S) -> Result<S::Ok, S::Error> {
+    s.collect_seq(xs.iter().map(Exact))
+}
+
+fn opt_rationals<S: Serializer>(xs: &Option<Vec<BigRational>>, s: S) -> Result<S::Ok, S::Error> {
+    match xs {
+        Some(xs) => rationals(xs, s),
+        None => s.serialize_none(),
+    }
+}
+
+fn opt_rational<S: Serializer>(x: &Option<BigRational>, s: S) -> Result<S::Ok, S::Error> {
+    match x {
+        Some(x) => Exact(x).serialize(s),
+        None => s.serialize_none(),
+    }
+}
+
+fn precision_name<S: Serializer>(p: &Precision, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(p.name())
 }
 
 /// A float of `precision` (carried as f64), judged against the exact values at the inputs as
@@ -217,13 +281,22 @@ fn input_of(args: &Args, patch: &Patch, p: Vec<BigRational>) -> Result<Input, Co
                             found: p.len(),
                         });
                     }
-                } else {
+                } else if !sums_to_one(&p, m) {
+                    // the general check, and its error
                     check_barycentric(&p, m, "point")?;
                 }
                 Ok((p, None))
             }
         }
     }
+}
+
+/// `m + 1` non-negative coordinates with one word-sized common denominator `D` that sum to one,
+/// decided on machine words (`Σ a_k = D`); `false` says nothing (the general check decides).
+fn sums_to_one(p: &[BigRational], m: usize) -> bool {
+    p.len() == m + 1
+        && word_point(p)
+            .is_some_and(|(a, d)| a.iter().map(|&x| u128::from(x)).sum::<u128>() == u128::from(d))
 }
 
 /// The first line's description of the patch, and the report's `kind` (none for polynomial
@@ -254,6 +327,25 @@ fn header(patch: &Patch) -> (String, Option<&'static str>) {
 
 /// Run `tribez eval`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
+    let report = evaluate(args)?;
+    // rendered point by point on all cores (the digits of large results are much of the work)
+    let output = match args.out.format {
+        TextOrJson::Json => report.json_text(),
+        TextOrJson::Text => {
+            let points: Vec<String> = report.results.par_iter().map(point_text).collect();
+            let mut out = format!("{}: {}\n", report.file, report.header);
+            out.extend(points);
+            out
+        }
+    };
+    Ok(Outcome {
+        output,
+        success: true,
+    })
+}
+
+/// The report of `tribez eval`.
+fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
     let file = args.patch.display().to_string();
     let patch = Patch::from(read_any_patch(&args.patch)?);
     let shape = patch.shape();
@@ -312,99 +404,207 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         header,
         results,
     };
-    Outcome::rendered(&report, args.out.format, true)
+    Ok(report)
 }
 
-fn opt_str(q: &Option<BigRational>) -> Json {
-    q.as_ref().map_or(Json::Null, |x| json!(x.to_string()))
+impl EvalReport {
+    /// The JSON report, pretty-printed with two-space indents and a final newline: the same
+    /// bytes as [`Render::json`] printed by the JSON exporter, written without building the tree,
+    /// each point's part on any core.
+    fn json_text(&self) -> String {
+        let quoted = |s: &str| serde_json::to_string(s).expect("a string serialises");
+        let mut out = format!("{{\n  \"patch\": {}", quoted(&self.file));
+        if let Some(kind) = self.kind {
+            out += &format!(",\n  \"kind\": {}", quoted(kind));
+        }
+        out += ",\n  \"results\": [";
+        let parts: Vec<String> = self
+            .results
+            .par_iter()
+            .map(|r| {
+                // a point's object at depth 2: every line after its first indented by 4 spaces
+                let text = serde_json::to_string_pretty(r).expect("a point result serialises");
+                text.replace('\n', "\n    ")
+            })
+            .collect();
+        for (i, part) in parts.iter().enumerate() {
+            out += if i == 0 { "\n    " } else { ",\n    " };
+            out += part;
+        }
+        out += if parts.is_empty() { "]" } else { "\n  ]" };
+        out += "\n}\n";
+        out
+    }
+}
+
+/// `(a, b, c)` for people.
+fn tuple(xs: &[BigRational]) -> String {
+    let mut out = String::from("(");
+    for (i, x) in xs.iter().enumerate() {
+        if i > 0 {
+            out += ", ";
+        }
+        push_rational(&mut out, x);
+    }
+    out.push(')');
+    out
 }
 
 fn ulps_text(q: &Option<BigRational>) -> String {
     q.as_ref().map_or("n/a".into(), |x| to_decimal_string(x, 4))
 }
 
+/// One point's lines of the text report.
+fn point_text(r: &PointResult) -> String {
+    let mut out = match (&r.cartesian, &r.lambda) {
+        (Some(c), Some(l)) => format!("at {} (Wachspress {})", tuple(c), tuple(l)),
+        (Some(c), None) => format!("at {} (Cartesian {})", tuple(&r.at), tuple(c)),
+        (None, _) => format!("at {}", tuple(&r.at)),
+    };
+    out += &format!(": {}\n", tuple(&r.point));
+    for f in &r.floats {
+        out += &format!(
+            "  {} {}: inputs as the code saw them {}\n",
+            f.precision.name(),
+            f.algorithm,
+            tuple(&f.inputs)
+        );
+        for (c, fc) in f.coords.iter().enumerate() {
+            out += &format!(
+                "    [{c}] {} = {} = {}; {} ulp from the exact value at those inputs ({}), {} ulp from the exact value at the intended inputs\n",
+                fc.decimal,
+                fc.hex,
+                fc.exact
+                    .as_ref()
+                    .map_or("not finite".into(), ToString::to_string),
+                ulps_text(&fc.ulps_algorithm),
+                f.exact_at_inputs
+                    .as_ref()
+                    .map_or("undefined".into(), |e| e[c].to_string()),
+                ulps_text(&fc.ulps_total),
+            );
+        }
+    }
+    out
+}
+
 impl Render for EvalReport {
     fn text(&self) -> String {
         let mut out = format!("{}: {}\n", self.file, self.header);
-        for r in &self.results {
-            match (&r.cartesian, &r.lambda) {
-                (Some(c), Some(l)) => {
-                    out += &format!("at {} (Wachspress {})", tuple(c), tuple(l));
-                }
-                (Some(c), None) => out += &format!("at {} (Cartesian {})", tuple(&r.at), tuple(c)),
-                (None, _) => out += &format!("at {}", tuple(&r.at)),
-            }
-            out += &format!(": {}\n", tuple(&r.point));
-            for f in &r.floats {
-                out += &format!(
-                    "  {} {}: inputs as the code saw them {}\n",
-                    f.precision.name(),
-                    f.algorithm,
-                    tuple(&f.inputs)
-                );
-                for (c, fc) in f.coords.iter().enumerate() {
-                    out += &format!(
-                        "    [{c}] {} = {} = {}; {} ulp from the exact value at those inputs ({}), {} ulp from the exact value at the intended inputs\n",
-                        fc.decimal,
-                        fc.hex,
-                        fc.exact
-                            .as_ref()
-                            .map_or("not finite".into(), ToString::to_string),
-                        ulps_text(&fc.ulps_algorithm),
-                        f.exact_at_inputs
-                            .as_ref()
-                            .map_or("undefined".into(), |e| e[c].to_string()),
-                        ulps_text(&fc.ulps_total),
-                    );
-                }
-            }
-        }
+        out.extend(self.results.iter().map(point_text));
         out
     }
 
     fn json(&self) -> Json {
-        let results: Vec<Json> = self
-            .results
-            .iter()
-            .map(|r| {
-                let mut o =
-                    json!({ "at": json_rationals(&r.at), "point": json_rationals(&r.point) });
-                if let Some(c) = &r.cartesian {
-                    o["cartesian"] = json_rationals(c);
-                }
-                if let Some(l) = &r.lambda {
-                    o["wachspress"] = json_rationals(l);
-                }
-                if !r.floats.is_empty() {
-                    o["float"] = Json::Array(
-                        r.floats
-                            .iter()
-                            .map(|f| {
-                                json!({
-                                    "precision": f.precision.name(),
-                                    "algorithm": f.algorithm,
-                                    "inputs": json_rationals(&f.inputs),
-                                    "exact_at_inputs": f.exact_at_inputs.as_ref().map_or(Json::Null, |e| json_rationals(e)),
-                                    "value": f.coords.iter().map(|c| json!({
-                                        "decimal": c.decimal,
-                                        "hex": c.hex,
-                                        "exact": opt_str(&c.exact),
-                                        "ulps_vs_exact_at_inputs": opt_str(&c.ulps_algorithm),
-                                        "ulps_vs_exact_at_intended_inputs": opt_str(&c.ulps_total),
-                                    })).collect::<Vec<_>>(),
-                                })
-                            })
-                            .collect(),
-                    );
-                }
-                o
-            })
-            .collect();
-        let mut o = json!({ "patch": self.file });
-        if let Some(kind) = self.kind {
-            o["kind"] = json!(kind);
+        to_json(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::render;
+    use proptest::prelude::*;
+    use std::path::Path;
+    use tribez::hazmat::number::parse_rational;
+
+    fn args(patch: &str, at: &[&str], cartesian: bool, float: Option<FloatChoice>) -> Args {
+        Args {
+            patch: Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../../fixtures")
+                .join(patch),
+            at: at.iter().map(|s| s.to_string()).collect(),
+            points: None,
+            cartesian,
+            homogeneous: false,
+            float,
+            out: OutputArgs {
+                format: TextOrJson::Json,
+                output: None,
+            },
         }
-        o["results"] = Json::Array(results);
-        o
+    }
+
+    /// The streamed JSON and the parallel text are the bytes the generic exporters write from
+    /// the report's tree and its `text()`: every kind, with and without float paths.
+    #[test]
+    fn streamed_output_equals_the_generic_rendering() {
+        let cases = [
+            args(
+                "finn_day30.toml",
+                &["1/2,1/3,1/6", "-1,1,1", "0.1,0.3,0.6"],
+                false,
+                Some(FloatChoice::All),
+            ),
+            args(
+                "finn_day30.toml",
+                &["1/3,1/5"],
+                true,
+                Some(FloatChoice::F32),
+            ),
+            args("finn_day30.toml", &["0,0,1"], false, None),
+            args(
+                "beyond/octant_quartic.toml",
+                &["1/2,1/4,1/4", "1,0,0"],
+                false,
+                Some(FloatChoice::All),
+            ),
+            args(
+                "beyond/pentagon_depth2.toml",
+                &["2,2", "1,1"],
+                true,
+                Some(FloatChoice::F64),
+            ),
+            args(
+                "beyond/tetra_quadratic.toml",
+                &["1/4,1/4,1/4,1/4"],
+                false,
+                Some(FloatChoice::All),
+            ),
+        ];
+        for a in &cases {
+            let report = evaluate(a).unwrap();
+            assert_eq!(
+                Some(report.json_text()),
+                render(&report, crate::report::Format::Json),
+                "{}",
+                a.patch.display()
+            );
+            let text = run(&Args {
+                out: OutputArgs {
+                    format: TextOrJson::Text,
+                    output: None,
+                },
+                at: a.at.clone(),
+                patch: a.patch.clone(),
+                points: None,
+                ..*a
+            })
+            .unwrap();
+            assert_eq!(text.output, report.text());
+        }
+    }
+
+    proptest! {
+        /// The word check of `Σλ = 1` agrees with the general one whenever it says yes, and says
+        /// yes for every non-negative word-sized point that sums to one.
+        #[test]
+        fn word_sum_check_agrees_with_the_general_check(a in 0u64..1 << 40, b in 0u64..1 << 40,
+                                                        q in 1u64..1 << 40, c_neg: bool) {
+            let c = i128::from(q) - i128::from(a) - i128::from(b);
+            let c = if c_neg { -c } else { c };
+            let p: Vec<BigRational> = [format!("{a}/{q}"), format!("{b}/{q}"), format!("{c}/{q}")]
+                .iter()
+                .map(|t| parse_rational(t).unwrap())
+                .collect();
+            let general = check_barycentric(&p, 2, "point").is_ok();
+            if sums_to_one(&p, 2) {
+                prop_assert!(general);
+            }
+            if general && c >= 0 {
+                prop_assert!(sums_to_one(&p, 2));
+            }
+            prop_assert!(!sums_to_one(&p, 3));
+        }
     }
 }

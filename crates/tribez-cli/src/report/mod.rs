@@ -106,11 +106,6 @@ pub fn strings(xs: &[num_rational::BigRational]) -> Vec<String> {
     xs.iter().map(ToString::to_string).collect()
 }
 
-/// Exact rationals as a JSON array of strings.
-pub fn json_rationals(xs: &[num_rational::BigRational]) -> Json {
-    Json::Array(xs.iter().map(|x| Json::String(x.to_string())).collect())
-}
-
 /// `(a, b, c)` for people.
 pub fn tuple(xs: &[num_rational::BigRational]) -> String {
     tribez::hazmat::domain::format_tuple(xs)

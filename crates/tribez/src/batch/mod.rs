@@ -413,6 +413,7 @@ impl<'p> Accumulator<'p> {
                 worst: None,
                 failures: Vec::new(),
                 rows: p.row_detail.then(Vec::new),
+                baseline_regressions: Vec::new(),
             },
             floor: 0.0,
             certified: false,

@@ -105,6 +105,9 @@ pub struct BatchReport {
     pub failures: Vec<FailedRow>,
     /// Every row's figures, in row order, with [`super::BatchOptions::row_detail`].
     pub rows: Option<Vec<RowDetail>>,
+    /// Worst errors that got worse than a recorded baseline's, one line each (filled in by the
+    /// caller that compares baselines; empty otherwise).
+    pub baseline_regressions: Vec<String>,
 }
 
 impl BatchReport {
@@ -198,6 +201,8 @@ struct ReportJson<'a> {
     failures_not_listed: usize,
     #[serde(skip_serializing_if = "Option::is_none")]
     rows: Option<&'a [RowDetail]>,
+    #[serde(skip_serializing_if = "<[String]>::is_empty")]
+    baseline_regressions: &'a [String],
 }
 
 #[derive(serde::Serialize)]
@@ -299,6 +304,7 @@ impl serde::Serialize for BatchReport {
                 .collect(),
             failures_not_listed: self.failures_not_listed(),
             rows: self.rows.as_deref(),
+            baseline_regressions: &self.baseline_regressions,
         }
         .serialize(s)
     }
@@ -398,6 +404,9 @@ impl BatchReport {
             self.passed,
             self.failed
         );
+        for r in &self.baseline_regressions {
+            out += &format!("baseline regression: {r}\n");
+        }
         out
     }
 

@@ -302,54 +302,58 @@ fn control_points(
         return Err(doc.error(node, key, format!("degree {degree} on a {m}-simplex has {total} control points, above the limit of {MAX_CONTROL_POINTS}")));
     }
     let simplex = Simplex::new(m, degree);
-    let mut slots: Vec<Option<(String, Vec<BigRational>)>> = vec![None; simplex.len()];
-    let mut dim: Option<(usize, String)> = None;
-    for (k, v) in table {
-        let here = format!("{key}.\"{k}\"");
+    // For each rank, the position in `table` of the entry that filled it; the keys of messages
+    // (`control_points."1,0,1"`) are only spelled out on an error.
+    let here = |k: &str| format!("{key}.\"{k}\"");
+    let mut slots: Vec<Option<(usize, Vec<BigRational>)>> = vec![None; simplex.len()];
+    let mut dim: Option<(usize, &str)> = None;
+    for (pos, (k, v)) in table.iter().enumerate() {
         let alpha = parts(k, v)?;
         if alpha.len() != m + 1 {
-            return Err(doc.error(v, &here, format!("multi-index has {} parts, but \"{first_key}\" has {} (all keys need the same number)", alpha.len(), m + 1)));
+            return Err(doc.error(v, &here(k), format!("multi-index has {} parts, but \"{first_key}\" has {} (all keys need the same number)", alpha.len(), m + 1)));
         }
         let sum: u64 = alpha.iter().map(|&a| u64::from(a)).sum();
         if sum != degree as u64 {
             return Err(doc.error(
                 v,
-                &here,
+                &here(k),
                 format!("multi-index sums to {sum}, but the degree is {degree}"),
             ));
         }
         let r = simplex.rank(&alpha);
         if let Some((other, _)) = &slots[r] {
+            let other = &table[*other].0;
             return Err(doc.error(
                 v,
-                &here,
+                &here(k),
                 format!("duplicated multi-index: \"{other}\" names the same control point"),
             ));
         }
-        let point = doc.rationals(v, &here)?;
+        let point = doc.rationals(v, &here(k))?;
         if point.is_empty() {
-            return Err(doc.error(v, &here, "a control point needs at least one coordinate"));
+            return Err(doc.error(v, &here(k), "a control point needs at least one coordinate"));
         }
-        match &dim {
-            None => dim = Some((point.len(), k.clone())),
-            Some((d, other)) if *d != point.len() => {
-                return Err(doc.error(v, &here, format!("point has {} coordinates, but \"{other}\" has {d} (points of different dimensions)", point.len())));
+        match dim {
+            None => dim = Some((point.len(), k.as_str())),
+            Some((d, other)) if d != point.len() => {
+                return Err(doc.error(v, &here(k), format!("point has {} coordinates, but \"{other}\" has {d} (points of different dimensions)", point.len())));
             }
             _ => {}
         }
-        slots[r] = Some((k.clone(), point));
+        slots[r] = Some((pos, point));
     }
-    let mut points = Vec::with_capacity(slots.len());
+    let d = dim.map_or(1, |(d, _)| d);
+    let mut coords = Vec::with_capacity(slots.len() * d);
     for (r, slot) in slots.into_iter().enumerate() {
         match slot {
-            Some((_, p)) => points.push(p),
+            Some((_, p)) => coords.extend(p),
             None => {
                 let missing = index_key(simplex.index(r));
                 return Err(doc.error(node, key, format!("missing control point \"{missing}\" (every multi-index of degree {degree} must appear once)")));
             }
         }
     }
-    Ok(ControlNet::from_points(m, degree, &points))
+    Ok(ControlNet::new(simplex, d, coords))
 }
 
 /// Parse a domain simplex: `m + 1` vertices in `ℝ^m`.

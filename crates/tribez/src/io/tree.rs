@@ -157,7 +157,13 @@ impl Toml<'_> {
         let entries = table
             .iter()
             .map(|(k, item)| {
-                let key_line = self.span_line(table.key(k).and_then(|key| key.span()), line);
+                // The key's line is only a fallback for an item without a span of its own;
+                // looking the key up costs a hash per entry, so only when needed.
+                let key_line = if item_has_span(item) {
+                    line
+                } else {
+                    self.span_line(table.key(k).and_then(|key| key.span()), line)
+                };
                 (k.to_string(), self.item(item, key_line))
             })
             .collect();
@@ -203,13 +209,33 @@ impl Toml<'_> {
             V::InlineTable(t) => Value::Table(
                 t.iter()
                     .map(|(k, x)| {
-                        let key_line = self.span_line(t.key(k).and_then(|key| key.span()), line);
+                        let key_line = if x.span().is_some() {
+                            line
+                        } else {
+                            self.span_line(t.key(k).and_then(|key| key.span()), line)
+                        };
                         (k.to_string(), self.value(x, key_line))
                     })
                     .collect(),
             ),
         };
         Node { value, line }
+    }
+}
+
+/// The position of the first key that repeats an earlier one (the second occurrence).
+fn first_duplicate(entries: &[(String, Node)]) -> Option<usize> {
+    let mut seen = std::collections::HashSet::with_capacity(entries.len());
+    entries.iter().position(|(k, _)| !seen.insert(k.as_str()))
+}
+
+/// Whether a TOML item carries its own span (then its line comes from it).
+fn item_has_span(item: &toml_edit::Item) -> bool {
+    match item {
+        toml_edit::Item::None => false,
+        toml_edit::Item::Value(v) => v.span().is_some(),
+        toml_edit::Item::Table(t) => t.span().is_some(),
+        toml_edit::Item::ArrayOfTables(a) => a.span().is_some(),
     }
 }
 
@@ -261,16 +287,14 @@ impl JsonParser<'_> {
             Some(b'{') => {
                 self.pos += 1;
                 let mut entries: Vec<(String, Node)> = Vec::new();
-                let mut seen = std::collections::HashSet::new();
+                // Where each key starts, to point at a duplicate; duplicates are looked for
+                // once the object is read, by hashing borrowed keys (no copy of every key).
+                let mut key_starts: Vec<usize> = Vec::new();
                 if !self.eat(b'}') {
                     loop {
                         self.skip_ws();
-                        let key_pos = self.pos;
+                        key_starts.push(self.pos);
                         let key = self.string()?;
-                        if !seen.insert(key.clone()) {
-                            self.pos = key_pos;
-                            return Err(self.err(JsonSyntax::DuplicateKey { key }));
-                        }
                         if !self.eat(b':') {
                             return Err(self.err(JsonSyntax::Expected("':' after a key")));
                         }
@@ -284,6 +308,11 @@ impl JsonParser<'_> {
                         }
                         return Err(self.err(JsonSyntax::Expected("',' or '}'")));
                     }
+                }
+                if let Some(dup) = first_duplicate(&entries) {
+                    self.pos = key_starts[dup];
+                    let key = entries.swap_remove(dup).0;
+                    return Err(self.err(JsonSyntax::DuplicateKey { key }));
                 }
                 Value::Table(entries)
             }
@@ -479,11 +508,28 @@ impl Document {
 
     /// `node` as an array of rationals.
     pub fn rationals(&self, node: &Node, key: &str) -> Result<Vec<BigRational>, InputError> {
-        self.array(node, key)?
-            .iter()
-            .enumerate()
-            .map(|(i, x)| self.rational(x, &format!("{key}[{i}]")))
-            .collect()
+        let items = self.array(node, key)?;
+        let mut out = Vec::with_capacity(items.len());
+        for (i, x) in items.iter().enumerate() {
+            // The element's key (`key[i]`) is only spelled out for an error message.
+            match &x.value {
+                Value::Number(t) | Value::String(t) => match parse_rational(t) {
+                    Ok(q) => out.push(q),
+                    Err(e) => return Err(self.error(x, &format!("{key}[{i}]"), e)),
+                },
+                other => {
+                    return Err(self.error(
+                        x,
+                        &format!("{key}[{i}]"),
+                        Problem::WrongType {
+                            expected: "a number",
+                            found: other.kind(),
+                        },
+                    ));
+                }
+            }
+        }
+        Ok(out)
     }
 
     /// Look up `name` in a table; the keys it does not know are reported by the caller.

@@ -96,7 +96,7 @@ fn combine(u: &BigUint, a: i128, v: &BigUint, b: i128) -> Option<BigUint> {
 }
 
 /// Binary gcd of machine words.
-fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+pub(super) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
     if a == 0 || b == 0 {
         return a | b;
     }

@@ -43,7 +43,7 @@ pub use parse::{
 };
 pub use print::{
     display_f32, display_f64, display_float, format_rational, hex_f32, hex_f64, hex_float,
-    to_decimal_string,
+    push_decimal, push_rational, to_decimal_string,
 };
 pub use round::{is_faithful, is_faithful_f32, is_faithful_f64, round_f32, round_f64, round_to};
 pub use ulp::{

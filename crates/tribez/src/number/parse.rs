@@ -286,6 +286,9 @@ fn parse_plain(s: &str, whole: &str) -> Result<BigRational, NumberError> {
     if body.eq_ignore_ascii_case("inf") || body.eq_ignore_ascii_case("infinity") {
         return Err(NumberError::Infinite(abbreviate(whole)));
     }
+    if let Some(q) = small(neg, body) {
+        return q;
+    }
     if let Some((num, den)) = body.split_once('/') {
         if !is_digits(num, 10) || !is_digits(den, 10) {
             return Err(syntax());
@@ -315,6 +318,33 @@ fn parse_plain(s: &str, whole: &str) -> Result<BigRational, NumberError> {
     let (m, frac_len) = parse_mantissa(mantissa, 10, whole)?;
     let e10 = exp - i64::try_from(frac_len).map_err(|_| syntax())?;
     Ok(decimal(neg, m, e10))
+}
+
+/// The fast path of the commonest forms, an integer `p` or a fraction `p/q` of at most 19
+/// digits each: read in machine words, reduced by a word gcd (no big integer until the result).
+/// `None` for any other text (the general path then reads it, with its errors).
+fn small(neg: bool, body: &str) -> Option<Result<BigRational, NumberError>> {
+    let word = |s: &str| -> Option<u64> {
+        if s.is_empty() || s.len() > 19 {
+            return None;
+        }
+        s.bytes().try_fold(0u64, |acc, b| {
+            b.is_ascii_digit().then(|| acc * 10 + u64::from(b - b'0'))
+        })
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((num, den)) => (word(num)?, word(den)?),
+        None => (word(body)?, 1),
+    };
+    if q == 0 {
+        return None; // the general path words the error
+    }
+    let g = super::arith::gcd_u64(p, q);
+    let (p, q) = if p == 0 { (0, 1) } else { (p / g, q / g) };
+    Some(Ok(BigRational::new_raw(
+        signed(neg && p != 0, BigUint::from(p)),
+        BigInt::from(q),
+    )))
 }
 
 /// `±m·10^e` in lowest terms. |e| ≤ MAX_EXPONENT + MAX_DIGITS here. For `e < 0` the

@@ -2,8 +2,9 @@
 //! shortest round-trip decimals and as exact C99 hex floats.
 
 use std::cmp::Ordering;
+use std::sync::OnceLock;
 
-use num_bigint::{BigUint, Sign};
+use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -15,33 +16,206 @@ use super::round::floor_log2_mag;
 /// and `-0` never appears. (A rational with zero denominator, which only
 /// `Ratio::new_raw` can build, prints as `p/0`.)
 ///
-/// Not quadratic: a `BigRational` with a positive denominator is in lowest terms (num-rational
-/// keeps that invariant, and tribez builds `new_raw` values only in lowest terms), so no gcd is
-/// taken (num-bigint's binary gcd is quadratic in the length); the digits come from
-/// num-bigint's divide-and-conquer radix conversion.
+/// Not quadratic in the gcd: a `BigRational` with a positive denominator is in lowest terms
+/// (num-rational keeps that invariant, and tribez builds `new_raw` values only in lowest terms),
+/// so no gcd is taken (num-bigint's binary gcd is quadratic in the length); the digits come from
+/// [`push_decimal`].
+///
+/// ```
+/// use tribez::hazmat::number::{format_rational, parse_rational};
+/// assert_eq!(format_rational(&parse_rational("-6/4").unwrap()), "-3/2");
+/// assert_eq!(format_rational(&parse_rational("10000000000000000000").unwrap()), "10000000000000000000");
+/// ```
 pub fn format_rational(q: &BigRational) -> String {
+    let mut out = String::new();
+    push_rational(&mut out, q);
+    out
+}
+
+/// Append [`format_rational`]`(q)` to `out`.
+pub fn push_rational(out: &mut String, q: &BigRational) {
     let (n, d) = (q.numer(), q.denom());
     if d.is_zero() {
-        return format!("{n}/0");
+        push_signed(out, n);
+        out.push_str("/0");
+        return;
     }
     if d.sign() == Sign::Plus {
         debug_assert!(n.gcd(d).is_one(), "rational not in lowest terms");
-        return if d.is_one() {
-            n.to_string()
-        } else {
-            format!("{n}/{d}")
-        };
-    }
-    let g = n.gcd(d);
-    if d.sign() == Sign::Plus && g.is_one() {
-        if d.is_one() {
-            n.to_string()
-        } else {
-            format!("{n}/{d}")
+        push_signed(out, n);
+        if !d.is_one() {
+            out.push('/');
+            push_decimal(out, d.magnitude());
         }
-    } else {
-        format_rational(&q.reduced())
+        return;
     }
+    push_rational(out, &q.reduced());
+}
+
+/// Append the decimal digits of `x` (with a leading `-` when negative) to `out`.
+fn push_signed(out: &mut String, x: &BigInt) {
+    if x.sign() == Sign::Minus {
+        out.push('-');
+    }
+    push_decimal(out, x.magnitude());
+}
+
+/// `10^19`, the largest power of ten below `2^64`; it is at least `2^63` (its top bit is set).
+const TEN19: u64 = 10_000_000_000_000_000_000;
+
+/// Append the decimal digits of `x` to `out` (as `x.to_string()`, and equal to it: tested).
+///
+/// In chunks of 19 digits, the base-`10^19` digits of `x`: by repeated division by `10^19`, one
+/// limb at a time, each step a division of a two-limb number by the normalised one-limb divisor
+/// through its precomputed reciprocal (Möller and Granlund, "Improved division by invariant
+/// integers", Algorithm 4: two products and no division instruction per limb, where num-bigint
+/// divides by `10^9` with two hardware divisions per limb). Numbers of [`SPLIT_LIMBS`] limbs or
+/// more are first split in two by one division by `10^(19·2^k)` (the largest such power not above
+/// the square root of the number, computed once per process), recursively, which makes the
+/// quadratic part run at the speed of num-bigint's long division. A number of
+/// [`super::MAX_DIGITS`] digits prints in a few milliseconds.
+pub fn push_decimal(out: &mut String, x: &BigUint) {
+    let mut bytes = Vec::new();
+    let limbs = x.to_u64_digits();
+    if limbs.len() < SPLIT_LIMBS {
+        push_chunks(&mut bytes, limbs, None);
+    } else {
+        split_decimal(&mut bytes, x, None);
+    }
+    out.push_str(std::str::from_utf8(&bytes).expect("ASCII digits"));
+}
+
+/// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
+const SPLIT_LIMBS: usize = 24;
+
+/// `10^(19·2^k)` for `k = 0, 1, …`, each computed once.
+fn power_of_ten(k: usize) -> &'static BigUint {
+    static POWERS: [OnceLock<BigUint>; 24] = [const { OnceLock::new() }; 24];
+    POWERS[k].get_or_init(|| match k {
+        0 => BigUint::from(TEN19),
+        _ => {
+            let p = power_of_ten(k - 1);
+            p * p
+        }
+    })
+}
+
+/// The digits of `x`, exactly `width` of them (leading zeros) when given.
+fn split_decimal(out: &mut Vec<u8>, x: &BigUint, width: Option<usize>) {
+    let limbs = x.to_u64_digits();
+    let len = limbs.len();
+    if len < SPLIT_LIMBS {
+        push_chunks(out, limbs, width.map(|w| w / 19));
+        return;
+    }
+    // the largest k with 10^(19·2^k) of at most half the limbs of x (19·2^k digits each side)
+    let mut k = 0;
+    while k + 1 < 24 && power_of_ten(k + 1).bits().div_ceil(64) * 2 <= len as u64 {
+        k += 1;
+    }
+    let (hi, lo) = x.div_rem(power_of_ten(k));
+    let low_digits = 19 << k;
+    split_decimal(out, &hi, width.map(|w| w - low_digits));
+    split_decimal(out, &lo, Some(low_digits));
+}
+
+/// The digits of the little-endian limbs `limbs`; with `chunks`, exactly `19·chunks` digits
+/// (leading zeros), else no leading zero.
+fn push_chunks(out: &mut Vec<u8>, mut limbs: Vec<u64>, chunks: Option<usize>) {
+    while limbs.last() == Some(&0) {
+        limbs.pop();
+    }
+    // v = floor((2^128 − 1) / d) − 2^64 for the normalised d = 10^19
+    let v = (u128::MAX / u128::from(TEN19) - (1u128 << 64)) as u64;
+    let mut digits: Vec<u64> = Vec::with_capacity(limbs.len() * 64 / 63 + 2);
+    while limbs.len() > 1 {
+        let mut r = 0u64;
+        for limb in limbs.iter_mut().rev() {
+            let (q, rem) = div_2by1(r, *limb, TEN19, v);
+            *limb = q;
+            r = rem;
+        }
+        digits.push(r);
+        if limbs.last() == Some(&0) {
+            limbs.pop();
+        }
+    }
+    // the last limb may exceed 10^19: one more word division
+    if let Some(&top) = limbs.first() {
+        digits.push(top % TEN19);
+        if top >= TEN19 {
+            digits.push(top / TEN19);
+        }
+    }
+    while digits.len() > 1 && digits.last() == Some(&0) {
+        digits.pop();
+    }
+    out.reserve(19 * digits.len().max(chunks.unwrap_or(0)) + 1);
+    let top = match chunks {
+        Some(c) => {
+            debug_assert!(digits.len() <= c.max(1));
+            for _ in digits.len()..c {
+                out.extend_from_slice(&[b'0'; 19]);
+            }
+            None
+        }
+        None => Some(digits.pop().unwrap_or(0)),
+    };
+    let mut buf = [b'0'; 20];
+    if let Some(top) = top {
+        let start = fill_digits(&mut buf, top);
+        out.extend_from_slice(&buf[start..]);
+    }
+    for &d in digits.iter().rev() {
+        buf = [b'0'; 20];
+        fill_digits(&mut buf, d);
+        out.extend_from_slice(&buf[1..]);
+    }
+}
+
+/// `(q, r)` with `u1·2^64 + u0 = q·d + r`, `0 ≤ r < d`, for a normalised `d` (top bit set),
+/// `u1 < d` and `v = floor((2^128 − 1)/d) − 2^64` (Möller–Granlund, Algorithm 4); the first
+/// correction without a branch (it is taken about half the time).
+#[inline]
+fn div_2by1(u1: u64, u0: u64, d: u64, v: u64) -> (u64, u64) {
+    let q = u128::from(v) * u128::from(u1);
+    let q = q.wrapping_add((u128::from(u1) << 64) | u128::from(u0));
+    let q1 = ((q >> 64) as u64).wrapping_add(1);
+    let q0 = q as u64;
+    let r = u0.wrapping_sub(q1.wrapping_mul(d));
+    let mask = u64::from(r > q0).wrapping_neg();
+    let mut q1 = q1.wrapping_add(mask);
+    let mut r = r.wrapping_add(mask & d);
+    if r >= d {
+        q1 += 1;
+        r -= d;
+    }
+    (q1, r)
+}
+
+/// Write the digits of `x` right-aligned into `buf`; returns the index of the first one.
+fn fill_digits(buf: &mut [u8; 20], mut x: u64) -> usize {
+    const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
+        2021222324252627282930313233343536373839\
+        4041424344454647484950515253545556575859\
+        6061626364656667686970717273747576777879\
+        8081828384858687888990919293949596979899";
+    let mut i = buf.len();
+    while x >= 100 {
+        let p = (x % 100) as usize * 2;
+        x /= 100;
+        i -= 2;
+        buf[i..i + 2].copy_from_slice(&PAIRS[p..p + 2]);
+    }
+    if x >= 10 {
+        let p = x as usize * 2;
+        i -= 2;
+        buf[i..i + 2].copy_from_slice(&PAIRS[p..p + 2]);
+    } else {
+        i -= 1;
+        buf[i] = b'0' + x as u8;
+    }
+    i
 }
 
 /// Decimal text of `q` correctly rounded (ties to even) to `digits` significant

@@ -853,3 +853,93 @@ proptest! {
         prop_assert_eq!(q(&hex_float(x)), exact_value(x).unwrap());
     }
 }
+
+// ----- the word fast paths of parsing and printing, against the general code -----
+
+/// Random limbs with runs of zeros and all-ones words (carries, the top chunk of `10^19`).
+fn limbs_strategy() -> impl Strategy<Value = Vec<u64>> {
+    prop::collection::vec(
+        prop_oneof![
+            any::<u64>(),
+            Just(0u64),
+            Just(u64::MAX),
+            Just(9_999_999_999_999_999_999u64),
+            Just(10_000_000_000_000_000_000u64),
+        ],
+        0..80,
+    )
+}
+
+#[test]
+fn decimal_printing_at_the_edges() {
+    let ten = BigUint::from(10u32);
+    // around every chunk and split boundary (10^(19·2^k) has 2^k limbs or so)
+    let around = [455, 456, 457, 911, 912, 913, 1500, 3000, 10_000, 30_000];
+    for k in (0..120u32).chain(around) {
+        for x in [
+            ten.pow(k),
+            ten.pow(k) - 1u32,
+            ten.pow(k) + 1u32,
+            ten.pow(k) * 7u32 / 3u32,
+        ] {
+            let mut s = String::new();
+            push_decimal(&mut s, &x);
+            assert_eq!(s, x.to_string());
+        }
+    }
+    let mut s = String::new();
+    push_decimal(&mut s, &BigUint::zero());
+    assert_eq!(s, "0");
+    // p/0 (only new_raw builds it) and a negative denominator
+    let raw = BigRational::new_raw(BigInt::from(-7), BigInt::zero());
+    assert_eq!(format_rational(&raw), "-7/0");
+}
+
+/// The general path of the parser on `p/q`: num-bigint's own reading and reduction.
+fn general(neg: bool, p: &str, q: &str) -> BigRational {
+    let n = BigInt::parse_bytes(p.as_bytes(), 10).unwrap();
+    let d = BigInt::parse_bytes(q.as_bytes(), 10).unwrap();
+    BigRational::new(if neg { -n } else { n }, d)
+}
+
+proptest! {
+    #[test]
+    fn push_decimal_equals_num_bigint(limbs in limbs_strategy()) {
+        let mut x = BigUint::zero();
+        for w in &limbs {
+            x = (x << 64u32) + BigUint::from(*w);
+        }
+        let mut s = String::from("x");
+        push_decimal(&mut s, &x);
+        prop_assert_eq!(&s[1..], x.to_string());
+        let neg = BigRational::new_raw(-BigInt::from(x.clone()) - 1, BigInt::from(x.clone()) * 2u32 + 1u32);
+        prop_assert_eq!(format_rational(&neg), neg.to_string());
+    }
+
+    #[test]
+    fn word_sized_fractions_parse_as_the_general_path(p in any::<u64>(), q in 1u64.., neg: bool,
+                                                      pd in 1usize..20, qd in 1usize..20,
+                                                      zeros in 0usize..3) {
+        // p and q cut to pd and qd digits (some with leading zeros), also 19- and 20-digit ones
+        let cut = |x: u64, d: usize| {
+            let t = x.to_string();
+            let t = &t[t.len().saturating_sub(d)..];
+            format!("{}{t}", "0".repeat(zeros))
+        };
+        let (ps, qs) = (cut(p, pd), cut(q, qd));
+        let sign = if neg { "-" } else { "" };
+        for (a, b) in [(ps.as_str(), qs.as_str()), (&p.to_string(), &q.to_string())] {
+            let text = format!("{sign}{a}/{b}");
+            if b.bytes().all(|c| c == b'0') {
+                prop_assert!(parse_rational(&text).is_err());
+                continue;
+            }
+            let x = parse_rational(&text).unwrap();
+            prop_assert_eq!(&x, &general(neg, a, b));
+            // lowest terms with a positive denominator, as num-rational keeps them
+            prop_assert!(x.denom().sign() == Sign::Plus);
+            prop_assert!(num_integer::Integer::gcd(x.numer(), x.denom()).is_one());
+            prop_assert_eq!(parse_rational(&format!("{sign}{a}")).unwrap(), general(neg, a, "1"));
+        }
+    }
+}
