@@ -641,7 +641,7 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
             "unknown picture format `.txt`",
         ),
         (&["--plot", "m.svg", "--html", "r.txt"][..], "--html"),
-        // staged, then the run fails reading the baseline: nothing is written
+        // a baseline that is not one
         (
             &[
                 "--plot",
@@ -652,6 +652,20 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
                 "linear.toml",
             ][..],
             "linear.toml",
+        ),
+        // the pictures are staged, then recording the baseline fails: nothing is written
+        (
+            &[
+                "--tolerance",
+                "ulps=8",
+                "--plot",
+                "m.svg",
+                "--html",
+                "r.html",
+                "--record-baseline",
+                ".",
+            ][..],
+            "not a file name",
         ),
     ] {
         let err = one_line_exit_2(&mut batch(extra));
