@@ -206,6 +206,17 @@ Examples:
 Examples:
   tribez intersect fixtures/inverse/parabola.toml fixtures/inverse/line_half.toml
   tribez intersect fixtures/inverse/cubic_a.toml fixtures/inverse/cubic_b.toml --format json";
+    /// `tribez locate`.
+    pub const LOCATE: &str = "\
+Examples:
+  tribez locate fixtures/inverse/quad_triangle.toml --point 1/2,1/2
+  tribez locate fixtures/inverse/quad_triangle.toml --point 1/2,1/2 --anywhere --format json";
+    /// `tribez ray`.
+    pub const RAY: &str = "\
+Examples:
+  tribez ray fixtures/inverse/dome.toml --origin 1/4,1/4,2 --direction 0,0,-1
+  tribez ray fixtures/inverse/dome.toml --origin -1,-1,0 --direction 2,2,1 --format json
+  tribez ray fixtures/inverse/hill.toml --height 1/3,1/3";
 }
 
 #[cfg(test)]

@@ -127,3 +127,107 @@ fn intersect_caps_the_degree() {
         &["degree 13, above the limit 12"],
     );
 }
+
+#[test]
+fn locate_and_ray_print_exact_parameters() {
+    // the dome z = 2(λ0λ1 + λ1λ2 + λ2λ0) at (1/4, 1/4): λ = (1/2, 1/4, 1/4), z = 5/8, so the
+    // ray down from height 2 hits at τ = 11/8
+    let out = tribez()
+        .args([
+            "ray",
+            &fx("inverse/dome.toml"),
+            "--origin",
+            "1/4,1/4,2",
+            "--direction",
+            "0,0,-1",
+            "--format",
+            "json",
+        ])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(j["count"], 1);
+    assert_eq!(j["hits"][0]["tau"]["rational"], "11/8");
+    assert_eq!(j["hits"][0]["first"], true);
+    assert_eq!(j["hits"][0]["kind"], "cross");
+    assert_eq!(j["hits"][0]["s"]["rational"], "1/4");
+    // the hill's height at its centroid: 2·(3·1/9) = 2/3
+    let out = tribez()
+        .args(["ray", &fx("inverse/hill.toml"), "--height", "1/3,1/3"])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    assert!(String::from_utf8(out).unwrap().contains("= 2/3"));
+    // locate on the quadratic triangle: x = y = 1/2 at s = t = (√5 − 1)/4, a root of 4x^2 + 2x − 1
+    // (hand: on the diagonal s = t, λ0 = 1 − 2s, x = y = (1 − 2s)s + 4s² = s + 2s² = 1/2)
+    let out = tribez()
+        .args([
+            "locate",
+            &fx("inverse/quad_triangle.toml"),
+            "--point",
+            "1/2,1/2",
+            "--format",
+            "json",
+        ])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let j: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(j["count"], 1);
+    assert_eq!(
+        j["parameters"][0]["s"]["polynomial"],
+        serde_json::json!(["-1", "2", "4"])
+    );
+}
+
+#[test]
+fn locate_and_ray_reject_bad_input() {
+    fails_with(
+        &["locate", &fx("inverse/dome.toml"), "--point", "0,0"],
+        &["dome.toml", "m = 2", "ℝ^2"],
+    );
+    fails_with(
+        &[
+            "locate",
+            &fx("inverse/quad_triangle.toml"),
+            "--point",
+            "0,0,0",
+        ],
+        &["--point 0,0,0", "expected 2 coordinates, found 3"],
+    );
+    fails_with(
+        &[
+            "locate",
+            &fx("inverse/quad_triangle.toml"),
+            "--point",
+            "1/0,2",
+        ],
+        &["--point"],
+    );
+    fails_with(
+        &[
+            "ray",
+            &fx("inverse/dome.toml"),
+            "--origin",
+            "0,0,0",
+            "--direction",
+            "0,0,0",
+        ],
+        &["direction is zero"],
+    );
+    fails_with(
+        &["ray", &fx("inverse/dome.toml"), "--height", "1/3,1/3"],
+        &["--height takes a functional patch"],
+    );
+    fails_with(
+        &["ray", &fx("inverse/hill.toml"), "--height", "2,2"],
+        &["outside the patch's domain triangle"],
+    );
+}

@@ -170,3 +170,83 @@ fn wrong_shapes_and_caps_are_typed_errors() {
 fn num_bigint_two_pow(k: u32) -> tribez::hazmat::number::BigInt {
     tribez::hazmat::number::BigInt::from(1) << k
 }
+
+#[test]
+fn locate_and_ray_match_sympy() {
+    use tribez::algebraic::{locate, ray_hits};
+    let text = std::fs::read_to_string(dir().join("expected_surfaces.json")).unwrap();
+    let cases: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let nums = |v: &serde_json::Value| -> Vec<tribez::Rational> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| q(x.as_str().unwrap()))
+            .collect()
+    };
+    let f = |v: &serde_json::Value| v.as_str().unwrap().parse::<f64>().unwrap();
+    let mut checked = 0;
+    for case in cases.as_array().unwrap() {
+        let name = case["patch"].as_str().unwrap();
+        let patch = Patch::from_file(dir().join(name)).unwrap();
+        if case["op"] == "locate" {
+            let p = nums(&case["point"]);
+            let got = locate(&patch, &[p[0].clone(), p[1].clone()], false).unwrap();
+            let want = case["parameters"].as_array().unwrap();
+            assert_eq!(got.points.len(), want.len(), "{name} {:?}", case["point"]);
+            for (g, w) in got.points.iter().zip(want) {
+                assert_eq!(g.s.to_f64(), f(&w["s"]), "{name} {:?}: s", case["point"]);
+                assert_eq!(g.t.to_f64(), f(&w["t"]), "{name} {:?}: t", case["point"]);
+                assert_eq!(g.jacobian_zero, w["jacobian_zero"].as_bool().unwrap());
+                checked += 1;
+            }
+        } else {
+            let o = nums(&case["origin"]);
+            let d = nums(&case["direction"]);
+            let got = ray_hits(
+                &patch,
+                &[o[0].clone(), o[1].clone(), o[2].clone()],
+                &[d[0].clone(), d[1].clone(), d[2].clone()],
+            )
+            .unwrap();
+            let want = case["hits"].as_array().unwrap();
+            let ctx = format!("{name} {:?} {:?}", case["origin"], case["direction"]);
+            assert_eq!(got.hits.len(), want.len(), "{ctx}");
+            for (g, w) in got.hits.iter().zip(want) {
+                assert_eq!(g.s.to_f64(), f(&w["s"]), "{ctx}: s");
+                assert_eq!(g.t.to_f64(), f(&w["t"]), "{ctx}: t");
+                assert_eq!(g.tau.to_f64(), f(&w["tau"]), "{ctx}: τ");
+                assert_eq!(g.touch, w["touch"].as_bool().unwrap(), "{ctx}: touch");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 15, "only {checked} checked");
+}
+
+#[test]
+fn locate_and_ray_reject_wrong_shapes() {
+    use tribez::algebraic::{AlgebraicError, locate, ray_hits};
+    let curve = Patch::from_file(dir().join("parabola.toml")).unwrap();
+    assert!(matches!(
+        locate(&curve, &[q("0"), q("0")], false),
+        Err(AlgebraicError::Shape(_))
+    ));
+    let dome = Patch::from_file(dir().join("dome.toml")).unwrap();
+    // a patch in ℝ³ is not planar
+    assert!(matches!(
+        locate(&dome, &[q("0"), q("0")], false),
+        Err(AlgebraicError::Shape(_))
+    ));
+    let z = [q("0"), q("0"), q("0")];
+    assert!(matches!(
+        ray_hits(&dome, &z, &z),
+        Err(AlgebraicError::Shape(_))
+    ));
+    // a flat triangle and a ray in its plane along an edge: infinitely many hits
+    let flat = Patch::from_toml(
+        "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0, 0]\n\"0,1,0\" = [1, 0, 0]\n\"0,0,1\" = [0, 1, 0]\n",
+    )
+    .unwrap();
+    let r = ray_hits(&flat, &[q("-1"), q("0"), q("0")], &[q("1"), q("0"), q("0")]).unwrap();
+    assert!(r.infinite);
+}

@@ -12,6 +12,7 @@ pub mod eval;
 pub mod graph;
 pub mod halve;
 pub mod intersect;
+pub mod inverse;
 pub mod join;
 pub mod matrix;
 pub mod output;
@@ -101,6 +102,12 @@ pub enum Command {
     /// Every intersection of two planar curves, exactly: parameters as real algebraic numbers, tangency, overlaps.
     #[command(after_help = examples::INTERSECT)]
     Intersect(intersect::Args),
+    /// Every parameter point of a planar triangle patch that maps to a given point, exactly (Jacobian zeros flagged).
+    #[command(after_help = examples::LOCATE)]
+    Locate(inverse::LocateArgs),
+    /// Every hit of a ray on a patch in R^3 (or a functional patch's graph), in order, exactly; --height for a data lookup.
+    #[command(after_help = examples::RAY)]
+    Ray(inverse::RayArgs),
 }
 
 /// Where a command's output goes: `-o FILE`, or standard output.
@@ -209,6 +216,8 @@ pub fn main(cli: Cli) -> i32 {
         Command::Tangent(a) => (tangent::run(a), &a.out),
         Command::Join(a) => (join::run(a), &a.out),
         Command::Intersect(a) => (intersect::run(a), &a.out),
+        Command::Locate(a) => (inverse::run_locate(a), &a.out),
+        Command::Ray(a) => (inverse::run_ray(a), &a.out),
         Command::Plot(a) => (plot::run(a), a),
     };
     let finished = result.and_then(|o| {

@@ -51,6 +51,16 @@ impl BiPoly {
         BiPoly { c }
     }
 
+    /// The same polynomial with its actual degrees: trailing zero coefficients dropped in `x`
+    /// and in `y` (an identically zero polynomial keeps one empty coefficient).
+    pub fn trimmed(&self) -> BiPoly {
+        let mut c: Vec<Vec<Q>> = self.c.iter().map(|p| trim(p.clone())).collect();
+        while c.len() > 1 && c.last().is_some_and(Vec::is_empty) {
+            c.pop();
+        }
+        BiPoly { c }
+    }
+
     /// Is every coefficient zero?
     pub fn is_zero(&self) -> bool {
         self.c.iter().all(|p| p.iter().all(Zero::is_zero))
@@ -270,6 +280,10 @@ pub fn subresultant1(f: &BiPoly, g: &BiPoly) -> (Vec<Q>, Vec<Q>) {
         if h.deg_y() == 1 {
             return (trim(h.c[1].clone()), trim(h.c[0].clone()));
         }
+    }
+    if f.deg_y() == 0 || g.deg_y() == 0 {
+        // no first subresultant: report s1 = 0 (every root then has to be resolved otherwise)
+        return (Vec::new(), Vec::new());
     }
     let d = bound(f, g);
     let (mut v1, mut v0) = (Vec::with_capacity(d + 1), Vec::with_capacity(d + 1));

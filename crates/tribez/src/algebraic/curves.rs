@@ -20,8 +20,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::bivariate::{BiPoly, add, horner, mul, resultant, subresultant1, trim};
+use super::bivariate::{BiPoly, add, horner, mul};
 use super::number::simplest_between;
+use super::system::{Region, Solved, enclose_ratio, solve};
 use super::{AlgebraicError, IntPoly, MAX_CURVE_DEGREE, RealAlgebraic, check_input};
 use crate::patch_type::Patch;
 
@@ -250,91 +251,6 @@ fn rational_between(a: &RealAlgebraic, b: &RealAlgebraic) -> Q {
     }
 }
 
-/// The value `num(β)/den(β)` (with `den(β) ≠ 0`), known to be one of `candidates`: its index.
-/// Decided with exact signs only: a rational candidate `r` is it iff `num − r·den` vanishes
-/// at `β`; an irrational one with isolating interval `(lo, hi)` iff `lo < num/den < hi`.
-fn match_value(
-    beta: &RealAlgebraic,
-    num: &[Q],
-    den: &[Q],
-    candidates: &[RealAlgebraic],
-) -> Option<usize> {
-    let sd = beta.sign_of_rationals(den);
-    // an approximate value orders the tests
-    let (lo, hi) = beta.enclosure(&(q(1) / q(1 << 40)));
-    let mid = (&lo + &hi) / q(2);
-    let dv = horner(den, &mid);
-    let guess = if dv.is_zero() {
-        Q::zero()
-    } else {
-        horner(num, &mid) / dv
-    };
-    let dist = |c: &RealAlgebraic| -> Q {
-        let (a, b) = c.enclosure(&(q(1) / q(1 << 20)));
-        let m = (a + b) / q(2);
-        (m - &guess).abs()
-    };
-    let mut order: Vec<usize> = (0..candidates.len()).collect();
-    let d: Vec<Q> = candidates.iter().map(dist).collect();
-    order.sort_by(|&i, &j| d[i].cmp(&d[j]));
-    let sub = |r: &Q| -> Ordering {
-        // sign of num(β) − r·den(β), times the sign of den(β): the sign of num/den − r
-        let p = add(num, &den.iter().map(|c| -(c * r)).collect::<Vec<_>>());
-        let s = beta.sign_of_rationals(&p);
-        if sd == Ordering::Less { s.reverse() } else { s }
-    };
-    for k in order {
-        match &candidates[k] {
-            RealAlgebraic::Rational(r) => {
-                if sub(r) == Ordering::Equal {
-                    return Some(k);
-                }
-            }
-            RealAlgebraic::Root(root) => {
-                let (lo, hi) = root.interval();
-                if sub(lo) == Ordering::Greater && sub(hi) == Ordering::Less {
-                    return Some(k);
-                }
-            }
-        }
-    }
-    None
-}
-
-/// A rational enclosure of `num(β)/den(β)`, of width about `width` (interval Horner).
-fn enclose_ratio(beta: &RealAlgebraic, num: &[Q], den: &[Q], width: &Q) -> (Q, Q) {
-    if let Some(b) = beta.as_rational() {
-        let v = horner(num, b) / horner(den, b);
-        return (v.clone(), v);
-    }
-    let mut w = width.clone();
-    loop {
-        let (lo, hi) = beta.enclosure(&w);
-        let n = interval_horner(num, &lo, &hi);
-        let d = interval_horner(den, &lo, &hi);
-        if d.0.is_positive() || d.1.is_negative() {
-            let cands = [&n.0 / &d.0, &n.0 / &d.1, &n.1 / &d.0, &n.1 / &d.1];
-            let a = cands.iter().min().expect("four").clone();
-            let b = cands.iter().max().expect("four").clone();
-            if &b - &a <= *width {
-                return (a, b);
-            }
-        }
-        w /= q(1 << 16);
-    }
-}
-
-fn interval_horner(p: &[Q], lo: &Q, hi: &Q) -> (Q, Q) {
-    let mut a = Q::zero();
-    let mut b = Q::zero();
-    for c in p.iter().rev() {
-        let prods = [&a * lo, &a * hi, &b * lo, &b * hi];
-        a = prods.iter().min().expect("four") + c;
-        b = prods.iter().max().expect("four") + c;
-    }
-    (a, b)
-}
-
 /// Every intersection of two planar curves in `[0, 1]²`, exactly.
 ///
 /// ```
@@ -399,35 +315,9 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
     }
     let [xa, ya, wa] = a.homogeneous();
     let [xb, yb, wb] = b.homogeneous();
-    // polynomials in s with coefficients in t
+    // polynomials in s (the unknown y of the solver) with coefficients in t (its x)
     let f1 = equation(&xa, &wa, &xb, &wb);
     let f2 = equation(&ya, &wa, &yb, &wb);
-    let rt = trim(resultant(&f1, &f2));
-    if rt.is_empty() {
-        return overlap(a, b);
-    }
-    let (g1, g2) = (f1.swap(), f2.swap());
-    let rs = trim(resultant(&g1, &g2));
-    if rs.is_empty() {
-        return overlap(a, b);
-    }
-    let rt_int = IntPoly::from_rationals(&rt);
-    let rs_int = IntPoly::from_rationals(&rs);
-    super::check_poly(&rt_int)?;
-    super::check_poly(&rs_int)?;
-    let roots = |p: &IntPoly| -> Result<Vec<(RealAlgebraic, usize)>, AlgebraicError> {
-        let mut out = Vec::new();
-        for (f, m) in p.square_free_factors() {
-            for r in RealAlgebraic::roots_in(&f, &q(0), &q(1))? {
-                out.push((r, m));
-            }
-        }
-        Ok(out)
-    };
-    let betas = roots(&rt_int)?;
-    let alphas = roots(&rs_int)?;
-    let alpha_values: Vec<RealAlgebraic> = alphas.iter().map(|(a, _)| a.clone()).collect();
-    let (c1, c0) = subresultant1(&f1, &f2);
     // tangent directions (X'W − XW', Y'W − YW') and their cross product G(s, t)
     let tangent = |x: &[Q], y: &[Q], w: &[Q]| -> [Vec<Q>; 2] {
         let d = |p: &[Q]| -> Vec<Q> {
@@ -459,94 +349,42 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
                 .collect(),
         }
     };
-    let mut points = Vec::new();
-    let mut deferred: Vec<(RealAlgebraic, usize)> = Vec::new();
-    let mut matched_alpha = vec![false; alphas.len()];
-    let nc0 = neg(&c0);
-    let c1pc0 = add(&c1, &c0);
-    let tan_t = cross.substitute_y(&nc0, &c1);
-    for (beta, m) in &betas {
-        let s1 = beta.sign_of_rationals(&c1);
-        if s1 == Ordering::Equal {
-            deferred.push((beta.clone(), *m));
-            continue;
-        }
-        // s = −c0/c1 ∈ [0, 1] ⟺ −c0·c1 ≥ 0 and (c1 + c0)·c1 ≥ 0 at β
-        let ge0 = |p: &[Q]| {
-            let s = beta.sign_of_rationals(p);
-            s == Ordering::Equal || s == s1
-        };
-        if !(ge0(&nc0) && ge0(&c1pc0)) {
-            continue;
-        }
-        let k = match_value(beta, &nc0, &c1, &alpha_values).ok_or_else(|| {
-            AlgebraicError::Unsupported(
-                "an intersection parameter that matches no root of the resultant (internal)".into(),
-            )
-        })?;
-        matched_alpha[k] = true;
-        let tangential = beta.sign_of_rationals(&tan_t) == Ordering::Equal;
-        points.push(Intersection {
-            s: alpha_values[k].clone(),
-            t: beta.clone(),
-            multiplicity: Some(*m),
-            tangential,
-            point: [
-                enclose_ratio(beta, &xb, &wb, &tiny()),
-                enclose_ratio(beta, &yb, &wb, &tiny()),
-            ],
-        });
-    }
-    if !deferred.is_empty() {
-        let (d1, d0) = subresultant1(&g1, &g2);
-        let nd0 = neg(&d0);
-        let d1pd0 = add(&d1, &d0);
-        let tan_s = cross.swap().substitute_y(&nd0, &d1);
-        let dvals: Vec<RealAlgebraic> = deferred.iter().map(|(b, _)| b.clone()).collect();
-        let mut resolved = vec![false; deferred.len()];
-        let mut unresolved_alpha = false;
-        for (k, (alpha, m)) in alphas.iter().enumerate() {
-            if matched_alpha[k] {
-                continue;
-            }
-            let s1 = alpha.sign_of_rationals(&d1);
-            if s1 == Ordering::Equal {
-                unresolved_alpha = true;
-                continue;
-            }
-            let ge0 = |p: &[Q]| {
-                let s = alpha.sign_of_rationals(p);
-                s == Ordering::Equal || s == s1
+    let (solutions, resultant) = match solve(&f1, &f2, &Region::unit_square(), &[cross])? {
+        Solved::Infinite => return overlap(a, b),
+        Solved::Points {
+            solutions,
+            resultant,
+        } => (solutions, resultant),
+    };
+    let mut points: Vec<Intersection> = solutions
+        .into_iter()
+        .map(|sol| {
+            // the point from the curve whose parameter is the base value
+            let point = if sol.partner.base_is_x {
+                [
+                    enclose_ratio(&sol.x, &xb, &wb, &tiny()),
+                    enclose_ratio(&sol.x, &yb, &wb, &tiny()),
+                ]
+            } else {
+                [
+                    enclose_ratio(&sol.y, &xa, &wa, &tiny()),
+                    enclose_ratio(&sol.y, &ya, &wa, &tiny()),
+                ]
             };
-            if !(ge0(&nd0) && ge0(&d1pd0)) {
-                continue;
+            Intersection {
+                s: sol.y,
+                t: sol.x,
+                multiplicity: Some(sol.multiplicity),
+                tangential: sol.flags[0],
+                point,
             }
-            let Some(j) = match_value(alpha, &nd0, &d1, &dvals) else {
-                continue;
-            };
-            resolved[j] = true;
-            points.push(Intersection {
-                s: alpha.clone(),
-                t: dvals[j].clone(),
-                multiplicity: Some(*m),
-                tangential: alpha.sign_of_rationals(&tan_s) == Ordering::Equal,
-                point: [
-                    enclose_ratio(alpha, &xa, &wa, &tiny()),
-                    enclose_ratio(alpha, &ya, &wa, &tiny()),
-                ],
-            });
-        }
-        if unresolved_alpha && resolved.iter().any(|r| !r) {
-            return Err(AlgebraicError::Unsupported(
-                "both curves pass more than once through a common point (a parameter with several partners on each side)".into(),
-            ));
-        }
-    }
+        })
+        .collect();
     points.sort_by(|x, y| x.s.cmp_exact(&y.s).then_with(|| x.t.cmp_exact(&y.t)));
     Ok(CurveIntersections {
         points,
         overlaps: Vec::new(),
-        resultant: rt_int,
+        resultant,
     })
 }
 

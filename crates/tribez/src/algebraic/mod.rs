@@ -20,12 +20,16 @@ mod curves;
 mod isolate;
 mod number;
 mod poly;
+mod surfaces;
+mod system;
 
 pub use bivariate::{BiPoly, resultant, subresultant1};
 pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
+pub use surfaces::{Hit, Located, Locations, RayHits, locate, ray_hits};
+pub use system::{Expr, Half, Partner, Region, Solution, Solved, solve};
 
 /// The largest degree of a univariate polynomial whose roots are isolated.
 pub const MAX_DEGREE: usize = 2_000;

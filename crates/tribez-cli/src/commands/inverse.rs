@@ -1,0 +1,365 @@
+//! `tribez locate` and `tribez ray`: the parameters of a planar triangle patch that map to a
+//! point, and the hits of a ray on a patch in ℝ³, exactly (real algebraic parameters).
+
+use std::path::PathBuf;
+
+use serde_json::{Value as Json, json};
+
+use super::{CliError, Outcome, parse_list};
+use crate::cli::OutputArgs;
+use crate::report::Render;
+use tribez::Patch;
+use tribez::Rational;
+use tribez::algebraic::{Expr, Locations, RayHits, RealAlgebraic, locate, ray_hits};
+use tribez::hazmat::io::patch_file::read_any_patch;
+
+/// Arguments of `tribez locate`.
+#[derive(Debug, clap::Args)]
+pub struct LocateArgs {
+    /// The patch file: a triangle patch (m = 2) with points in the plane (d = 2), Bézier or rational.
+    pub patch: PathBuf,
+    /// The point x,y to locate.
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    pub point: String,
+    /// Search the whole parameter plane, not only the closed triangle.
+    #[arg(long)]
+    pub anywhere: bool,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+/// Arguments of `tribez ray`.
+#[derive(Debug, clap::Args)]
+pub struct RayArgs {
+    /// The patch file: a triangle patch in ℝ³ (Bézier or rational), or a functional patch (its graph).
+    pub patch: PathBuf,
+    /// The ray's origin x,y,z.
+    #[arg(
+        long,
+        value_name = "X,Y,Z",
+        allow_hyphen_values = true,
+        required_unless_present = "height"
+    )]
+    pub origin: Option<String>,
+    /// The ray's direction a,b,c (not zero).
+    #[arg(
+        long,
+        value_name = "A,B,C",
+        allow_hyphen_values = true,
+        required_unless_present = "height"
+    )]
+    pub direction: Option<String>,
+    /// A functional patch's height at x,y: the vertical line through (x, y), the data lookup.
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true, conflicts_with_all = ["origin", "direction"])]
+    pub height: Option<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
+fn point<const N: usize>(text: &str, flag: &str) -> Result<[Rational; N], CliError> {
+    let v = parse_list(text, flag)?;
+    let n = v.len();
+    v.try_into().map_err(|_| {
+        CliError::Usage(format!(
+            "{flag} {text}: expected {N} coordinates, found {n}"
+        ))
+    })
+}
+
+fn usage(file: &str, e: impl std::fmt::Display) -> CliError {
+    CliError::Usage(format!("{file}: {e}"))
+}
+
+/// `name = p/q`, or `name ≈ 0.707… (root of … in (lo, hi))`.
+fn alg_text(name: &str, x: &RealAlgebraic) -> String {
+    match x.as_rational() {
+        Some(r) => format!("{name} = {r}"),
+        None => format!("{name} {}", x.to_text()),
+    }
+}
+
+fn expr_text(name: &str, x: &Expr) -> String {
+    match x.rational() {
+        Some(r) => format!("{name} = {r}"),
+        None => format!("{name} ≈ {}", x.decimal()),
+    }
+}
+
+/// JSON of an expression in an algebraic number: exact when rational, else f64 and decimal.
+pub fn expr_json(x: &Expr) -> Json {
+    match x.rational() {
+        Some(r) => json!({
+            "rational": r.to_string(),
+            "f64": tribez::hazmat::number::hex_f64(tribez::hazmat::number::round_f64(&r)),
+            "decimal": tribez::hazmat::number::to_decimal_string(&r, 17),
+        }),
+        None => json!({
+            "f64": tribez::hazmat::number::hex_f64(x.to_f64()),
+            "decimal": x.decimal(),
+        }),
+    }
+}
+
+/// The report of `tribez locate`.
+pub struct LocateReport {
+    file: String,
+    point: [Rational; 2],
+    anywhere: bool,
+    found: Locations,
+}
+
+/// Run `tribez locate`.
+pub fn run_locate(args: &LocateArgs) -> Result<Outcome, CliError> {
+    let file = args.patch.display().to_string();
+    let p: [Rational; 2] = point(&args.point, "--point")?;
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let found = locate(&patch, &p, args.anywhere).map_err(|e| usage(&file, e))?;
+    Outcome::rendered(
+        &LocateReport {
+            file,
+            point: p,
+            anywhere: args.anywhere,
+            found,
+        },
+        args.out.format,
+        true,
+    )
+}
+
+impl Render for LocateReport {
+    fn text(&self) -> String {
+        let f = &self.found;
+        let mut out = format!(
+            "{}: ({}, {}) {}",
+            self.file,
+            self.point[0],
+            self.point[1],
+            if f.infinite {
+                "is the image of a whole curve of parameters\n".to_string()
+            } else {
+                format!(
+                    "has {} parameter point{} {}\n",
+                    f.points.len(),
+                    if f.points.len() == 1 { "" } else { "s" },
+                    if self.anywhere {
+                        "in the plane"
+                    } else {
+                        "in the closed triangle"
+                    }
+                )
+            }
+        );
+        for (k, l) in f.points.iter().enumerate() {
+            out += &format!(
+                "{}. {}\n   {}\n   {}{}\n",
+                k + 1,
+                alg_text("s", &l.s),
+                alg_text("t", &l.t),
+                expr_text("λ0 = 1 − s − t", &l.lambda0),
+                if l.jacobian_zero {
+                    format!(
+                        "\n   the Jacobian vanishes here (multiplicity {})",
+                        l.multiplicity
+                    )
+                } else {
+                    String::new()
+                }
+            );
+        }
+        out
+    }
+
+    fn json(&self) -> Json {
+        let f = &self.found;
+        json!({
+            "patch": self.file,
+            "point": [self.point[0].to_string(), self.point[1].to_string()],
+            "anywhere": self.anywhere,
+            "infinite": f.infinite,
+            "count": f.points.len(),
+            "parameters": f.points.iter().map(|l| json!({
+                "s": l.s.to_json(),
+                "t": l.t.to_json(),
+                "lambda0": expr_json(&l.lambda0),
+                "jacobian_zero": l.jacobian_zero,
+                "multiplicity": l.multiplicity,
+            })).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// The report of `tribez ray`.
+pub enum RayReport {
+    /// A ray.
+    Ray {
+        /// The patch file.
+        file: String,
+        /// Origin.
+        origin: [Rational; 3],
+        /// Direction.
+        direction: [Rational; 3],
+        /// The hits.
+        hits: RayHits,
+    },
+    /// `--height x,y` on a functional patch.
+    Height {
+        /// The patch file.
+        file: String,
+        /// The point (x, y).
+        at: [Rational; 2],
+        /// Its barycentric coordinates in the domain.
+        lambda: Vec<Rational>,
+        /// The height f(x, y).
+        z: Rational,
+    },
+}
+
+/// Run `tribez ray`.
+pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
+    let file = args.patch.display().to_string();
+    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let report = if let Some(h) = &args.height {
+        let at: [Rational; 2] = point(h, "--height")?;
+        let tribez::hazmat::any_patch::AnyPatch::Functional(fp) = patch.as_any() else {
+            return Err(usage(
+                &file,
+                format!(
+                    "--height takes a functional patch, not {}",
+                    patch.as_any().described()
+                ),
+            ));
+        };
+        if fp.net.m() != 2 {
+            return Err(usage(
+                &file,
+                "--height takes a functional patch over a triangle (m = 2)",
+            ));
+        }
+        let lambda = fp
+            .domain_or_reference()
+            .barycentric(&at)
+            .map_err(|e| usage(&file, e))?;
+        if lambda.iter().any(|l| l < &Rational::from_integer(0.into())) {
+            return Err(usage(
+                &file,
+                format!(
+                    "--height {h}: the point ({}, {}) lies outside the patch's domain triangle",
+                    at[0], at[1]
+                ),
+            ));
+        }
+        let z = patch.evaluate(&lambda)?[0].clone();
+        RayReport::Height {
+            file,
+            at,
+            lambda,
+            z,
+        }
+    } else {
+        let o: [Rational; 3] = point(args.origin.as_deref().unwrap_or_default(), "--origin")?;
+        let d: [Rational; 3] = point(args.direction.as_deref().unwrap_or_default(), "--direction")?;
+        let hits = ray_hits(&patch, &o, &d).map_err(|e| usage(&file, e))?;
+        RayReport::Ray {
+            file,
+            origin: o,
+            direction: d,
+            hits,
+        }
+    };
+    Outcome::rendered(&report, args.out.format, true)
+}
+
+fn tuple(xs: &[Rational]) -> String {
+    tribez::hazmat::domain::format_tuple(xs)
+}
+
+impl Render for RayReport {
+    fn text(&self) -> String {
+        match self {
+            RayReport::Height {
+                file,
+                at,
+                lambda,
+                z,
+            } => format!(
+                "{file}: height at ({}, {}) = {z} (≈ {}), barycentric {}\n",
+                at[0],
+                at[1],
+                tribez::hazmat::number::to_decimal_string(z, 17),
+                tuple(lambda)
+            ),
+            RayReport::Ray {
+                file,
+                origin,
+                direction,
+                hits,
+            } => {
+                let mut out = format!(
+                    "{file}: ray from {} along {}: ",
+                    tuple(origin),
+                    tuple(direction)
+                );
+                if hits.infinite {
+                    out += "it runs along the surface (infinitely many hits)\n";
+                    return out;
+                }
+                out += &format!(
+                    "{} hit{}\n",
+                    hits.hits.len(),
+                    if hits.hits.len() == 1 { "" } else { "s" }
+                );
+                for (k, h) in hits.hits.iter().enumerate() {
+                    out += &format!(
+                        "{}. {}{}, {}\n   {}\n   {}\n   {}\n",
+                        k + 1,
+                        expr_text("τ", &h.tau),
+                        if k == 0 { " (first hit)" } else { "" },
+                        if h.touch { "touches" } else { "crosses" },
+                        alg_text("s", &h.s),
+                        alg_text("t", &h.t),
+                        expr_text("λ0 = 1 − s − t", &h.lambda0),
+                    );
+                }
+                out
+            }
+        }
+    }
+
+    fn json(&self) -> Json {
+        match self {
+            RayReport::Height {
+                file,
+                at,
+                lambda,
+                z,
+            } => json!({
+                "patch": file,
+                "height_at": [at[0].to_string(), at[1].to_string()],
+                "barycentric": lambda.iter().map(ToString::to_string).collect::<Vec<_>>(),
+                "height": z.to_string(),
+                "f64": tribez::hazmat::number::hex_f64(tribez::hazmat::number::round_f64(z)),
+            }),
+            RayReport::Ray {
+                file,
+                origin,
+                direction,
+                hits,
+            } => json!({
+                "patch": file,
+                "origin": origin.iter().map(ToString::to_string).collect::<Vec<_>>(),
+                "direction": direction.iter().map(ToString::to_string).collect::<Vec<_>>(),
+                "infinite": hits.infinite,
+                "count": hits.hits.len(),
+                "hits": hits.hits.iter().enumerate().map(|(k, h)| json!({
+                    "tau": expr_json(&h.tau),
+                    "first": k == 0,
+                    "s": h.s.to_json(),
+                    "t": h.t.to_json(),
+                    "lambda0": expr_json(&h.lambda0),
+                    "kind": if h.touch { "touch" } else { "cross" },
+                    "multiplicity": h.multiplicity,
+                })).collect::<Vec<_>>(),
+            }),
+        }
+    }
+}

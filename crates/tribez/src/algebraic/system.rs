@@ -1,0 +1,519 @@
+//! Two polynomial equations in two unknowns, solved exactly over a region of the plane
+//! (docs/theory.md §16.5, §16.6): the shared engine of curve intersection, `locate` and `ray`.
+//!
+//! The unknowns are `x` and `y`; each equation is a [`BiPoly`] in `y` with coefficients in `x`.
+//! `R_x = Res_y(f, g)` is isolated over the `x`-range, `R_y = Res_x(f, g)` over the `y`-range; a
+//! root `β` of `R_x` with `s_1(β) ≠ 0` (first subresultant in `y`) has the single partner
+//! `y = −s_0(β)/s_1(β)`, matched to a root of `R_y` by exact signs; the remaining roots are
+//! resolved from the `y` side the same way.
+
+use std::cmp::Ordering;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+
+use super::bivariate::{BiPoly, add, horner, resultant, subresultant1, trim};
+use super::{AlgebraicError, IntPoly, RealAlgebraic};
+
+type Q = BigRational;
+
+fn q(k: i64) -> Q {
+    Q::from_integer(BigInt::from(k))
+}
+
+/// The half-plane `a·x + b·y + c ≥ 0`.
+#[derive(Clone, Debug)]
+pub struct Half {
+    /// Coefficient of `x`.
+    pub a: Q,
+    /// Coefficient of `y`.
+    pub b: Q,
+    /// Constant.
+    pub c: Q,
+}
+
+/// Where solutions are sought: `x` and `y` ranges (`None`: all reals, bounded by Cauchy's bound
+/// of the resultant) and half-planes.
+#[derive(Clone, Debug)]
+pub struct Region {
+    /// The closed range of `x`.
+    pub x: Option<(Q, Q)>,
+    /// The closed range of `y`.
+    pub y: Option<(Q, Q)>,
+    /// Further constraints.
+    pub halves: Vec<Half>,
+}
+
+impl Region {
+    /// `[0, 1]²`.
+    pub fn unit_square() -> Self {
+        Region {
+            x: Some((q(0), q(1))),
+            y: Some((q(0), q(1))),
+            halves: Vec::new(),
+        }
+    }
+
+    /// The triangle `x ≥ 0, y ≥ 0, x + y ≤ 1`.
+    pub fn triangle() -> Self {
+        Region {
+            x: Some((q(0), q(1))),
+            y: Some((q(0), q(1))),
+            halves: vec![Half {
+                a: q(-1),
+                b: q(-1),
+                c: q(1),
+            }],
+        }
+    }
+
+    /// The whole plane.
+    pub fn plane() -> Self {
+        Region {
+            x: None,
+            y: None,
+            halves: Vec::new(),
+        }
+    }
+}
+
+/// One variable as a rational function of the other at an algebraic value.
+#[derive(Clone, Debug)]
+pub struct Partner {
+    /// Is the base variable `x` (then `y = num/den` at it), or `y`?
+    pub base_is_x: bool,
+    /// Numerator (polynomial in the base variable).
+    pub num: Vec<Q>,
+    /// Denominator (non-zero at the base value).
+    pub den: Vec<Q>,
+}
+
+/// A solution `(x, y)`.
+#[derive(Clone, Debug)]
+pub struct Solution {
+    /// `x`.
+    pub x: RealAlgebraic,
+    /// `y`.
+    pub y: RealAlgebraic,
+    /// Multiplicity as a root of the resultant of the side it was found from.
+    pub multiplicity: usize,
+    /// For each flag polynomial: does it vanish here?
+    pub flags: Vec<bool>,
+    /// How the other variable depends on the base one.
+    pub partner: Partner,
+}
+
+impl Solution {
+    /// The base value (`x` or `y`, as [`Partner::base_is_x`] says).
+    pub fn base(&self) -> &RealAlgebraic {
+        if self.partner.base_is_x {
+            &self.x
+        } else {
+            &self.y
+        }
+    }
+
+    /// `den^N · G(x, y)` as a polynomial in the base variable (`N` the formal degree of `G` in
+    /// the other variable): the sign of `G` at the solution times the sign of `den^N`.
+    pub fn substitute(&self, g: &BiPoly) -> Vec<Q> {
+        let g = if self.partner.base_is_x {
+            g.clone()
+        } else {
+            g.swap()
+        };
+        g.substitute_y(&self.partner.num, &self.partner.den)
+    }
+
+    /// The value `G(x, y)/H(x, y)` at the solution as an expression in the base value (`H ≠ 0`
+    /// there).
+    pub fn ratio(&self, g: &BiPoly, h: &BiPoly) -> Expr {
+        // pad both to the same formal degree in the other variable so den^N cancels
+        let (mut g, mut h) = if self.partner.base_is_x {
+            (g.clone(), h.clone())
+        } else {
+            (g.swap(), h.swap())
+        };
+        let n = g.c.len().max(h.c.len());
+        g.c.resize(n, Vec::new());
+        h.c.resize(n, Vec::new());
+        Expr {
+            base: self.base().clone(),
+            num: g.substitute_y(&self.partner.num, &self.partner.den),
+            den: h.substitute_y(&self.partner.num, &self.partner.den),
+        }
+    }
+}
+
+/// `num(β)/den(β)` for an algebraic `β` (`den(β) ≠ 0`): exact sign, comparison, rounding.
+#[derive(Clone, Debug)]
+pub struct Expr {
+    /// `β`.
+    pub base: RealAlgebraic,
+    /// Numerator.
+    pub num: Vec<Q>,
+    /// Denominator.
+    pub den: Vec<Q>,
+}
+
+impl Expr {
+    /// The exact value when `β` is rational.
+    pub fn rational(&self) -> Option<Q> {
+        let b = self.base.as_rational()?;
+        Some(horner(&self.num, b) / horner(&self.den, b))
+    }
+
+    /// The sign, exactly.
+    pub fn sign(&self) -> Ordering {
+        let a = self.base.sign_of_rationals(&self.num);
+        let b = self.base.sign_of_rationals(&self.den);
+        if b == Ordering::Less { a.reverse() } else { a }
+    }
+
+    /// How it compares with the rational `r`, exactly.
+    pub fn cmp_rational(&self, r: &Q) -> Ordering {
+        let p = add(
+            &self.num,
+            &self.den.iter().map(|c| -(c * r)).collect::<Vec<_>>(),
+        );
+        let a = self.base.sign_of_rationals(&p);
+        let b = self.base.sign_of_rationals(&self.den);
+        if b == Ordering::Less { a.reverse() } else { a }
+    }
+
+    /// A rational enclosure of width at most `width`.
+    pub fn enclosure(&self, width: &Q) -> (Q, Q) {
+        enclose_ratio(&self.base, &self.num, &self.den, width)
+    }
+
+    /// The nearest `f64` (ties to even): enclosures are narrowed until they round to one float;
+    /// a value that is exactly a midpoint between two floats is recognised by an exact sign.
+    pub fn to_f64(&self) -> f64 {
+        if let Some(r) = self.rational() {
+            return crate::number::round_f64(&r);
+        }
+        let mut w = q(1) / q(1 << 20);
+        loop {
+            let (lo, hi) = self.enclosure(&w);
+            let (a, b) = (crate::number::round_f64(&lo), crate::number::round_f64(&hi));
+            if a == b {
+                return a;
+            }
+            // a tie between consecutive floats inside the enclosure?
+            if let (Some(x), Some(y)) = (crate::number::exact_f64(a), crate::number::exact_f64(b))
+                && a.next_up() == b
+            {
+                let mid = (x + y) / q(2);
+                if self.cmp_rational(&mid) == Ordering::Equal {
+                    return crate::number::round_f64(&mid);
+                }
+            }
+            w /= q(1 << 16);
+        }
+    }
+
+    /// 17 significant digits (of an enclosure narrow enough that both ends agree; at most
+    /// 40 narrowings, then the midpoint's digits with `≈`).
+    pub fn decimal(&self) -> String {
+        if let Some(r) = self.rational() {
+            return crate::number::to_decimal_string(&r, 17);
+        }
+        let mut w = q(1) / q(1 << 20);
+        for _ in 0..40 {
+            let (lo, hi) = self.enclosure(&w);
+            let a = crate::number::to_decimal_string(&lo, 17);
+            if a == crate::number::to_decimal_string(&hi, 17) {
+                return a;
+            }
+            w /= q(1 << 16);
+        }
+        let (lo, hi) = self.enclosure(&w);
+        format!(
+            "≈{}",
+            crate::number::to_decimal_string(&((lo + hi) / q(2)), 17)
+        )
+    }
+}
+
+/// A rational enclosure of `num(β)/den(β)` of width at most `width` (interval Horner over ever
+/// narrower intervals of `β`).
+pub fn enclose_ratio(beta: &RealAlgebraic, num: &[Q], den: &[Q], width: &Q) -> (Q, Q) {
+    if let Some(b) = beta.as_rational() {
+        let v = horner(num, b) / horner(den, b);
+        return (v.clone(), v);
+    }
+    let mut w = width.clone();
+    loop {
+        let (lo, hi) = beta.enclosure(&w);
+        let n = interval_horner(num, &lo, &hi);
+        let d = interval_horner(den, &lo, &hi);
+        if d.0.is_positive() || d.1.is_negative() {
+            let cands = [&n.0 / &d.0, &n.0 / &d.1, &n.1 / &d.0, &n.1 / &d.1];
+            let a = cands.iter().min().expect("four").clone();
+            let b = cands.iter().max().expect("four").clone();
+            if &b - &a <= *width {
+                return (a, b);
+            }
+        }
+        w /= q(1 << 16);
+    }
+}
+
+fn interval_horner(p: &[Q], lo: &Q, hi: &Q) -> (Q, Q) {
+    let mut a = Q::zero();
+    let mut b = Q::zero();
+    for c in p.iter().rev() {
+        let prods = [&a * lo, &a * hi, &b * lo, &b * hi];
+        a = prods.iter().min().expect("four") + c;
+        b = prods.iter().max().expect("four") + c;
+    }
+    (a, b)
+}
+
+/// Cauchy's bound `1 + max |c_i / c_n|` on the absolute value of the roots.
+fn cauchy(p: &IntPoly) -> Q {
+    let lc = Q::from_integer(p.lc().abs());
+    let m = p
+        .coeffs()
+        .iter()
+        .map(|c| Q::from_integer(c.abs()))
+        .max()
+        .unwrap_or_else(Q::zero);
+    q(1) + m / lc
+}
+
+/// The value `num(β)/den(β)`, known to be one of `candidates`: its index (exact signs only).
+pub fn match_value(
+    beta: &RealAlgebraic,
+    num: &[Q],
+    den: &[Q],
+    candidates: &[RealAlgebraic],
+) -> Option<usize> {
+    let sd = beta.sign_of_rationals(den);
+    let (lo, hi) = beta.enclosure(&(q(1) / q(1 << 40)));
+    let mid = (&lo + &hi) / q(2);
+    let dv = horner(den, &mid);
+    let guess = if dv.is_zero() {
+        Q::zero()
+    } else {
+        horner(num, &mid) / dv
+    };
+    let d: Vec<Q> = candidates
+        .iter()
+        .map(|c| {
+            let (a, b) = c.enclosure(&(q(1) / q(1 << 20)));
+            ((a + b) / q(2) - &guess).abs()
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..candidates.len()).collect();
+    order.sort_by(|&i, &j| d[i].cmp(&d[j]));
+    let sub = |r: &Q| -> Ordering {
+        let p = add(num, &den.iter().map(|c| -(c * r)).collect::<Vec<_>>());
+        let s = beta.sign_of_rationals(&p);
+        if sd == Ordering::Less { s.reverse() } else { s }
+    };
+    for k in order {
+        match &candidates[k] {
+            RealAlgebraic::Rational(r) => {
+                if sub(r) == Ordering::Equal {
+                    return Some(k);
+                }
+            }
+            RealAlgebraic::Root(root) => {
+                let (lo, hi) = root.interval();
+                if sub(lo) == Ordering::Greater && sub(hi) == Ordering::Less {
+                    return Some(k);
+                }
+            }
+        }
+    }
+    None
+}
+
+/// What [`solve`] found.
+#[derive(Clone, Debug)]
+pub enum Solved {
+    /// Finitely many solutions.
+    Points {
+        /// The solutions in the region.
+        solutions: Vec<Solution>,
+        /// `R_x` as a primitive integer polynomial.
+        resultant: IntPoly,
+    },
+    /// The equations share a factor: a curve of solutions (or none, but not finitely many
+    /// certified).
+    Infinite,
+}
+
+fn roots(
+    p: &IntPoly,
+    range: &Option<(Q, Q)>,
+) -> Result<Vec<(RealAlgebraic, usize)>, AlgebraicError> {
+    let (a, b) = match range {
+        Some(r) => r.clone(),
+        None => {
+            let c = cauchy(p);
+            (-c.clone(), c)
+        }
+    };
+    let mut out = Vec::new();
+    for (f, m) in p.square_free_factors() {
+        for r in RealAlgebraic::roots_in(&f, &a, &b)? {
+            out.push((r, m));
+        }
+    }
+    Ok(out)
+}
+
+/// Every solution of `f = g = 0` in `region`, each with whether each of `flags` vanishes there.
+pub fn solve(
+    f: &BiPoly,
+    g: &BiPoly,
+    region: &Region,
+    flags: &[BiPoly],
+) -> Result<Solved, AlgebraicError> {
+    let (f, g) = (&f.trimmed(), &g.trimmed());
+    if f.is_zero() || g.is_zero() {
+        return Ok(Solved::Infinite);
+    }
+    let rx = trim(resultant(f, g));
+    if rx.is_empty() {
+        return Ok(Solved::Infinite);
+    }
+    let (fs, gs) = (f.swap().trimmed(), g.swap().trimmed());
+    let ry = trim(resultant(&fs, &gs));
+    if ry.is_empty() {
+        return Ok(Solved::Infinite);
+    }
+    let rx_int = IntPoly::from_rationals(&rx);
+    let ry_int = IntPoly::from_rationals(&ry);
+    super::check_poly(&rx_int)?;
+    super::check_poly(&ry_int)?;
+    let betas = roots(&rx_int, &region.x)?;
+    let alphas = roots(&ry_int, &region.y)?;
+    let alpha_values: Vec<RealAlgebraic> = alphas.iter().map(|(a, _)| a.clone()).collect();
+    let (c1, c0) = subresultant1(f, g);
+    let nc0: Vec<Q> = c0.iter().map(|c| -c).collect();
+    let mut solutions = Vec::new();
+    let mut deferred: Vec<RealAlgebraic> = Vec::new();
+    let mut matched = vec![false; alphas.len()];
+    let in_range = |v: &Expr, r: &Option<(Q, Q)>| -> bool {
+        match r {
+            None => true,
+            Some((lo, hi)) => {
+                v.cmp_rational(lo) != Ordering::Less && v.cmp_rational(hi) != Ordering::Greater
+            }
+        }
+    };
+    // y = num/den at x = β: a·β + b·num/den + c ≥ 0 ⟺ ((a x + c)·den + b·num)·den ≥ 0 at β
+    let half_ok = |base: &RealAlgebraic, h: &Half, num: &[Q], den: &[Q], base_is_x: bool| -> bool {
+        let (coef_base, coef_other) = if base_is_x {
+            (&h.a, &h.b)
+        } else {
+            (&h.b, &h.a)
+        };
+        let lin = vec![h.c.clone(), coef_base.clone()];
+        let p = add(
+            &super::bivariate::mul(&lin, den),
+            &num.iter().map(|x| x * coef_other).collect::<Vec<_>>(),
+        );
+        let s = base.sign_of_rationals(&p);
+        let sd = base.sign_of_rationals(den);
+        s == Ordering::Equal || s == sd
+    };
+    for (beta, m) in &betas {
+        if beta.sign_of_rationals(&c1) == Ordering::Equal {
+            deferred.push(beta.clone());
+            continue;
+        }
+        let yv = Expr {
+            base: beta.clone(),
+            num: nc0.clone(),
+            den: c1.clone(),
+        };
+        if !in_range(&yv, &region.y)
+            || !region
+                .halves
+                .iter()
+                .all(|h| half_ok(beta, h, &nc0, &c1, true))
+        {
+            continue;
+        }
+        let Some(k) = match_value(beta, &nc0, &c1, &alpha_values) else {
+            return Err(AlgebraicError::Unsupported(
+                "a solution that matches no root of the second resultant (internal)".into(),
+            ));
+        };
+        matched[k] = true;
+        let sol = Solution {
+            x: beta.clone(),
+            y: alpha_values[k].clone(),
+            multiplicity: *m,
+            flags: Vec::new(),
+            partner: Partner {
+                base_is_x: true,
+                num: nc0.clone(),
+                den: c1.clone(),
+            },
+        };
+        solutions.push(sol);
+    }
+    if !deferred.is_empty() {
+        let (d1, d0) = subresultant1(&fs, &gs);
+        let nd0: Vec<Q> = d0.iter().map(|c| -c).collect();
+        let mut resolved = vec![false; deferred.len()];
+        let mut unresolved_alpha = false;
+        for (k, (alpha, m)) in alphas.iter().enumerate() {
+            if matched[k] {
+                continue;
+            }
+            if alpha.sign_of_rationals(&d1) == Ordering::Equal {
+                unresolved_alpha = true;
+                continue;
+            }
+            let xv = Expr {
+                base: alpha.clone(),
+                num: nd0.clone(),
+                den: d1.clone(),
+            };
+            if !in_range(&xv, &region.x)
+                || !region
+                    .halves
+                    .iter()
+                    .all(|h| half_ok(alpha, h, &nd0, &d1, false))
+            {
+                continue;
+            }
+            let Some(j) = match_value(alpha, &nd0, &d1, &deferred) else {
+                continue;
+            };
+            resolved[j] = true;
+            solutions.push(Solution {
+                x: deferred[j].clone(),
+                y: alpha.clone(),
+                multiplicity: *m,
+                flags: Vec::new(),
+                partner: Partner {
+                    base_is_x: false,
+                    num: nd0.clone(),
+                    den: d1.clone(),
+                },
+            });
+        }
+        if unresolved_alpha && resolved.iter().any(|r| !r) {
+            return Err(AlgebraicError::Unsupported(
+                "a point where both unknowns have several partners (the equations meet more than once on both lines through it)".into(),
+            ));
+        }
+    }
+    for s in solutions.iter_mut() {
+        s.flags = flags
+            .iter()
+            .map(|g| s.base().sign_of_rationals(&s.substitute(g)) == Ordering::Equal)
+            .collect();
+    }
+    Ok(Solved::Points {
+        solutions,
+        resultant: rx_int,
+    })
+}
