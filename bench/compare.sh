@@ -11,11 +11,16 @@
 #   * f64 evaluation: tribez's f64 Horner and de Casteljau against the compiled
 #     Triangle.evaluate_barycentric_multi of the Python package `bezier`;
 # then `tribez check` of CHECK_CLAIMS f64 results at n = 3, end to end, against reading, parsing
-# and evaluating the same CSV in f64 on one thread.
+# and evaluating the same CSV in f64 on one thread; then whole-process exact evaluation:
+# `tribez eval PATCH --points FILE --format json`, process start to exit (best of PROCESS_RUNS),
+# against gmpy2's integer homogeneous Horner timed in-process (best of 5; Python's start, reading
+# and printing excluded), on the issue's workloads PROCESS_CASES ("degree:points ..."), with the
+# kernel alone on the same points beside it and the values compared as text.
 #
 # The peers are installed once into bench/.venv from the pinned bench/peers/requirements.txt
 # (bench/venv.sh; needs python3 and PyPI). Environment: EXACT_POINTS (1000), FLOAT_POINTS
-# (100000), CHECK_CLAIMS (1000000), ALL_PEERS (unset), SYMPY_POINTS (50).
+# (100000), CHECK_CLAIMS (1000000), ALL_PEERS (unset), SYMPY_POINTS (50), PROCESS_CASES
+# ("3:4000 10:2000 20:500"), PROCESS_RUNS (7), ONLY (unset; "process" or "check": that part alone).
 # Timings move between runs on a shared machine: compare the ratios of one run, not absolutes.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -38,7 +43,13 @@ field() { "$PY" -c "import json,sys; print(json.loads(sys.stdin.readline())['$1'
 ratio() { echo "$1 / $2" | bc -l; }
 peer() { (cd "$PEERS" && "$PY" "$@"); }
 
+PROCESS_CASES="${PROCESS_CASES:-3:4000 10:2000 20:500}"
+PROCESS_RUNS="${PROCESS_RUNS:-7}"
+ONLY="${ONLY:-}"
+echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
+
 printf '%-4s %-40s %12s %12s %8s %s\n' n measure tribez_us peer_us ratio note
+[ -n "$ONLY" ] && DEGREES=""
 for n in $DEGREES; do
   case="$WORK/case_n$n.json"
   peer workload.py --degree "$n" --points "$EXACT_POINTS" --seed $((1000 + n)) > "$case"
@@ -71,6 +82,36 @@ for n in $DEGREES; do
   done < "$WORK/float_$n.jsonl"
 done
 
+# whole-process exact evaluation against gmpy2 (and the kernel alone), the issue's workloads
+if [ -z "$ONLY" ] || [ "$ONLY" = process ]; then
+for spec in $PROCESS_CASES; do
+  n="${spec%%:*}"; points="${spec##*:}"
+  case="$WORK/process_n$n.json"
+  peer workload.py --degree "$n" --points "$points" --seed $((1000 + n)) > "$case"
+  peer to_tribez.py "$case" "$WORK/process_n$n.toml" "$WORK/process_n$n.csv"
+  peer exact.py "$case" --backend gmpy2 --algo horner > "$WORK/process_peer_$n.json"
+  theirs=$(peer exact.py "$case" --backend gmpy2 --algo horner --time --repeat 5 | field seconds)
+  kernel=$(SPEED_REPEAT=5 SPEED_NO_CHECK=1 "$SPEED" exact "$case" | field seconds)
+  whole=$(peer wall.py "$PROCESS_RUNS" "$WORK/process_out_$n.json" "$TRIBEZ" eval "$WORK/process_n$n.toml" \
+    --points "$WORK/process_n$n.csv" --format json)
+  best=$(echo "$whole" | field best)
+  median=$(echo "$whole" | field median)
+  cpu=$(echo "$whole" | field cpu_median)
+  same=$("$PY" - "$WORK/process_out_$n.json" "$WORK/process_peer_$n.json" <<'PYEOF'
+import json, sys
+ours = [r["point"] for r in json.load(open(sys.argv[1]))["results"]]
+theirs = json.load(open(sys.argv[2]))["results"]
+print(ours == theirs)
+PYEOF
+)
+  printf '%-4s %-40s %12.1f %12.1f %8.2f %s\n' "$n" "eval $points points, whole process (ms)" "$(echo "$best * 1000" | bc -l)" \
+    "$(echo "$theirs * 1000" | bc -l)" "$(ratio "$theirs" "$best")" "identical=$same median=$(printf '%.1f' "$(echo "$median * 1000" | bc -l)") ms (ratio $(printf '%.2f' "$(ratio "$theirs" "$median")")), CPU $(printf '%.1f' "$(echo "$cpu * 1000" | bc -l)") ms"
+  printf '%-4s %-40s %12.1f %12.1f %8.2f %s\n' "$n" "kernel alone, same $points points (ms)" "$(echo "$kernel * 1000" | bc -l)" \
+    "$(echo "$theirs * 1000" | bc -l)" "$(ratio "$theirs" "$kernel")" "one thread"
+done
+fi
+[ "$ONLY" = process ] && exit 0
+
 # tribez check of CHECK_CLAIMS f64 results at n = 3, end to end, against the one-thread baseline
 case3="$WORK/case_check_n3.json"
 peer workload.py --degree 3 --points 0 --seed 1003 > "$case3"
@@ -82,12 +123,14 @@ rows = [f'"{i},{j},{k}" = [' + ", ".join(f'"{x}"' for x in p) + "]" for (i, j, k
 open(sys.argv[2], "w").write(f"degree = {n}\n[control_points]\n" + "\n".join(rows) + "\n")
 PYEOF
 "$SPEED" csv "$case3" "$CHECK_CLAIMS" "$WORK/claims3.csv" 2>/dev/null
-read_s=$("$SPEED" read-eval "$case3" "$WORK/claims3.csv" | field seconds)
+/usr/bin/time -f "%e %U %S" -o "$WORK/time_base.txt" "$SPEED" read-eval "$case3" "$WORK/claims3.csv" --once > /dev/null
+read -r _ base_user base_sys < "$WORK/time_base.txt"
+read_s=$(echo "$base_user + $base_sys" | bc -l)
 /usr/bin/time -f "%e %U %S" -o "$WORK/time.txt" "$TRIBEZ" check --patch "$WORK/p3.toml" --results "$WORK/claims3.csv" \
   --precision f64 --tolerance cond=9 > "$WORK/check.txt" || true
 read -r check_wall check_user check_sys < "$WORK/time.txt"
 check_cpu=$(echo "$check_user + $check_sys" | bc -l)
 printf '%-4s %-40s %12.3f %12.3f %8.1f %s\n' 3 "check $CHECK_CLAIMS f64 results, end to end (s)" "$check_cpu" "$read_s" \
-  "$(ratio "$check_cpu" "$read_s")" "= check CPU time (wall $check_wall s) / reading, parsing and f64 de Casteljau of the same CSV on one thread"
+  "$(ratio "$check_cpu" "$read_s")" "= check CPU time (wall $check_wall s) / CPU time of reading, parsing and f64 de Casteljau of the same CSV on one thread (one process)"
 grep -E "decided by the float filter" "$WORK/check.txt" >&2 || true
 echo "ratio = peer time / tribez time (higher is better for tribez), except the check line: tribez / baseline (lower is better)"

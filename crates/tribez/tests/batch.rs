@@ -383,3 +383,86 @@ fn cartesian_rows_are_decided_by_the_filter_and_agree_with_the_exact_path() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Soundness of `--cartesian` batches row by row: on a random cubic over a random triangle
+    /// (vertices and control values small dyadic floats, so the code sees them exactly), at
+    /// float points inside and around it, claimed values `k` ulps from the correctly rounded
+    /// exact values (`k` random per coordinate, up to ±80), every row's verdict under
+    /// `ulps=1/2`, `ulps=1`, `ulps=4` and `ulps=64` is the exact path's (exact barycentric
+    /// coordinates of the float point by Cramer's rule, rational de Casteljau, the error in ulps
+    /// computed exactly): the filter never passes a row the exact path fails, nor fails one it
+    /// passes; and each row's error figure is an upper bound on the exact error (the exact error
+    /// rounded to f64 for rows that fell back to exact arithmetic).
+    #[test]
+    fn cartesian_rows_agree_with_the_exact_path_row_by_row(
+        verts in proptest::collection::vec(-64i32..64, 6),
+        values in proptest::collection::vec(-512i32..512, 20),
+        pts in proptest::collection::vec((-0.1f64..1.1, -0.1f64..1.1), 24),
+        steps in proptest::collection::vec(-80i32..=80, 48),
+    ) {
+        use tribez::Rational;
+        use tribez::hazmat::domain::Domain;
+        use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
+        use tribez::hazmat::number::{exact_f64, round_f64, ulps_error_f64};
+        use tribez::hazmat::patch::{BezierPatch, ControlNet};
+        use tribez::hazmat::simplex::Simplex;
+        let q = |x: f64| exact_f64(x).unwrap();
+        let v: Vec<[f64; 2]> = (0..3).map(|k| [f64::from(verts[2 * k]) / 8.0, f64::from(verts[2 * k + 1]) / 8.0]).collect();
+        let Ok(domain) = Domain::new(v.iter().map(|p| vec![q(p[0]), q(p[1])]).collect()) else {
+            return Ok(());
+        };
+        let simplex = Simplex::new(2, 3);
+        let coords: Vec<Rational> = (0..simplex.len() * 2).map(|i| q(f64::from(values[i]) / 16.0)).collect();
+        let net = ControlNet::new(simplex, 2, coords);
+        let exact = ExactEvaluator::new(&net);
+        let mut patch = BezierPatch::new(net);
+        patch.domain = Some(domain.clone());
+        let (mut points, mut claimed, mut truth) = (Vec::new(), Vec::new(), Vec::new());
+        for (i, (s, t)) in pts.iter().enumerate() {
+            // the float point (1 − s − t)·v0 + s·v1 + t·v2, rounded as floats compute it
+            let x: Vec<f64> = (0..2).map(|j| (1.0 - s - t) * v[0][j] + s * v[1][j] + t * v[2][j]).collect();
+            let lam = domain.barycentric(&[q(x[0]), q(x[1])]).unwrap();
+            let p = exact.evaluate(&lam, Algorithm::Casteljau);
+            let mut worst = Rational::from_integer(0.into());
+            for c in 0..2 {
+                let mut y = round_f64(&p[c]);
+                let k = steps[2 * i + c];
+                for _ in 0..k.abs() {
+                    y = if k > 0 { y.next_up() } else { y.next_down() };
+                }
+                let e = ulps_error_f64(&q(y), &p[c]);
+                if e > worst {
+                    worst = e;
+                }
+                claimed.push(y);
+            }
+            points.extend(x);
+            truth.push(worst);
+        }
+        for tol in ["ulps=1/2", "ulps=1", "ulps=4", "ulps=64"] {
+            let options = BatchOptions {
+                tolerance: Tolerance::parse(tol).unwrap(),
+                precision: Some(Precision::F64),
+                cartesian: true,
+                ..BatchOptions::default()
+            };
+            let k: Rational = tribez::hazmat::number::parse_rational(&tol[5..]).unwrap();
+            let (_, verdicts) = BatchChecker::new(patch.clone(), &options)
+                .unwrap()
+                .check_rows(&points, &claimed, 0, "<memory>", "triangle")
+                .unwrap();
+            for (v, e) in verdicts.iter().zip(&truth) {
+                prop_assert_eq!(v.pass, e <= &k, "{} row {} error {} fell back {}", tol, v.row, e, v.fell_back);
+                // the filter's figure bounds the error; an exact row's is the error rounded to f64
+                let figure = Rational::from_float(v.ulps).unwrap();
+                prop_assert!(
+                    figure >= *e || (v.fell_back && v.ulps == round_f64(e)),
+                    "{} row {}: figure {} below {}", tol, v.row, v.ulps, e
+                );
+            }
+        }
+    }
+}

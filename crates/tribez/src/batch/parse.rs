@@ -54,9 +54,9 @@ pub(super) fn parse_num(
     line: usize,
 ) -> Result<Num, InputError> {
     let t = f.text.trim().trim_matches('"');
-    let lower = t.to_ascii_lowercase();
-    let body = lower.trim_start_matches(['+', '-']);
-    if t.is_empty() || body == "nan" || body == "inf" || body == "infinity" {
+    let body = t.trim_start_matches(['+', '-']);
+    let named = |name: &str| body.eq_ignore_ascii_case(name);
+    if t.is_empty() || named("nan") || named("inf") || named("infinity") {
         return Ok(Num::NotFinite(if t.is_empty() {
             "empty field".into()
         } else {

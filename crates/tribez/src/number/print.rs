@@ -69,11 +69,11 @@ const TEN19: u64 = 10_000_000_000_000_000_000;
 /// limb at a time, each step a division of a two-limb number by the normalised one-limb divisor
 /// through its precomputed reciprocal (Möller and Granlund, "Improved division by invariant
 /// integers", Algorithm 4: two products and no division instruction per limb, where num-bigint
-/// divides by `10^9` with two hardware divisions per limb). Numbers of [`SPLIT_LIMBS`] limbs or
+/// divides by `10^9` with two hardware divisions per limb). Numbers of 24 limbs or
 /// more are first split in two by one division by `10^(19·2^k)` (the largest such power not above
 /// the square root of the number, computed once per process), recursively, which makes the
 /// quadratic part run at the speed of num-bigint's long division. A number of
-/// [`super::MAX_DIGITS`] digits prints in a few milliseconds.
+/// [`super::MAX_DIGITS`] digits prints in tens of milliseconds.
 pub fn push_decimal(out: &mut String, x: &BigUint) {
     let mut bytes = Vec::new();
     let limbs = x.to_u64_digits();
