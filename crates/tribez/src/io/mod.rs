@@ -175,6 +175,9 @@ pub enum Problem {
     /// A points file without a point.
     #[error("no points")]
     NoPoints,
+    /// A check of the patch file format.
+    #[error(transparent)]
+    Patch(#[from] patch_file::PatchFileProblem),
     /// Not yet converted to data: a message written where the error arises. Each remaining use
     /// is a message specific to one check of one file format or claim operation.
     #[error("{0}")]

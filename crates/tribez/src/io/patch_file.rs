@@ -100,13 +100,188 @@ pub fn patch_from_document(doc: &Document, node: &Node, prefix: &str) -> Result<
             Err(doc.error(
                 at,
                 &key,
-                format!(
-                    "this is {}; only polynomial Bézier patches are accepted here",
-                    other.described()
-                ),
+                PatchFileProblem::NotPolynomial {
+                    kind: other.described(),
+                },
             ))
         }
     }
+}
+
+/// What is wrong in a patch file ([`super::Problem::Patch`]): one variant per check, with the
+/// figures of the message as data.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum PatchFileProblem {
+    /// A kind other than a polynomial Bézier patch where only those are accepted.
+    #[error("this is {kind}; only polynomial Bézier patches are accepted here")]
+    NotPolynomial {
+        /// The kind found (`"a rational patch"`, …).
+        kind: &'static str,
+    },
+    /// A degree above the limit.
+    #[error("degree {degree} is above the limit of {limit} (see docs/performance.md, Scaling)")]
+    DegreeTooLarge {
+        /// The degree.
+        degree: usize,
+        /// [`MAX_DEGREE`].
+        limit: usize,
+    },
+    /// No `control_points` table.
+    #[error("missing table `control_points`")]
+    NoControlPointsTable,
+    /// A `kind` that tribez does not know.
+    #[error(
+        "unknown kind `{kind}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")"
+    )]
+    UnknownKind {
+        /// The kind given.
+        kind: String,
+    },
+    /// `domain` or `weights` beside `polygon`.
+    #[error("an S-patch (with `polygon`) cannot have `{key}`")]
+    NotWithPolygon {
+        /// The key (`"domain"` or `"weights"`).
+        key: &'static str,
+    },
+    /// A `kind` other than `s-patch` beside `polygon`.
+    #[error("kind `{kind}` contradicts `polygon` (an S-patch)")]
+    KindContradictsPolygon {
+        /// The kind given.
+        kind: String,
+    },
+    /// `kind = "s-patch"` without `polygon`.
+    #[error("an S-patch needs `polygon`")]
+    SPatchNeedsPolygon,
+    /// Weights on a Bézier or functional patch.
+    #[error("a {kind} patch has no weights")]
+    NoWeightsFor {
+        /// The kind given.
+        kind: String,
+    },
+    /// `kind = "rational"` without weights.
+    #[error("a rational patch needs a [weights] table")]
+    RationalNeedsWeights,
+    /// A functional patch whose points are not ordinates.
+    #[error(
+        "a functional patch has one control ordinate per control point (d = 1), but its points have {dim} coordinates"
+    )]
+    FunctionalDimension {
+        /// The points' dimension.
+        dim: usize,
+    },
+    /// A weight keyed by something that is not a control point's multi-index.
+    #[error(
+        "no control point \"{key}\" (weights are keyed by the multi-indices of the control points)"
+    )]
+    WeightWithoutPoint {
+        /// The key.
+        key: String,
+    },
+    /// Two weight keys naming one control point.
+    #[error("duplicated weight: \"{other}\" names the same control point")]
+    DuplicateWeight {
+        /// The earlier key.
+        other: String,
+    },
+    /// A control point without a weight.
+    #[error("missing weight \"{index}\" (every control point needs one)")]
+    MissingWeight {
+        /// Its multi-index.
+        index: String,
+    },
+    /// Every weight zero.
+    #[error("every weight is zero: the rational patch is undefined everywhere")]
+    AllWeightsZero,
+    /// An empty `control_points` table.
+    #[error("no control points")]
+    NoControlPoints,
+    /// A key that is not a multi-index.
+    #[error(
+        "a key must be a multi-index of non-negative integers separated by commas, like \"1,0,1\""
+    )]
+    NotAMultiIndex,
+    /// A multi-index with too few or too many parts.
+    #[error("a multi-index needs 2 to {max_parts} parts")]
+    MultiIndexLength {
+        /// `MAX_SIMPLEX_DIMENSION + 1`.
+        max_parts: usize,
+    },
+    /// More control points than allowed.
+    #[error(
+        "degree {degree} on a {m}-simplex has {total} control points, above the limit of {limit}"
+    )]
+    TooManyControlPoints {
+        /// The degree.
+        degree: usize,
+        /// The simplex dimension.
+        m: usize,
+        /// `C(degree + m, m)`.
+        total: u128,
+        /// [`MAX_CONTROL_POINTS`].
+        limit: usize,
+    },
+    /// Multi-indices with different numbers of parts.
+    #[error(
+        "multi-index has {parts} parts, but \"{first}\" has {expected} (all keys need the same number)"
+    )]
+    MultiIndexParts {
+        /// Parts of this key.
+        parts: usize,
+        /// The first key.
+        first: String,
+        /// Its parts.
+        expected: usize,
+    },
+    /// A multi-index whose parts do not sum to the degree.
+    #[error("multi-index sums to {sum}, but the degree is {degree}")]
+    MultiIndexSum {
+        /// The sum.
+        sum: u64,
+        /// The degree.
+        degree: usize,
+    },
+    /// Two keys naming one control point.
+    #[error("duplicated multi-index: \"{other}\" names the same control point")]
+    DuplicateControlPoint {
+        /// The earlier key.
+        other: String,
+    },
+    /// A control point without coordinates.
+    #[error("a control point needs at least one coordinate")]
+    EmptyPoint,
+    /// Control points of different dimensions.
+    #[error(
+        "point has {dim} coordinates, but \"{other}\" has {expected} (points of different dimensions)"
+    )]
+    PointDimension {
+        /// This point's dimension.
+        dim: usize,
+        /// The key of the first point.
+        other: String,
+        /// Its dimension.
+        expected: usize,
+    },
+    /// A multi-index without a control point.
+    #[error(
+        "missing control point \"{index}\" (every multi-index of degree {degree} must appear once)"
+    )]
+    MissingControlPoint {
+        /// The multi-index.
+        index: String,
+        /// The degree.
+        degree: usize,
+    },
+    /// A domain with the wrong number of vertices.
+    #[error("the domain needs {expected} vertices for a {m}-simplex, found {found}")]
+    DomainVertices {
+        /// `m + 1`.
+        expected: usize,
+        /// The simplex dimension.
+        m: usize,
+        /// Vertices given.
+        found: usize,
+    },
 }
 
 /// Parse a patch of any kind from a table node.
@@ -127,33 +302,42 @@ pub fn any_patch_from_document(
     let name = Document::get(table, "name")
         .map(|n| doc.string(n, &key("name")).map(str::to_string))
         .transpose()?;
-    let degree_node = Document::get(table, "degree")
-        .ok_or_else(|| doc.error(node, &key("degree"), "missing key `degree`"))?;
+    let degree_node = Document::get(table, "degree").ok_or_else(|| {
+        doc.error(
+            node,
+            &key("degree"),
+            super::Problem::MissingKey { key: "degree" },
+        )
+    })?;
     let degree = doc.usize(degree_node, &key("degree"))?;
     if degree > MAX_DEGREE {
         return Err(doc.error(
             degree_node,
             &key("degree"),
-            format!("degree {degree} is above the limit of {MAX_DEGREE} (see docs/performance.md, Scaling)"),
+            PatchFileProblem::DegreeTooLarge {
+                degree,
+                limit: MAX_DEGREE,
+            },
         ));
     }
     let cp_node = Document::get(table, "control_points").ok_or_else(|| {
         doc.error(
             node,
             &key("control_points"),
-            "missing table `control_points`",
+            PatchFileProblem::NoControlPointsTable,
         )
     })?;
     let net = control_points(doc, cp_node, degree, &key("control_points"))?;
     let kind_node = Document::get(table, "kind");
     let kind = kind_node.map(|n| doc.string(n, &key("kind"))).transpose()?;
-    let kind_error = |message: String| doc.error(kind_node.unwrap_or(node), &key("kind"), message);
+    let kind_error =
+        |problem: PatchFileProblem| doc.error(kind_node.unwrap_or(node), &key("kind"), problem);
     if let Some(k) = kind
         && !["bezier", "rational", "functional", "s-patch"].contains(&k)
     {
-        return Err(kind_error(format!(
-            "unknown kind `{k}` (expected \"bezier\", \"rational\", \"functional\" or \"s-patch\")"
-        )));
+        return Err(kind_error(PatchFileProblem::UnknownKind {
+            kind: k.to_string(),
+        }));
     }
     let weights_node = Document::get(table, "weights");
     if let Some(poly_node) = Document::get(table, "polygon") {
@@ -162,15 +346,14 @@ pub fn any_patch_from_document(
                 return Err(doc.error(
                     n,
                     &key(other),
-                    format!("an S-patch (with `polygon`) cannot have `{other}`"),
+                    PatchFileProblem::NotWithPolygon { key: other },
                 ));
             }
         }
         if kind.is_some_and(|k| k != "s-patch") {
-            return Err(kind_error(format!(
-                "kind `{}` contradicts `polygon` (an S-patch)",
-                kind.unwrap_or_default()
-            )));
+            return Err(kind_error(PatchFileProblem::KindContradictsPolygon {
+                kind: kind.unwrap_or_default().to_string(),
+            }));
         }
         let rows = doc.array(poly_node, &key("polygon"))?;
         let vertices = rows
@@ -191,15 +374,15 @@ pub fn any_patch_from_document(
     };
     let patch = Patch { name, net, domain };
     match (kind, weights_node) {
-        (Some("s-patch"), _) => Err(kind_error("an S-patch needs `polygon`".into())),
+        (Some("s-patch"), _) => Err(kind_error(PatchFileProblem::SPatchNeedsPolygon)),
         (Some("bezier" | "functional"), Some(w)) => Err(doc.error(
             w,
             &key("weights"),
-            format!("a {} patch has no weights", kind.unwrap_or_default()),
+            PatchFileProblem::NoWeightsFor {
+                kind: kind.unwrap_or_default().to_string(),
+            },
         )),
-        (Some("rational"), None) => Err(kind_error(
-            "a rational patch needs a [weights] table".into(),
-        )),
+        (Some("rational"), None) => Err(kind_error(PatchFileProblem::RationalNeedsWeights)),
         (_, Some(w)) => {
             let weights = weights(doc, w, &patch.net, &key("weights"))?;
             Ok(AnyPatch::Rational(RationalPatch::new(patch, weights)))
@@ -209,7 +392,9 @@ pub fn any_patch_from_document(
                 return Err(doc.error(
                     cp_node,
                     &key("control_points"),
-                    format!("a functional patch has one control ordinate per control point (d = 1), but its points have {} coordinates", patch.net.dim()),
+                    PatchFileProblem::FunctionalDimension {
+                        dim: patch.net.dim(),
+                    },
                 ));
             }
             Ok(AnyPatch::Functional(patch))
@@ -232,14 +417,25 @@ fn weights(
         let here = format!("{key}.\"{k}\"");
         let alpha: Option<Vec<u32>> = k.split(',').map(|p| p.trim().parse::<u32>().ok()).collect();
         let r = alpha
-            .filter(|a| a.len() == net.m() + 1 && a.iter().map(|&x| u64::from(x)).sum::<u64>() == net.degree() as u64)
+            .filter(|a| {
+                a.len() == net.m() + 1
+                    && a.iter().map(|&x| u64::from(x)).sum::<u64>() == net.degree() as u64
+            })
             .map(|a| simplex.rank(&a))
-            .ok_or_else(|| doc.error(v, &here, format!("no control point \"{k}\" (weights are keyed by the multi-indices of the control points)")))?;
+            .ok_or_else(|| {
+                doc.error(
+                    v,
+                    &here,
+                    PatchFileProblem::WeightWithoutPoint { key: k.clone() },
+                )
+            })?;
         if let Some((other, _)) = &slots[r] {
             return Err(doc.error(
                 v,
                 &here,
-                format!("duplicated weight: \"{other}\" names the same control point"),
+                PatchFileProblem::DuplicateWeight {
+                    other: other.clone(),
+                },
             ));
         }
         slots[r] = Some((k.clone(), doc.rational(v, &here)?));
@@ -252,20 +448,15 @@ fn weights(
                 return Err(doc.error(
                     node,
                     key,
-                    format!(
-                        "missing weight \"{}\" (every control point needs one)",
-                        index_key(simplex.index(r))
-                    ),
+                    PatchFileProblem::MissingWeight {
+                        index: index_key(simplex.index(r)),
+                    },
                 ));
             }
         }
     }
     if out.iter().all(num_traits::Zero::is_zero) {
-        return Err(doc.error(
-            node,
-            key,
-            "every weight is zero: the rational patch is undefined everywhere",
-        ));
+        return Err(doc.error(node, key, PatchFileProblem::AllWeightsZero));
     }
     Ok(out)
 }
@@ -278,28 +469,42 @@ fn control_points(
 ) -> Result<ControlNet<BigRational>, InputError> {
     let table = doc.table(node, key)?;
     let Some((first_key, first)) = table.first() else {
-        return Err(doc.error(node, key, "no control points"));
+        return Err(doc.error(node, key, PatchFileProblem::NoControlPoints));
     };
     let parts = |k: &str, n: &Node| -> Result<Vec<u32>, InputError> {
         k.split(',')
             .map(|p| p.trim().parse::<u32>())
             .collect::<Result<Vec<_>, _>>()
-            .map_err(|_| doc.error(n, &format!("{key}.\"{k}\""), "a key must be a multi-index of non-negative integers separated by commas, like \"1,0,1\""))
+            .map_err(|_| {
+                doc.error(
+                    n,
+                    &format!("{key}.\"{k}\""),
+                    PatchFileProblem::NotAMultiIndex,
+                )
+            })
     };
     let m = parts(first_key, first)?.len().saturating_sub(1);
     if m == 0 || m > MAX_SIMPLEX_DIMENSION {
         return Err(doc.error(
             first,
             &format!("{key}.\"{first_key}\""),
-            format!(
-                "a multi-index needs 2 to {} parts",
-                MAX_SIMPLEX_DIMENSION + 1
-            ),
+            PatchFileProblem::MultiIndexLength {
+                max_parts: MAX_SIMPLEX_DIMENSION + 1,
+            },
         ));
     }
     let total = simplex::binomial((degree + m) as u64, m as u64);
     if total > MAX_CONTROL_POINTS as u128 {
-        return Err(doc.error(node, key, format!("degree {degree} on a {m}-simplex has {total} control points, above the limit of {MAX_CONTROL_POINTS}")));
+        return Err(doc.error(
+            node,
+            key,
+            PatchFileProblem::TooManyControlPoints {
+                degree,
+                m,
+                total,
+                limit: MAX_CONTROL_POINTS,
+            },
+        ));
     }
     let simplex = Simplex::new(m, degree);
     // For each rank, the position in `table` of the entry that filled it; the keys of messages
@@ -310,15 +515,19 @@ fn control_points(
     for (pos, (k, v)) in table.iter().enumerate() {
         let alpha = parts(k, v)?;
         if alpha.len() != m + 1 {
-            return Err(doc.error(v, &here(k), format!("multi-index has {} parts, but \"{first_key}\" has {} (all keys need the same number)", alpha.len(), m + 1)));
-        }
-        let sum: u64 = alpha.iter().map(|&a| u64::from(a)).sum();
-        if sum != degree as u64 {
             return Err(doc.error(
                 v,
                 &here(k),
-                format!("multi-index sums to {sum}, but the degree is {degree}"),
+                PatchFileProblem::MultiIndexParts {
+                    parts: alpha.len(),
+                    first: first_key.clone(),
+                    expected: m + 1,
+                },
             ));
+        }
+        let sum: u64 = alpha.iter().map(|&a| u64::from(a)).sum();
+        if sum != degree as u64 {
+            return Err(doc.error(v, &here(k), PatchFileProblem::MultiIndexSum { sum, degree }));
         }
         let r = simplex.rank(&alpha);
         if let Some((other, _)) = &slots[r] {
@@ -326,17 +535,27 @@ fn control_points(
             return Err(doc.error(
                 v,
                 &here(k),
-                format!("duplicated multi-index: \"{other}\" names the same control point"),
+                PatchFileProblem::DuplicateControlPoint {
+                    other: other.clone(),
+                },
             ));
         }
         let point = doc.rationals(v, &here(k))?;
         if point.is_empty() {
-            return Err(doc.error(v, &here(k), "a control point needs at least one coordinate"));
+            return Err(doc.error(v, &here(k), PatchFileProblem::EmptyPoint));
         }
         match dim {
             None => dim = Some((point.len(), k.as_str())),
             Some((d, other)) if d != point.len() => {
-                return Err(doc.error(v, &here(k), format!("point has {} coordinates, but \"{other}\" has {d} (points of different dimensions)", point.len())));
+                return Err(doc.error(
+                    v,
+                    &here(k),
+                    PatchFileProblem::PointDimension {
+                        dim: point.len(),
+                        other: other.to_string(),
+                        expected: d,
+                    },
+                ));
             }
             _ => {}
         }
@@ -349,7 +568,14 @@ fn control_points(
             Some((_, p)) => coords.extend(p),
             None => {
                 let missing = index_key(simplex.index(r));
-                return Err(doc.error(node, key, format!("missing control point \"{missing}\" (every multi-index of degree {degree} must appear once)")));
+                return Err(doc.error(
+                    node,
+                    key,
+                    PatchFileProblem::MissingControlPoint {
+                        index: missing,
+                        degree,
+                    },
+                ));
             }
         }
     }
@@ -363,11 +589,11 @@ pub fn domain(doc: &Document, node: &Node, m: usize, key: &str) -> Result<Domain
         return Err(doc.error(
             node,
             key,
-            format!(
-                "the domain needs {} vertices for a {m}-simplex, found {}",
-                m + 1,
-                rows.len()
-            ),
+            PatchFileProblem::DomainVertices {
+                expected: m + 1,
+                m,
+                found: rows.len(),
+            },
         ));
     }
     let vertices = rows
@@ -536,6 +762,7 @@ pub fn any_patch_to_json(patch: &AnyPatch) -> Json {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::Problem;
 
     const FINN: &str = r#"
 name = "Finn"
@@ -560,6 +787,54 @@ degree = 2
         assert_eq!(p.net.degree(), 2);
         assert_eq!(p.net.dim(), 3);
         assert_eq!(strings(p.net.at(&[1, 1, 0])), ["1", "0", "2"]);
+    }
+
+    /// Errors are data: the variant, the key and the line, with the figures of the message
+    /// as fields (the sentence is the `Display` of the variant).
+    #[test]
+    fn errors_carry_the_problem_as_data() {
+        let problem = |text: &str| {
+            let e = parse(text).unwrap_err();
+            (*e.problem, e.key, e.line)
+        };
+        let missing = FINN.replace("\"0,0,2\" = [\"0\", \"2\", \"1\"]\n", "");
+        assert_eq!(
+            problem(&missing),
+            (
+                Problem::Patch(PatchFileProblem::MissingControlPoint {
+                    index: "0,0,2".into(),
+                    degree: 2
+                }),
+                Some("control_points".into()),
+                Some(4)
+            )
+        );
+        let wrong_sum = FINN.replace("\"0,0,2\"", "\"0,0,3\"");
+        assert_eq!(
+            problem(&wrong_sum).0,
+            Problem::Patch(PatchFileProblem::MultiIndexSum { sum: 3, degree: 2 })
+        );
+        let mixed = FINN.replace("[\"0\", \"2\", \"1\"]", "[\"0\", \"2\"]");
+        assert_eq!(
+            problem(&mixed),
+            (
+                Problem::Patch(PatchFileProblem::PointDimension {
+                    dim: 2,
+                    other: "2,0,0".into(),
+                    expected: 3
+                }),
+                Some("control_points.\"0,0,2\"".into()),
+                Some(10)
+            )
+        );
+        let big = FINN.replace("degree = 2", "degree = 100000");
+        assert_eq!(
+            problem(&big).0,
+            Problem::Patch(PatchFileProblem::DegreeTooLarge {
+                degree: 100_000,
+                limit: MAX_DEGREE
+            })
+        );
     }
 
     #[test]
