@@ -8,7 +8,7 @@ use num_rational::BigRational;
 
 use super::errmap::{self, MapBuilder, MapData, Panel, ulps_text};
 use super::html::{self, HtmlReport, Section};
-use crate::commands::CliError;
+use crate::error::CliError;
 use tribez::batch::{BatchReport, FailedCoord, UlpHistogram};
 use tribez::hazmat::certify::report::algorithm_key;
 use tribez::hazmat::domain::format_tuple;
@@ -244,7 +244,7 @@ pub fn batch(
         sections,
         text: report.text(),
     });
-    crate::commands::output::stage(path, page.as_bytes())
+    crate::output::stage(path, page.as_bytes())
 }
 
 /// Stage `--plot` and `--html` of a certification run (one panel per algorithm and precision).
@@ -429,7 +429,7 @@ pub fn certify(
         sections,
         text: report.text(),
     });
-    crate::commands::output::stage(path, page.as_bytes())
+    crate::output::stage(path, page.as_bytes())
 }
 
 /// The arguments of `tribez check` that reproduce a batch run.
