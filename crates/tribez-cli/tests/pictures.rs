@@ -641,7 +641,7 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
             "unknown picture format `.txt`",
         ),
         (&["--plot", "m.svg", "--html", "r.txt"][..], "--html"),
-        // staged, then the run fails reading the baseline: nothing is written
+        // a baseline that is not one
         (
             &[
                 "--plot",
@@ -652,6 +652,20 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
                 "linear.toml",
             ][..],
             "linear.toml",
+        ),
+        // the pictures are staged, then recording the baseline fails: nothing is written
+        (
+            &[
+                "--tolerance",
+                "ulps=8",
+                "--plot",
+                "m.svg",
+                "--html",
+                "r.html",
+                "--record-baseline",
+                ".",
+            ][..],
+            "not a file name",
         ),
     ] {
         let err = one_line_exit_2(&mut batch(extra));
@@ -664,7 +678,10 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
             .arg(fixtures().join("finn_day30.claims.toml"))
             .args(["--plot", "m.svg"]),
     );
-    assert!(err.contains("--plot applies to batches"), "{err}");
+    assert!(
+        err.contains("--plot draws the error map of a batch"),
+        "{err}"
+    );
     let err = one_line_exit_2(
         tribez()
             .current_dir(dir.path())
@@ -682,4 +699,112 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
     );
     assert!(err.contains("--html"), "{err}");
     assert_eq!(listing(dir.path()), ["linear.toml", "results.csv"]);
+}
+
+#[test]
+fn the_readme_pictures_are_made_by_the_commands_it_shows() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let joined = readme.replace("\\\n", " ");
+    let commands: Vec<&str> = joined
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("tribez ") && l.contains("docs/pictures/"))
+        .collect();
+    assert_eq!(commands.len(), 2, "{commands:?}");
+    let dir = tempfile::tempdir().unwrap();
+    for command in commands {
+        let mut args: Vec<String> = command
+            .split_whitespace()
+            .skip(1)
+            .map(String::from)
+            .collect();
+        let at = args
+            .iter()
+            .position(|a| a.starts_with("docs/pictures/"))
+            .unwrap();
+        let committed = root.join(&args[at]);
+        let fresh = dir.path().join(committed.file_name().unwrap());
+        args[at] = fresh.display().to_string();
+        let out = tribez().current_dir(&root).args(&args).output().unwrap();
+        assert!(matches!(out.status.code(), Some(0 | 1)), "{command}");
+        assert!(
+            std::fs::read(&fresh).unwrap() == std::fs::read(&committed).unwrap(),
+            "{} is not what `{command}` draws now: run it from the repository root",
+            committed.display()
+        );
+    }
+}
+
+#[test]
+fn claim_files_get_an_html_report_with_their_errata() {
+    let dir = tempfile::tempdir().unwrap();
+    let html = dir.path().join("claims.html");
+    tribez()
+        .arg("check")
+        .arg(fixtures().join("finn_day30.claims.toml"))
+        .arg("--html")
+        .arg(&html)
+        .assert()
+        .code(0);
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert_self_contained(&page);
+    let doc = parse_html(&page);
+    let cell = |key: &str| {
+        doc.descendants()
+            .find(|n| n.has_tag_name("th") && n.text() == Some(key))
+            .and_then(|th| th.next_sibling_element())
+            .and_then(|td| td.text())
+            .unwrap_or_else(|| panic!("{key}"))
+            .to_string()
+    };
+    assert_eq!(cell("failed"), "0");
+    // Finn's notes print the first component of example (b)'s closed form wrongly
+    // (README, "Reproduce a textbook"): a known erratum, listed with its exact value
+    assert_ne!(cell("known errata"), "0");
+    let cells: Vec<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("td"))
+        .filter_map(|n| n.text())
+        .collect();
+    assert!(cells.contains(&"worked-example-b-x"), "{cells:?}");
+}
+
+/// The colour bar of `bezier`'s results: its ends are the smallest and the largest error of the
+/// 2,000 rows, computed independently by fixtures/peers/exact_errors.py (plain Python fractions):
+/// line 1319 at 0.00096857501577748387 ulp and line 417 at 320.7 ulp. The smallest is exact even
+/// though the float filter decided that row (its figure in the histogram is an upper bound).
+#[test]
+fn the_colour_bar_of_the_bezier_results_ends_at_their_exact_smallest_and_largest_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let map = dir.path().join("bezier.svg");
+    let peers = fixtures().join("peers");
+    tribez()
+        .args(["check", "--patch"])
+        .arg(peers.join("peer_cubic.toml"))
+        .arg("--results")
+        .arg(peers.join("bezier_results.csv"))
+        .args(["--precision", "f64", "--tolerance", "cond=9", "--plot"])
+        .arg(&map)
+        .assert()
+        .code(0);
+    let svg = std::fs::read_to_string(&map).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let value = |class: &str| -> f64 {
+        doc.descendants()
+            .find(|n| n.attribute("class") == Some(class))
+            .and_then(|n| n.attribute("data-value"))
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    // the f64 nearest the script's 20 digits
+    let smallest: f64 = "0.00096857501577748387".parse().unwrap();
+    assert_eq!(value("scale-min"), smallest);
+    assert!((value("scale-max") - 320.7).abs() < 0.05);
+    let worst = doc
+        .descendants()
+        .find(|n| n.attribute("class") == Some("worst"))
+        .unwrap();
+    assert_eq!(worst.attribute("data-row"), Some("417"));
 }

@@ -89,6 +89,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         }
     };
     let name = patch_path.display().to_string();
+    let mut smallest = crate::picture::reports::Smallest::new();
     let report = match &mut map {
         None => checker.check_file(results, &name, &mut progress),
         Some(map) => {
@@ -101,6 +102,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                     crate::picture::reports::position(&outline, &r.inputs)
                 };
                 map.add(r.row, at, r.ulps, r.ulps_lower, r.pass);
+                smallest.add(&r);
             })
         }
     };
@@ -123,7 +125,8 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             args.cartesian,
             tribez::hazmat::certify::report::algorithm_key(args.algorithm.algorithm()),
         );
-        crate::picture::reports::batch(&pictures, &report, map.finish(), &command)?;
+        let min_ulps = smallest.settle(&checker);
+        crate::picture::reports::batch(&pictures, &report, map.finish(), min_ulps, &command)?;
     }
     super::baseline::record_if_clean(args.record_baseline.as_deref(), &worst, success)?;
     Outcome::rendered(&report, args.out.format, success)

@@ -54,8 +54,9 @@ pub struct Args {
     /// or .png).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
-    /// Batch mode: also write a self-contained HTML report (summary, histogram, error map,
-    /// failures and the worst row with exact values, the command to reproduce) to FILE.
+    /// Also write a self-contained HTML report to FILE: the summary, the histogram, the failures
+    /// with exact values, the command to reproduce (batch mode: with the error map and the worst
+    /// row).
     #[arg(long, value_name = "FILE")]
     pub html: Option<PathBuf>,
     #[command(flatten)]
@@ -78,8 +79,6 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         ("--tolerance", args.tolerance.is_some()),
         ("--precision", args.precision.is_some()),
         ("--cartesian", args.cartesian),
-        ("--plot", args.plot.is_some()),
-        ("--html", args.html.is_some()),
     ] {
         if given {
             return Err(CliError::Usage(format!(
@@ -92,12 +91,23 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             "give claim files or directories, or --patch PATCH --results FILE".into(),
         ));
     }
+    if args.plot.is_some() {
+        return Err(CliError::Usage(
+            "--plot draws the error map of a batch (--patch PATCH --results FILE); claim files concern many patches (--html reports them)".into(),
+        ));
+    }
+    if let Some(html) = &args.html {
+        crate::picture::check_html_name(html)?;
+    }
     let mut report = judge_paths(&args.paths, &ClaimsOptions::default())?;
     let worst = report.worst_errors();
     report.baseline_regressions = super::baseline::regressions(args.baseline.as_deref(), &worst)?;
     let success = report.success();
     if let Some(path) = &args.junit {
         super::write_junit(path, &report)?;
+    }
+    if let Some(path) = &args.html {
+        crate::picture::reports::claims(path, &report, &args.paths)?;
     }
     super::baseline::record_if_clean(args.record_baseline.as_deref(), &worst, success)?;
     Outcome::rendered(&report, args.out.format, success)

@@ -274,6 +274,8 @@ pub struct Panel {
     pub title: String,
     /// The largest error the report states (the colour bar's top label; `None`: the rows').
     pub max_ulps: Option<f64>,
+    /// The smallest error, computed exactly (the bottom label; `None`: the rows' figures').
+    pub min_ulps: Option<f64>,
     /// The worst row: its number, its label's text. Its position is the row's own.
     pub worst: Option<(usize, String)>,
     /// The histogram's counts ([`ULP_BUCKETS`]).
@@ -310,12 +312,12 @@ const MAP_H: f64 = 400.0;
 impl MapData {
     /// The smallest and the largest error (the colour bar's labels): the rows' smallest, and the
     /// report's largest (`max_ulps`) when given.
-    pub fn range(&self, max_ulps: Option<f64>) -> Option<(f64, f64)> {
+    pub fn range(&self, max_ulps: Option<f64>, min_ulps: Option<f64>) -> Option<(f64, f64)> {
         let hi = max_ulps
             .filter(|u| u.is_finite())
             .or_else(|| (self.b.max >= self.b.min).then_some(self.b.max))?;
-        let lo = if self.b.min <= hi { self.b.min } else { hi };
-        Some((lo, hi))
+        let lo = min_ulps.filter(|u| u.is_finite()).unwrap_or(self.b.min);
+        Some((lo.min(hi), hi))
     }
 
     /// The position of row `row` if it may be the worst (see [`WorstCandidates`]).
@@ -336,9 +338,17 @@ impl MapData {
             &[lo, hi],
             (MAP_X + 8.0, y0 + MAP_Y + 8.0, MAP_W - 16.0, MAP_H - 16.0),
         );
-        let range = self.range(panel.max_ulps);
-        let scale =
-            range.map(|(lo, hi)| LogScale::new(lo, b.min_positive.filter(|&f| f <= hi), hi));
+        let range = self.range(panel.max_ulps, panel.min_ulps);
+        // the logarithmic part starts at the smallest error, or at the smallest positive one
+        // when some errors are 0
+        let scale = range.map(|(lo, hi)| {
+            let floor = if lo > 0.0 {
+                Some(lo)
+            } else {
+                b.min_positive.filter(|&f| f <= hi)
+            };
+            LogScale::new(lo, floor, hi)
+        });
         let colour = |u: f64| match scale {
             Some(s) if u.is_finite() => s.colour(u),
             _ => NOT_FINITE,
@@ -530,14 +540,12 @@ impl MapData {
                 let y = by + bh - s.t(v) * bh;
                 if (y - by).abs() > 14.0 && (y - by - bh).abs() > 14.0 {
                     svg.line([bx + bw, y], [bx + bw + 4.0, y], INK, 1.0);
-                    svg.text(
-                        [bx + bw + 6.0, y + 4.0],
-                        10.0,
-                        "start",
-                        OUTLINE,
-                        &ulps_text(v),
-                        &[],
-                    );
+                    let text = if (1e-3..1e6).contains(&v) {
+                        ulps_text(v)
+                    } else {
+                        format!("1e{}", v.log10().round())
+                    };
+                    svg.text([bx + bw + 6.0, y + 4.0], 10.0, "start", OUTLINE, &text, &[]);
                 }
             }
             if s.lo < s.floor {
@@ -552,56 +560,61 @@ impl MapData {
             }
         }
         // the histogram
-        let hx = bx + 110.0;
-        svg.text(
-            [hx, y0 + MAP_Y + 10.0],
-            12.0,
-            "start",
-            INK,
-            "histogram (rows per error in ulp)",
-            &[],
-        );
-        let most = panel.histogram.iter().copied().max().unwrap_or(0).max(1);
-        let row_h = (MAP_H - 40.0) / 8.0;
-        let bar_x = hx + 78.0;
-        let bar_w = WIDTH - bar_x - 70.0;
-        svg.open_group(&[("class", "histogram".into())]);
-        for (k, (&label, &count)) in ULP_BUCKETS.iter().zip(&panel.histogram).enumerate() {
-            let y = y0 + MAP_Y + 24.0 + k as f64 * row_h;
-            svg.text(
-                [bar_x - 6.0, y + row_h * 0.5 + 4.0],
-                11.0,
-                "end",
-                INK,
-                label,
-                &[],
-            );
-            let w = bar_w * count as f64 / most as f64;
-            if count > 0 {
-                svg.rect(
-                    bar_x,
-                    y + 4.0,
-                    w.max(1.0),
-                    row_h - 8.0,
-                    Rgb(96, 125, 160),
-                    None,
-                );
-            }
-            svg.text(
-                [bar_x + w + 4.0, y + row_h * 0.5 + 4.0],
-                11.0,
-                "start",
-                INK,
-                &count.to_string(),
-                &[
-                    ("class", "bucket".into()),
-                    ("data-count", count.to_string()),
-                ],
-            );
-        }
-        svg.close_group();
+        histogram(svg, bx + 110.0, y0 + MAP_Y, &panel.histogram, "rows");
         svg.close_group();
     }
+}
+
+/// The histogram of errors in ULPs ([`ULP_BUCKETS`]) with its top left corner at `(hx, top)`:
+/// one bar per bucket, its count beside it; `what` names what is counted.
+pub fn histogram(svg: &mut Svg, hx: f64, top: f64, counts: &[u64; 8], what: &str) {
+    svg.text(
+        [hx, top + 10.0],
+        12.0,
+        "start",
+        INK,
+        &format!("histogram ({what} per error in ulp)"),
+        &[],
+    );
+    let most = counts.iter().copied().max().unwrap_or(0).max(1);
+    let row_h = (MAP_H - 40.0) / 8.0;
+    let bar_x = hx + 78.0;
+    let bar_w = 156.0;
+    svg.open_group(&[("class", "histogram".into())]);
+    for (k, (&label, &count)) in ULP_BUCKETS.iter().zip(counts).enumerate() {
+        let y = top + 24.0 + k as f64 * row_h;
+        svg.text(
+            [bar_x - 6.0, y + row_h * 0.5 + 4.0],
+            11.0,
+            "end",
+            INK,
+            label,
+            &[],
+        );
+        let w = bar_w * count as f64 / most as f64;
+        if count > 0 {
+            svg.rect(
+                bar_x,
+                y + 4.0,
+                w.max(1.0),
+                row_h - 8.0,
+                Rgb(96, 125, 160),
+                None,
+            );
+        }
+        svg.text(
+            [bar_x + w + 4.0, y + row_h * 0.5 + 4.0],
+            11.0,
+            "start",
+            INK,
+            &count.to_string(),
+            &[
+                ("class", "bucket".into()),
+                ("data-count", count.to_string()),
+            ],
+        );
+    }
+    svg.close_group();
 }
 
 /// An SVG of one or more panels, one under the other.
@@ -649,7 +662,8 @@ mod tests {
         assert!(m.b.grid.is_some() && m.b.dots.is_empty());
         assert_eq!(m.b.rows, n as u64);
         assert_eq!(m.worst_at(8), Some([7.0 / n as f64 * 0.5, 0.25]));
-        assert_eq!(m.range(None), Some((0.0, 100.0)));
+        assert_eq!(m.range(None, None), Some((0.0, 100.0)));
+        assert_eq!(m.range(Some(90.0), Some(0.5)), Some((0.5, 90.0)));
         let cells = m.b.grid.as_ref().unwrap().cells.iter();
         assert_eq!(cells.map(|c| u64::from(c.rows)).sum::<u64>(), n as u64);
     }

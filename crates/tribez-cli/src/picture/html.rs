@@ -85,7 +85,14 @@ pub fn render(r: &HtmlReport) -> String {
         escape(&r.reproduce)
     ));
     if !r.pictures.is_empty() {
-        out.push_str("<h2>Error map and histogram</h2>\n<div id=\"pictures\">\n");
+        out.push_str(&format!(
+            "<h2>{}</h2>\n<div id=\"pictures\">\n",
+            if r.pictures.contains("error-map") {
+                "Error map and histogram"
+            } else {
+                "Histogram"
+            }
+        ));
         out.push_str(&r.pictures);
         out.push_str("</div>\n");
     }

@@ -9,7 +9,8 @@ use num_rational::BigRational;
 use super::errmap::{self, MapBuilder, MapData, Panel, ulps_text};
 use super::html::{self, HtmlReport, Section};
 use crate::error::CliError;
-use tribez::batch::{BatchReport, FailedCoord, UlpHistogram};
+use tribez::batch::{BatchChecker, BatchReport, FailedCoord, RowPoint, UlpHistogram};
+use tribez::claims::ClaimsReport;
 use tribez::hazmat::certify::report::algorithm_key;
 use tribez::hazmat::domain::format_tuple;
 use tribez::hazmat::number::{format_rational, round_f64, to_decimal_string};
@@ -115,14 +116,98 @@ const COORD_HEADER: [&str; 6] = [
     "exact value at the inputs as intended",
 ];
 
+/// The rows of a batch that may have the smallest error: their lower bound is at most the
+/// smallest upper bound seen (a row the float filter decided has an enclosure of its error, not
+/// the error). [`Smallest::settle`] computes the smallest error exactly from them.
+#[derive(Clone, Debug)]
+pub struct Smallest {
+    ceiling: Option<f64>,
+    /// A row with exactly the ceiling's error is among the candidates.
+    exact_at_ceiling: bool,
+    rows: Vec<RowPoint>,
+    complete: bool,
+}
+
+/// At most this many candidates are kept (past it the smallest error is the figures').
+const MAX_SMALLEST: usize = 4096;
+
+impl Smallest {
+    /// No rows yet.
+    pub fn new() -> Smallest {
+        Smallest {
+            ceiling: None,
+            exact_at_ceiling: false,
+            rows: Vec::new(),
+            complete: true,
+        }
+    }
+
+    /// A row, as judged.
+    pub fn add(&mut self, r: &RowPoint) {
+        if !r.ulps.is_finite() || self.ceiling.is_some_and(|c| r.ulps_lower > c) {
+            return;
+        }
+        let exact = r.ulps_lower == r.ulps;
+        if self.ceiling.is_none_or(|c| r.ulps < c) {
+            let c = r.ulps;
+            self.ceiling = Some(c);
+            self.exact_at_ceiling = false;
+            if self.rows.len() >= 64 {
+                self.rows.retain(|x| x.ulps_lower <= c);
+            }
+        } else if exact && self.exact_at_ceiling && self.ceiling == Some(r.ulps) {
+            // another row with exactly the smallest error known: nothing to learn
+            return;
+        }
+        if exact && self.ceiling == Some(r.ulps) {
+            self.exact_at_ceiling = true;
+        }
+        if self.rows.len() < MAX_SMALLEST {
+            self.rows.push(r.clone());
+        } else {
+            self.complete = false;
+        }
+    }
+
+    /// The smallest error, exactly: every candidate whose lower bound is below the best exact
+    /// error so far is judged again in memory ([`BatchChecker::check_rows`] computes one row's
+    /// error exactly); `None` when there were too many candidates or a row could not be judged.
+    pub fn settle(mut self, checker: &BatchChecker) -> Option<f64> {
+        let ceiling = self.ceiling?;
+        if !self.complete {
+            return None;
+        }
+        self.rows.retain(|r| r.ulps_lower <= ceiling);
+        self.rows
+            .sort_by(|a, b| a.ulps_lower.total_cmp(&b.ulps_lower));
+        let mut best: Option<f64> = None;
+        for r in &self.rows {
+            if best.is_some_and(|b| r.ulps_lower >= b) {
+                break;
+            }
+            let exact = if r.ulps_lower == r.ulps {
+                r.ulps
+            } else {
+                let (report, _) = checker
+                    .check_rows(&r.inputs, &r.claimed, r.row, "<row>", "<patch>")
+                    .ok()?;
+                report.max_ulps?
+            };
+            best = Some(best.map_or(exact, |b| b.min(exact)));
+        }
+        best
+    }
+}
+
 /// The panel of a batch's error map.
-fn batch_panel(report: &BatchReport) -> Panel {
+fn batch_panel(report: &BatchReport, min_ulps: Option<f64>) -> Panel {
     Panel {
         title: format!(
             "{}: {} rows against {}, tolerance {} — {} failed",
             report.file, report.checked, report.patch, report.tolerance, report.failed
         ),
         max_ulps: report.max_ulps,
+        min_ulps,
         worst: report.worst.as_ref().map(|w| {
             (
                 w.line,
@@ -131,7 +216,7 @@ fn batch_panel(report: &BatchReport) -> Panel {
         }),
         histogram: report.histogram.counts,
         note: if report.histogram_upper_bounds {
-            "rows the float filter decided: the upper end of their error's enclosure".into()
+            "rows the float filter decided: the upper end of their error's enclosure (the scale's ends are exact)".into()
         } else {
             String::new()
         },
@@ -143,10 +228,11 @@ pub fn batch(
     pictures: &Pictures,
     report: &BatchReport,
     map: MapData,
+    min_ulps: Option<f64>,
     command: &[String],
 ) -> Result<(), CliError> {
-    let panel = batch_panel(report);
-    let range = map.range(panel.max_ulps);
+    let panel = batch_panel(report, min_ulps);
+    let range = map.range(panel.max_ulps, panel.min_ulps);
     let panels = [(map, panel)];
     let svg = errmap::svg(&panels, &format!("error map of {}", report.file));
     if let Some(path) = &pictures.plot {
@@ -303,6 +389,7 @@ pub fn certify(
                     }
                 ),
                 max_ulps: Some(row.max_ulps),
+                min_ulps: None,
                 worst: worst.map(|i| {
                     (
                         i + 1,
@@ -340,7 +427,7 @@ pub fn certify(
         ));
     }
     for (row, (data, _)) in report.rows.iter().zip(&panels) {
-        let range = data.range(Some(row.max_ulps));
+        let range = data.range(Some(row.max_ulps), None);
         summary.push((
             format!("{} {}", algorithm_key(row.algorithm), row.precision.name()),
             format!(
@@ -426,6 +513,90 @@ pub fn certify(
             .as_ref()
             .map_or_else(|| html::shell_line(command), |r| r.reproduce.clone()),
         pictures: svg,
+        sections,
+        text: report.text(),
+    });
+    crate::output::stage(path, page.as_bytes())
+}
+
+/// Stage the `--html` report of `tribez check` on claim files (`paths` as given).
+pub fn claims(path: &Path, report: &ClaimsReport, paths: &[PathBuf]) -> Result<(), CliError> {
+    let histogram = report.histogram();
+    let pictures = if histogram.is_empty() {
+        String::new()
+    } else {
+        let mut svg = super::svg::Svg::new(340.0, 420.0, &[]);
+        svg.title("the histogram of the float claims' errors");
+        errmap::histogram(&mut svg, 10.0, 10.0, &histogram.counts, "float claims");
+        svg.finish()
+    };
+    let row = |j: &tribez::claims::Judged| {
+        vec![
+            j.file.clone(),
+            j.id.clone(),
+            j.op.clone(),
+            j.claimed.to_text(),
+            j.exact.to_text(),
+            j.tolerance.to_string(),
+        ]
+    };
+    let all = || report.files.iter().flat_map(|f| &f.claims);
+    let failures: Vec<Vec<String>> = all().filter(|j| j.verdict.fails_run()).map(row).collect();
+    let errata: Vec<Vec<String>> = all()
+        .filter(|j| matches!(j.verdict, tribez::claims::Verdict::KnownErratum(_)))
+        .map(row)
+        .collect();
+    let header = [
+        "file",
+        "claim",
+        "operation",
+        "claimed",
+        "exact",
+        "tolerance",
+    ]
+    .map(String::from)
+    .to_vec();
+    let mut sections = Vec::new();
+    if !failures.is_empty() {
+        sections.push(Section::Table {
+            heading: format!("Failures ({})", failures.len()),
+            note: String::new(),
+            header: header.clone(),
+            rows: failures,
+        });
+    }
+    if !errata.is_empty() {
+        sections.push(Section::Table {
+            heading: format!("Known errata ({})", errata.len()),
+            note: "Values printed in the sources that the exact computation contradicts (they do not fail the run).".into(),
+            header,
+            rows: errata,
+        });
+    }
+    let mut command = vec!["tribez".to_string(), "check".into()];
+    command.extend(paths.iter().map(|p| p.display().to_string()));
+    let passed = report.success();
+    let page = html::render(&HtmlReport {
+        title: format!(
+            "tribez check: {} claims in {} files",
+            report.claims(),
+            report.files.len()
+        ),
+        passed,
+        verdict: if passed {
+            format!("all {} claims hold", report.claims())
+        } else {
+            format!("{} of {} claims fail", report.failed(), report.claims())
+        },
+        summary: vec![
+            ("files".into(), report.files.len().to_string()),
+            ("claims".into(), report.claims().to_string()),
+            ("passed".into(), report.passed().to_string()),
+            ("known errata".into(), report.errata().to_string()),
+            ("failed".into(), report.failed().to_string()),
+        ],
+        reproduce: html::shell_line(&command),
+        pictures,
         sections,
         text: report.text(),
     });

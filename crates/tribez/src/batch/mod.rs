@@ -322,6 +322,9 @@ pub struct RowPoint {
     /// Its input coordinates as the code saw them (barycentric, or Cartesian with
     /// [`BatchOptions::cartesian`]); NaN where a number is not finite.
     pub inputs: Vec<f64>,
+    /// Its claimed coordinates as floats (NaN where a number is not finite): with the inputs,
+    /// [`BatchChecker::check_rows`] judges the same row again in memory.
+    pub claimed: Vec<f64>,
     /// Within the tolerance.
     pub pass: bool,
     /// The largest error in ULPs over its coordinates, as the histogram counts it (exact, or
@@ -334,16 +337,18 @@ pub struct RowPoint {
 
 impl RowPoint {
     fn of(o: &RowOutcome) -> Self {
-        RowPoint {
-            row: o.line,
-            inputs: o
-                .inputs
-                .iter()
+        let floats = |xs: &[Num]| {
+            xs.iter()
                 .map(|x| match x {
                     Num::Value { float, .. } => *float,
                     Num::NotFinite(_) => f64::NAN,
                 })
-                .collect(),
+                .collect()
+        };
+        RowPoint {
+            row: o.line,
+            inputs: floats(&o.inputs),
+            claimed: floats(&o.claimed),
             pass: o.pass,
             ulps: o.ulps,
             ulps_lower: o.ulps_lower,
