@@ -7,6 +7,8 @@ use clap::Parser;
 
 mod cli;
 mod commands;
+mod error;
+mod output;
 mod picture;
 mod report;
 
@@ -31,7 +33,7 @@ fn usage(e: &clap::Error) -> i32 {
         let _ = writeln!(std::io::stderr(), "tribez: {}", one_line(&text));
         return status;
     }
-    match commands::output::write_stdout(text.as_bytes()) {
+    match output::write_stdout(text.as_bytes()) {
         Ok(()) => status,
         Err(err) => {
             let _ = writeln!(std::io::stderr(), "tribez: {err}");

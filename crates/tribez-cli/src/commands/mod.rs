@@ -15,7 +15,6 @@ pub mod intersect;
 pub mod inverse;
 pub mod join;
 pub mod matrix;
-pub mod output;
 pub mod plot;
 pub mod reproduce;
 pub mod subdivide;
@@ -33,8 +32,9 @@ use std::path::PathBuf;
 use clap::Parser;
 
 use crate::cli::{LatexOutputArgs, OutputArgs, examples};
+pub use crate::error::CliError;
+pub(crate) use crate::output;
 use crate::report::{Exporter, Format, JunitExporter, Render, render};
-use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::InputError;
 use tribez::hazmat::number::parse_rational;
 
@@ -125,46 +125,6 @@ impl OutputTarget for OutputArgs {
 impl OutputTarget for LatexOutputArgs {
     fn output(&self) -> Option<&PathBuf> {
         self.output.as_ref()
-    }
-}
-
-/// Why a command could not run: bad input or usage (exit status 2).
-#[derive(Debug, thiserror::Error)]
-pub enum CliError {
-    /// A file or argument with a located problem.
-    #[error(transparent)]
-    Input(#[from] InputError),
-    /// A mathematical precondition that the input violates, with what it concerns.
-    #[error("{context}: {source}")]
-    Core {
-        /// The file or argument concerned.
-        context: String,
-        /// What is wrong.
-        #[source]
-        source: CoreError,
-    },
-    /// Wrong use of the command line.
-    #[error("{0}")]
-    Usage(String),
-}
-
-impl From<tribez::Error> for CliError {
-    /// Bad input stays located; every other error of the library is one line of its own.
-    fn from(e: tribez::Error) -> Self {
-        match e {
-            tribez::Error::Input(e) => CliError::Input(e),
-            e => CliError::Usage(e.to_string()),
-        }
-    }
-}
-
-impl CliError {
-    /// A core error about `context`.
-    pub fn core(context: impl Into<String>, source: CoreError) -> Self {
-        CliError::Core {
-            context: context.into(),
-            source,
-        }
     }
 }
 

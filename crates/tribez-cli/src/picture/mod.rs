@@ -4,7 +4,7 @@
 //! Every picture is SVG written directly ([`svg`]); a `.png` file is that SVG rasterised by
 //! resvg (pure Rust). Geometry is sampled from exact values and converted to `f64` only to be
 //! drawn. Files are written like every output of the command line: staged, and committed only
-//! when the run ends with exit status 0 or 1 ([`crate::commands::output`]).
+//! when the run ends with exit status 0 or 1 ([`crate::output`]).
 
 pub mod colour;
 pub mod errmap;
@@ -16,7 +16,7 @@ pub mod svg;
 
 use std::path::Path;
 
-use crate::commands::CliError;
+use crate::error::CliError;
 use tribez::hazmat::io::InputError;
 
 /// The file formats of pictures.
@@ -97,5 +97,5 @@ pub fn stage(path: &Path, svg: &str, flag: &str) -> Result<(), CliError> {
             .and_then(|p| p.encode_png().map_err(|e| e.to_string()))
             .map_err(|e| InputError::file(&file, format!("cannot draw the picture: {e}")))?,
     };
-    crate::commands::output::stage(path, &bytes)
+    crate::output::stage(path, &bytes)
 }

@@ -19,7 +19,7 @@ use rayon::prelude::*;
 
 use super::project::{Frame, View, cross, dot, normalize, sub};
 use super::svg::{Rgb, Svg};
-use crate::commands::CliError;
+use crate::error::CliError;
 use tribez::Patch;
 use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::number::round_f64;

@@ -8,7 +8,7 @@ use num_rational::BigRational;
 
 use super::errmap::{self, MapBuilder, MapData, Panel, ulps_text};
 use super::html::{self, HtmlReport, Section};
-use crate::commands::CliError;
+use crate::error::CliError;
 use tribez::batch::{BatchChecker, BatchReport, FailedCoord, RowPoint, UlpHistogram};
 use tribez::claims::ClaimsReport;
 use tribez::hazmat::certify::report::algorithm_key;
@@ -330,7 +330,7 @@ pub fn batch(
         sections,
         text: report.text(),
     });
-    crate::commands::output::stage(path, page.as_bytes())
+    crate::output::stage(path, page.as_bytes())
 }
 
 /// Stage `--plot` and `--html` of a certification run (one panel per algorithm and precision).
@@ -516,7 +516,7 @@ pub fn certify(
         sections,
         text: report.text(),
     });
-    crate::commands::output::stage(path, page.as_bytes())
+    crate::output::stage(path, page.as_bytes())
 }
 
 /// Stage the `--html` report of `tribez check` on claim files (`paths` as given).
@@ -600,7 +600,7 @@ pub fn claims(path: &Path, report: &ClaimsReport, paths: &[PathBuf]) -> Result<(
         sections,
         text: report.text(),
     });
-    crate::commands::output::stage(path, page.as_bytes())
+    crate::output::stage(path, page.as_bytes())
 }
 
 /// The arguments of `tribez check` that reproduce a batch run.

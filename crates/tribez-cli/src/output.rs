@@ -22,7 +22,7 @@ use std::sync::{Mutex, MutexGuard};
 use tempfile::NamedTempFile;
 use tribez::hazmat::io::InputError;
 
-use super::CliError;
+use crate::error::CliError;
 
 /// The files staged in this run, committed together by [`commit_all`].
 static STAGED: Mutex<Staging> = Mutex::new(Staging { files: Vec::new() });
