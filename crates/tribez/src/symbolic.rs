@@ -296,6 +296,7 @@ impl Polynomial {
             pos: 0,
             names,
             depth: 0,
+            work: 0,
         };
         if p.peek().is_none() {
             return Err("empty polynomial".into());
@@ -343,6 +344,14 @@ pub const MAX_COEFFICIENT_BITS: u64 = 1 << 20;
 /// (`(number of terms of a) · (number of terms of b)`).
 pub const MAX_TERM_PRODUCTS: usize = 1_000_000;
 
+/// The most arithmetic polynomial text may cost while it is read, in word operations: each
+/// product of two coefficients of `a` and `b` bits (with the reduction to lowest terms) is
+/// counted as `(⌊(a + b)/64⌋ + 1)²`. 2^30 is about forty times the cost of reading one number of
+/// 100,000 digits, so such numbers, and sums and products of up to three of them, are read,
+/// while text that would multiply many huge coefficients (`(1e9999 + u + v)^9`) is refused
+/// before it is computed instead of running for minutes.
+pub const MAX_WORK: u64 = 1 << 30;
+
 /// The deepest nesting of parentheses in polynomial text.
 pub const MAX_NESTING: usize = 64;
 
@@ -384,6 +393,8 @@ struct PolyParser<'a> {
     pos: usize,
     names: &'a [&'a str],
     depth: usize,
+    /// The arithmetic spent so far, in the units of [`MAX_WORK`].
+    work: u64,
 }
 
 /// What a factor of a term was, for the rule "a number only first or after `*` or `/`".
@@ -446,18 +457,18 @@ impl PolyParser<'_> {
                 Some('*') if self.at(self.pos + 1) != Some('*') => {
                     self.pos += 1;
                     let f = self.unary(Juxtaposed::Operator)?;
-                    out = checked_mul(&out, &f)?;
+                    out = checked_mul(&out, &f, &mut self.work)?;
                 }
                 Some('/') => {
                     self.pos += 1;
                     let start = self.pos;
                     let f = self.unary(Juxtaposed::Operator)?;
-                    out = checked_div(&out, &f)
+                    out = checked_div(&out, &f, &mut self.work)
                         .map_err(|e| format!("{e} at character {}", start + 1))?;
                 }
                 Some(c) if c.is_alphabetic() || c.is_ascii_digit() || c == '.' || c == '(' => {
                     let f = self.unary(Juxtaposed::Nothing)?;
-                    out = checked_mul(&out, &f)?;
+                    out = checked_mul(&out, &f, &mut self.work)?;
                 }
                 Some('*') => return self.err("`**` without a base"),
                 _ => return Ok(out),
@@ -502,7 +513,7 @@ impl PolyParser<'_> {
             return self
                 .err("a chained power is ambiguous (write x**(2*3) as x**6, or use parentheses)");
         }
-        checked_pow(&base, k)
+        checked_pow(&base, k, &mut self.work)
     }
 
     /// The digits of an exponent, as a number (values above [`MAX_DEGREE`] are reported whole).
@@ -690,12 +701,25 @@ fn check_bits(bits: u64) -> Result<(), String> {
 }
 
 /// A sum adds at most one bit to the larger numerator, and multiplies denominators.
+/// Charge `pairs` coefficient products of `bits` bits each against the budget [`MAX_WORK`].
+fn charge(work: &mut u64, pairs: usize, bits: u64) -> Result<(), String> {
+    let words = bits / 64 + 1;
+    let cost = (pairs as u64).saturating_mul(words.saturating_mul(words));
+    *work = work.saturating_add(cost);
+    if *work > MAX_WORK {
+        return Err(format!(
+            "the text needs more than {MAX_WORK} word operations of exact arithmetic (coefficients of about {bits} bits in {pairs} products), above the work limit of polynomial text"
+        ));
+    }
+    Ok(())
+}
+
 fn check_sum(a: &Polynomial, b: &Polynomial) -> Result<(), String> {
     check_bits(a.max_coefficient_bits() + b.max_coefficient_bits() + 1)
 }
 
 /// `a · b`, after checking the degree, the number of term products and the coefficient size.
-fn checked_mul(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
+fn checked_mul(a: &Polynomial, b: &Polynomial, work: &mut u64) -> Result<Polynomial, String> {
     if a.is_zero() || b.is_zero() {
         return Ok(Polynomial::zero(a.nvars));
     }
@@ -712,11 +736,16 @@ fn checked_mul(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
     // Each coefficient of the product is a sum of at most min(|a|, |b|) products.
     let sum_bits = u64::BITS - (a.terms.len().min(b.terms.len()) as u64).leading_zeros();
     check_bits(a.max_coefficient_bits() + b.max_coefficient_bits() + u64::from(sum_bits))?;
+    charge(
+        work,
+        pairs,
+        a.max_coefficient_bits() + b.max_coefficient_bits(),
+    )?;
     Ok(a.mul(b))
 }
 
 /// `a / b` for a non-zero constant `b`.
-fn checked_div(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
+fn checked_div(a: &Polynomial, b: &Polynomial, work: &mut u64) -> Result<Polynomial, String> {
     if b.degree().unwrap_or(0) > 0 {
         return Err(
             "the divisor is not a constant (only division by a number is a polynomial)".into(),
@@ -728,11 +757,16 @@ fn checked_div(a: &Polynomial, b: &Polynomial) -> Result<Polynomial, String> {
         .next()
         .ok_or_else(|| "division by zero".to_string())?;
     check_bits(a.max_coefficient_bits() + coefficient_bits(c))?;
+    charge(
+        work,
+        a.terms.len(),
+        a.max_coefficient_bits() + coefficient_bits(c),
+    )?;
     Ok(a.scale(&q_div(&BigRational::one(), c)))
 }
 
 /// `p^k`, after checking the degree `deg(p)·k` and the coefficient size `bits(p)·k`.
-fn checked_pow(p: &Polynomial, k: u64) -> Result<Polynomial, String> {
+fn checked_pow(p: &Polynomial, k: u64, work: &mut u64) -> Result<Polynomial, String> {
     if k == 0 {
         return Ok(Polynomial::constant(p.nvars, BigRational::one()));
     }
@@ -750,11 +784,12 @@ fn checked_pow(p: &Polynomial, k: u64) -> Result<Polynomial, String> {
     if deg == 0 {
         let c = p.terms.values().next().expect("non-zero");
         let k = u32::try_from(k).map_err(|_| "exponent too large".to_string())?;
+        charge(work, 1, coefficient_bits(c).saturating_mul(u64::from(k)))?;
         return Ok(Polynomial::constant(p.nvars, q_pow(c, k)));
     }
     let mut out = p.clone();
     for _ in 1..k {
-        out = checked_mul(&out, p)?;
+        out = checked_mul(&out, p, work)?;
     }
     Ok(out)
 }
@@ -832,6 +867,19 @@ mod tests {
 
     fn names3() -> [&'static str; 3] {
         ["u", "v", "w"]
+    }
+
+    /// The work limit: one number of 100,000 digits and a few products of such numbers are
+    /// read; a ninth power of a trinomial whose constant has about 33,000 bits (the fuzzer's
+    /// timeout, `fuzz/regressions/polynomial/timeout-9b8e…`) is refused before it is computed.
+    #[test]
+    fn the_work_limit_refuses_many_products_of_huge_coefficients() {
+        let uvw = ["u", "v", "w"];
+        let big = format!("1{}", "0".repeat(99_999));
+        assert!(Polynomial::parse(&big, &uvw).is_ok());
+        assert!(Polynomial::parse(&format!("{big}*u*{big} + {big}/3"), &uvw).is_ok());
+        let e = Polynomial::parse("(1e9999 + u + v)^9", &uvw).unwrap_err();
+        assert!(e.contains("work limit"), "{e}");
     }
 
     #[test]
