@@ -426,9 +426,10 @@ fn evaluate_one(
         }
         AnyPatch::SPatch(s) => {
             if !cartesian {
-                return Err(CoreError::Invalid(
-                    "an S-patch is evaluated at Cartesian points (cartesian=True)".into(),
-                ));
+                return Err(CoreError::CartesianPoints {
+                    kind: "an S-patch",
+                    flag: "cartesian=True",
+                });
             }
             s.evaluate(x).map(|(_, v)| v)
         }

@@ -20,6 +20,15 @@ pub enum CliError {
         #[source]
         source: CoreError,
     },
+    /// A check of the command line's own (a result above the patch-file limits, a matrix
+    /// too large, an edge that is not two numbers), with what it concerns.
+    #[error("{context}: {message}")]
+    Check {
+        /// The file or argument concerned.
+        context: String,
+        /// What is wrong.
+        message: String,
+    },
     /// Wrong use of the command line.
     #[error("{0}")]
     Usage(String),
@@ -36,6 +45,14 @@ impl From<tribez::Error> for CliError {
 }
 
 impl CliError {
+    /// A check of the command line's own about `context`.
+    pub fn check(context: impl Into<String>, message: impl Into<String>) -> Self {
+        CliError::Check {
+            context: context.into(),
+            message: message.into(),
+        }
+    }
+
     /// A core error about `context`.
     pub fn core(context: impl Into<String>, source: CoreError) -> Self {
         CliError::Core {

@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
 
 use tempfile::NamedTempFile;
-use tribez::hazmat::io::InputError;
+use tribez::hazmat::io::{InputError, Problem};
 
 use crate::error::CliError;
 
@@ -58,7 +58,14 @@ pub fn write_stdout(bytes: &[u8]) -> Result<(), CliError> {
     match out.write_all(bytes).and_then(|()| out.flush()) {
         Ok(()) => Ok(()),
         Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(()),
-        Err(e) => Err(InputError::file("<standard output>", format!("cannot write: {e}")).into()),
+        Err(e) => Err(InputError::file("<standard output>", cannot_write(&e)).into()),
+    }
+}
+
+/// The operating system's reason an output cannot be written.
+fn cannot_write(e: &std::io::Error) -> Problem {
+    Problem::CannotWrite {
+        reason: e.to_string(),
     }
 }
 
@@ -80,7 +87,7 @@ impl Staging {
     /// See [`stage`].
     pub(crate) fn stage(&mut self, path: &Path, bytes: &[u8]) -> Result<(), CliError> {
         let file = path.display().to_string();
-        let fail = |message: String| CliError::from(InputError::file(&file, message));
+        let fail = |message: String| CliError::check(&file, message);
         let name = path
             .file_name()
             .ok_or_else(|| fail("not a file name".into()))?;
@@ -152,7 +159,7 @@ impl Staging {
     pub(crate) fn commit(self) -> Result<(), CliError> {
         for s in self.files {
             s.tmp.persist(&s.target).map_err(|e| {
-                InputError::file(s.target.display().to_string(), format!("cannot write: {e}"))
+                InputError::file(s.target.display().to_string(), cannot_write(&e.error))
             })?;
         }
         Ok(())

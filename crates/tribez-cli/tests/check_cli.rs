@@ -2,22 +2,10 @@
 
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
 use predicates::prelude::*;
 
-fn tribez() -> Command {
-    Command::cargo_bin("tribez").unwrap()
-}
-
-fn fixtures() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
+mod common;
+use common::{fixtures, tribez, write};
 
 const QUAD: &str = "degree = 2\n[control_points]\n\"2,0,0\" = [0, 0, 0]\n\"1,1,0\" = [1, 0, 2]\n\"0,2,0\" = [0, 2, 0]\n\"1,0,1\" = [0, 1, 0]\n\"0,1,1\" = [1, 1, 1]\n\"0,0,2\" = [0, 2, 1]\n";
 
@@ -27,7 +15,7 @@ fn claim_dir(claims: &str) -> tempfile::TempDir {
     write(
         d.path(),
         "c.claims.toml",
-        &format!("patch = \"quad.toml\"\n{claims}"),
+        format!("patch = \"quad.toml\"\n{claims}"),
     );
     d
 }
@@ -670,7 +658,7 @@ fn one_file_for_baseline_and_record_baseline_never_raises_it() {
     let worse = write(
         d.path(),
         "worse.csv",
-        &format!("{exact}0.5,0.25,0.25,0.375,0.625,{two_ulps:?}\n"),
+        format!("{exact}0.5,0.25,0.25,0.375,0.625,{two_ulps:?}\n"),
     );
     let mut a = args(&base);
     a.extend(["--baseline".to_string(), base.display().to_string()]);
@@ -784,7 +772,7 @@ fn one_ulp_change_fails_correctly_rounded() {
     let patch = peers().join("peer_cubic.toml");
     let mut found = false;
     for line in text.lines().filter(|l| !l.starts_with('#')).take(40) {
-        let r = write(d.path(), "one.csv", &format!("{line}\n"));
+        let r = write(d.path(), "one.csv", format!("{line}\n"));
         let ok = tribez()
             .arg("check")
             .arg("--patch")
@@ -799,7 +787,7 @@ fn one_ulp_change_fails_correctly_rounded() {
         }
         let mut fields: Vec<String> = line.split(',').map(str::to_string).collect();
         fields[3] = next_up_text(&fields[3]);
-        let r = write(d.path(), "one.csv", &format!("{}\n", fields.join(",")));
+        let r = write(d.path(), "one.csv", format!("{}\n", fields.join(",")));
         batch(
             &patch,
             &r,

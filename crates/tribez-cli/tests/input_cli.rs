@@ -5,42 +5,28 @@
 #![cfg(unix)]
 
 use std::os::unix::fs::symlink;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use assert_cmd::Command;
+
+mod common;
+use common::{fails, write};
 
 /// Finn's worked example (day 30); at (1/2, 1/3, 1/6) it is (4/9, 5/9, 29/36) (his notes).
 const FINN: &str = "degree = 2\n[control_points]\n\"2,0,0\" = [\"0\", \"0\", \"0\"]\n\"1,1,0\" = [\"1\", \"0\", \"2\"]\n\"0,2,0\" = [\"0\", \"2\", \"0\"]\n\"1,0,1\" = [\"0\", \"1\", \"0\"]\n\"0,1,1\" = [\"1\", \"1\", \"1\"]\n\"0,0,2\" = [\"0\", \"2\", \"1\"]\n";
 const AT: &str = "1/2,1/3,1/6";
 const VALUE: &str = "(4/9, 5/9, 29/36)";
 
+/// The binary, with a time limit (a hang on a FIFO or a device would be a failure).
 fn tribez() -> Command {
-    let mut c = Command::cargo_bin("tribez").expect("binary built");
+    let mut c = common::tribez();
     c.timeout(std::time::Duration::from_secs(60));
     c
-}
-
-fn write(dir: &Path, name: &str, bytes: impl AsRef<[u8]>) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, bytes).expect("write temp file");
-    p
 }
 
 fn mkfifo(path: &Path) {
     let ok = std::process::Command::new("mkfifo").arg(path).status();
     assert!(ok.is_ok_and(|s| s.success()), "mkfifo {}", path.display());
-}
-
-/// Exit status 2 and one stderr line containing every fragment.
-fn fails(cmd: &mut Command, fragments: &[&str]) {
-    let out = cmd.output().unwrap();
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(out.stdout.is_empty(), "nothing on stdout");
-    assert_eq!(err.lines().count(), 1, "one line: {err}");
-    for f in fragments {
-        assert!(err.contains(f), "expected `{f}` in: {err}");
-    }
 }
 
 fn eval(patch: &Path) -> Command {

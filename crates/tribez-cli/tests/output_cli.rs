@@ -5,34 +5,13 @@
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 
-use assert_cmd::Command;
 use assert_cmd::cargo::CommandCargoExt;
 
-fn tribez() -> Command {
-    Command::cargo_bin("tribez").expect("binary built")
-}
-
-fn fixtures() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures")
-}
+mod common;
+use common::{fixtures, listing, one_line, tribez};
 
 fn finn() -> PathBuf {
     fixtures().join("finn_day30.toml")
-}
-
-fn listing(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
-}
-
-fn one_line(stderr: &[u8]) -> String {
-    let text = String::from_utf8_lossy(stderr).into_owned();
-    assert_eq!(text.lines().count(), 1, "one line expected: {text:?}");
-    text
 }
 
 #[test]

@@ -11,12 +11,12 @@ use std::path::{Path, PathBuf};
 use assert_cmd::Command;
 use resvg::tiny_skia::Pixmap;
 
-fn tribez() -> Command {
-    Command::cargo_bin("tribez").expect("binary built")
-}
+mod common;
+use common::{fails, fixtures, listing, tribez};
 
-fn fixtures() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures")
+/// Exit status 2, nothing on standard output, one line on standard error: that line.
+fn fails_exit_2(cmd: &mut Command) -> String {
+    fails(cmd, &[])
 }
 
 /// The control net's colour (`picture::patch::NET`).
@@ -551,23 +551,6 @@ fn certify_draws_one_map_per_run_with_the_reports_largest_error() {
     assert!(page.contains("tribez certify "), "the command to reproduce");
 }
 
-fn one_line_exit_2(cmd: &mut Command) -> String {
-    let out = cmd.assert().code(2).get_output().clone();
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(out.stdout.is_empty());
-    err
-}
-
-fn listing(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
-}
-
 #[test]
 fn bad_plot_arguments_are_one_line_and_exit_2_leaving_no_file() {
     let dir = tempfile::tempdir().unwrap();
@@ -584,7 +567,7 @@ fn bad_plot_arguments_are_one_line_and_exit_2_leaving_no_file() {
         (&["-o", "p.svg", "--labels", "some"], "some"),
     ];
     for (args, want) in cases {
-        let err = one_line_exit_2(
+        let err = fails_exit_2(
             tribez()
                 .current_dir(dir.path())
                 .arg("plot")
@@ -595,7 +578,7 @@ fn bad_plot_arguments_are_one_line_and_exit_2_leaving_no_file() {
     }
     // a tetrahedron, and points in R^4, cannot be drawn
     let tetra = fixtures().join("beyond/tetra_quadratic.toml");
-    let err = one_line_exit_2(
+    let err = fails_exit_2(
         tribez()
             .current_dir(dir.path())
             .arg("plot")
@@ -609,7 +592,7 @@ fn bad_plot_arguments_are_one_line_and_exit_2_leaving_no_file() {
         "degree = 1\n[control_points]\n\"1,0,0\" = [\"0\",\"0\",\"0\",\"0\"]\n\"0,1,0\" = [\"1\",\"0\",\"0\",\"0\"]\n\"0,0,1\" = [\"0\",\"1\",\"0\",\"1\"]\n",
     )
     .unwrap();
-    let err = one_line_exit_2(
+    let err = fails_exit_2(
         tribez()
             .current_dir(dir.path())
             .arg("plot")
@@ -668,10 +651,10 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
             "not a file name",
         ),
     ] {
-        let err = one_line_exit_2(&mut batch(extra));
+        let err = fails_exit_2(&mut batch(extra));
         assert!(err.contains(want), "{extra:?}: {err}");
     }
-    let err = one_line_exit_2(
+    let err = fails_exit_2(
         tribez()
             .current_dir(dir.path())
             .arg("check")
@@ -682,7 +665,7 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
         err.contains("--plot draws the error map of a batch"),
         "{err}"
     );
-    let err = one_line_exit_2(
+    let err = fails_exit_2(
         tribez()
             .current_dir(dir.path())
             .arg("certify")
@@ -690,7 +673,7 @@ fn bad_plot_and_html_options_of_check_and_certify_are_exit_2_and_write_nothing()
             .args(["--random", "10", "--plot", "m.svg"]),
     );
     assert!(err.contains("triangles and polygons"), "{err}");
-    let err = one_line_exit_2(
+    let err = fails_exit_2(
         tribez()
             .current_dir(dir.path())
             .arg("certify")

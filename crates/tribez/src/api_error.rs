@@ -5,11 +5,12 @@
 
 use num_rational::BigRational;
 
-use crate::certify::measures::{Tolerance, ToleranceNeeds};
+use crate::certify::measures::ToleranceNeeds;
 use crate::error::CoreError;
-use crate::exact::Algorithm;
 use crate::float::Precision;
 use crate::io::InputError;
+pub use crate::judge_refusal::Lacks;
+use crate::judge_refusal::Refusal;
 
 /// Why a call of the library could not give an answer.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -25,6 +26,13 @@ pub enum Error {
     /// exceeded, a shape the operation does not take, a configuration it does not resolve.
     #[error(transparent)]
     Algebraic(#[from] crate::algebraic::AlgebraicError),
+    /// A mesh that is not valid, or a request it cannot answer (docs/theory.md §17).
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
+    /// A least-squares fit that has no answer: a data point outside the mesh, data that do not
+    /// determine every ordinate, a tolerance that does not apply (docs/theory.md §18).
+    #[error(transparent)]
+    Fit(#[from] crate::fit::FitError),
     /// Sizes that do not match.
     #[error("{what}: expected {expected}, found {found}")]
     Size {
@@ -85,54 +93,62 @@ pub enum Error {
     },
 }
 
-/// What a kind of patch cannot do ([`Error::Unsupported`]).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum Lacks {
-    /// It has no float program.
-    #[error("it has no float program")]
-    FloatProgram,
-    /// Its float program has no such algorithm.
-    #[error(
-        "its float program has no algorithm `{algorithm}`: it is {path} (algorithm `{}`) only",
-        names(has)
-    )]
-    Algorithm {
-        /// The algorithm asked for.
-        algorithm: Algorithm,
-        /// The algorithms it has.
-        has: &'static [Algorithm],
-        /// The name of its float path (`"homogeneous de Casteljau"`).
-        path: &'static str,
-    },
-    /// Certification of this kind runs de Casteljau only (`kind` is then the plural).
-    #[error("certified with de Casteljau only, not with {algorithm}")]
-    CertifyAlgorithm {
-        /// The algorithm's name in reports.
-        algorithm: &'static str,
-    },
-    /// Nothing to certify (`kind` is then the plural).
-    #[error("have no float program to certify")]
-    FloatProgramToCertify,
-    /// Its float program has no proven error bound.
-    #[error("its float program has no error bound")]
-    ErrorBound,
-    /// `cond=K` means nothing for it: its float program adds an error the condition number
-    /// does not measure.
-    #[error(
-        "tolerance `{tolerance}` is not defined for {kinds} (their float program adds an error the condition number Σ|P_α|B_α does not measure): use `bound`, the proven bound of the whole float path"
-    )]
-    CondTolerance {
-        /// The tolerance.
-        tolerance: Tolerance,
-        /// The kind, plural (`"S-patches"`).
-        kinds: &'static str,
-    },
+impl From<Refusal> for Error {
+    fn from(r: Refusal) -> Self {
+        match r {
+            Refusal::Core(e) => Error::Core(e),
+            Refusal::Unsupported { kind, what } => Error::Unsupported { kind, what },
+            Refusal::NoBound { precision, reason } => Error::NoBound { precision, reason },
+            Refusal::Undefined {
+                kind,
+                input,
+                precision,
+            } => Error::Undefined {
+                kind,
+                input,
+                precision,
+            },
+            Refusal::NotFinite { what, value } => Error::NotFinite { what, value },
+            Refusal::Size {
+                what,
+                expected,
+                found,
+            } => Error::Size {
+                what,
+                expected,
+                found,
+            },
+        }
+    }
 }
 
-fn names(algorithms: &[Algorithm]) -> String {
-    algorithms
-        .iter()
-        .map(|a| a.name())
-        .collect::<Vec<_>>()
-        .join("`, `")
+impl Error {
+    /// The judge's refusal this error is, if it is one; else the error itself.
+    pub fn into_refusal(self) -> Result<Refusal, Error> {
+        Ok(match self {
+            Error::Core(e) => Refusal::Core(e),
+            Error::Unsupported { kind, what } => Refusal::Unsupported { kind, what },
+            Error::NoBound { precision, reason } => Refusal::NoBound { precision, reason },
+            Error::Undefined {
+                kind,
+                input,
+                precision,
+            } => Refusal::Undefined {
+                kind,
+                input,
+                precision,
+            },
+            Error::NotFinite { what, value } => Refusal::NotFinite { what, value },
+            Error::Size {
+                what,
+                expected,
+                found,
+            } => Refusal::Size {
+                what,
+                expected,
+                found,
+            },
+            other => return Err(other),
+        })
+    }
 }

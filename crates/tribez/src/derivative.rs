@@ -115,16 +115,14 @@ pub fn tangent_frame(
 ) -> Result<TangentFrame, CoreError> {
     let n = net.degree();
     if n == 0 {
-        return Err(CoreError::Invalid(
-            "a patch of degree 0 is constant: it has no tangent plane".into(),
-        ));
+        return Err(CoreError::ConstantPatch);
     }
     let m = net.m();
     if domain.m() != m {
-        return Err(CoreError::Mismatch(format!(
-            "the domain is a {}-simplex, the patch is over a {m}-simplex",
-            domain.m()
-        )));
+        return Err(CoreError::DomainOfPatch {
+            domain: domain.m(),
+            patch: m,
+        });
     }
     let args = vec![at; n - 1];
     let level = casteljau::partial_blossom(net, &args);

@@ -21,6 +21,7 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 
 use crate::error::CoreError;
+pub use crate::number::{format_points, format_tuple};
 
 /// A non-degenerate simplex with `m + 1` vertices in `ℚ^m`.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,9 +36,7 @@ impl Domain {
     pub fn new(vertices: Vec<Vec<BigRational>>) -> Result<Self, CoreError> {
         let m = vertices.len().saturating_sub(1);
         if m == 0 {
-            return Err(CoreError::Invalid(
-                "a domain needs at least two vertices".into(),
-            ));
+            return Err(CoreError::DomainTooSmall);
         }
         for (i, v) in vertices.iter().enumerate() {
             if v.len() != m {
@@ -181,17 +180,6 @@ pub fn determinant(mut a: Vec<Vec<BigRational>>) -> BigRational {
     det
 }
 
-/// `(1/2, 1/3, 1/6)`: a tuple of exact numbers as text, for messages and reports.
-pub fn format_tuple(xs: &[BigRational]) -> String {
-    format!(
-        "({})",
-        xs.iter()
-            .map(ToString::to_string)
-            .collect::<Vec<_>>()
-            .join(", ")
-    )
-}
-
 /// Check that barycentric coordinates have `m + 1` entries summing to one.
 pub fn check_barycentric(lambda: &[BigRational], m: usize, what: &str) -> Result<(), CoreError> {
     if lambda.len() != m + 1 {
@@ -228,23 +216,6 @@ pub fn check_direction(d: &[BigRational], m: usize, what: &str) -> Result<(), Co
         });
     }
     Ok(())
-}
-
-/// `(1, 2), (7, 3)` style text for messages.
-pub fn format_points(points: &[Vec<BigRational>]) -> String {
-    points
-        .iter()
-        .map(|p| {
-            format!(
-                "({})",
-                p.iter()
-                    .map(ToString::to_string)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 #[cfg(test)]

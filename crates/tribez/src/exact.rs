@@ -196,19 +196,20 @@ impl ExactEvaluator {
 
 /// `Σ_α s_α a^α` per coordinate, the integer Bernstein sum with the multinomials already folded
 /// into `s_α` (so `bernstein::basis` is called with unit coefficients avoided).
+/// `[1, x, x², …, xⁿ]`.
+pub(crate) fn powers(x: &BigInt, n: usize) -> Vec<BigInt> {
+    let mut v = Vec::with_capacity(n + 1);
+    v.push(BigInt::one());
+    for e in 1..=n {
+        let next = &v[e - 1] * x;
+        v.push(next);
+    }
+    v
+}
+
 fn monomial_sum(scaled: &ControlNet<BigInt>, a: &[BigInt]) -> Vec<BigInt> {
     let n = scaled.degree();
-    let pw: Vec<Vec<BigInt>> = a
-        .iter()
-        .map(|x| {
-            let mut v = vec![BigInt::one()];
-            for e in 1..=n {
-                let next = &v[e - 1] * x;
-                v.push(next);
-            }
-            v
-        })
-        .collect();
+    let pw: Vec<Vec<BigInt>> = a.iter().map(|x| powers(x, n)).collect();
     let monomials: Vec<BigInt> = scaled
         .simplex()
         .iter()

@@ -65,10 +65,9 @@ pub fn abscissae(domain: &Domain, n: usize) -> Vec<Vec<BigRational>> {
 /// `(ξ_α, b_α) ∈ ℚ^{m+1}` over the same domain.
 pub fn graph(patch: &BezierPatch) -> Result<BezierPatch, CoreError> {
     if patch.net.dim() != 1 {
-        return Err(CoreError::Invalid(format!(
-            "a functional patch has one ordinate per control point, this one has {} coordinates",
-            patch.net.dim()
-        )));
+        return Err(CoreError::NotFunctional {
+            dim: patch.net.dim(),
+        });
     }
     let domain = patch.domain_or_reference();
     let xi = abscissae(&domain, patch.net.degree());
@@ -100,9 +99,10 @@ pub fn ordinates(domain: &Domain, n: usize, f: &Polynomial) -> Result<Vec<BigRat
     }
     let deg = f.degree().unwrap_or(0) as usize;
     if deg > n {
-        return Err(CoreError::Invalid(format!(
-            "the function has degree {deg}, above the patch degree {n}"
-        )));
+        return Err(CoreError::FunctionDegree {
+            function: deg,
+            patch: n,
+        });
     }
     let nv = m + 1;
     // x_c = Σ_k λ_k a_k[c]

@@ -93,10 +93,7 @@ fn facet_word(m: usize) -> &'static str {
 pub fn shared_facet(da: &Domain, db: &Domain) -> Result<SharedFacet, CoreError> {
     let m = da.m();
     if db.m() != m {
-        return Err(CoreError::Mismatch(format!(
-            "the domains are a {m}-simplex and a {}-simplex",
-            db.m()
-        )));
+        return Err(CoreError::DomainDimensions { a: m, b: db.m() });
     }
     let mut a = Vec::new();
     let mut b = Vec::new();
@@ -106,22 +103,19 @@ pub fn shared_facet(da: &Domain, db: &Domain) -> Result<SharedFacet, CoreError> 
             b.push(j);
         }
     }
-    let word = facet_word(m);
-    let show = |d: &Domain| crate::domain::format_points(d.vertices());
     if a.len() == m + 1 {
-        return Err(CoreError::Invalid(format!(
-            "the two domains are the same simplex [{}]: they must share exactly one {word} (give each patch its own `domain`)",
-            show(da)
-        )));
+        return Err(CoreError::SameDomain {
+            vertices: da.vertices().to_vec(),
+            m,
+        });
     }
     if a.len() < m {
-        return Err(CoreError::Invalid(format!(
-            "the domains [{}] and [{}] share no {word} ({} common vertices, {} needed)",
-            show(da),
-            show(db),
-            a.len(),
-            m
-        )));
+        return Err(CoreError::NoSharedFacet {
+            a: da.vertices().to_vec(),
+            b: db.vertices().to_vec(),
+            m,
+            common: a.len(),
+        });
     }
     let a_opposite = (0..=m)
         .find(|k| !a.contains(k))
@@ -390,25 +384,22 @@ fn cross(a: &[Q], b: &[Q]) -> Vec<Q> {
 pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
     let (na, nb) = (&a.net, &b.net);
     if na.m() != nb.m() {
-        return Err(CoreError::Mismatch(format!(
-            "the patches are over a {}-simplex and a {}-simplex",
-            na.m(),
-            nb.m()
-        )));
+        return Err(CoreError::SimplexDimensions {
+            a: na.m(),
+            b: nb.m(),
+        });
     }
     if na.degree() != nb.degree() {
-        return Err(CoreError::Mismatch(format!(
-            "the patches have degrees {} and {}: a join needs equal degrees (elevate the lower one first)",
-            na.degree(),
-            nb.degree()
-        )));
+        return Err(CoreError::Degrees {
+            a: na.degree(),
+            b: nb.degree(),
+        });
     }
     if na.dim() != nb.dim() {
-        return Err(CoreError::Mismatch(format!(
-            "the control points have {} and {} coordinates",
-            na.dim(),
-            nb.dim()
-        )));
+        return Err(CoreError::PointDimensions {
+            a: na.dim(),
+            b: nb.dim(),
+        });
     }
     let (da, db) = (a.domain_or_reference(), b.domain_or_reference());
     let facet = shared_facet(&da, &db)?;
@@ -632,11 +623,7 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
     sorted.sort_unstable();
     sorted.dedup();
     if facet.len() != m || sorted.len() != m || sorted.iter().any(|&k| k > m) {
-        return Err(CoreError::Invalid(format!(
-            "the common {} needs {m} distinct vertices of A, numbered 1 to {}",
-            facet_word(m),
-            m + 1
-        )));
+        return Err(CoreError::FacetVertices { m });
     }
     let mut vertices: Vec<Vec<Q>> = facet.iter().map(|&k| da.vertices()[k].clone()).collect();
     vertices.push(new_vertex);
@@ -646,17 +633,12 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
         .expect("one vertex is off the facet");
     let mu = da.barycentric(&db.vertices()[m])?;
     if !mu[a_opposite].is_negative() {
-        return Err(CoreError::Invalid(format!(
-            "the new vertex ({}) lies on the same side of the common {} as A's vertex {} (μ = {}): the triangles would overlap",
-            db.vertices()[m]
-                .iter()
-                .map(ToString::to_string)
-                .collect::<Vec<_>>()
-                .join(", "),
-            facet_word(m),
-            a_opposite + 1,
-            crate::domain::format_tuple(&mu)
-        )));
+        return Err(CoreError::Overlap {
+            vertex: db.vertices()[m].clone(),
+            m,
+            opposite: a_opposite + 1,
+            mu,
+        });
     }
     let sf = SharedFacet {
         a: facet.to_vec(),

@@ -39,11 +39,12 @@
 use num_rational::BigRational;
 use serde::Serialize;
 
-use crate::api_error::{Error, Lacks};
+use crate::api_error::Error;
 use crate::capability::InputSpace;
 use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::exact::Algorithm;
 use crate::float::Precision;
+use crate::judge_refusal::{Lacks, Refusal};
 use crate::patch_type::{Patch, PatchKind};
 
 /// One claimed coordinate, judged.
@@ -175,7 +176,7 @@ pub fn judge_with(
     )
 }
 
-/// Which argument of a judgement an [`Error`] is about ([`exact_side`]), so that a caller
+/// Which argument of a judgement a [`Refusal`] is about ([`exact_side`]), so that a caller
 /// reading the arguments from a file can locate it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Part {
@@ -234,11 +235,11 @@ pub(crate) fn exact_side(
     tolerance: &Tolerance,
     precision: Precision,
     intended: Option<&[BigRational]>,
-) -> Result<Side, (Part, Error)> {
+) -> Result<Side, (Part, Refusal)> {
     let described = patch.as_any().described();
     let float = patch.float().ok_or((
         Part::Patch,
-        Error::Unsupported {
+        Refusal::Unsupported {
             kind: described,
             what: Lacks::FloatProgram,
         },
@@ -246,7 +247,7 @@ pub(crate) fn exact_side(
     if !float.float_algorithms().contains(&algorithm) {
         return Err((
             Part::Algorithm,
-            Error::Unsupported {
+            Refusal::Unsupported {
                 kind: described,
                 what: Lacks::Algorithm {
                     algorithm,
@@ -261,7 +262,7 @@ pub(crate) fn exact_side(
     if input.len() != width {
         return Err((
             Part::Input,
-            Error::Size {
+            Refusal::Size {
                 what: match shape.input {
                     InputSpace::Barycentric { .. } => "barycentric coordinates of the input",
                     InputSpace::Polygon { .. } => "Cartesian coordinates of the input",
@@ -274,7 +275,7 @@ pub(crate) fn exact_side(
     if let Some(i) = intended.filter(|i| i.len() != width) {
         return Err((
             Part::Input,
-            Error::Size {
+            Refusal::Size {
                 what: "coordinates of the intended input",
                 expected: width,
                 found: i.len(),
@@ -286,7 +287,7 @@ pub(crate) fn exact_side(
         .map(|&x| {
             crate::number::exact_f64(x).ok_or((
                 Part::Input,
-                Error::NotFinite {
+                Refusal::NotFinite {
                     what: "input",
                     value: x,
                 },
@@ -301,7 +302,7 @@ pub(crate) fn exact_side(
         .map_err(|e| (Part::Input, e.into()))?;
     let bounds = program.error_bound().ok_or((
         Part::Patch,
-        Error::Unsupported {
+        Refusal::Unsupported {
             kind: described,
             what: Lacks::ErrorBound,
         },
@@ -310,7 +311,7 @@ pub(crate) fn exact_side(
     if tolerance.is_cond() && !seen.cond_tolerance {
         return Err((
             Part::Tolerance,
-            Error::Unsupported {
+            Refusal::Unsupported {
                 kind: described,
                 what: Lacks::CondTolerance {
                     tolerance: tolerance.clone(),
@@ -322,7 +323,7 @@ pub(crate) fn exact_side(
     let exact = seen.exact.clone().ok_or_else(|| {
         (
             Part::Input,
-            Error::Undefined {
+            Refusal::Undefined {
                 kind: described,
                 input: seen.input.clone(),
                 precision,
@@ -332,7 +333,7 @@ pub(crate) fn exact_side(
     if *tolerance == Tolerance::Bound && seen.bound.is_none() {
         return Err((
             Part::Tolerance,
-            Error::NoBound {
+            Refusal::NoBound {
                 precision,
                 reason: bounds.no_bound_reason(),
             },
@@ -378,8 +379,8 @@ pub fn judge_algorithm(
             found: claimed.len(),
         });
     }
-    let side =
-        exact_side(patch, algorithm, input, tolerance, precision, intended).map_err(|(_, e)| e)?;
+    let side = exact_side(patch, algorithm, input, tolerance, precision, intended)
+        .map_err(|(_, e)| Error::from(e))?;
     let tolerance = &tolerance.for_patch(shape.simplex_dim, shape.degree);
     let mut coordinates = Vec::with_capacity(claimed.len());
     for (c, &y) in claimed.iter().enumerate() {

@@ -93,12 +93,15 @@ pub struct Patch {
 /// allocate is ever allocated or looped over.
 fn check_count(m: usize, n: usize, found: usize, what: &'static str) -> Result<(), Error> {
     if m == 0 {
-        return Err(CoreError::Invalid("the simplex dimension m must be at least 1".into()).into());
+        return Err(CoreError::SimplexDimZero.into());
     }
     let too_many = || {
-        Error::Core(CoreError::Invalid(format!(
-            "degree {n} over the {m}-simplex needs more {what} than the {found} given"
-        )))
+        Error::Core(CoreError::TooFew {
+            degree: n,
+            m,
+            what,
+            found,
+        })
     };
     // C(n + m, m) >= m + 1 when n >= 1
     if n >= 1 && m >= found {

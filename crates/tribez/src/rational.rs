@@ -15,8 +15,8 @@
 //!
 //! **Weights.** Positive weights keep the denominator `> 0` on the closed simplex. Zero and
 //! negative weights are accepted in files, but the denominator may then vanish: evaluating (or
-//! differentiating) where it is zero is an error ([`CoreError::Invalid`], exit status 2 on the
-//! command line) that names the point. A zero weight at a corner makes that corner a point at
+//! differentiating) where it is zero is an error ([`CoreError::RationalUndefined`], exit status 2
+//! on the command line) that names the point. A zero weight at a corner makes that corner a point at
 //! infinity, so the patch is undefined there.
 //!
 //! ```
@@ -33,7 +33,6 @@
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::patch::{BezierPatch, ControlNet};
@@ -51,10 +50,9 @@ pub struct RationalPatch {
 }
 
 fn undefined(lambda: &[BigRational]) -> CoreError {
-    CoreError::Invalid(format!(
-        "the rational patch is undefined at {}: its denominator Σ w_α B_α vanishes there (zero or negative weights)",
-        tuple(lambda)
-    ))
+    CoreError::RationalUndefined {
+        at: lambda.to_vec(),
+    }
 }
 
 impl RationalPatch {
@@ -100,14 +98,9 @@ impl RationalPatch {
         for (alpha, p) in net.entries() {
             let w = &p[d];
             if w.is_zero() {
-                return Err(CoreError::Invalid(format!(
-                    "control point {} has weight 0 (a point at infinity); tribez needs non-zero weights here",
-                    alpha
-                        .iter()
-                        .map(ToString::to_string)
-                        .collect::<Vec<_>>()
-                        .join(",")
-                )));
+                return Err(CoreError::ZeroWeight {
+                    index: alpha.to_vec(),
+                });
             }
             points.push(p[..d].iter().map(|x| x / w).collect::<Vec<_>>());
             weights.push(w.clone());
@@ -183,9 +176,10 @@ impl RationalPatch {
         const MAX_ORDER: usize = 12;
         let r = directions.len();
         if r > MAX_ORDER {
-            return Err(CoreError::Invalid(format!(
-                "a derivative of order {r} of a rational patch: at most {MAX_ORDER} directions (the work grows as 3^order)"
-            )));
+            return Err(CoreError::RationalOrder {
+                order: r,
+                limit: MAX_ORDER,
+            });
         }
         let h = self.homogeneous();
         let n = h.degree();
@@ -260,11 +254,11 @@ impl RationalPatch {
         for (k, c) in hf.intermediate.iter().enumerate() {
             let (wk, xk) = c.split_last().expect("d + 1 coordinates");
             if wk.is_zero() {
-                return Err(CoreError::Invalid(format!(
-                    "the level-{} de Casteljau point {k} has weight 0 at {}: it is at infinity, so the tangent frame is not defined there",
-                    n - 1,
-                    crate::domain::format_tuple(lambda)
-                )));
+                return Err(CoreError::FrameAtInfinity {
+                    level: n - 1,
+                    point: k,
+                    at: lambda.to_vec(),
+                });
             }
             intermediate.push(xk.iter().map(|v| v / wk).collect::<Vec<_>>());
         }
@@ -392,10 +386,9 @@ impl RationalPatch {
         let h = crate::blossom::blossom(&self.homogeneous(), args)?;
         let (w, x) = h.split_last().expect("d + 1 >= 2 coordinates");
         if w.is_zero() {
-            let args = args.iter().map(|a| tuple(a)).collect::<Vec<_>>().join(", ");
-            return Err(CoreError::Invalid(format!(
-                "the rational blossom b[{args}] is undefined: the weight blossom W[{args}] (the blossom of the denominator Σ w_α B_α) is 0"
-            )));
+            return Err(CoreError::BlossomUndefined {
+                args: args.to_vec(),
+            });
         }
         Ok(x.iter().map(|c| c / w).collect())
     }

@@ -32,7 +32,6 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use crate::casteljau;
-use crate::domain::format_tuple as tuple;
 use crate::error::CoreError;
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Float;
@@ -70,19 +69,13 @@ pub fn doubled_omega<T: Scalar>(vertices: &[[T; 2]], p: &[T; 2]) -> Vec<T> {
         .collect()
 }
 
-fn point_text(p: &[BigRational]) -> String {
-    tuple(p)
-}
-
 impl Polygon {
     /// Check and store the polygon: at least 3 vertices in `ℚ²`, strictly convex,
     /// counter-clockwise (every vertex strictly left of every edge it is not on).
     pub fn new(vertices: Vec<Vec<BigRational>>) -> Result<Self, CoreError> {
         let n = vertices.len();
         if n < 3 {
-            return Err(CoreError::Invalid(format!(
-                "a polygon needs at least 3 vertices, found {n}"
-            )));
+            return Err(CoreError::PolygonTooSmall { found: n });
         }
         let mut vs = Vec::with_capacity(n);
         for (i, v) in vertices.into_iter().enumerate() {
@@ -118,19 +111,16 @@ impl Polygon {
             return Ok(Polygon { vertices: vs });
         }
         if right {
-            return Err(CoreError::Invalid(
-                "the polygon is clockwise: list its vertices counter-clockwise (tribez does not reverse them, since the control points are keyed by vertex order)".into(),
-            ));
+            return Err(CoreError::Clockwise);
         }
         let (k, i, on) = witness.expect("some vertex is not strictly left");
-        Err(CoreError::Invalid(format!(
-            "the polygon is not strictly convex (or is self-intersecting): vertex {} {} is {} the line through edge {}–{}",
-            k + 1,
-            point_text(&vs[k]),
-            if on { "on" } else { "right of" },
-            i + 1,
-            (i + 1) % n + 1
-        )))
+        Err(CoreError::NotConvex {
+            vertex: k + 1,
+            point: vs[k].to_vec(),
+            on,
+            edge: i + 1,
+            vertices: n,
+        })
     }
 
     /// Number of vertices `N`.
@@ -184,12 +174,11 @@ impl Polygon {
                 })?;
         let q = [x, y];
         if let Some(j) = self.areas(&q).iter().position(Signed::is_negative) {
-            return Err(CoreError::Invalid(format!(
-                "the point {} is outside the polygon (right of edge {}–{}); Wachspress coordinates are used on the closed polygon only",
-                point_text(p),
-                j + 1,
-                (j + 1) % self.len() + 1
-            )));
+            return Err(CoreError::OutsidePolygon {
+                point: p.to_vec(),
+                edge: j + 1,
+                vertices: self.len(),
+            });
         }
         Ok(q)
     }
@@ -258,12 +247,10 @@ impl SPatch {
     /// An S-patch; the net's simplex dimension must be `N − 1`.
     pub fn new(polygon: Polygon, net: ControlNet<BigRational>) -> Result<Self, CoreError> {
         if net.m() + 1 != polygon.len() {
-            return Err(CoreError::Mismatch(format!(
-                "the polygon has {} vertices, so control points need {} index parts, not {}",
-                polygon.len(),
-                polygon.len(),
-                net.m() + 1
-            )));
+            return Err(CoreError::IndexParts {
+                vertices: polygon.len(),
+                parts: net.m() + 1,
+            });
         }
         Ok(SPatch {
             name: None,

@@ -91,12 +91,7 @@ pub fn split_at_pieces<T: Scalar>(
 ) -> Result<Vec<Piece<T>>, CoreError> {
     let m = net.m();
     if let Some(s) = t.iter().position(num_traits::Zero::is_zero) {
-        return Err(CoreError::Invalid(format!(
-            "the split point lies on the face opposite corner {} (coordinate {} is 0), so piece {} would be degenerate; use `halve` or `subpatch` instead",
-            s + 1,
-            s + 1,
-            s + 1
-        )));
+        return Err(CoreError::SplitOnFace { corner: s + 1 });
     }
     Ok(split_at(net, t)
         .into_iter()
@@ -111,10 +106,11 @@ pub fn split_at_pieces<T: Scalar>(
 /// Check an edge `I, J` given with corners numbered from 1; returns the 0-based pair.
 pub fn check_edge(m: usize, i: usize, j: usize) -> Result<(usize, usize), CoreError> {
     if i == j || !(1..=m + 1).contains(&i) || !(1..=m + 1).contains(&j) {
-        return Err(CoreError::Invalid(format!(
-            "edge {i},{j}: an edge is two distinct corners numbered 1 to {}",
-            m + 1
-        )));
+        return Err(CoreError::BadEdge {
+            i,
+            j,
+            corners: m + 1,
+        });
     }
     Ok((i - 1, j - 1))
 }
@@ -157,10 +153,7 @@ pub fn halve<T: Field>(net: &ControlNet<T>, i: usize, j: usize) -> [Piece<T>; 2]
 /// `[m23, m13, m12]`.
 pub fn midpoint_split<T: Field>(net: &ControlNet<T>) -> Result<Vec<Piece<T>>, CoreError> {
     if net.m() != 2 {
-        return Err(CoreError::Invalid(format!(
-            "the four-way midpoint split is defined for triangles; this patch is over the {}-simplex (use `subdivide --at` or `halve`)",
-            net.m()
-        )));
+        return Err(CoreError::MidpointSplit { m: net.m() });
     }
     let (m12, m13, m23) = (
         midpoint::<T>(2, 0, 1),

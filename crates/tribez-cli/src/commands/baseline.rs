@@ -8,7 +8,7 @@
 use std::path::Path;
 
 use super::CliError;
-use tribez::hazmat::io::InputError;
+use tribez::hazmat::io::{InputError, Problem};
 
 pub use tribez::report::WorstError as Worst;
 
@@ -64,20 +64,24 @@ pub fn record(path: &Path, worst: &[Worst]) -> Result<(), CliError> {
 /// Compare against a baseline file: one line per (op, algorithm, precision) that got worse.
 pub fn compare(path: &Path, worst: &[Worst]) -> Result<Vec<String>, CliError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        InputError::file(
+            &file,
+            Problem::CannotRead {
+                reason: e.to_string(),
+            },
+        )
+    })?;
     let doc: serde_json::Value = serde_json::from_str(&text).map_err(|e| {
-        InputError::at(
-            file.clone(),
-            Some(e.line()),
-            Some(e.column()),
+        CliError::check(
+            format!("{file}:{}:{}", e.line(), e.column()),
             format!("not a baseline file: {e}"),
         )
     })?;
     let entries = doc
         .get("worst")
         .and_then(|w| w.as_array())
-        .ok_or_else(|| InputError::file(&file, "not a baseline file: no `worst` array"))?;
+        .ok_or_else(|| CliError::check(&file, "not a baseline file: no `worst` array"))?;
     let mut out = Vec::new();
     for (i, e) in entries.iter().enumerate() {
         let field = |k: &str| e.get(k).and_then(|v| v.as_str()).map(str::to_string);
@@ -87,11 +91,10 @@ pub fn compare(path: &Path, worst: &[Worst]) -> Result<Vec<String>, CliError> {
             field("precision"),
             e.get("ulps").and_then(|v| v.as_f64()),
         ) else {
-            return Err(InputError::file(
+            return Err(CliError::check(
                 &file,
                 format!("worst[{i}]: needs op, algorithm, precision (strings) and ulps (a number)"),
-            )
-            .into());
+            ));
         };
         if let Some(w) = worst
             .iter()

@@ -15,7 +15,7 @@ use tribez::hazmat::float::Precision;
 use tribez::hazmat::io::patch_file::read_patch;
 
 /// The batch options of `tribez check`'s arguments.
-fn options(args: &Args) -> Result<BatchOptions, CliError> {
+pub fn options(args: &Args) -> Result<BatchOptions, CliError> {
     let tolerance = match &args.tolerance {
         Some(t) => Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?,
         None => Tolerance::Exact,
@@ -58,7 +58,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let patch_path = args
         .patch
         .as_ref()
-        .expect("clap requires --patch with --results");
+        .ok_or_else(|| CliError::Usage("--results needs --patch PATCH or --mesh MESH".into()))?;
     let results = args.results.as_ref().expect("checked by the caller");
     let pictures = crate::picture::reports::Pictures {
         plot: args.plot.clone(),

@@ -21,8 +21,16 @@ pub struct Args {
     pub patch: Option<PathBuf>,
     /// Batch mode: CSV, JSON-lines or JSON-array-of-rows results (input coordinates, then the
     /// claimed coordinates).
-    #[arg(long, value_name = "FILE", requires = "patch")]
+    #[arg(long, value_name = "FILE")]
     pub results: Option<PathBuf>,
+    /// Batch mode on a mesh: the results are lookups `x, y, value` in this mesh file (each row judged in the triangle containing its point as seen).
+    #[arg(
+        long,
+        value_name = "MESH",
+        requires = "results",
+        conflicts_with = "patch"
+    )]
+    pub mesh: Option<PathBuf>,
     /// Batch mode: the tolerance every row is judged with (default `exact`): `exact`, `ulps=N`,
     /// `abs=E`, `rel=E`, `correctly_rounded`, `faithful`, `cond=K` (|y − q| ≤ K·ε·Σ|c|B(|λ|)),
     /// `cond` (K = (m+1)·n for this patch: de Casteljau's own constant, n = 3 on a triangle gives

@@ -10,7 +10,6 @@ use super::{CliError, check_barycentric, parse_list};
 use crate::report::{Render, to_json};
 use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::domain::Domain;
-use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::{
     MAX_CONTROL_POINTS, MAX_DEGREE, any_patch_to_json, any_patch_to_toml, patch_to_json,
     patch_to_toml,
@@ -44,12 +43,12 @@ pub fn parse_edge(text: &str, m: usize) -> Result<(usize, usize), CliError> {
         Some([i, j]) => {
             tribez::hazmat::subdivide::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e))
         }
-        _ => Err(CliError::core(
+        _ => Err(CliError::check(
             what,
-            CoreError::Invalid(format!(
+            format!(
                 "an edge is two corner numbers separated by a comma, like 1,2 (corners 1 to {})",
                 m + 1
-            )),
+            ),
         )),
     }
 }
@@ -57,20 +56,20 @@ pub fn parse_edge(text: &str, m: usize) -> Result<(usize, usize), CliError> {
 /// Check that a degree and simplex dimension give a net small enough to write as a patch file.
 pub fn check_size(m: usize, n: usize, what: &str) -> Result<(), CliError> {
     if n > MAX_DEGREE {
-        return Err(CliError::core(
+        return Err(CliError::check(
             what,
-            CoreError::Invalid(format!(
+            format!(
                 "the result would have degree {n}, above the patch-file limits (degree {MAX_DEGREE}, {MAX_CONTROL_POINTS} points)"
-            )),
+            ),
         ));
     }
     let total = simplex::binomial((n + m) as u64, m as u64);
     if total > MAX_CONTROL_POINTS as u128 {
-        return Err(CliError::core(
+        return Err(CliError::check(
             what,
-            CoreError::Invalid(format!(
+            format!(
                 "the result would have degree {n} and {total} control points, above the patch-file limits (degree {MAX_DEGREE}, {MAX_CONTROL_POINTS} points)"
-            )),
+            ),
         ));
     }
     Ok(())

@@ -145,9 +145,15 @@ struct Exact<'a>(&'a BigRational);
 
 impl Serialize for Exact<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut text = String::new();
-        push_rational(&mut text, self.0);
-        s.serialize_str(&text)
+        // one buffer per thread: the digits are written, then copied into the output
+        thread_local! {
+            static TEXT: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+        }
+        TEXT.with_borrow_mut(|text| {
+            text.clear();
+            push_rational(text, self.0);
+            s.serialize_str(text)
+        })
     }
 }
 
@@ -412,24 +418,46 @@ impl EvalReport {
     /// bytes as [`Render::json`] printed by the JSON exporter, written without building the tree,
     /// each point's part on any core.
     fn json_text(&self) -> String {
+        // a few chunks per core, so that the cores share the work evenly
+        let chunk = (self.results.len() / (8 * rayon::current_num_threads())).clamp(16, 4096);
+        self.json_text_in_chunks(chunk)
+    }
+
+    /// [`EvalReport::json_text`] with the points rendered `chunk` at a time: each chunk as the
+    /// `results` array of a one-key object, pretty-printed by serde (so its points sit at the
+    /// depth they have in the report), then cut out of it and joined.
+    fn json_text_in_chunks(&self, chunk: usize) -> String {
+        #[derive(Serialize)]
+        struct Results<'a> {
+            results: &'a [PointResult],
+        }
+        const OPEN: &[u8] = b"{\n  \"results\": [";
+        const CLOSE: &[u8] = b"\n  ]\n}";
+        let parts: Vec<Vec<u8>> = self
+            .results
+            .par_chunks(chunk.max(1))
+            .map(|results| {
+                let mut buf = Vec::with_capacity(256 * results.len());
+                serde_json::to_writer_pretty(&mut buf, &Results { results })
+                    .expect("a point result serialises");
+                debug_assert!(buf.starts_with(OPEN) && buf.ends_with(CLOSE));
+                buf.truncate(buf.len() - CLOSE.len());
+                buf.drain(..OPEN.len());
+                buf
+            })
+            .collect();
         let quoted = |s: &str| serde_json::to_string(s).expect("a string serialises");
-        let mut out = format!("{{\n  \"patch\": {}", quoted(&self.file));
+        let mut out = String::with_capacity(parts.iter().map(Vec::len).sum::<usize>() + 256);
+        out += &format!("{{\n  \"patch\": {}", quoted(&self.file));
         if let Some(kind) = self.kind {
             out += &format!(",\n  \"kind\": {}", quoted(kind));
         }
         out += ",\n  \"results\": [";
-        let parts: Vec<String> = self
-            .results
-            .par_iter()
-            .map(|r| {
-                // a point's object at depth 2: every line after its first indented by 4 spaces
-                let text = serde_json::to_string_pretty(r).expect("a point result serialises");
-                text.replace('\n', "\n    ")
-            })
-            .collect();
         for (i, part) in parts.iter().enumerate() {
-            out += if i == 0 { "\n    " } else { ",\n    " };
-            out += part;
+            if i > 0 {
+                out.push(',');
+            }
+            out += std::str::from_utf8(part).expect("serde_json writes UTF-8");
         }
         out += if parts.is_empty() { "]" } else { "\n  ]" };
         out += "\n}\n";
@@ -564,12 +592,12 @@ mod tests {
         ];
         for a in &cases {
             let report = evaluate(a).unwrap();
-            assert_eq!(
-                Some(report.json_text()),
-                render(&report, crate::report::Format::Json),
-                "{}",
-                a.patch.display()
-            );
+            let generic = render(&report, crate::report::Format::Json);
+            assert_eq!(Some(report.json_text()), generic, "{}", a.patch.display());
+            for chunk in 1..=3 {
+                let text = report.json_text_in_chunks(chunk);
+                assert_eq!(Some(text), generic, "{} by {chunk}", a.patch.display());
+            }
             let text = run(&Args {
                 out: OutputArgs {
                     format: TextOrJson::Text,

@@ -10,7 +10,6 @@ use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
 use crate::report::{Render, to_json};
 use tribez::hazmat::blossom::subpatch_matrix;
-use tribez::hazmat::error::CoreError;
 use tribez::hazmat::simplex::{self, Simplex};
 use tribez::hazmat::subdivide::halve_domains;
 
@@ -107,13 +106,13 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         simplex::binomial((n + m) as u64, m as u64)
     };
     if len > MAX_ROWS as u128 {
-        return Err(CliError::core(
+        return Err(CliError::check(
             format!("--degree {n}"),
-            CoreError::Invalid(if len == u128::MAX {
+            if len == u128::MAX {
                 format!("the matrix would have more than {MAX_ROWS} rows, the limit")
             } else {
                 format!("the matrix would have {len} rows, above the limit of {MAX_ROWS}")
-            }),
+            },
         ));
     }
     let context = args

@@ -11,7 +11,6 @@ use super::check::judge_paths;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::claims::ClaimsOptions;
-use tribez::hazmat::io::InputError;
 
 mod embedded {
     include!(concat!(env!("OUT_DIR"), "/fixtures.rs"));
@@ -41,7 +40,7 @@ fn unpack(dir: &Path) -> Result<PathBuf, CliError> {
             .map_or(Ok(()), std::fs::create_dir_all)
             .and_then(|()| std::fs::write(&path, bytes));
         written.map_err(|e| {
-            InputError::file(
+            CliError::check(
                 path.display().to_string(),
                 format!("cannot unpack the built-in fixtures: {e}"),
             )
@@ -71,7 +70,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 ));
             }
             let tmp = tempfile::tempdir().map_err(|e| {
-                InputError::file(
+                CliError::check(
                     std::env::temp_dir().display().to_string(),
                     format!("cannot unpack the built-in fixtures: {e}"),
                 )

@@ -17,7 +17,6 @@ use super::construct::{
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
-use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::hazmat::subdivide::{Piece, midpoint_split, replaced, split_at, split_at_pieces};
 
@@ -105,11 +104,11 @@ fn split_at_point(
     }
     if zero.len() + 1 >= t.len() {
         let corner = (0..t.len()).find(|k| !zero.contains(k)).unwrap_or(0) + 1;
-        return Err(CliError::core(
+        return Err(CliError::check(
             what(),
-            CoreError::Invalid(format!(
+            format!(
                 "the point is corner {corner} of the domain: every piece but one would be degenerate and that one is the patch itself"
-            )),
+            ),
         ));
     }
     let m = net.m();

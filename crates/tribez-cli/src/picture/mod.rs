@@ -17,7 +17,6 @@ pub mod svg;
 use std::path::Path;
 
 use crate::error::CliError;
-use tribez::hazmat::io::InputError;
 
 /// The file formats of pictures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,14 +37,13 @@ pub fn format_of(path: &Path, flag: &str) -> Result<PictureFormat, CliError> {
     match ext.as_deref() {
         Some("svg") => Ok(PictureFormat::Svg),
         Some("png") => Ok(PictureFormat::Png),
-        other => Err(InputError::file(
+        other => Err(CliError::check(
             path.display().to_string(),
             format!(
                 "{flag}: unknown picture format {} (give a file name ending in .svg or .png)",
                 other.map_or("(no extension)".to_string(), |e| format!("`.{e}`"))
             ),
-        )
-        .into()),
+        )),
     }
 }
 
@@ -57,11 +55,10 @@ pub fn check_html_name(path: &Path) -> Result<(), CliError> {
         .map(str::to_ascii_lowercase);
     match ext.as_deref() {
         Some("html" | "htm") => Ok(()),
-        _ => Err(InputError::file(
+        _ => Err(CliError::check(
             path.display().to_string(),
             "--html: give a file name ending in .html (one self-contained HTML file)",
-        )
-        .into()),
+        )),
     }
 }
 
@@ -95,7 +92,7 @@ pub fn stage(path: &Path, svg: &str, flag: &str) -> Result<(), CliError> {
         PictureFormat::Svg => svg.as_bytes().to_vec(),
         PictureFormat::Png => rasterise(svg, 2.0, true)
             .and_then(|p| p.encode_png().map_err(|e| e.to_string()))
-            .map_err(|e| InputError::file(&file, format!("cannot draw the picture: {e}")))?,
+            .map_err(|e| CliError::check(&file, format!("cannot draw the picture: {e}")))?,
     };
     crate::output::stage(path, &bytes)
 }

@@ -30,6 +30,7 @@ mod histogram;
 mod judge;
 mod parse;
 mod report;
+pub(crate) mod routed;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 pub use parse::Format;
@@ -39,7 +40,7 @@ pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 use crate::certify::measures::Tolerance;
 use crate::exact::Algorithm;
 use crate::float::Precision;
-use crate::io::InputError;
+use crate::io::{InputError, RowsProblem};
 use crate::patch::BezierPatch as Patch;
 use judge::{Prepared, RowOutcome, RowScratch};
 use parse::{Chunk, Num, RowReader, parse_row, texts_of};
@@ -120,6 +121,9 @@ pub enum BatchError {
         /// The other's.
         other: String,
     },
+    /// A mesh that is not valid (`check --mesh`): its first problem.
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
     /// A control point is outside the precision's range.
     #[error("a control point of the patch overflows {}", precision.name())]
     ControlPointOverflows {
@@ -158,7 +162,7 @@ impl BatchChecker {
         let file = path.display().to_string();
         let format = Format::of(path, &file)?;
         let reader = std::fs::File::open(path)
-            .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+            .map_err(|e| InputError::file(&file, parse::cannot_read(&e)))?;
         self.check_reader(reader, format, &file, patch_name, progress)
     }
 
@@ -174,7 +178,7 @@ impl BatchChecker {
         let file = path.display().to_string();
         let format = Format::of(path, &file)?;
         let reader = std::fs::File::open(path)
-            .map_err(|e| InputError::file(&file, format!("cannot read: {e}")))?;
+            .map_err(|e| InputError::file(&file, parse::cannot_read(&e)))?;
         check_reader(
             &self.prepared,
             reader,
@@ -271,7 +275,7 @@ fn check_reader<R: Read + Send>(
         eof = next_eof;
     }
     if acc.report.checked == 0 {
-        return Err(InputError::file(file, "no result rows").into());
+        return Err(InputError::file(file, RowsProblem::NoResultRows).into());
     }
     Ok(acc.finish())
 }
@@ -655,7 +659,7 @@ impl BatchChecker {
             });
         }
         if n == 0 {
-            return Err(InputError::file(file, "no result rows").into());
+            return Err(InputError::file(file, RowsProblem::NoResultRows).into());
         }
         let mut acc = Accumulator::new(p, file, patch_name, None);
         let mut verdicts = Vec::with_capacity(n);

@@ -26,7 +26,7 @@ use crate::io::text::{BOM, not_utf8, plain_io_error};
 pub const MAX_ROW_BYTES: usize = 16 << 20;
 use crate::certify::measures::as_float;
 use crate::float::Precision;
-use crate::io::{InputError, Problem};
+use crate::io::{InputError, Problem, RowsProblem};
 use crate::number::parse_rational;
 
 /// One field of a row: its text and its 1-based column.
@@ -63,13 +63,13 @@ pub(super) fn parse_num(
             format!("`{t}`")
         }));
     }
-    let bad = |msg: String| InputError {
-        file: file.into(),
-        line: Some(line),
-        column: Some(f.column),
-        key: None,
-        problem: Box::new(msg.into()),
-        named_at: None,
+    let bad = |e| {
+        InputError::at(
+            file,
+            Some(line),
+            Some(f.column),
+            RowsProblem::MalformedNumber(e),
+        )
     };
     match precision {
         Some(p) => {
@@ -89,7 +89,7 @@ pub(super) fn parse_num(
                 // (`1e400` and `1e999999` alike): a failed row, never an aborted run
                 return Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name())));
             }
-            let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
+            let q = parse_rational(t).map_err(bad)?;
             match as_float(&q, p) {
                 Some(x) => Ok(Num::Value {
                     float: crate::number::round_f64(&x),
@@ -99,7 +99,7 @@ pub(super) fn parse_num(
             }
         }
         None => {
-            let q = parse_rational(t).map_err(|e| bad(format!("malformed number: {e}")))?;
+            let q = parse_rational(t).map_err(bad)?;
             Ok(Num::Value {
                 float: crate::number::round_f64(&q),
                 text_exact: Some(q),
@@ -166,15 +166,14 @@ impl Format {
         if !matches!(ext.as_str(), "jsonl" | "ndjson" | "json") {
             return Ok(Format::Csv);
         }
-        let f = std::fs::File::open(path)
-            .map_err(|e| InputError::file(file, format!("cannot read: {e}")))?;
+        let f = std::fs::File::open(path).map_err(|e| InputError::file(file, cannot_read(&e)))?;
         let mut reader = std::io::BufReader::new(f);
         let mut first = None;
         let mut offset = 0usize;
         loop {
             let buf = reader
                 .fill_buf()
-                .map_err(|e| InputError::file(file, format!("cannot read: {e}")))?;
+                .map_err(|e| InputError::file(file, cannot_read(&e)))?;
             if buf.is_empty() {
                 return Ok(Format::JsonLines);
             }
@@ -314,7 +313,10 @@ impl<R: BufRead> RowReader<R> {
             let buf = self.reader.fill_buf().map_err(|e| {
                 InputError::file(
                     &self.file,
-                    format!("cannot read line {}: {}", self.line, plain_io_error(&e)),
+                    RowsProblem::CannotReadLine {
+                        line: self.line,
+                        reason: plain_io_error(&e),
+                    },
                 )
             })?;
             if buf.is_empty() {
@@ -325,20 +327,14 @@ impl<R: BufRead> RowReader<R> {
                 None => (buf.len(), false),
             };
             if self.bytes.len() + take > MAX_ROW_BYTES {
-                return Err(InputError {
-                    file: self.file.clone(),
-                    line: Some(self.line),
-                    column: None,
-                    key: None,
-                    problem: Box::new(
-                        format!(
-                            "the line is longer than the limit of {} MiB",
-                            MAX_ROW_BYTES >> 20
-                        )
-                        .into(),
-                    ),
-                    named_at: None,
-                });
+                return Err(InputError::at(
+                    &self.file,
+                    Some(self.line),
+                    None,
+                    RowsProblem::LineTooLong {
+                        limit_mib: MAX_ROW_BYTES >> 20,
+                    },
+                ));
             }
             self.bytes.extend_from_slice(&buf[..take]);
             self.reader.consume(take);
@@ -416,7 +412,7 @@ impl<R: BufRead> RowReader<R> {
             let buf = self
                 .reader
                 .fill_buf()
-                .map_err(|e| InputError::file(&self.file, format!("cannot read: {e}")))?;
+                .map_err(|e| InputError::file(&self.file, cannot_read(&e)))?;
             if buf.is_empty() {
                 return match (depth, self.between) {
                     (0, Between::Done) => Ok(true),
@@ -424,19 +420,19 @@ impl<R: BufRead> RowReader<R> {
                         &self.file,
                         self.line,
                         self.col,
-                        format!(
-                            "invalid JSON: unexpected end of file: the array opened at line {}, column {} is never closed",
-                            self.open.0, self.open.1
-                        ),
+                        RowsProblem::ArrayNotClosed {
+                            line: self.open.0,
+                            column: self.open.1,
+                        },
                     )),
                     _ => Err(located(
                         &self.file,
                         self.line,
                         self.col,
-                        format!(
-                            "invalid JSON: unexpected end of file: the row opened at line {}, column {} is never closed",
-                            row_at.0, row_at.1
-                        ),
+                        RowsProblem::RowNotClosed {
+                            line: row_at.0,
+                            column: row_at.1,
+                        },
                     )),
                 };
             }
@@ -456,10 +452,9 @@ impl<R: BufRead> RowReader<R> {
                             &self.file,
                             row_at.0,
                             row_at.1,
-                            format!(
-                                "the row is longer than the limit of {} MiB",
-                                MAX_ROW_BYTES >> 20
-                            ),
+                            RowsProblem::RowTooLong {
+                                limit_mib: MAX_ROW_BYTES >> 20,
+                            },
                         ));
                     }
                     self.row.push(b);
@@ -476,22 +471,12 @@ impl<R: BufRead> RowReader<R> {
                     match b {
                         b'"' => in_string = true,
                         b'[' | b'{' => {
-                            return Err(located(
-                                &self.file,
-                                line,
-                                col,
-                                "a row's entries must be numbers, strings or null".into(),
-                            ));
+                            return Err(located(&self.file, line, col, RowsProblem::RowEntries));
                         }
                         b']' => {
                             depth = 0;
                             let text = std::str::from_utf8(&self.row).map_err(|_| {
-                                located(
-                                    &self.file,
-                                    row_at.0,
-                                    row_at.1,
-                                    "the row is not UTF-8 text".into(),
-                                )
+                                located(&self.file, row_at.0, row_at.1, RowsProblem::RowNotUtf8)
                             })?;
                             chunk.starts.push(chunk.text.len());
                             chunk.text.push_str(text);
@@ -536,10 +521,9 @@ impl<R: BufRead> RowReader<R> {
                             &self.file,
                             line,
                             col,
-                            format!(
-                                "invalid JSON: expected a row (an array `[…]`), found `{}`",
-                                char::from(b).escape_default()
-                            ),
+                            RowsProblem::ExpectedRow {
+                                found: char::from(b),
+                            },
                         ));
                     }
                     (Between::CommaOrEnd, _) => {
@@ -547,27 +531,16 @@ impl<R: BufRead> RowReader<R> {
                             &self.file,
                             line,
                             col,
-                            format!(
-                                "invalid JSON: expected ',' or ']' after a row, found `{}`",
-                                char::from(b).escape_default()
-                            ),
+                            RowsProblem::ExpectedCommaOrEnd {
+                                found: char::from(b),
+                            },
                         ));
                     }
                     (Between::Done, _) => {
-                        return Err(located(
-                            &self.file,
-                            line,
-                            col,
-                            "invalid JSON: unexpected text after the array of rows".into(),
-                        ));
+                        return Err(located(&self.file, line, col, RowsProblem::TextAfterRows));
                     }
                     (Between::Start, _) => {
-                        return Err(located(
-                            &self.file,
-                            line,
-                            col,
-                            "expected a JSON array `[…]`".into(),
-                        ));
+                        return Err(located(&self.file, line, col, RowsProblem::ExpectedArray));
                     }
                 }
             }
@@ -576,14 +549,14 @@ impl<R: BufRead> RowReader<R> {
     }
 }
 
-fn located(file: &str, line: usize, col: usize, message: String) -> InputError {
-    InputError {
-        file: file.into(),
-        line: Some(line),
-        column: Some(col),
-        key: None,
-        problem: Box::new(message.into()),
-        named_at: None,
+fn located(file: &str, line: usize, col: usize, problem: RowsProblem) -> InputError {
+    InputError::at(file, Some(line), Some(col), problem)
+}
+
+/// The operating system's reason a file cannot be read.
+pub(super) fn cannot_read(e: &std::io::Error) -> Problem {
+    Problem::CannotRead {
+        reason: e.to_string(),
     }
 }
 
@@ -597,14 +570,7 @@ pub(super) fn split_json_row<'a>(
     col: usize,
     file: &str,
 ) -> Result<Vec<(usize, Field<'a>)>, InputError> {
-    let bad = |l: usize, c: usize, message: String| InputError {
-        file: file.into(),
-        line: Some(l),
-        column: Some(c),
-        key: None,
-        problem: Box::new(message.into()),
-        named_at: None,
-    };
+    let bad = |l: usize, c: usize, problem: RowsProblem| located(file, l, c, problem);
     if let Err(e) = serde_json::from_str::<serde::de::IgnoredAny>(text.trim_end()) {
         // serde's position is within the row: 1-based line, column (of the row text)
         let (l, c) = if e.line() <= 1 {
@@ -614,7 +580,13 @@ pub(super) fn split_json_row<'a>(
         };
         let msg = e.to_string();
         let msg = msg.split(" at line ").next().unwrap_or(&msg);
-        return Err(bad(l, c, format!("invalid JSON: {msg}")));
+        return Err(bad(
+            l,
+            c,
+            RowsProblem::RowJson {
+                message: msg.to_string(),
+            },
+        ));
     }
     let bytes = text.as_bytes();
     let (mut l, mut c) = (line, col);
@@ -628,12 +600,12 @@ pub(super) fn split_json_row<'a>(
             c += 1;
         }
         if !is_json_space(bytes[i]) {
-            return Err(bad(l, c - 1, "expected a JSON array `[…]`".into()));
+            return Err(bad(l, c - 1, RowsProblem::ExpectedArray));
         }
         i += 1;
     }
     if i == bytes.len() {
-        return Err(bad(line, col, "expected a JSON array `[…]`".into()));
+        return Err(bad(line, col, RowsProblem::ExpectedArray));
     }
     i += 1;
     c += 1;
@@ -666,11 +638,7 @@ pub(super) fn split_json_row<'a>(
             }
         } else if !is_json_space(b) && field.is_none() {
             if matches!(b, b'[' | b'{' | b't' | b'f') {
-                return Err(bad(
-                    l,
-                    c,
-                    "a row's entries must be numbers, strings or null".into(),
-                ));
+                return Err(bad(l, c, RowsProblem::RowEntries));
             }
             field = Some((i, l, c));
             in_string = b == b'"';
@@ -684,7 +652,7 @@ pub(super) fn split_json_row<'a>(
         }
         i += 1;
     }
-    Err(bad(l, c, "expected a JSON array `[…]`".into()))
+    Err(bad(l, c, RowsProblem::ExpectedArray))
 }
 
 /// Read one row into numbers; `None` for blank and comment lines. `line` and `col` locate the
@@ -710,21 +678,16 @@ pub(super) fn parse_row(
         Format::Csv => split_csv(row).into_iter().map(|f| (line, f)).collect(),
     };
     if fields.len() != width + dim {
-        return Err(InputError {
-            file: file.into(),
-            line: Some(line),
-            column: (format == Format::JsonArray).then_some(col),
-            key: None,
-            problem: Box::new(
-            format!(
-                "{} columns, expected {} ({width} input coordinates, then the {dim} claimed coordinates of the point)",
-                fields.len(),
-                width + dim
-            )
-            .into(),
-            ),
-            named_at: None,
-        });
+        return Err(InputError::at(
+            file,
+            Some(line),
+            (format == Format::JsonArray).then_some(col),
+            RowsProblem::ColumnCount {
+                found: fields.len(),
+                width,
+                dim,
+            },
+        ));
     }
     let nums = fields
         .iter()

@@ -52,10 +52,10 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
     pub fn new(r: &RationalPatch) -> Result<Self, CoreError> {
         let net: ControlNet<F> = r.homogeneous().map(F::round);
         if net.coords().iter().any(|x| !x.finite()) {
-            return Err(CoreError::Invalid(format!(
-                "a weighted control point w·c or a weight overflows {}",
-                F::PRECISION.name()
-            )));
+            return Err(CoreError::Overflows {
+                what: "a weighted control point w·c or a weight",
+                precision: F::PRECISION.name(),
+            });
         }
         let exact_net = net.map(|x| x.exact().unwrap_or_default());
         Ok(RationalCertifier {
@@ -224,9 +224,10 @@ impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
         if net.coords().iter().any(|x| !x.finite())
             || vertices.iter().flatten().any(|x| !x.finite())
         {
-            return Err(CoreError::Invalid(format!(
-                "a vertex or control point overflows {p}"
-            )));
+            return Err(CoreError::Overflows {
+                what: "a vertex or control point",
+                precision: p,
+            });
         }
         let polygon = Polygon::new(
             vertices
@@ -234,7 +235,11 @@ impl<F: Float + Div<Output = F>> SPatchCertifier<F> {
                 .map(|v| v.iter().map(|x| x.exact().unwrap_or_default()).collect())
                 .collect(),
         )
-        .map_err(|e| CoreError::Invalid(format!("the polygon rounded to {p}: {e}")))?;
+        .map_err(|e| CoreError::Rounded {
+            what: "the polygon",
+            precision: p,
+            error: Box::new(e),
+        })?;
         let exact_net = net.map(|x| x.exact().unwrap_or_default());
         Ok(SPatchCertifier {
             exact: ExactEvaluator::new(&exact_net),

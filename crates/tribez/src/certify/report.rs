@@ -25,7 +25,7 @@ use crate::domain::format_tuple;
 use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
-use crate::io::InputError;
+use crate::io::{InputError, Problem, RowsProblem};
 use crate::number::{exact_f64, round_f32, round_f64};
 use crate::patch_type::Patch;
 use crate::report::WorstError;
@@ -333,12 +333,11 @@ fn certify_row(
     (m, n): (usize, usize),
 ) -> Result<CertifyRow, Error> {
     let precision = program.precision();
-    let bound = program.error_bound().ok_or_else(|| {
-        CoreError::Invalid(format!(
-            "{}: the float program has no proven bound",
-            precision.name()
-        ))
-    })?;
+    let bound = program
+        .error_bound()
+        .ok_or_else(|| CoreError::NoProvenBound {
+            precision: precision.name(),
+        })?;
     let text = bound.text(algorithm);
     let coordinate = text.coordinates.as_ref().map_or("", |c| c.one);
     let accs: Vec<Acc> = points
@@ -405,17 +404,21 @@ fn points_of(patch: &Patch, options: &CertifyOptions) -> Result<Vec<Vec<BigRatio
                 if p.len() != input.len() {
                     return Err(InputError::file(
                         source,
-                        format!(
-                            "point {}: has {} coordinates, expected {}",
-                            i + 1,
-                            p.len(),
-                            input.len()
-                        ),
+                        RowsProblem::PointLength {
+                            index: i + 1,
+                            found: p.len(),
+                            expected: input.len(),
+                        },
                     )
                     .into());
                 }
-                if let Err(e) = exact.coordinates(p) {
-                    return Err(InputError::file(source, format!("point {}: {e}", i + 1)).into());
+                if let Err(error) = exact.coordinates(p) {
+                    let item = Problem::Item {
+                        what: "point",
+                        index: i + 1,
+                        error,
+                    };
+                    return Err(InputError::file(source, item).into());
                 }
             }
             points.clone()
@@ -486,9 +489,10 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
     let mut rows = Vec::new();
     let mut note = "";
     for &p in &precisions {
-        let program = float
-            .float_program(p)
-            .map_err(|e| CoreError::Invalid(format!("{}: {e}", p.name())))?;
+        let program = float.float_program(p).map_err(|e| CoreError::InPrecision {
+            precision: p.name(),
+            error: Box::new(e),
+        })?;
         for &a in &algorithms {
             if let Some(b) = program.error_bound() {
                 note = b.text(a).note;

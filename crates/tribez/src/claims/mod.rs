@@ -45,7 +45,7 @@ use crate::certify::measures::{Leaf, Measures, Tolerance};
 use crate::float::Precision;
 use crate::io::patch_file::any_patch_from_document;
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::io::{InputError, NamedAt};
+use crate::io::{ClaimProblem, InputError, NamedAt, Problem};
 use crate::patch::BezierPatch;
 use value::{Mismatch, Value, compare};
 
@@ -106,6 +106,16 @@ pub enum Verdict {
 }
 
 impl Verdict {
+    /// The verdict of a claim with these `mismatches`, recorded as an erratum or not.
+    pub(crate) fn of(mismatches: Vec<Mismatch>, erratum: bool) -> Verdict {
+        match (mismatches.is_empty(), erratum) {
+            (true, false) => Verdict::Holds,
+            (true, true) => Verdict::StaleErratum,
+            (false, false) => Verdict::Fails(mismatches),
+            (false, true) => Verdict::KnownErratum(mismatches),
+        }
+    }
+
     /// Does this verdict fail a run?
     pub fn fails_run(&self) -> bool {
         matches!(self, Verdict::Fails(_) | Verdict::StaleErratum)
@@ -189,10 +199,9 @@ fn resolve_patch(
         other => Err(doc.error(
             node,
             key,
-            format!(
-                "expected a patch file name or an inline patch table, found {}",
-                other.kind()
-            ),
+            ClaimProblem::NotAPatch {
+                found: other.kind(),
+            },
         )),
     }
 }
@@ -225,9 +234,8 @@ impl ClaimFile {
             }
         }
         let mut claims = Vec::new();
-        let list = Document::get(root, "claim").ok_or_else(|| {
-            doc.error(&doc.root, "claim", "no claims (expected [[claim]] tables)")
-        })?;
+        let list = Document::get(root, "claim")
+            .ok_or_else(|| doc.error(&doc.root, "claim", ClaimProblem::NoClaims))?;
         for (i, c) in doc.array(list, "claim")?.iter().enumerate() {
             let key = format!("claim[{i}]");
             let t = doc.table(c, &key)?;
@@ -236,13 +244,14 @@ impl ClaimFile {
                     .map(|n| doc.string(n, &format!("{key}.{name}")).map(str::to_string))
                     .transpose()
             };
-            let op = get_str("op")?.ok_or_else(|| doc.error(c, &key, "missing key `op`"))?;
+            let op = get_str("op")?
+                .ok_or_else(|| doc.error(c, &key, Problem::MissingKey { key: "op" }))?;
             let id = get_str("id")?.unwrap_or_else(|| format!("{op}-{}", i + 1));
             if claims.iter().any(|x: &Claim| x.id == id) {
                 return Err(doc.error(
                     c,
                     &format!("{key}.id"),
-                    format!("duplicate claim id `{id}`"),
+                    ClaimProblem::DuplicateId { id: id.clone() },
                 ));
             }
             claims.push(Claim {
@@ -270,11 +279,10 @@ impl ClaimFile {
             self.doc.error(
                 &claim.node,
                 &claim.id,
-                format!(
-                    "operation `{}` does not take a {} patch",
-                    claim.op,
-                    any.kind_name()
-                ),
+                ClaimProblem::KindNotTaken {
+                    op: claim.op.clone(),
+                    kind: any.kind_name(),
+                },
             )
         })
     }
@@ -296,16 +304,13 @@ impl ClaimFile {
             .map(|(_, p)| p)
             .ok_or_else(|| {
                 if name.is_empty() {
-                    self.doc.error(
-                        &claim.node,
-                        &claim.id,
-                        "this claim needs a patch: give `patch` at the top of the file",
-                    )
+                    self.doc
+                        .error(&claim.node, &claim.id, ClaimProblem::NeedsPatch)
                 } else {
                     self.doc.error(
                         &claim.node,
                         &format!("{}.patch", claim.id),
-                        format!("no patch named `{name}` under [patches]"),
+                        ClaimProblem::NoSuchPatch { name },
                     )
                 }
             })
@@ -341,14 +346,14 @@ impl ClaimFile {
             return Err(self.doc.error(
                 at("tolerance"),
                 &format!("{}.tolerance", claim.id),
-                format!("tolerance `{tolerance}` needs `precision = \"f64\"` or `\"f32\"`"),
+                ClaimProblem::ToleranceNeedsPrecision { tolerance },
             ));
         }
         if tolerance.needs_condition() && claim.op != "eval" {
             return Err(self.doc.error(
                 at("tolerance"),
                 &format!("{}.tolerance", claim.id),
-                format!("tolerance `{tolerance}` applies to `eval` claims only (it needs the condition number Σ|c_i|B_i)"),
+                ClaimProblem::ToleranceEvalOnly { tolerance },
             ));
         }
         Ok((tolerance, precision))
@@ -358,6 +363,9 @@ impl ClaimFile {
     pub fn judge(&self, claim: &Claim) -> Result<Judged, InputError> {
         let inputs = ops::Inputs::new(self, claim)?;
         let op = ops::ClaimOp::parse(&inputs)?;
+        if let ops::ClaimOp::Inverse(inverse) = &op {
+            return ops::inverse::judge(self, claim, &inputs, inverse);
+        }
         let (tolerance, precision) = self.tolerance_of(claim)?;
         // with `precision`, every operation but `eval` computes from the inputs as the code saw
         // them; `eval` keeps both views (its float view below)
@@ -367,11 +375,8 @@ impl ClaimFile {
         };
         let t = self.doc.table(&claim.node, &claim.id)?;
         let expect = Document::get(t, "expect").ok_or_else(|| {
-            self.doc.error(
-                &claim.node,
-                &claim.id,
-                "missing key `expect` (the claimed value)",
-            )
+            self.doc
+                .error(&claim.node, &claim.id, ClaimProblem::MissingExpect)
         })?;
         let key = format!("{}.expect", claim.id);
         let mut claimed = ops::read_claimed(&self.doc, expect, &exact, &key)?;
@@ -380,7 +385,10 @@ impl ClaimFile {
                 self.doc.error(
                     expect,
                     &key,
-                    format!("a claimed number overflows {}", p.name()),
+                    Problem::Overflows {
+                        what: "a claimed number",
+                        precision: p,
+                    },
                 )
             })?;
         }
@@ -452,12 +460,7 @@ impl ClaimFile {
                 });
             }
         }
-        let verdict = match (mismatches.is_empty(), claim.erratum.is_some()) {
-            (true, false) => Verdict::Holds,
-            (true, true) => Verdict::StaleErratum,
-            (false, false) => Verdict::Fails(mismatches),
-            (false, true) => Verdict::KnownErratum(mismatches),
-        };
+        let verdict = Verdict::of(mismatches, claim.erratum.is_some());
         Ok(Judged {
             file: self.path.display().to_string(),
             id: claim.id.clone(),

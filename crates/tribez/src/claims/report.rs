@@ -14,7 +14,7 @@ use super::{ClaimFile, FloatLeaf, Judged, Verdict};
 use crate::api_error::Error;
 use crate::batch::UlpHistogram;
 use crate::certify::measures::Measures;
-use crate::io::InputError;
+use crate::io::{ClaimProblem, InputError, Problem};
 use crate::number::to_decimal_string;
 use crate::report::WorstError;
 
@@ -47,19 +47,15 @@ pub fn claim_files_of<P: AsRef<Path>>(paths: &[P]) -> Result<FoundFiles, Error> 
             let walk = crate::io::walk::claim_files(p)?;
             found.notes.extend(walk.notes);
             if walk.files.is_empty() {
-                return Err(InputError::file(
-                    p.display().to_string(),
-                    "no claim files (*.claims.toml, *.claims.json)",
-                )
-                .into());
+                return Err(
+                    InputError::file(p.display().to_string(), ClaimProblem::NoClaimFiles).into(),
+                );
             }
             found.files.extend(walk.files);
         } else if p.exists() {
             found.files.push(p.to_path_buf());
         } else {
-            return Err(
-                InputError::file(p.display().to_string(), "no such file or directory").into(),
-            );
+            return Err(InputError::file(p.display().to_string(), Problem::NoSuchFile).into());
         }
     }
     Ok(found)

@@ -2,13 +2,22 @@
 //!
 //! This layer depends on the core and never the reverse.
 
+pub mod claim_problem;
+pub mod inverse_problem;
 pub mod patch_file;
 pub mod points;
+#[cfg(test)]
+mod problem_tests;
+pub mod rows_problem;
 pub mod text;
 pub mod tree;
 pub mod walk;
 
 use std::fmt;
+
+pub use claim_problem::{ClaimProblem, NeededKind};
+pub use inverse_problem::InverseProblem;
+pub use rows_problem::RowsProblem;
 
 use crate::certify::measures::{ParseToleranceError, ToleranceNeeds};
 use crate::error::CoreError;
@@ -18,7 +27,7 @@ use crate::number::NumberError;
 
 /// Bad input: which file, where in it, and what is wrong ([`Problem`]). The CLI prints it on
 /// one line and exits with status 2.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct InputError {
     /// The file (or `<command line>`).
     pub file: String,
@@ -47,7 +56,12 @@ pub struct NamedAt {
 }
 
 /// What is wrong with an input. `Display` is the message after the location.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+///
+/// Every variant carries data (the key, the limit, the figures found and expected); the
+/// message is written once, in `Display`. A new check of a file format or a claim operation
+/// adds a variant (here, or to [`ClaimProblem`], [`RowsProblem`] or
+/// [`patch_file::PatchFileProblem`]), never a message at the call site.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Problem {
     /// The file cannot be read (the operating system's reason, without its error number: the
@@ -175,13 +189,43 @@ pub enum Problem {
     /// A points file without a point.
     #[error("no points")]
     NoPoints,
+    /// More rows than a file of this kind may hold (checked before the row is stored).
+    #[error("more than {limit} rows (the limit of {what})")]
+    TooManyRows {
+        /// The limit.
+        limit: usize,
+        /// What has the limit (`"a fit's data"`).
+        what: &'static str,
+    },
     /// A check of the patch file format.
     #[error(transparent)]
     Patch(#[from] patch_file::PatchFileProblem),
-    /// Not yet converted to data: a message written where the error arises. Each remaining use
-    /// is a message specific to one check of one file format or claim operation.
-    #[error("{0}")]
-    Other(String),
+    /// A check of the mesh file format, or an invalid mesh.
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshFileProblem),
+    /// A claim file's or a claim operation's check.
+    #[error(transparent)]
+    Claim(#[from] ClaimProblem),
+    /// A check of a file of result rows or points.
+    #[error(transparent)]
+    Rows(#[from] RowsProblem),
+    /// An inverse claim's or batch's inputs ([`InverseProblem`]).
+    #[error(transparent)]
+    Inverse(#[from] InverseProblem),
+    /// A path that names nothing.
+    #[error("no such file or directory")]
+    NoSuchFile,
+    /// The `index`-th (1-based) item of a list (`"direction"`, `"vector"`, `"point"`) violates
+    /// a precondition.
+    #[error("{what} {index}: {error}")]
+    Item {
+        /// What the list holds.
+        what: &'static str,
+        /// Its 1-based index.
+        index: usize,
+        /// What is wrong with it.
+        error: CoreError,
+    },
 }
 
 /// What is wrong in JSON text ([`Problem::Json`]).
@@ -218,18 +262,6 @@ pub enum JsonSyntax {
     /// Text after the value.
     #[error("unexpected text after the JSON value")]
     TrailingText,
-}
-
-impl From<String> for Problem {
-    fn from(message: String) -> Self {
-        Problem::Other(message)
-    }
-}
-
-impl From<&str> for Problem {
-    fn from(message: &str) -> Self {
-        Problem::Other(message.to_string())
-    }
 }
 
 impl InputError {

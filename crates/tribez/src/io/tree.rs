@@ -490,12 +490,22 @@ impl Document {
 
     /// `node` as an exact rational: a number (its text) or a string in the number syntax.
     pub fn rational(&self, node: &Node, key: &str) -> Result<BigRational, InputError> {
+        self.rational_keyed(node, || key.to_string())
+    }
+
+    /// [`Self::rational`] with the key spelled out by `key()` only for an error message (the
+    /// happy path of a long array allocates no key).
+    fn rational_keyed(
+        &self,
+        node: &Node,
+        key: impl FnOnce() -> String,
+    ) -> Result<BigRational, InputError> {
         let text = match &node.value {
             Value::Number(t) | Value::String(t) => t,
             other => {
                 return Err(self.error(
                     node,
-                    key,
+                    &key(),
                     Problem::WrongType {
                         expected: "a number",
                         found: other.kind(),
@@ -503,33 +513,16 @@ impl Document {
                 ));
             }
         };
-        parse_rational(text).map_err(|e| self.error(node, key, e))
+        parse_rational(text).map_err(|e| self.error(node, &key(), e))
     }
 
     /// `node` as an array of rationals.
     pub fn rationals(&self, node: &Node, key: &str) -> Result<Vec<BigRational>, InputError> {
-        let items = self.array(node, key)?;
-        let mut out = Vec::with_capacity(items.len());
-        for (i, x) in items.iter().enumerate() {
-            // The element's key (`key[i]`) is only spelled out for an error message.
-            match &x.value {
-                Value::Number(t) | Value::String(t) => match parse_rational(t) {
-                    Ok(q) => out.push(q),
-                    Err(e) => return Err(self.error(x, &format!("{key}[{i}]"), e)),
-                },
-                other => {
-                    return Err(self.error(
-                        x,
-                        &format!("{key}[{i}]"),
-                        Problem::WrongType {
-                            expected: "a number",
-                            found: other.kind(),
-                        },
-                    ));
-                }
-            }
-        }
-        Ok(out)
+        self.array(node, key)?
+            .iter()
+            .enumerate()
+            .map(|(i, x)| self.rational_keyed(x, || format!("{key}[{i}]")))
+            .collect()
     }
 
     /// Look up `name` in a table; the keys it does not know are reported by the caller.

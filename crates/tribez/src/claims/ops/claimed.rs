@@ -3,8 +3,8 @@
 use num_rational::BigRational;
 
 use super::Value;
-use crate::io::InputError;
 use crate::io::tree::{Document, Node, Value as NodeValue};
+use crate::io::{ClaimProblem, InputError};
 use crate::symbolic::Polynomial;
 
 /// Read the claimed value at `node`, guided by the shape of the exact value.
@@ -18,15 +18,24 @@ pub fn read_claimed(
         (Value::Number(_), _) => Value::Number(doc.rational(node, key)?),
         (Value::Poly(_, names), NodeValue::String(s) | NodeValue::Number(s)) => {
             let n: Vec<&str> = names.iter().map(String::as_str).collect();
-            let p = Polynomial::parse(s, &n)
-                .map_err(|e| doc.error(node, key, format!("`{s}`: {e}")))?;
+            let p = Polynomial::parse(s, &n).map_err(|reason| {
+                doc.error(
+                    node,
+                    key,
+                    ClaimProblem::BadPolynomial {
+                        text: s.clone(),
+                        reason,
+                    },
+                )
+            })?;
             Value::Poly(p, names.clone())
         }
         (Value::Bool(_), NodeValue::Bool(b)) => Value::Bool(*b),
-        (Value::Integer(_), NodeValue::Number(t)) => Value::Integer(
-            t.parse()
-                .map_err(|_| doc.error(node, key, format!("`{t}` is not an integer")))?,
-        ),
+        (Value::Integer(_), NodeValue::Number(t)) => {
+            Value::Integer(t.parse().map_err(|_| {
+                doc.error(node, key, ClaimProblem::NotAnInteger { text: t.clone() })
+            })?)
+        }
         (Value::List(xs), NodeValue::Array(items)) => {
             let fallback = xs
                 .first()
@@ -56,7 +65,8 @@ pub fn read_claimed(
                         .find(|(ek, _)| ek == k)
                         .map(|(_, v)| v)
                         .or_else(|| kv.first().map(|(_, v)| v));
-                    let like = like.ok_or_else(|| doc.error(it, key, "unexpected key"))?;
+                    let like =
+                        like.ok_or_else(|| doc.error(it, key, ClaimProblem::UnexpectedKey))?;
                     Ok((
                         k.clone(),
                         read_claimed(doc, it, like, &format!("{key}.\"{k}\""))?,
@@ -76,7 +86,10 @@ pub fn read_claimed(
             return Err(doc.error(
                 node,
                 key,
-                format!("expected {kind}, found {}", node.value.kind()),
+                ClaimProblem::ClaimedShape {
+                    expected: kind,
+                    found: node.value.kind(),
+                },
             ));
         }
     })

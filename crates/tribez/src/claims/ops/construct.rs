@@ -9,8 +9,8 @@ use num_rational::BigRational;
 use super::inputs::Inputs;
 use super::{OpName, Value, keyed, net_value, seen};
 use crate::any_patch::AnyPatch;
-use crate::io::InputError;
 use crate::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION};
+use crate::io::{ClaimProblem, InputError};
 use crate::patch::BezierPatch as Patch;
 use crate::subdivide::HalvingOrder;
 
@@ -123,7 +123,12 @@ pub(super) fn check_count(
     if total > MAX_CONTROL_POINTS as u128 {
         return Err(inputs.error(
             key,
-            format!("degree {n} on a {m}-simplex has {total} control points, above the limit of {MAX_CONTROL_POINTS}"),
+            ClaimProblem::TooManyControlPoints {
+                degree: n,
+                m,
+                count: total,
+                limit: MAX_CONTROL_POINTS,
+            },
         ));
     }
     Ok(())
@@ -154,7 +159,9 @@ fn parse_matrix(inputs: &Inputs<'_>) -> Result<Construction<'static>, InputError
             if !(1..=MAX_SIMPLEX_DIMENSION).contains(&m) {
                 return Err(inputs.error(
                     "simplex",
-                    format!("the simplex dimension must be 1 to {MAX_SIMPLEX_DIMENSION}"),
+                    ClaimProblem::SimplexDimension {
+                        limit: MAX_SIMPLEX_DIMENSION,
+                    },
                 ));
             }
             let edge = if inputs.get("edge").is_some() {
@@ -164,31 +171,46 @@ fn parse_matrix(inputs: &Inputs<'_>) -> Result<Construction<'static>, InputError
             };
             let piece = inputs.opt_usize("piece")?.unwrap_or(1);
             if !(1..=2).contains(&piece) {
-                return Err(inputs.error("piece", "the piece is 1 or 2"));
+                return Err(inputs.error("piece", ClaimProblem::PieceNumber));
             }
             MatrixKind::Halve { m, edge, piece }
         }
         Some("subpatch") => {
             let count = inputs.array_len("vertices")?;
             if inputs.get("vertices").is_none() {
-                return Err(inputs.error("vertices", "missing input `vertices`"));
+                return Err(inputs.error(
+                    "vertices",
+                    ClaimProblem::MissingInput {
+                        name: "vertices".into(),
+                        hint: None,
+                    },
+                ));
             }
             if count < 2 {
-                return Err(inputs.error("vertices", "give m+1 vertices (3 for a triangle)"));
+                return Err(inputs.error("vertices", ClaimProblem::TooFewVertices));
             }
             if count - 1 > MAX_SIMPLEX_DIMENSION {
                 return Err(inputs.error(
                     "vertices",
-                    format!(
-                        "{count} vertices: the simplex dimension must be 1 to {MAX_SIMPLEX_DIMENSION}"
-                    ),
+                    ClaimProblem::VertexCount {
+                        count,
+                        limit: MAX_SIMPLEX_DIMENSION,
+                    },
                 ));
             }
             MatrixKind::Subpatch {
                 vertices: inputs.bary_points("vertices", count - 1)?,
             }
         }
-        _ => return Err(inputs.error("kind", "`kind` must be \"halve\" or \"subpatch\"")),
+        _ => {
+            return Err(inputs.error(
+                "kind",
+                ClaimProblem::MustBeOneOf {
+                    name: "kind",
+                    choices: &["halve", "subpatch"],
+                },
+            ));
+        }
     };
     let m = match &kind {
         MatrixKind::Halve { m, .. } => *m,
@@ -201,10 +223,9 @@ fn parse_matrix(inputs: &Inputs<'_>) -> Result<Construction<'static>, InputError
     {
         return Err(inputs.error(
             "degree",
-            format!(
-                "the matrix would be too large (at most {} rows, the control points of the degree)",
-                crate::blossom::MAX_MATRIX_ROWS
-            ),
+            ClaimProblem::MatrixTooLarge {
+                limit: crate::blossom::MAX_MATRIX_ROWS,
+            },
         ));
     }
     Ok(Construction::Matrix { degree, kind })
@@ -236,10 +257,7 @@ impl<'a> Construction<'a> {
                     }
                     (None, true) => SubdivideMode::Midpoints,
                     _ => {
-                        return Err(inputs.error(
-                            "at",
-                            "give exactly one of `at` (a barycentric point) or `midpoints = true`",
-                        ));
+                        return Err(inputs.error("at", ClaimProblem::AtOrMidpoints));
                     }
                 };
                 Construction::Subdivide { patch, mode }
@@ -253,7 +271,19 @@ impl<'a> Construction<'a> {
                     Some("add-and-halve-bottom-first") => {
                         HalveMethod::AddAndHalve(HalvingOrder::BottomFirst)
                     }
-                    Some(other) => return Err(inputs.error("method", format!("`{other}`: expected \"blossom\", \"add-and-halve\" or \"add-and-halve-bottom-first\""))),
+                    Some(other) => {
+                        return Err(inputs.error(
+                            "method",
+                            ClaimProblem::NotOneOf {
+                                text: other.to_string(),
+                                choices: &[
+                                    "blossom",
+                                    "add-and-halve",
+                                    "add-and-halve-bottom-first",
+                                ],
+                            },
+                        ));
+                    }
                 };
                 Construction::Halve {
                     patch,
@@ -269,10 +299,10 @@ impl<'a> Construction<'a> {
                 let Some(to) = n.checked_add(by).filter(|&t| by > 0 && t <= MAX_DEGREE) else {
                     return Err(inputs.error(
                         "by",
-                        format!(
-                            "elevate by 1 to {} (the degree is capped at {MAX_DEGREE})",
-                            MAX_DEGREE.saturating_sub(n)
-                        ),
+                        ClaimProblem::ElevateBy {
+                            most: MAX_DEGREE.saturating_sub(n),
+                            limit: MAX_DEGREE,
+                        },
                     ));
                 };
                 check_count(inputs, "by", m, to)?;
@@ -286,23 +316,26 @@ impl<'a> Construction<'a> {
                     let k = inputs.opt_usize(name)?.ok_or_else(|| {
                         inputs.error(
                             name,
-                            format!("missing input `{name}` (a corner, 1 to {})", m + 1),
+                            ClaimProblem::MissingCorner {
+                                name: name.to_string(),
+                                corners: m + 1,
+                            },
                         )
                     })?;
                     if !(1..=m + 1).contains(&k) {
                         return Err(inputs.error(
                             name,
-                            format!(
-                                "corner {k} does not exist: corners are numbered 1 to {}",
-                                m + 1
-                            ),
+                            ClaimProblem::NoSuchCorner {
+                                corner: k,
+                                corners: m + 1,
+                            },
                         ));
                     }
                     Ok(k - 1)
                 };
                 let (from, to) = (corner("from")?, corner("to")?);
                 if from == to {
-                    return Err(inputs.error("to", "`from` and `to` must be different corners"));
+                    return Err(inputs.error("to", ClaimProblem::SameCorners));
                 }
                 Construction::EdgeCurve { patch, from, to }
             }

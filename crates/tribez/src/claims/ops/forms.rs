@@ -10,8 +10,8 @@ use super::inputs::Inputs;
 use super::{OpName, Value, keyed, seen};
 use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
-use crate::io::InputError;
 use crate::io::patch_file::{MAX_DEGREE, MAX_SIMPLEX_DIMENSION, index_key};
+use crate::io::{ClaimProblem, InputError, NeededKind};
 use crate::patch::BezierPatch as Patch;
 use crate::rational::homogenised_residual;
 use crate::simplex::{Simplex, multinomial};
@@ -90,7 +90,10 @@ fn variables(inputs: &Inputs<'_>) -> Result<bool, InputError> {
         Some("cartesian") => Ok(true),
         Some(other) => Err(inputs.error(
             "variables",
-            format!("`{other}`: expected \"barycentric\" or \"cartesian\""),
+            ClaimProblem::NotOneOf {
+                text: other.to_string(),
+                choices: &["barycentric", "cartesian"],
+            },
         )),
     }
 }
@@ -102,9 +105,17 @@ fn parse_polynomial(
 ) -> Result<Polynomial, InputError> {
     let text = inputs
         .opt_string(name)?
-        .ok_or_else(|| inputs.error(name, format!("missing input `{name}`")))?;
+        .ok_or_else(|| inputs.missing(name))?;
     let refs: Vec<&str> = vars.iter().map(String::as_str).collect();
-    Polynomial::parse(&text, &refs).map_err(|e| inputs.error(name, format!("`{text}`: {e}")))
+    Polynomial::parse(&text, &refs).map_err(|reason| {
+        inputs.error(
+            name,
+            ClaimProblem::BadPolynomial {
+                text: text.clone(),
+                reason,
+            },
+        )
+    })
 }
 
 fn parse_basis(inputs: &Inputs<'_>, sum: bool) -> Result<Basis, InputError> {
@@ -113,7 +124,12 @@ fn parse_basis(inputs: &Inputs<'_>, sum: bool) -> Result<Basis, InputError> {
     if !(1..=MAX_SIMPLEX_DIMENSION).contains(&m) || degree > MAX_DEGREE {
         return Err(inputs.error(
             "degree",
-            format!("degree {degree} on a {m}-simplex is out of range (degree at most {MAX_DEGREE}, simplex dimension 1 to {MAX_SIMPLEX_DIMENSION})"),
+            ClaimProblem::DegreeOutOfRange {
+                degree,
+                m,
+                max_degree: MAX_DEGREE,
+                max_m: MAX_SIMPLEX_DIMENSION,
+            },
         ));
     }
     check_count(inputs, "degree", m, degree)?;
@@ -123,7 +139,10 @@ fn parse_basis(inputs: &Inputs<'_>, sum: bool) -> Result<Basis, InputError> {
     {
         return Err(inputs.error(
             "at",
-            format!("{} coordinates, expected {}", at.len(), m + 1),
+            ClaimProblem::CoordinateCount {
+                found: at.len(),
+                expected: m + 1,
+            },
         ));
     }
     let cartesian = variables(inputs)?;
@@ -159,7 +178,13 @@ impl<'a> Form<'a> {
                 if let Some(c) = component
                     && c >= patch.net.dim()
                 {
-                    return Err(inputs.error("component", format!("component {c} does not exist: the points have {} coordinates (0-based)", patch.net.dim())));
+                    return Err(inputs.error(
+                        "component",
+                        ClaimProblem::NoSuchComponent {
+                            component: c,
+                            dim: patch.net.dim(),
+                        },
+                    ));
                 }
                 Form::Symbolic {
                     patch,
@@ -185,7 +210,10 @@ impl<'a> Form<'a> {
                     Some(c) if c.len() != d => {
                         return Err(inputs.error(
                             "coordinates",
-                            format!("{} names given, the points have {d} coordinates", c.len()),
+                            ClaimProblem::CoordinateNames {
+                                given: c.len(),
+                                dim: d,
+                            },
                         ));
                     }
                     Some(c) => c,
@@ -209,7 +237,10 @@ impl<'a> Form<'a> {
                 if degree > MAX_DEGREE {
                     return Err(inputs.error(
                         "degree",
-                        format!("degree {degree} is above the limit of {MAX_DEGREE}"),
+                        ClaimProblem::DegreeAbove {
+                            degree,
+                            limit: MAX_DEGREE,
+                        },
                     ));
                 }
                 check_count(inputs, "degree", m, degree)?;
@@ -225,7 +256,10 @@ impl<'a> Form<'a> {
                 let AnyPatch::Functional(p) = inputs.file.patch_for(inputs.claim)?.as_any() else {
                     return Err(inputs.error(
                         "patch",
-                        "`graph` needs a functional patch (kind = \"functional\")",
+                        ClaimProblem::NeedsKind {
+                            op: "graph",
+                            needs: NeededKind::Functional,
+                        },
                     ));
                 };
                 Form::Graph {

@@ -9,7 +9,7 @@ use super::super::{Claim, ClaimFile};
 use crate::any_patch::AnyPatch;
 use crate::capability::InputSpace;
 use crate::io::tree::{Document, Node, Value as NodeValue};
-use crate::io::{InputError, Problem};
+use crate::io::{ClaimProblem, InputError, Problem};
 use crate::patch::BezierPatch as Patch;
 
 type Q = BigRational;
@@ -78,10 +78,20 @@ impl<'a> Inputs<'a> {
         self.file.doc.error(node, &self.key(name), problem)
     }
 
+    /// The error of a required input that is absent.
+    pub fn missing(&self, name: &str) -> InputError {
+        self.error(
+            name,
+            ClaimProblem::MissingInput {
+                name: name.to_string(),
+                hint: None,
+            },
+        )
+    }
+
     /// A required input's node.
     pub fn required(&self, name: &str) -> Result<&'a Node, InputError> {
-        self.get(name)
-            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))
+        self.get(name).ok_or_else(|| self.missing(name))
     }
 
     /// A required list of rationals.
@@ -111,8 +121,7 @@ impl<'a> Inputs<'a> {
 
     /// A required non-negative integer (`what` completes "missing input `name`").
     pub fn usize(&self, name: &str) -> Result<usize, InputError> {
-        self.opt_usize(name)?
-            .ok_or_else(|| self.error(name, format!("missing input `{name}`")))
+        self.opt_usize(name)?.ok_or_else(|| self.missing(name))
     }
 
     /// An optional boolean.
@@ -121,7 +130,7 @@ impl<'a> Inputs<'a> {
             None => Ok(None),
             Some(n) => match &n.value {
                 NodeValue::Bool(b) => Ok(Some(*b)),
-                _ => Err(self.error(name, "expected true or false")),
+                _ => Err(self.error(name, ClaimProblem::NotABool)),
             },
         }
     }
@@ -191,7 +200,10 @@ impl<'a> Inputs<'a> {
         let node = self.get("edge").ok_or_else(|| {
             self.error(
                 "edge",
-                "missing input `edge` (two corner numbers, like [1, 2])",
+                ClaimProblem::MissingInput {
+                    name: "edge".into(),
+                    hint: Some("two corner numbers, like [1, 2]"),
+                },
             )
         })?;
         let items = self.file.doc.array(node, &self.key("edge"))?;
@@ -201,7 +213,7 @@ impl<'a> Inputs<'a> {
             .collect::<Result<Vec<_>, _>>()?;
         match nums.as_slice() {
             [i, j] => crate::subdivide::check_edge(m, *i, *j).map_err(|e| self.error("edge", e)),
-            _ => Err(self.error("edge", "an edge is two corner numbers, like [1, 2]")),
+            _ => Err(self.error("edge", ClaimProblem::EdgeShape)),
         }
     }
 
@@ -228,10 +240,9 @@ impl<'a> Inputs<'a> {
                 if self.get("at").is_some() {
                     return Err(self.error(
                         "at",
-                        format!(
-                            "{} takes Cartesian points: use `cartesian`",
-                            patch.as_any().described()
-                        ),
+                        ClaimProblem::CartesianOnly {
+                            kind: patch.as_any().described(),
+                        },
                     ));
                 }
                 Ok(Point {
@@ -256,7 +267,10 @@ impl<'a> Inputs<'a> {
                 if at.len() != m + 1 {
                     return Err(self.error(
                         "at",
-                        format!("{} coordinates, expected {}", at.len(), m + 1),
+                        ClaimProblem::CoordinateCount {
+                            found: at.len(),
+                            expected: m + 1,
+                        },
                     ));
                 }
                 Ok(Point {
@@ -276,10 +290,7 @@ impl<'a> Inputs<'a> {
                 at: convert(&x).map_err(|e| self.error("cartesian", e))?,
                 cartesian: Some(x),
             }),
-            _ => Err(self.error(
-                "at",
-                "give exactly one of `at` (barycentric) or `cartesian`",
-            )),
+            _ => Err(self.error("at", ClaimProblem::AtOrCartesian)),
         }
     }
 
@@ -288,11 +299,10 @@ impl<'a> Inputs<'a> {
         match self.opt_strings("names")? {
             Some(n) if n.len() != default.len() => Err(self.error(
                 "names",
-                format!(
-                    "{} names given, {} variables needed",
-                    n.len(),
-                    default.len()
-                ),
+                ClaimProblem::VariableNames {
+                    given: n.len(),
+                    needed: default.len(),
+                },
             )),
             Some(n) => Ok(n),
             None => Ok(default),
@@ -324,10 +334,10 @@ pub fn select_part(
         .ok_or_else(|| {
             inputs.error(
                 "part",
-                format!(
-                    "`{part}` is not available here (available: {})",
-                    known.join(", ")
-                ),
+                ClaimProblem::UnknownPart {
+                    part: part.to_string(),
+                    known,
+                },
             )
         })
 }

@@ -5,8 +5,8 @@ use std::borrow::Cow;
 
 use super::inputs::{Inputs, select_part};
 use super::{Value, seen};
-use crate::io::InputError;
 use crate::io::patch_file::index_key;
+use crate::io::{ClaimProblem, InputError};
 use crate::patch::BezierPatch as Patch;
 
 /// `join` with its parsed inputs.
@@ -26,14 +26,14 @@ impl<'a> JoinOp<'a> {
         let names = inputs.opt_strings("patches")?.ok_or_else(|| {
             inputs.error(
                 "patches",
-                "missing input `patches` (two names under [patches])",
+                ClaimProblem::MissingInput {
+                    name: "patches".into(),
+                    hint: Some("two names under [patches]"),
+                },
             )
         })?;
         if names.len() != 2 {
-            return Err(inputs.error(
-                "patches",
-                format!("a join needs two patches, {} named", names.len()),
-            ));
+            return Err(inputs.error("patches", ClaimProblem::JoinCount { named: names.len() }));
         }
         let find = |name: &str| -> Result<&'a Patch, InputError> {
             let any = inputs
@@ -45,16 +45,18 @@ impl<'a> JoinOp<'a> {
                 .ok_or_else(|| {
                     inputs.error(
                         "patches",
-                        format!("no patch named `{name}` under [patches]"),
+                        ClaimProblem::NoSuchPatch {
+                            name: name.to_string(),
+                        },
                     )
                 })?;
             any.polynomial().ok_or_else(|| {
                 inputs.error(
                     "patches",
-                    format!(
-                        "`join` does not take a {} patch (`{name}`)",
-                        any.kind_name()
-                    ),
+                    ClaimProblem::JoinKind {
+                        kind: any.kind_name(),
+                        name: name.to_string(),
+                    },
                 )
             })
         };

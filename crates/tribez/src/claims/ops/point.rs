@@ -11,7 +11,7 @@ use super::{OpName, Value, seen};
 use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
 use crate::exact::Algorithm;
-use crate::io::InputError;
+use crate::io::{ClaimProblem, InputError, NeededKind, Problem};
 use crate::patch_type::Patch;
 use crate::spatch::SPatch;
 
@@ -81,9 +81,7 @@ fn patch_point(inputs: &Inputs<'_>, patch: &AnyPatch) -> Result<Point, InputErro
         AnyPatch::Rational(r) => inputs.point(&r.patch),
         AnyPatch::SPatch(_) => {
             if inputs.get("at").is_some() {
-                return Err(
-                    inputs.error("at", "an S-patch takes Cartesian points: use `cartesian`")
-                );
+                return Err(inputs.error("at", ClaimProblem::CartesianOnly { kind: "an S-patch" }));
             }
             Ok(Point {
                 at: Vec::new(),
@@ -129,8 +127,16 @@ impl<'a> PointOp<'a> {
                 let m = point.at.len() - 1;
                 let dirs = inputs.rational_rows("dirs")?;
                 for (i, d) in dirs.iter().enumerate() {
-                    crate::domain::check_direction(d, m, "direction")
-                        .map_err(|e| inputs.error("dirs", format!("direction {}: {e}", i + 1)))?;
+                    crate::domain::check_direction(d, m, "direction").map_err(|error| {
+                        inputs.error(
+                            "dirs",
+                            Problem::Item {
+                                what: "direction",
+                                index: i + 1,
+                                error,
+                            },
+                        )
+                    })?;
                 }
                 let vectors = inputs.rational_rows("vectors")?;
                 let op = PointOp::Derivative {
@@ -156,7 +162,10 @@ impl<'a> PointOp<'a> {
                 let AnyPatch::SPatch(s) = inputs.file.patch_for(inputs.claim)?.as_any() else {
                     return Err(inputs.error(
                         "patch",
-                        "`wachspress` needs an S-patch (a patch file with `polygon`)",
+                        ClaimProblem::NeedsKind {
+                            op: "wachspress",
+                            needs: NeededKind::SPatch,
+                        },
                     ));
                 };
                 let cartesian = inputs.rationals("cartesian")?;
@@ -193,17 +202,19 @@ impl<'a> PointOp<'a> {
         let domain = domain_of(patch).expect("a polynomial or rational patch");
         let mut out = dirs.clone();
         for (i, v) in vectors.iter().enumerate() {
-            out.push(
-                domain
-                    .direction(v)
-                    .map_err(|e| inputs.error("vectors", format!("vector {}: {e}", i + 1)))?,
-            );
+            out.push(domain.direction(v).map_err(|error| {
+                inputs.error(
+                    "vectors",
+                    Problem::Item {
+                        what: "vector",
+                        index: i + 1,
+                        error,
+                    },
+                )
+            })?);
         }
         if out.is_empty() {
-            return Err(inputs.error(
-                "dirs",
-                "give at least one direction in `dirs` (barycentric) or `vectors` (Cartesian)",
-            ));
+            return Err(inputs.error("dirs", ClaimProblem::NoDirections));
         }
         if let Some(p) = patch.polynomial() {
             crate::derivative::check_order(out.len(), p.net.degree())
@@ -418,31 +429,28 @@ pub fn eval_float(
         Some(point.input()),
     )
     .map_err(|(part, e)| {
-        use crate::api_error::Error;
         use crate::judge::Part;
-        let problem = |e: Error| -> crate::io::Problem {
+        use crate::judge_refusal::Refusal;
+        let problem = |e: Refusal| -> Problem {
             match e {
-                Error::Core(core) => core.into(),
-                e => e.to_string().into(),
+                Refusal::Core(core) => core.into(),
+                e => ClaimProblem::Judge(e).into(),
             }
         };
         match (part, e) {
             (Part::Patch, e) => inputs.error("patch", problem(e)),
             (Part::Algorithm, e) => inputs.error("algorithm", problem(e)),
             (Part::Input, e) => inputs.error(point.key(), problem(e)),
-            (Part::Tolerance, crate::api_error::Error::Unsupported { what, .. }) => {
-                inputs.error("tolerance", what.to_string())
+            (Part::Tolerance, Refusal::Unsupported { what, .. }) => {
+                inputs.error("tolerance", ClaimProblem::Lacks(what))
             }
-            (Part::Tolerance, e) => inputs.error("tolerance", e.to_string()),
+            (Part::Tolerance, e) => inputs.error("tolerance", problem(e)),
         }
     })?;
     let d = side.exact.len();
-    let condition = side.condition.ok_or_else(|| {
-        inputs.error(
-            point.key(),
-            "the condition number is undefined as the code saw it",
-        )
-    })?;
+    let condition = side
+        .condition
+        .ok_or_else(|| inputs.error(point.key(), ClaimProblem::ConditionUndefined))?;
     Ok(FloatEval {
         seen_inputs: side.input_seen,
         exact_seen: side.exact,

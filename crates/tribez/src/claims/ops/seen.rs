@@ -8,8 +8,9 @@ use super::inputs::{Inputs, Point};
 use crate::any_patch::AnyPatch;
 use crate::capability::InputSpace;
 use crate::domain::Domain;
+use crate::error::CoreError;
 use crate::float::Precision;
-use crate::io::InputError;
+use crate::io::{ClaimProblem, InputError, Problem};
 use crate::patch::BezierPatch as Patch;
 use crate::rational::RationalPatch;
 use crate::spatch::SPatch;
@@ -18,6 +19,20 @@ type Q = BigRational;
 
 fn round(q: &Q, p: Precision) -> Option<Q> {
     crate::certify::measures::as_float(q, p)
+}
+
+/// `what` overflows precision `p`.
+fn overflows(what: &'static str, precision: Precision) -> Problem {
+    Problem::Overflows { what, precision }
+}
+
+/// Rounded to `p`, `what` violates a precondition.
+fn rounded(what: Option<&'static str>, precision: Precision, error: CoreError) -> ClaimProblem {
+    ClaimProblem::Rounded {
+        what,
+        precision,
+        error,
+    }
 }
 
 /// Numbers of input `name` rounded to `p`.
@@ -30,7 +45,7 @@ pub fn numbers(
     xs.iter()
         .map(|q| round(q, p))
         .collect::<Option<_>>()
-        .ok_or_else(|| inputs.error(name, format!("an input overflows {}", p.name())))
+        .ok_or_else(|| inputs.error(name, overflows("an input", p)))
 }
 
 /// Rows of numbers of input `name` rounded to `p`.
@@ -112,13 +127,13 @@ pub fn domain(
     p: Precision,
 ) -> Result<Domain, InputError> {
     let vs = rows(inputs, name, d.vertices(), p)?;
-    Domain::new(vs).map_err(|e| inputs.error(name, format!("rounded to {}: {e}", p.name())))
+    Domain::new(vs).map_err(|e| inputs.error(name, rounded(None, p, e)))
 }
 
 /// A polynomial patch with its control points rounded (its domain stays exact).
 pub fn patch(inputs: &Inputs<'_>, patch: &Patch, p: Precision) -> Result<Patch, InputError> {
     if patch.net.coords().iter().any(|q| round(q, p).is_none()) {
-        return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+        return Err(inputs.error("patch", overflows("a control point", p)));
     }
     Ok(Patch {
         net: patch.net.map(|q| round(q, p).unwrap_or_default()),
@@ -134,14 +149,11 @@ pub fn rational(
 ) -> Result<RationalPatch, InputError> {
     let hr = r.homogeneous().map(|q| round(q, p));
     if hr.coords().iter().any(Option::is_none) {
-        return Err(inputs.error(
-            "patch",
-            format!("a weighted control point overflows {}", p.name()),
-        ));
+        return Err(inputs.error("patch", overflows("a weighted control point", p)));
     }
     let hr = hr.map(|q| q.clone().unwrap_or_default());
     RationalPatch::from_homogeneous(&hr, &r.patch)
-        .map_err(|e| inputs.error("patch", format!("rounded to {}: {e}", p.name())))
+        .map_err(|e| inputs.error("patch", rounded(None, p, e)))
 }
 
 /// An S-patch as seen: its polygon and control points rounded.
@@ -152,14 +164,14 @@ pub fn spatch(inputs: &Inputs<'_>, s: &SPatch, p: Precision) -> Result<SPatch, I
             v.iter()
                 .map(|q| round(q, p))
                 .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| inputs.error("patch", format!("a number overflows {}", p.name())))?,
+                .ok_or_else(|| inputs.error("patch", overflows("a number", p)))?,
         );
     }
     let polygon = crate::spatch::Polygon::new(verts)
-        .map_err(|e| inputs.error("patch", format!("the polygon rounded to {}: {e}", p.name())))?;
+        .map_err(|e| inputs.error("patch", rounded(Some("the polygon"), p, e)))?;
     let net = s.net.map(|q| round(q, p));
     if net.coords().iter().any(Option::is_none) {
-        return Err(inputs.error("patch", format!("a control point overflows {}", p.name())));
+        return Err(inputs.error("patch", overflows("a control point", p)));
     }
     let mut out = SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
         .map_err(|e| inputs.error("patch", e))?;
