@@ -1,30 +1,19 @@
 //! `tribez intersect` as a user runs it. Expected values: fixtures/inverse/derive.py (SymPy) and
 //! hand derivations in the comments.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-use assert_cmd::Command;
-
-fn tribez() -> Command {
-    Command::cargo_bin("tribez").expect("binary built")
-}
+mod common;
+use common::{fails, fixtures, tribez};
 
 fn fx(name: &str) -> String {
-    let p: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../fixtures")
-        .join(name);
+    let p: PathBuf = fixtures().join(name);
     p.display().to_string()
 }
 
 /// Exit status 2, nothing on standard output, one line on standard error containing `words`.
 fn fails_with(args: &[&str], words: &[&str]) {
-    let out = tribez().args(args).assert().code(2).get_output().clone();
-    assert!(out.stdout.is_empty());
-    let err = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(err.lines().count(), 1, "{err}");
-    for w in words {
-        assert!(err.contains(w), "{args:?}: {w:?} not in {err:?}");
-    }
+    fails(tribez().args(args), words);
 }
 
 #[test]

@@ -3,13 +3,13 @@
 
 use std::path::PathBuf;
 
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
 use tribez::Patch;
-use tribez::algebraic::{Curve, CurveIntersections, RealAlgebraic, intersect_curves, point_text};
+use tribez::algebraic::{Curve, CurveIntersections, intersect_curves, point_text};
 use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez intersect`.
@@ -54,13 +54,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     )
 }
 
-/// `name = p/q`, or `name ≈ 0.707… (root of … in (lo, hi))`.
-fn number_text(name: &str, x: &RealAlgebraic) -> String {
-    match x.as_rational() {
-        Some(r) => format!("{name} = {r}"),
-        None => format!("{name} {}", x.to_text()),
-    }
-}
+use super::inverse::alg_text as number_text;
 
 impl Render for IntersectReport {
     fn text(&self) -> String {
@@ -107,21 +101,23 @@ impl Render for IntersectReport {
 
     fn json(&self) -> Json {
         let r = &self.result;
-        json!({
-            "a": self.a,
-            "b": self.b,
-            "count": r.points.len(),
-            "intersections": r.points.iter().map(|p| json!({
-                "s": p.s.to_json(),
-                "t": p.t.to_json(),
-                "point": point_text(&p.point),
-                "tangential": p.tangential,
-                "multiplicity": p.multiplicity,
-            })).collect::<Vec<_>>(),
-            "overlaps": r.overlaps.iter().map(|o| json!({
-                "s": [o.s[0].to_json(), o.s[1].to_json()],
-                "t": [o.t[0].to_json(), o.t[1].to_json()],
-            })).collect::<Vec<_>>(),
+        serde_json::to_value(IntersectJson {
+            a: &self.a,
+            b: &self.b,
+            count: r.points.len(),
+            intersections: &r.points,
+            overlaps: &r.overlaps,
         })
+        .expect("serializable")
     }
+}
+
+/// The JSON of `tribez intersect`.
+#[derive(serde::Serialize)]
+struct IntersectJson<'a> {
+    a: &'a str,
+    b: &'a str,
+    count: usize,
+    intersections: &'a [tribez::algebraic::Intersection],
+    overlaps: &'a [tribez::algebraic::Overlap],
 }

@@ -71,7 +71,7 @@ fn usage(file: &str, e: impl std::fmt::Display) -> CliError {
 }
 
 /// `name = p/q`, or `name ≈ 0.707… (root of … in (lo, hi))`.
-fn alg_text(name: &str, x: &RealAlgebraic) -> String {
+pub fn alg_text(name: &str, x: &RealAlgebraic) -> String {
     match x.as_rational() {
         Some(r) => format!("{name} = {r}"),
         None => format!("{name} {}", x.to_text()),
@@ -82,21 +82,6 @@ fn expr_text(name: &str, x: &Expr) -> String {
     match x.rational() {
         Some(r) => format!("{name} = {r}"),
         None => format!("{name} ≈ {}", x.decimal()),
-    }
-}
-
-/// JSON of an expression in an algebraic number: exact when rational, else f64 and decimal.
-pub fn expr_json(x: &Expr) -> Json {
-    match x.rational() {
-        Some(r) => json!({
-            "rational": r.to_string(),
-            "f64": tribez::hazmat::number::hex_f64(tribez::hazmat::number::round_f64(&r)),
-            "decimal": tribez::hazmat::number::to_decimal_string(&r, 17),
-        }),
-        None => json!({
-            "f64": tribez::hazmat::number::hex_f64(x.to_f64()),
-            "decimal": x.decimal(),
-        }),
     }
 }
 
@@ -171,21 +156,39 @@ impl Render for LocateReport {
 
     fn json(&self) -> Json {
         let f = &self.found;
-        json!({
-            "patch": self.file,
-            "point": [self.point[0].to_string(), self.point[1].to_string()],
-            "anywhere": self.anywhere,
-            "infinite": f.infinite,
-            "count": f.points.len(),
-            "parameters": f.points.iter().map(|l| json!({
-                "s": l.s.to_json(),
-                "t": l.t.to_json(),
-                "lambda0": expr_json(&l.lambda0),
-                "jacobian_zero": l.jacobian_zero,
-                "multiplicity": l.multiplicity,
-            })).collect::<Vec<_>>(),
+        serde_json::to_value(LocateJson {
+            patch: &self.file,
+            point: [self.point[0].to_string(), self.point[1].to_string()],
+            anywhere: self.anywhere,
+            infinite: f.infinite,
+            count: f.points.len(),
+            parameters: &f.points,
         })
+        .expect("serializable")
     }
+}
+
+/// The JSON of `tribez locate`.
+#[derive(serde::Serialize)]
+struct LocateJson<'a> {
+    patch: &'a str,
+    point: [String; 2],
+    anywhere: bool,
+    infinite: bool,
+    count: usize,
+    parameters: &'a [tribez::algebraic::Located],
+}
+
+/// One hit in the JSON of `tribez ray`.
+#[derive(serde::Serialize)]
+struct HitJson<'a> {
+    tau: &'a Expr,
+    first: bool,
+    s: &'a RealAlgebraic,
+    t: &'a RealAlgebraic,
+    lambda0: &'a Expr,
+    kind: &'static str,
+    multiplicity: usize,
 }
 
 /// The report of `tribez ray`.
@@ -350,15 +353,15 @@ impl Render for RayReport {
                 "direction": direction.iter().map(ToString::to_string).collect::<Vec<_>>(),
                 "infinite": hits.infinite,
                 "count": hits.hits.len(),
-                "hits": hits.hits.iter().enumerate().map(|(k, h)| json!({
-                    "tau": expr_json(&h.tau),
-                    "first": k == 0,
-                    "s": h.s.to_json(),
-                    "t": h.t.to_json(),
-                    "lambda0": expr_json(&h.lambda0),
-                    "kind": if h.touch { "touch" } else { "cross" },
-                    "multiplicity": h.multiplicity,
-                })).collect::<Vec<_>>(),
+                "hits": hits.hits.iter().enumerate().map(|(k, h)| HitJson {
+                    tau: &h.tau,
+                    first: k == 0,
+                    s: &h.s,
+                    t: &h.t,
+                    lambda0: &h.lambda0,
+                    kind: if h.touch { "touch" } else { "cross" },
+                    multiplicity: h.multiplicity,
+                }).collect::<Vec<_>>(),
             }),
         }
     }

@@ -136,6 +136,7 @@ pub fn trim(mut p: Vec<Q>) -> Vec<Q> {
 
 /// The determinant of a square matrix of rationals: rows scaled to integers, then Bareiss's
 /// fraction-free elimination.
+#[cfg(test)]
 pub fn det(m: &[Vec<Q>]) -> Q {
     let n = m.len();
     if n == 0 {
@@ -174,13 +175,13 @@ pub fn det(m: &[Vec<Q>]) -> Q {
 
 /// The rows of the Sylvester-type matrix for subresultant index `j`: `q − j` shifted copies of
 /// `f` and `p − j` of `g` (coefficients descending), `p + q − j` columns.
-fn rows(f: &[Q], g: &[Q], j: usize) -> Vec<Vec<Q>> {
+fn rows<T: Clone + Zero>(f: &[T], g: &[T], j: usize) -> Vec<Vec<T>> {
     let (p, q) = (f.len() - 1, g.len() - 1);
     let cols = p + q - j;
     let mut out = Vec::with_capacity(p + q - 2 * j);
     for (poly, copies, deg) in [(f, q - j, p), (g, p - j, q)] {
         for i in 0..copies {
-            let mut row = vec![Q::zero(); cols];
+            let mut row = vec![T::zero(); cols];
             for (k, c) in poly.iter().rev().enumerate() {
                 row[i + k] = c.clone();
             }
@@ -193,11 +194,13 @@ fn rows(f: &[Q], g: &[Q], j: usize) -> Vec<Vec<Q>> {
 
 /// The resultant of two polynomials in `y` (formal degrees `p, q ≥ 0`, not both zero),
 /// coefficients descending in the Sylvester matrix.
+#[cfg(test)]
 fn res_univariate(f: &[Q], g: &[Q]) -> Q {
     det(&rows(f, g, 0))
 }
 
 /// The first subresultant `(s1, s0)` of two polynomials in `y` of formal degrees `p, q ≥ 2`.
+#[cfg(test)]
 fn sres1_univariate(f: &[Q], g: &[Q]) -> (Q, Q) {
     let m = rows(f, g, 1);
     let n = m.len(); // p + q − 2 rows, p + q − 1 columns
@@ -214,6 +217,7 @@ fn sres1_univariate(f: &[Q], g: &[Q]) -> (Q, Q) {
 }
 
 /// Newton interpolation through `(k, v_k)`, `k = 0, 1, …`: the coefficients (ascending).
+#[cfg(test)]
 fn interpolate(values: &[Q]) -> Vec<Q> {
     let n = values.len();
     let mut d = values.to_vec();
@@ -262,6 +266,24 @@ fn bound(f: &BiPoly, g: &BiPoly) -> usize {
 /// ```
 pub fn resultant(f: &BiPoly, g: &BiPoly) -> Vec<Q> {
     let d = bound(f, g);
+    let (fi, lf) = integer_bipoly(f);
+    let (gi, lg) = integer_bipoly(g);
+    let values: Vec<BigInt> = (0..=d)
+        .map(|k| {
+            let x = BigInt::from(k);
+            det_int(rows(&at_int(&fi, &x), &at_int(&gi, &x), 0))
+        })
+        .collect();
+    // Res(l_f f, l_g g) = l_f^q l_g^p Res(f, g) (q rows of f, p rows of g)
+    let scale = num_traits::pow(lf, g.deg_y()) * num_traits::pow(lg, f.deg_y());
+    interpolate_int(&values, &scale)
+}
+
+/// `Res_y(f, g)` by rational evaluation, Bareiss on rationals and rational Newton
+/// interpolation (the generic path [`resultant`] is tested against).
+#[cfg(test)]
+pub fn resultant_generic(f: &BiPoly, g: &BiPoly) -> Vec<Q> {
+    let d = bound(f, g);
     let values: Vec<Q> = (0..=d)
         .map(|k| {
             let x = Q::from_integer(BigInt::from(k));
@@ -269,6 +291,103 @@ pub fn resultant(f: &BiPoly, g: &BiPoly) -> Vec<Q> {
         })
         .collect();
     interpolate(&values)
+}
+
+/// A positive integer multiple of `p` (coefficient lists of the same formal lengths) and the
+/// factor (the lcm of the denominators).
+fn integer_bipoly(p: &BiPoly) -> (Vec<Vec<BigInt>>, BigInt) {
+    let l =
+        p.c.iter()
+            .flatten()
+            .fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+    let c =
+        p.c.iter()
+            .map(|row| row.iter().map(|x| x.numer() * (&l / x.denom())).collect())
+            .collect();
+    (c, l)
+}
+
+/// The polynomial in `y` at the integer `x` (formal length kept).
+fn at_int(p: &[Vec<BigInt>], x: &BigInt) -> Vec<BigInt> {
+    p.iter()
+        .map(|c| {
+            let mut acc = BigInt::zero();
+            for a in c.iter().rev() {
+                acc = acc * x + a;
+            }
+            acc
+        })
+        .collect()
+}
+
+/// The determinant of an integer matrix (Bareiss's fraction-free elimination, exact divisions).
+fn det_int(mut a: Vec<Vec<BigInt>>) -> BigInt {
+    let n = a.len();
+    if n == 0 {
+        return BigInt::one();
+    }
+    let mut negate = false;
+    let mut prev = BigInt::one();
+    for k in 0..n - 1 {
+        if a[k][k].is_zero() {
+            let Some(p) = (k + 1..n).find(|&i| !a[i][k].is_zero()) else {
+                return BigInt::zero();
+            };
+            a.swap(k, p);
+            negate = !negate;
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let v = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
+                a[i][j] = v / &prev;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    let d = a[n - 1][n - 1].clone();
+    if negate { -d } else { d }
+}
+
+/// The polynomial through `(k, v_k)`, `k = 0, …, d`, divided by `scale`, exactly: with the
+/// forward differences `Δ^i v_0` (integers), `d!·p(x) = Σ_i Δ^i v_0 · (d!/i!) · x(x − 1)…(x − i + 1)`
+/// is an integer polynomial (nested Horner in the falling factorials), then divided by `d!·scale`.
+fn interpolate_int(values: &[BigInt], scale: &BigInt) -> Vec<Q> {
+    let n = values.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let d = n - 1;
+    let mut diff = values.to_vec();
+    for level in 1..n {
+        for i in (level..n).rev() {
+            let t = &diff[i] - &diff[i - 1];
+            diff[i] = t;
+        }
+    }
+    // a_i = Δ^i v_0 · d!/i!
+    let mut a = diff;
+    let mut f = BigInt::one(); // d!/i!, for i from d down
+    for i in (0..=d).rev() {
+        a[i] *= &f;
+        f *= BigInt::from(i.max(1));
+    }
+    let dfact: BigInt = (1..=d).fold(BigInt::one(), |f, k| f * BigInt::from(k));
+    // out = a_d; out ← out·(x − i) + a_i for i = d − 1 … 0
+    let mut out: Vec<BigInt> = vec![a[d].clone()];
+    for i in (0..d).rev() {
+        let mut next = vec![BigInt::zero(); out.len() + 1];
+        let ib = BigInt::from(i);
+        for (e, c) in out.iter().enumerate() {
+            next[e + 1] += c;
+            if i > 0 {
+                next[e] -= c * &ib;
+            }
+        }
+        next[0] += &a[i];
+        out = next;
+    }
+    let den = dfact * scale;
+    trim(out.into_iter().map(|c| Q::new(c, den.clone())).collect())
 }
 
 /// The first subresultant of `f` and `g` with respect to `y`: `(s1(x), s0(x))` with
@@ -285,6 +404,35 @@ pub fn subresultant1(f: &BiPoly, g: &BiPoly) -> (Vec<Q>, Vec<Q>) {
         // no first subresultant: report s1 = 0 (every root then has to be resolved otherwise)
         return (Vec::new(), Vec::new());
     }
+    let d = bound(f, g);
+    let (fi, lf) = integer_bipoly(f);
+    let (gi, lg) = integer_bipoly(g);
+    let (mut v1, mut v0) = (Vec::with_capacity(d + 1), Vec::with_capacity(d + 1));
+    for k in 0..=d {
+        let x = BigInt::from(k);
+        let m = rows(&at_int(&fi, &x), &at_int(&gi, &x), 1);
+        let n = m.len(); // p + q − 2 rows, p + q − 1 columns
+        let c1: Vec<Vec<BigInt>> = m.iter().map(|r| r[..n].to_vec()).collect();
+        let c0: Vec<Vec<BigInt>> = m
+            .iter()
+            .map(|r| {
+                let mut v = r[..n - 1].to_vec();
+                v.push(r[n].clone());
+                v
+            })
+            .collect();
+        v1.push(det_int(c1));
+        v0.push(det_int(c0));
+    }
+    // q − 1 rows of f and p − 1 of g
+    let scale = num_traits::pow(lf, g.deg_y() - 1) * num_traits::pow(lg, f.deg_y() - 1);
+    (interpolate_int(&v1, &scale), interpolate_int(&v0, &scale))
+}
+
+/// The first subresultant by rational evaluation and interpolation (the generic path
+/// [`subresultant1`] is tested against; formal degrees at least 2).
+#[cfg(test)]
+pub fn subresultant1_generic(f: &BiPoly, g: &BiPoly) -> (Vec<Q>, Vec<Q>) {
     let d = bound(f, g);
     let (mut v1, mut v0) = (Vec::with_capacity(d + 1), Vec::with_capacity(d + 1));
     for k in 0..=d {

@@ -36,16 +36,66 @@ fn factorial(n: usize) -> BigInt {
 }
 
 /// Bernstein coefficients of `p` over `[a, b]`, times a positive constant (integers).
+///
+/// In integers only: with `a = L/D`, `b = H/D` over one denominator `D > 0` and `W = H − L`,
+/// `D^n p(x)` at `x = (L + W t)/D` is `Σ a_j t^j` where `a_j = W^j · [y^j] Σ_i c_i D^(n−i) (y + L)^i`
+/// (scale, Taylor shift by `L`, scale by `W`), and `n! b_i = Σ_{j ≤ i} a_j i! (n − j)!/(i − j)!`.
 pub fn bernstein_on(p: &IntPoly, a: &BigRational, b: &BigRational) -> Vec<BigInt> {
     let Some(n) = p.degree() else {
         return vec![BigInt::zero()];
     };
+    let den = a.denom().lcm(b.denom());
+    let l = a.numer() * (&den / a.denom());
+    let w = b.numer() * (&den / b.denom()) - &l;
+    // c_i D^(n − i)
+    let mut t: Vec<BigInt> = Vec::with_capacity(n + 1);
+    let mut dpow = BigInt::one();
+    for c in p.coeffs().iter().rev() {
+        t.push(c * &dpow);
+        dpow *= &den;
+    }
+    t.reverse();
+    // Taylor shift by L: t(y + L)
+    if !l.is_zero() {
+        for i in 0..n {
+            for j in (i..n).rev() {
+                let x = &t[j + 1] * &l;
+                t[j] += x;
+            }
+        }
+    }
+    // scale by W^j
+    let mut wpow = BigInt::one();
+    for x in t.iter_mut() {
+        *x *= &wpow;
+        wpow *= &w;
+    }
+    let qi = t;
+    // B_i = Σ_{j ≤ i} q_j · i! (n − j)! / (i − j)!  (= n! b_i)
+    let fact: Vec<BigInt> = (0..=n).map(factorial).collect();
+    let mut out: Vec<BigInt> = (0..=n)
+        .map(|i| {
+            (0..=i)
+                .filter(|&j| !qi[j].is_zero())
+                .map(|j| &qi[j] * (&fact[i] * &fact[n - j] / &fact[i - j]))
+                .sum()
+        })
+        .collect();
+    reduce(&mut out);
+    out
+}
+
+/// The generic rational path of [`bernstein_on`] (Horner in rationals), kept for the test
+/// that the integer path equals it.
+#[cfg(test)]
+pub fn bernstein_on_rational(p: &IntPoly, a: &BigRational, b: &BigRational) -> Vec<BigInt> {
+    let Some(n) = p.degree() else {
+        return vec![BigInt::zero()];
+    };
     let w = b - a;
-    // q(t) = p(a + w t) by Horner in rationals
     let mut q: Vec<BigRational> = vec![BigRational::zero(); n + 1];
     let mut len = 0;
     for c in p.coeffs().iter().rev() {
-        // q ← q·(a + w t) + c
         let mut next = vec![BigRational::zero(); n + 1];
         for i in 0..len {
             next[i] += &q[i] * a;
@@ -57,7 +107,6 @@ pub fn bernstein_on(p: &IntPoly, a: &BigRational, b: &BigRational) -> Vec<BigInt
     }
     let l = q.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
     let qi: Vec<BigInt> = q.iter().map(|x| x.numer() * (&l / x.denom())).collect();
-    // B_i = Σ_{j ≤ i} q_j · i! (n − j)! / (i − j)!  (= n! b_i)
     let fact: Vec<BigInt> = (0..=n).map(factorial).collect();
     let mut out: Vec<BigInt> = (0..=n)
         .map(|i| {

@@ -17,6 +17,7 @@
 
 mod bivariate;
 mod curves;
+mod interval;
 mod isolate;
 mod number;
 mod poly;
@@ -122,3 +123,59 @@ pub(crate) fn check_input(
 
 #[cfg(test)]
 mod tests;
+
+/// JSON of the inverse problems' results (`tribez intersect`, `locate`, `ray --format json`):
+/// the exact numbers as [`RealAlgebraic::to_json`] and [`Expr::to_json`] give them.
+mod json {
+    use serde::ser::{Serialize, SerializeMap, Serializer};
+
+    use super::{Expr, Intersection, Located, Overlap, RealAlgebraic, point_text};
+
+    impl Serialize for RealAlgebraic {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            self.to_json().serialize(s)
+        }
+    }
+
+    impl Serialize for Expr {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            self.to_json().serialize(s)
+        }
+    }
+
+    /// `{s, t, point, tangential, multiplicity}`.
+    impl Serialize for Intersection {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            let mut m = s.serialize_map(Some(5))?;
+            m.serialize_entry("s", &self.s)?;
+            m.serialize_entry("t", &self.t)?;
+            m.serialize_entry("point", &point_text(&self.point))?;
+            m.serialize_entry("tangential", &self.tangential)?;
+            m.serialize_entry("multiplicity", &self.multiplicity)?;
+            m.end()
+        }
+    }
+
+    /// `{s: [from, to], t: [from, to]}`.
+    impl Serialize for Overlap {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            let mut m = s.serialize_map(Some(2))?;
+            m.serialize_entry("s", &self.s)?;
+            m.serialize_entry("t", &self.t)?;
+            m.end()
+        }
+    }
+
+    /// `{s, t, lambda0, jacobian_zero, multiplicity}`.
+    impl Serialize for Located {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            let mut m = s.serialize_map(Some(5))?;
+            m.serialize_entry("s", &self.s)?;
+            m.serialize_entry("t", &self.t)?;
+            m.serialize_entry("lambda0", &self.lambda0)?;
+            m.serialize_entry("jacobian_zero", &self.jacobian_zero)?;
+            m.serialize_entry("multiplicity", &self.multiplicity)?;
+            m.end()
+        }
+    }
+}

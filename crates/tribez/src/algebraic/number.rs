@@ -10,7 +10,10 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
 use super::AlgebraicError;
-use super::isolate::{Cell, bernstein_on, isolate, variations};
+use super::interval::sign_on;
+use super::isolate::{Cell, isolate};
+#[cfg(test)]
+use super::isolate::{bernstein_on, variations};
 use super::poly::IntPoly;
 use crate::number::{BinaryFloat, hex_f64, round_to, to_decimal_string};
 
@@ -130,10 +133,107 @@ impl Root {
         }
     }
 
-    /// Bisect until `hi − lo ≤ width` (`width > 0`).
+    /// Narrow until `hi − lo ≤ width` (`width > 0`): Newton steps in dyadic arithmetic whose
+    /// result is verified by two exact signs (an interval of width `≤ width/2` around the
+    /// Newton iterate where the polynomial changes sign), bisection when a step fails.
     pub fn refine_to(&mut self, width: &BigRational) {
+        let mut fails = 0;
+        while &(&self.hi - &self.lo) > width {
+            if fails < 6 && self.newton_jump(width) {
+                continue;
+            }
+            fails += 1;
+            for _ in 0..4 {
+                self.bisect();
+            }
+        }
+    }
+
+    /// Bisect until `hi − lo ≤ width` (the generic path [`Root::refine_to`] is tested against).
+    #[cfg(test)]
+    pub fn bisect_to(&mut self, width: &BigRational) {
         while &(&self.hi - &self.lo) > width {
             self.bisect();
+        }
+    }
+
+    /// Narrow the interval by a factor `2^k` at least.
+    pub fn narrow_by(&mut self, k: u32) {
+        let w = (&self.hi - &self.lo) / BigRational::from_integer(BigInt::one() << k);
+        self.refine_to(&w);
+    }
+
+    /// One attempt: Newton's iteration `x ← x − p(x)/p'(x)` from the midpoint on dyadic numbers
+    /// `m/2^K` (`2^−K ≤ width/8`), then the interval `[x − e, x + e]` (`e = 2^−(K−2)`, clipped
+    /// to the current one) is kept if `p` has the signs of a root there. Any failure leaves the
+    /// interval as it was.
+    fn newton_jump(&mut self, width: &BigRational) -> bool {
+        // K with 2^-K ≤ width / 8
+        let k = (width.denom().bits() + 3).saturating_sub(width.numer().bits()) + 1;
+        let k = u32::try_from(k).unwrap_or(u32::MAX);
+        if k > 1 << 20 {
+            return false;
+        }
+        let scale = BigInt::one() << k;
+        let dp = self.poly.derivative();
+        let n = self.poly.degree().unwrap_or(0);
+        if n < 2 {
+            return false;
+        }
+        let mid = (&self.lo + &self.hi) / BigRational::from_integer(BigInt::from(2));
+        let mut m = (mid * BigRational::from_integer(scale.clone()))
+            .floor()
+            .to_integer();
+        let in_range = |m: &BigInt| -> bool {
+            let x = BigRational::new(m.clone(), scale.clone());
+            x > self.lo && x < self.hi
+        };
+        // iterations: quadratic convergence from ~2^-4 relative needs ~log2(K) steps
+        let steps = 4 + (64 - u64::from(k).leading_zeros()) as usize;
+        let mut converged = false;
+        for _ in 0..steps {
+            // f = 2^(Kn) p(m/2^K), g = 2^(K(n−1)) p'(m/2^K): m/2^K − f/(2^K g) ⇒ new m = m − f/g
+            let f = self.poly.eval_scaled(&m, &scale);
+            let g = dp.eval_scaled(&m, &scale);
+            if g.is_zero() {
+                return false;
+            }
+            let step = f.div_floor(&g);
+            if step.is_zero() || step == BigInt::from(-1) {
+                converged = true;
+                m -= step;
+                break;
+            }
+            m -= step;
+            if !in_range(&m) {
+                return false;
+            }
+        }
+        if !converged {
+            return false;
+        }
+        let e = BigInt::from(4);
+        let a = BigRational::new(&m - &e, scale.clone()).max(self.lo.clone());
+        let b = BigRational::new(&m + &e, scale.clone()).min(self.hi.clone());
+        if a >= b {
+            return false;
+        }
+        let sa = if a == self.lo {
+            self.lo_sign
+        } else {
+            self.poly.sign_at(&a)
+        };
+        let sb = if b == self.hi {
+            self.lo_sign.reverse()
+        } else {
+            self.poly.sign_at(&b)
+        };
+        if sa == self.lo_sign && sb == self.lo_sign.reverse() {
+            self.lo = a;
+            self.hi = b;
+            true
+        } else {
+            false
         }
     }
 
@@ -286,6 +386,48 @@ impl RealAlgebraic {
                     return Ordering::Equal;
                 }
                 let mut r = r.clone();
+                // the interval filter, on the isolating interval and twice narrowed by 2^-16
+                for round in 0..3 {
+                    if let Some(s) = sign_on(q.coeffs(), &r.lo, &r.hi) {
+                        return s;
+                    }
+                    if round < 2 {
+                        for _ in 0..16 {
+                            r.bisect();
+                        }
+                    }
+                }
+                // does q vanish at the root? Only a common factor with the root's polynomial
+                // can make it vanish there, and that factor changes sign over the interval
+                let g = r.poly.gcd(q);
+                if g.degree().unwrap_or(0) > 0 && g.sign_at(&r.lo) != g.sign_at(&r.hi) {
+                    return Ordering::Equal;
+                }
+                // q(root) ≠ 0: the enclosure excludes zero once the interval is narrow enough
+                loop {
+                    for _ in 0..8 {
+                        r.bisect();
+                    }
+                    if let Some(s) = sign_on(q.coeffs(), &r.lo, &r.hi) {
+                        return s;
+                    }
+                }
+            }
+        }
+    }
+
+    /// The sign of `q` at the number by the Bernstein coefficients over ever narrower isolating
+    /// intervals and a gcd (the generic exact path that [`RealAlgebraic::sign_of`]'s interval
+    /// filter is tested against).
+    #[cfg(test)]
+    pub fn sign_of_generic(&self, q: &IntPoly) -> Ordering {
+        match self {
+            RealAlgebraic::Rational(x) => q.sign_at(x),
+            RealAlgebraic::Root(r) => {
+                if q.is_zero() {
+                    return Ordering::Equal;
+                }
+                let mut r = r.clone();
                 let mut checked_gcd = false;
                 let mut tries = 0;
                 loop {
@@ -300,8 +442,6 @@ impl RealAlgebraic {
                     }
                     tries += 1;
                     if !checked_gcd && tries > 6 {
-                        // does q vanish at the root? Only a common factor with the root's
-                        // polynomial can make it vanish there
                         checked_gcd = true;
                         let g = r.poly.gcd(q);
                         if g.degree().unwrap_or(0) > 0 && g.sign_at(&r.lo) != g.sign_at(&r.hi) {
@@ -311,6 +451,14 @@ impl RealAlgebraic {
                     r.bisect();
                 }
             }
+        }
+    }
+
+    /// The current enclosure: the isolating interval of a root, `[x, x]` for a rational.
+    pub fn bounds(&self) -> (BigRational, BigRational) {
+        match self {
+            RealAlgebraic::Rational(x) => (x.clone(), x.clone()),
+            RealAlgebraic::Root(r) => (r.lo.clone(), r.hi.clone()),
         }
     }
 
@@ -373,7 +521,7 @@ impl RealAlgebraic {
                     if a == b {
                         return a;
                     }
-                    r.bisect();
+                    r.narrow_by(16);
                 }
             }
         }
@@ -400,7 +548,7 @@ impl RealAlgebraic {
                     if a == to_decimal_string(&r.hi, digits) {
                         return a;
                     }
-                    r.bisect();
+                    r.narrow_by(16);
                 }
             }
         }

@@ -196,6 +196,15 @@ impl IntPoly {
     /// The greatest common divisor, primitive with a positive leading coefficient (primitive
     /// remainder sequence; `gcd(0, 0) = 0`).
     pub fn gcd(&self, o: &IntPoly) -> Self {
+        if !self.is_zero() && !o.is_zero() && self.coprime_mod_p(o) {
+            return IntPoly::from_i64(&[1]);
+        }
+        self.gcd_prs(o)
+    }
+
+    /// The gcd by the primitive remainder sequence alone (the generic path [`IntPoly::gcd`]'s
+    /// modular shortcut is tested against).
+    pub fn gcd_prs(&self, o: &IntPoly) -> Self {
         let (mut a, mut b) = (self.primitive(), o.primitive());
         if a.degree() < b.degree() {
             std::mem::swap(&mut a, &mut b);
@@ -304,6 +313,79 @@ impl IntPoly {
             }
         }
         Self::new(c)
+    }
+}
+
+/// The prime `2^61 − 1` for the modular coprimality test.
+const P61: u64 = (1 << 61) - 1;
+
+fn mul_mod(a: u64, b: u64) -> u64 {
+    ((u128::from(a) * u128::from(b)) % u128::from(P61)) as u64
+}
+
+fn pow_mod(mut a: u64, mut e: u64) -> u64 {
+    let mut r = 1;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, a);
+        }
+        a = mul_mod(a, a);
+        e >>= 1;
+    }
+    r
+}
+
+/// The coefficients modulo `P61` (ascending, trailing zeros dropped).
+fn reduce_mod(c: &[BigInt]) -> Vec<u64> {
+    let p = BigInt::from(P61);
+    let mut v: Vec<u64> = c
+        .iter()
+        .map(|x| u64::try_from(x.mod_floor(&p)).expect("reduced"))
+        .collect();
+    while v.last() == Some(&0) {
+        v.pop();
+    }
+    v
+}
+
+/// The degree of `gcd(a, b)` over `GF(P61)` (`None` when both are zero).
+fn gcd_degree_mod(mut a: Vec<u64>, mut b: Vec<u64>) -> Option<usize> {
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while !b.is_empty() {
+        // a ← a mod b
+        let inv = pow_mod(*b.last().expect("non-empty"), P61 - 2);
+        while a.len() >= b.len() {
+            let top = mul_mod(*a.last().expect("non-empty"), inv);
+            let shift = a.len() - b.len();
+            for (j, bj) in b.iter().enumerate() {
+                let t = mul_mod(top, *bj);
+                a[shift + j] = (a[shift + j] + P61 - t) % P61;
+            }
+            while a.last() == Some(&0) {
+                a.pop();
+            }
+            if a.is_empty() {
+                break;
+            }
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len().checked_sub(1)
+}
+
+impl IntPoly {
+    /// Is the gcd certainly 1? Modulo the prime `2^61 − 1` not dividing the leading coefficient
+    /// of `self`, the gcd has degree at least that of the integer gcd (the integer gcd's
+    /// leading coefficient divides `lc(self)`, so its image keeps its degree and divides both
+    /// images); degree 0 there proves the integer gcd constant.
+    pub fn coprime_mod_p(&self, o: &IntPoly) -> bool {
+        let a = reduce_mod(&self.c);
+        if a.len() != self.c.len() {
+            return false; // the prime divides lc(self)
+        }
+        gcd_degree_mod(a, reduce_mod(&o.c)) == Some(0)
     }
 }
 

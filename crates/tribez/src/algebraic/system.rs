@@ -14,6 +14,7 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use super::bivariate::{BiPoly, add, horner, resultant, subresultant1, trim};
+use super::interval::{IntBiPoly, Scaled, horner_scaled};
 use super::{AlgebraicError, IntPoly, RealAlgebraic};
 
 type Q = BigRational;
@@ -186,6 +187,23 @@ impl Expr {
         enclose_ratio(&self.base, &self.num, &self.den, width)
     }
 
+    /// JSON: `{"rational", "f64", "decimal"}` when rational, else `{"f64", "decimal"}` (hex
+    /// float, 17 significant digits).
+    pub fn to_json(&self) -> serde_json::Value {
+        use crate::number::{hex_f64, round_f64, to_decimal_string};
+        match self.rational() {
+            Some(r) => serde_json::json!({
+                "rational": r.to_string(),
+                "f64": hex_f64(round_f64(&r)),
+                "decimal": to_decimal_string(&r, 17),
+            }),
+            None => serde_json::json!({
+                "f64": hex_f64(self.to_f64()),
+                "decimal": self.decimal(),
+            }),
+        }
+    }
+
     /// The nearest `f64` (ties to even): enclosures are narrowed until they round to one float;
     /// a value that is exactly a midpoint between two floats is recognised by an exact sign.
     pub fn to_f64(&self) -> f64 {
@@ -235,39 +253,56 @@ impl Expr {
     }
 }
 
-/// A rational enclosure of `num(β)/den(β)` of width at most `width` (interval Horner over ever
-/// narrower intervals of `β`).
+/// A rational enclosure of `num(β)/den(β)` of width at most `width` (integer interval Horner
+/// over ever narrower isolating intervals of `β`; see [`ratio_on`]).
 pub fn enclose_ratio(beta: &RealAlgebraic, num: &[Q], den: &[Q], width: &Q) -> (Q, Q) {
     if let Some(b) = beta.as_rational() {
         let v = horner(num, b) / horner(den, b);
         return (v.clone(), v);
     }
-    let mut w = width.clone();
+    let (ni, di) = common_integers(num, den);
+    let mut beta = beta.clone();
+    let mut w = Q::new(BigInt::from(1), BigInt::from(1) << 20u32).min(width.clone());
     loop {
-        let (lo, hi) = beta.enclosure(&w);
-        let n = interval_horner(num, &lo, &hi);
-        let d = interval_horner(den, &lo, &hi);
-        if d.0.is_positive() || d.1.is_negative() {
-            let cands = [&n.0 / &d.0, &n.0 / &d.1, &n.1 / &d.0, &n.1 / &d.1];
-            let a = cands.iter().min().expect("four").clone();
-            let b = cands.iter().max().expect("four").clone();
-            if &b - &a <= *width {
-                return (a, b);
-            }
+        beta.refine_to(&w);
+        let (lo, hi) = beta.bounds();
+        if let Some((a, b)) = ratio_on(&ni, &di, &lo, &hi)
+            && &b - &a <= *width
+        {
+            return (a, b);
         }
         w /= q(1 << 16);
     }
 }
 
-fn interval_horner(p: &[Q], lo: &Q, hi: &Q) -> (Q, Q) {
-    let mut a = Q::zero();
-    let mut b = Q::zero();
-    for c in p.iter().rev() {
-        let prods = [&a * lo, &a * hi, &b * lo, &b * hi];
-        a = prods.iter().min().expect("four") + c;
-        b = prods.iter().max().expect("four") + c;
+/// Integer multiples `(N, D)` of `(num, den)` by one positive factor (their ratio unchanged).
+pub(crate) fn common_integers(num: &[Q], den: &[Q]) -> (Vec<BigInt>, Vec<BigInt>) {
+    let l = num.iter().chain(den).fold(BigInt::from(1), |l, x| {
+        num_integer::Integer::lcm(&l, x.denom())
+    });
+    let f = |p: &[Q]| -> Vec<BigInt> { p.iter().map(|x| x.numer() * (&l / x.denom())).collect() };
+    (f(num), f(den))
+}
+
+/// An enclosure of `N(x)/D(x)` over `x ∈ [lo, hi]` when the enclosure of `D` excludes zero
+/// (both evaluated with one formal degree, so the common positive scale cancels).
+pub(crate) fn ratio_on(n: &[BigInt], d: &[BigInt], lo: &Q, hi: &Q) -> Option<(Q, Q)> {
+    let deg = n.len().max(d.len()).max(1) - 1;
+    let x = Scaled::new(lo, hi);
+    let ni = horner_scaled(n, deg, &x);
+    let di = horner_scaled(d, deg, &x);
+    if di.sign()? == Ordering::Equal {
+        return None;
     }
-    (a, b)
+    let c = [
+        Q::new(ni.lo.clone(), di.lo.clone()),
+        Q::new(ni.lo.clone(), di.hi.clone()),
+        Q::new(ni.hi.clone(), di.lo.clone()),
+        Q::new(ni.hi, di.hi),
+    ];
+    let a = c.iter().min().expect("four").clone();
+    let b = c.iter().max().expect("four").clone();
+    Some((a, b))
 }
 
 /// Cauchy's bound `1 + max |c_i / c_n|` on the absolute value of the roots.
@@ -282,8 +317,52 @@ fn cauchy(p: &IntPoly) -> Q {
     q(1) + m / lc
 }
 
-/// The value `num(β)/den(β)`, known to be one of `candidates`: its index (exact signs only).
+/// The value `num(β)/den(β)`, known to be one of `candidates`: its index. Enclosures of the
+/// value and of every candidate are narrowed until exactly one candidate's meets the value's
+/// (the candidates are distinct numbers, and the value is one of them, so this ends); after
+/// 2^-520 the exact path [`match_value_exact`] decides.
 pub fn match_value(
+    beta: &RealAlgebraic,
+    num: &[Q],
+    den: &[Q],
+    candidates: &[RealAlgebraic],
+) -> Option<usize> {
+    if candidates.is_empty() {
+        return None;
+    }
+    let (ni, di) = common_integers(num, den);
+    let mut b = beta.clone();
+    let mut cands: Vec<RealAlgebraic> = candidates.to_vec();
+    let mut w = q(1) / q(1 << 20);
+    for _ in 0..32 {
+        b.refine_to(&w);
+        let (lo, hi) = b.bounds();
+        if let Some((vlo, vhi)) = ratio_on(&ni, &di, &lo, &hi) {
+            let mut hit = None;
+            let mut several = false;
+            for (k, c) in cands.iter_mut().enumerate() {
+                c.refine_to(&w);
+                let (clo, chi) = c.bounds();
+                if clo <= vhi && vlo <= chi {
+                    if hit.is_some() {
+                        several = true;
+                        break;
+                    }
+                    hit = Some(k);
+                }
+            }
+            if !several {
+                return hit;
+            }
+        }
+        w /= q(1 << 16);
+    }
+    match_value_exact(beta, num, den, candidates)
+}
+
+/// The value `num(β)/den(β)`, known to be one of `candidates`: its index (exact signs only; the
+/// generic path [`match_value`] is tested against).
+pub fn match_value_exact(
     beta: &RealAlgebraic,
     num: &[Q],
     den: &[Q],
@@ -506,14 +585,39 @@ pub fn solve(
             ));
         }
     }
+    let int_flags: Vec<IntBiPoly> = flags.iter().map(IntBiPoly::from_bipoly).collect();
     for s in solutions.iter_mut() {
         s.flags = flags
             .iter()
-            .map(|g| s.base().sign_of_rationals(&s.substitute(g)) == Ordering::Equal)
+            .zip(&int_flags)
+            .map(|(g, gi)| flag_vanishes(s, g, gi))
             .collect();
     }
     Ok(Solved::Points {
         solutions,
         resultant: rx_int,
     })
+}
+
+/// Does `g` vanish at the solution? First the box filter (the integer enclosure of `g` over
+/// the isolating intervals of `x` and `y`, narrowed to 2^-20, 2^-60 and 2^-120), then the exact
+/// sign of `den^N · g(β, num/den)` at the base value `β` ([`flag_vanishes_exact`]).
+pub(crate) fn flag_vanishes(s: &Solution, g: &BiPoly, gi: &IntBiPoly) -> bool {
+    let (mut x, mut y) = (s.x.clone(), s.y.clone());
+    for k in [20u32, 60, 120] {
+        let w = Q::new(BigInt::from(1), BigInt::from(1) << k);
+        x.refine_to(&w);
+        y.refine_to(&w);
+        let (xl, xh) = x.bounds();
+        let (yl, yh) = y.bounds();
+        if let Some(sign) = gi.sign_on_box(&Scaled::new(&xl, &xh), &Scaled::new(&yl, &yh)) {
+            return sign == Ordering::Equal;
+        }
+    }
+    flag_vanishes_exact(s, g)
+}
+
+/// Does `g` vanish at the solution, by exact substitution (the generic path).
+pub fn flag_vanishes_exact(s: &Solution, g: &BiPoly) -> bool {
+    s.base().sign_of_rationals(&s.substitute(g)) == Ordering::Equal
 }

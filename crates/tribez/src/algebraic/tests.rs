@@ -123,3 +123,113 @@ fn resultant_of_two_circles_shifted() {
     };
     assert_eq!(resultant(&f, &g), vec![q("1"), q("-4"), q("4")]);
 }
+
+/// Fast paths against their generic exact paths (issue 13's speed work): the integer Bernstein
+/// conversion, the modular gcd shortcut, the interval-filtered sign, Newton refinement,
+/// integer resultants and subresultants, and the box filter of the flags.
+mod fast_paths {
+    use std::cmp::Ordering;
+
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+
+    use super::super::bivariate::{resultant_generic, subresultant1_generic};
+    use super::super::interval::IntBiPoly;
+    use super::super::isolate::{bernstein_on, bernstein_on_rational};
+    use super::super::system::{flag_vanishes, flag_vanishes_exact};
+    use super::*;
+
+    fn poly() -> impl Strategy<Value = IntPoly> {
+        prop::collection::vec(-40i64..=40, 2..9).prop_map(|c| IntPoly::from_i64(&c))
+    }
+
+    fn rat() -> impl Strategy<Value = BigRational> {
+        (-60i64..=60, 1i64..=17).prop_map(|(n, d)| BigRational::new(n.into(), d.into()))
+    }
+
+    fn bipoly() -> impl Strategy<Value = BiPoly> {
+        prop::collection::vec(prop::collection::vec(rat(), 1..4), 2..4).prop_map(|c| BiPoly { c })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        #[test]
+        fn integer_bernstein_equals_rational(p in poly(), a in rat(), b in rat()) {
+            prop_assume!(a < b && !p.is_zero());
+            prop_assert_eq!(bernstein_on(&p, &a, &b), bernstein_on_rational(&p, &a, &b));
+        }
+
+        #[test]
+        fn gcd_shortcut_equals_prs(a in poly(), b in poly(), c in poly()) {
+            // a·c and b·c share c (at least)
+            let (x, y) = (a.mul(&c), b.mul(&c));
+            prop_assume!(!x.is_zero() && !y.is_zero());
+            prop_assert_eq!(x.gcd(&y), x.gcd_prs(&y));
+            prop_assert_eq!(a.gcd(&b), a.gcd_prs(&b));
+        }
+
+        #[test]
+        fn filtered_sign_equals_generic(p in poly(), q in poly(), k in poly()) {
+            prop_assume!(!p.is_zero() && !q.is_zero());
+            let Ok(roots) = RealAlgebraic::roots_in(&p, &BigRational::from_integer((-50).into()), &BigRational::from_integer(50.into())) else {
+                return Err(TestCaseError::fail("isolation"));
+            };
+            for r in &roots {
+                prop_assert_eq!(r.sign_of(&q), r.sign_of_generic(&q));
+                // a multiple of the root's own polynomial vanishes there
+                let v = match r.as_root() { Some(root) => root.poly().mul(&k), None => p.mul(&k) };
+                prop_assert_eq!(r.sign_of(&v), r.sign_of_generic(&v));
+                if !k.is_zero() {
+                    prop_assert_eq!(r.sign_of(&v), Ordering::Equal);
+                }
+            }
+        }
+
+        #[test]
+        fn newton_refinement_keeps_the_root(p in poly(), e in 1u32..200) {
+            prop_assume!(!p.is_zero());
+            let (lo, hi) = (BigRational::from_integer((-50).into()), BigRational::from_integer(50.into()));
+            for r in RealAlgebraic::roots_in(&p, &lo, &hi).unwrap() {
+                let Some(root) = r.as_root() else { continue };
+                let w = BigRational::new(1.into(), BigInt::from(1) << e);
+                let (mut a, mut b) = (root.clone(), root.clone());
+                a.refine_to(&w);
+                b.bisect_to(&w);
+                let ((alo, ahi), (blo, bhi)) = (a.interval(), b.interval());
+                prop_assert!(ahi - alo <= w && bhi - blo <= w);
+                // both enclose the one root: the intervals meet, and p changes sign over each
+                prop_assert!(alo <= bhi && blo <= ahi);
+                prop_assert_ne!(root.poly().sign_at(alo), root.poly().sign_at(ahi));
+                prop_assert_eq!(r.to_f64(), RealAlgebraic::Root(b.clone()).to_f64());
+            }
+        }
+
+        #[test]
+        fn integer_resultants_equal_rational(f in bipoly(), g in bipoly()) {
+            prop_assert_eq!(resultant(&f, &g), resultant_generic(&f, &g));
+            if f.deg_y() >= 2 && g.deg_y() >= 2 {
+                prop_assert_eq!(subresultant1(&f, &g), subresultant1_generic(&f, &g));
+            }
+        }
+
+        #[test]
+        fn box_filter_equals_exact_substitution(f in bipoly(), g in bipoly(), h in bipoly()) {
+            let Ok(Solved::Points { solutions, .. }) = solve(&f, &g, &Region::unit_square(), &[]) else {
+                return Ok(());
+            };
+            for s in &solutions {
+                // f and g vanish at every solution (a wrongly matched partner would show here),
+                // h wherever the exact path says so
+                for (k, flag) in [&f, &g, &h].into_iter().enumerate() {
+                    let fast = flag_vanishes(s, flag, &IntBiPoly::from_bipoly(flag));
+                    prop_assert_eq!(fast, flag_vanishes_exact(s, flag));
+                    if k < 2 {
+                        prop_assert!(fast);
+                    }
+                }
+            }
+        }
+    }
+}

@@ -24,6 +24,9 @@
 //! | `abscissae` | (a functional or Bézier patch) | the Bézier abscissae `ξ_α` keyed by multi-index |
 //! | `ordinates` | `domain`, `degree`, `function` (polynomial in `x, y`, or `names`) | the control ordinates `b_α` keyed by multi-index |
 //! | `graph` | (a functional patch) | the control points `(ξ_α, b_α)` of its graph, keyed by multi-index |
+//! | `intersect` | `patches = ["a", "b"]` (two planar curves) | the intersections' `(s, t)`: `expect` lists claimed pairs, or is a count ([`inverse`]) |
+//! | `locate` | `point` (x, y), optional `anywhere` | the parameters `(s, t)` mapping to the point ([`inverse`]) |
+//! | `ray` | `origin`, `direction` | the hits `(τ, s, t)` with `τ ≥ 0` ([`inverse`]) |
 //!
 //! `eval` also takes rational patches (`at` or `cartesian`) and S-patches (`cartesian` only).
 //!
@@ -44,6 +47,7 @@ mod claimed;
 mod construct;
 mod forms;
 mod inputs;
+pub mod inverse;
 mod join;
 mod point;
 mod seen;
@@ -56,13 +60,14 @@ use num_rational::BigRational;
 
 use super::value::Value;
 use super::{CLAIM_KEYS, Claim, ClaimFile};
-use crate::io::InputError;
 use crate::io::patch_file::index_key;
+use crate::io::{ClaimProblem, InputError};
 
 pub use claimed::read_claimed;
 pub use construct::{Construction, HalveMethod, MatrixKind, SubdivideMode};
 pub use forms::{Basis, Form};
 pub use inputs::{Inputs, Point};
+pub use inverse::InverseOp;
 pub use join::JoinOp;
 pub use point::{FloatEval, PointOp, eval_float as float_view};
 
@@ -129,6 +134,9 @@ op_names! {
     Abscissae = "abscissae" ["patch"];
     Ordinates = "ordinates" ["domain", "degree", "function", "names"];
     Graph = "graph" ["patch"];
+    Intersect = "intersect" ["patches"];
+    Locate = "locate" ["patch", "point", "anywhere"];
+    Ray = "ray" ["patch", "origin", "direction"];
 }
 
 /// Every operation name, for messages.
@@ -148,6 +156,8 @@ pub enum ClaimOp<'a> {
     Construction(Construction<'a>),
     /// `join`.
     Join(JoinOp<'a>),
+    /// `intersect`, `locate`, `ray` (judged by [`inverse::judge`]).
+    Inverse(InverseOp<'a>),
 }
 
 impl<'a> ClaimOp<'a> {
@@ -160,11 +170,10 @@ impl<'a> ClaimOp<'a> {
             inputs.file.doc.error(
                 node,
                 &format!("{}.op", claim.id),
-                format!(
-                    "unknown operation `{}` (known: {})",
-                    claim.op,
-                    op_names().join(", ")
-                ),
+                ClaimProblem::UnknownOp {
+                    op: claim.op.clone(),
+                    known: op_names(),
+                },
             )
         })?;
         let allowed: Vec<&str> = CLAIM_KEYS.iter().chain(name.keys()).copied().collect();
@@ -195,6 +204,7 @@ impl<'a> ClaimOp<'a> {
             | N::Matrix
             | N::EdgeCurve => ClaimOp::Construction(Construction::parse(inputs, name)?),
             N::Join => ClaimOp::Join(JoinOp::parse(inputs)?),
+            N::Intersect | N::Locate | N::Ray => ClaimOp::Inverse(InverseOp::parse(inputs, name)?),
         })
     }
 
@@ -211,6 +221,7 @@ impl<'a> ClaimOp<'a> {
             ClaimOp::Form(o) => ClaimOp::Form(o.seen(inputs, p)?),
             ClaimOp::Construction(o) => ClaimOp::Construction(o.seen(inputs, p)?),
             ClaimOp::Join(o) => ClaimOp::Join(o.seen(inputs, p)?),
+            ClaimOp::Inverse(o) => ClaimOp::Inverse(o.seen(inputs, p)?),
         })
     }
 
@@ -221,6 +232,7 @@ impl<'a> ClaimOp<'a> {
             ClaimOp::Form(o) => o.compute(inputs),
             ClaimOp::Construction(o) => o.compute(inputs),
             ClaimOp::Join(o) => o.compute(inputs),
+            ClaimOp::Inverse(o) => o.compute(inputs),
         }
     }
 
@@ -252,7 +264,7 @@ pub fn eval_float(
     let inputs = Inputs::new(file, claim)?;
     match ClaimOp::parse(&inputs)? {
         ClaimOp::Point(o @ PointOp::Eval { .. }) => point::eval_float(&inputs, &o, p),
-        _ => Err(inputs.error("op", "the float view is defined for `eval` claims only")),
+        _ => Err(inputs.error("op", ClaimProblem::FloatViewEvalOnly)),
     }
 }
 

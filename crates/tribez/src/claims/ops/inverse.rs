@@ -1,0 +1,807 @@
+//! `intersect`, `locate` and `ray` claims: parameters that another implementation claims for an
+//! inverse problem, judged against the exact answer (real algebraic numbers, docs/theory.md
+//! §16).
+//!
+//! ```toml
+//! [patches]
+//! a = "cubic_a.toml"
+//! b = "cubic_b.toml"
+//!
+//! [[claim]]
+//! op = "intersect"
+//! patches = ["a", "b"]                  # two planar curves (m = 1, d = 2)
+//! expect = [["0.5", "0.5"], ["0.01667137744899777", "0.01667137744899777"]]   # (s, t) pairs
+//! precision = "f64"
+//! tolerance = "ulps=4"
+//!
+//! [[claim]]
+//! op = "locate"
+//! patch = "tri"                         # a planar triangle patch (m = 2, d = 2)
+//! point = ["1", "1"]
+//! expect = [["0.22938350177230987", "0.30306699912009033"]]   # (s, t) pairs
+//!
+//! [[claim]]
+//! op = "ray"
+//! patch = "surface"                     # a triangle patch in ℝ³, or a functional patch
+//! origin = ["1/5", "1/5", "3"]
+//! direction = ["1/10", "1/20", "-1"]
+//! expect = [["2.5", "0.2", "0.3"]]      # (τ, s, t) triples
+//! ```
+//!
+//! `expect` is a list of parameter tuples (its length is the claimed count; `[]` claims there is
+//! none) or a bare integer (a claimed count only). Tuples may come in any order: each is paired
+//! with the exact solution nearest it, if one lies within [`MATCH_RADIUS`] (relative to the
+//! value's size above 1) in every coordinate. Then:
+//!
+//! * a paired coordinate is judged by the claim's tolerance against the algebraic value itself
+//!   (enclosures narrowed until both ends get the same verdict; the tolerances' acceptance sets
+//!   are intervals, so the verdict is the algebraic value's);
+//! * an exact solution no tuple is paired with is *missed*: the message shows it exactly (its
+//!   polynomial, isolating interval and decimal value);
+//! * a tuple paired with no solution is *extra*;
+//! * curves that share a piece, and points that a whole curve of parameters maps to, cannot be
+//!   claimed as points: the claim fails and says so.
+//!
+//! With `precision`, every number of the claim denotes the float nearest its text, and the exact
+//! answer is that of the inputs as the float code saw them (patches and query rounded).
+
+use std::borrow::Cow;
+use std::cmp::Ordering;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::Zero;
+
+use super::super::value::{Mismatch, Value};
+use super::super::{Claim, ClaimFile, Judged, Verdict};
+use super::inputs::Inputs;
+use super::seen;
+use crate::algebraic::{
+    AlgebraicError, Curve, Expr, RealAlgebraic, intersect_curves, locate, ray_hits,
+};
+use crate::certify::measures::{Leaf, Measures, Tolerance, ToleranceNeeds};
+use crate::float::Precision;
+use crate::io::tree::{Document, Value as NodeValue};
+use crate::io::{ClaimProblem, InputError, InverseProblem};
+use crate::patch_type::Patch;
+
+type Q = BigRational;
+
+/// Claimed and exact tuples are paired when every coordinate differs by at most
+/// `2^-20 · max(1, |exact|)`.
+pub const MATCH_RADIUS_LOG2: i32 = -20;
+/// `2^MATCH_RADIUS_LOG2`, for the docs.
+pub const MATCH_RADIUS: f64 = 1.0 / 1_048_576.0;
+/// The largest number of claimed tuples one claim may list.
+pub const MAX_CLAIMED: usize = 10_000;
+
+/// The query of an inverse claim.
+#[derive(Clone, Debug)]
+pub enum InverseQuery<'a> {
+    /// `intersect`: two named curves.
+    Intersect {
+        /// The curves' names under `[patches]`.
+        names: [String; 2],
+        /// The first curve.
+        a: Cow<'a, Patch>,
+        /// The second curve.
+        b: Cow<'a, Patch>,
+    },
+    /// `locate`: a point of the plane.
+    Locate {
+        /// The planar triangle patch.
+        patch: Cow<'a, Patch>,
+        /// The point.
+        point: [Q; 2],
+        /// Search the whole parameter plane?
+        anywhere: bool,
+    },
+    /// `ray`: a ray in space.
+    Ray {
+        /// The patch in ℝ³ (or functional).
+        patch: Cow<'a, Patch>,
+        /// Its origin.
+        origin: [Q; 3],
+        /// Its direction.
+        direction: [Q; 3],
+    },
+}
+
+/// An `intersect`, `locate` or `ray` claim's operation with its parsed inputs.
+#[derive(Clone, Debug)]
+pub struct InverseOp<'a> {
+    /// The query.
+    pub query: InverseQuery<'a>,
+}
+
+/// One exact coordinate of a solution: an algebraic number, or a rational function of one.
+#[derive(Clone, Debug)]
+pub enum ExactNumber {
+    /// A real algebraic number.
+    Algebraic(RealAlgebraic),
+    /// `num(β)/den(β)`.
+    Expr(Expr),
+}
+
+impl ExactNumber {
+    /// The rational value, when it is rational.
+    pub fn rational(&self) -> Option<Q> {
+        match self {
+            ExactNumber::Algebraic(x) => x.as_rational().cloned(),
+            ExactNumber::Expr(e) => e.rational(),
+        }
+    }
+
+    /// A rational enclosure of width at most `width`.
+    pub fn enclosure(&self, width: &Q) -> (Q, Q) {
+        match self {
+            ExactNumber::Algebraic(x) => x.enclosure(width),
+            ExactNumber::Expr(e) => e.enclosure(width),
+        }
+    }
+
+    /// The nearest `f64`.
+    pub fn to_f64(&self) -> f64 {
+        match self {
+            ExactNumber::Algebraic(x) => x.to_f64(),
+            ExactNumber::Expr(e) => e.to_f64(),
+        }
+    }
+
+    /// Exact text: `p/q`, or `≈ decimal (root of … in (lo, hi))`.
+    pub fn text(&self) -> String {
+        match self {
+            ExactNumber::Algebraic(x) => x.to_text(),
+            ExactNumber::Expr(e) => match e.rational() {
+                Some(r) => r.to_string(),
+                None => format!(
+                    "≈ {} (a rational function of {})",
+                    e.decimal(),
+                    e.base.to_text()
+                ),
+            },
+        }
+    }
+}
+
+/// The exact answer of an inverse claim.
+#[derive(Clone, Debug)]
+pub struct InverseAnswer {
+    /// The coordinates' names: `s, t` (intersect, locate) or `τ, s, t` (ray).
+    pub names: &'static [&'static str],
+    /// The isolated solutions (intersect: by `s`; locate: by `s`, then `t`; ray: by `τ`).
+    pub solutions: Vec<Vec<ExactNumber>>,
+    /// Why the answer is not a finite set of points, if it is not (overlapping curves; a curve
+    /// of parameters; a ray along the surface).
+    pub infinite: Option<String>,
+}
+
+/// What judging found wrong with an inverse claim: data, turned into the report's mismatches.
+#[derive(Clone, Debug)]
+pub enum InverseFinding {
+    /// An exact solution that no claimed tuple is paired with.
+    Missed {
+        /// Its index among the exact solutions.
+        solution: usize,
+    },
+    /// A claimed tuple paired with no exact solution.
+    Extra {
+        /// Its index in `expect`.
+        claimed: usize,
+        /// The nearest exact solution, if any.
+        nearest: Option<usize>,
+    },
+    /// A paired coordinate that breaks the tolerance.
+    Coordinate {
+        /// The claimed tuple.
+        claimed: usize,
+        /// The exact solution it is paired with.
+        solution: usize,
+        /// The coordinate.
+        coordinate: usize,
+        /// The error against the algebraic value (measured at a rational within 2^-80 of it).
+        measures: Measures,
+    },
+    /// A claimed count that differs.
+    Count {
+        /// Claimed.
+        claimed: usize,
+        /// Exact.
+        exact: usize,
+    },
+    /// The answer is not a finite set of points.
+    Infinite {
+        /// What it is.
+        what: String,
+    },
+}
+
+fn tuple_text(xs: &[ExactNumber], names: &[&str]) -> String {
+    let parts: Vec<String> = names
+        .iter()
+        .zip(xs)
+        .map(|(n, x)| match x.rational() {
+            Some(r) => format!("{n} = {r}"),
+            None => format!("{n} {}", x.text()),
+        })
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+fn claimed_text(xs: &[Q]) -> String {
+    let parts: Vec<String> = xs
+        .iter()
+        .map(|x| crate::number::to_decimal_string(x, 17))
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+impl<'a> InverseOp<'a> {
+    /// Parse the inputs of `intersect` (`patches`), `locate` (`point`, `anywhere`) or `ray`
+    /// (`origin`, `direction`).
+    pub fn parse(inputs: &Inputs<'a>, name: super::OpName) -> Result<Self, InputError> {
+        use super::OpName as N;
+        let query = match name {
+            N::Intersect => {
+                let names = inputs.opt_strings("patches")?.ok_or_else(|| {
+                    inputs.error(
+                        "patches",
+                        ClaimProblem::MissingInput {
+                            name: "patches".into(),
+                            hint: Some("two curve names under [patches]"),
+                        },
+                    )
+                })?;
+                let [na, nb]: [String; 2] = names.try_into().map_err(|v: Vec<String>| {
+                    inputs.error("patches", InverseProblem::CurveCount { named: v.len() })
+                })?;
+                let find = |name: &str| -> Result<&'a Patch, InputError> {
+                    inputs
+                        .file
+                        .patches
+                        .iter()
+                        .find(|(n, _)| n == name)
+                        .map(|(_, p)| p)
+                        .ok_or_else(|| {
+                            inputs.error(
+                                "patches",
+                                ClaimProblem::NoSuchPatch {
+                                    name: name.to_string(),
+                                },
+                            )
+                        })
+                };
+                let (a, b) = (find(&na)?, find(&nb)?);
+                for (p, n) in [(a, &na), (b, &nb)] {
+                    Curve::from_patch(p, n)
+                        .map_err(|e| inputs.error("patches", InverseProblem::from(e)))?;
+                }
+                InverseQuery::Intersect {
+                    names: [na, nb],
+                    a: Cow::Borrowed(a),
+                    b: Cow::Borrowed(b),
+                }
+            }
+            N::Locate => {
+                let point = fixed::<2>(inputs, "point")?;
+                InverseQuery::Locate {
+                    patch: Cow::Borrowed(inputs.file.patch_for(inputs.claim)?),
+                    point,
+                    anywhere: inputs.opt_bool("anywhere")?.unwrap_or(false),
+                }
+            }
+            _ => {
+                let origin = fixed::<3>(inputs, "origin")?;
+                let direction = fixed::<3>(inputs, "direction")?;
+                if direction.iter().all(Zero::is_zero) {
+                    return Err(inputs.error("direction", InverseProblem::ZeroDirection));
+                }
+                InverseQuery::Ray {
+                    patch: Cow::Borrowed(inputs.file.patch_for(inputs.claim)?),
+                    origin,
+                    direction,
+                }
+            }
+        };
+        Ok(InverseOp { query })
+    }
+
+    /// The same query on the inputs as the float code saw them (patches and numbers rounded).
+    pub fn seen(&self, inputs: &Inputs<'_>, p: Precision) -> Result<Self, InputError> {
+        let patch = |x: &Patch| -> Result<Cow<'a, Patch>, InputError> {
+            seen::any_patch(inputs, x.as_any(), p).map(|a| Cow::Owned(Patch::from(a)))
+        };
+        let nums = |key: &str, xs: &[Q]| seen::numbers(inputs, key, xs, p);
+        let query = match &self.query {
+            InverseQuery::Intersect { names, a, b } => InverseQuery::Intersect {
+                names: names.clone(),
+                a: patch(a)?,
+                b: patch(b)?,
+            },
+            InverseQuery::Locate {
+                patch: x,
+                point,
+                anywhere,
+            } => InverseQuery::Locate {
+                patch: patch(x)?,
+                point: to_array(nums("point", point)?),
+                anywhere: *anywhere,
+            },
+            InverseQuery::Ray {
+                patch: x,
+                origin,
+                direction,
+            } => InverseQuery::Ray {
+                patch: patch(x)?,
+                origin: to_array(nums("origin", origin)?),
+                direction: to_array(nums("direction", direction)?),
+            },
+        };
+        Ok(InverseOp { query })
+    }
+
+    /// The exact answer.
+    pub fn answer(&self) -> Result<InverseAnswer, AlgebraicError> {
+        let alg = |x: &RealAlgebraic| ExactNumber::Algebraic(x.clone());
+        match &self.query {
+            InverseQuery::Intersect { names, a, b } => {
+                let ca = Curve::from_patch(a, &names[0])?;
+                let cb = Curve::from_patch(b, &names[1])?;
+                let r = intersect_curves(&ca, &cb)?;
+                let infinite = (!r.overlaps.is_empty()).then(|| {
+                    let parts: Vec<String> = r
+                        .overlaps
+                        .iter()
+                        .map(|o| {
+                            format!(
+                                "s from {} to {}, t from {} to {}",
+                                o.s[0].decimal(17),
+                                o.s[1].decimal(17),
+                                o.t[0].decimal(17),
+                                o.t[1].decimal(17)
+                            )
+                        })
+                        .collect();
+                    format!("the curves share a piece: {}", parts.join("; "))
+                });
+                Ok(InverseAnswer {
+                    names: &["s", "t"],
+                    solutions: r
+                        .points
+                        .iter()
+                        .map(|p| vec![alg(&p.s), alg(&p.t)])
+                        .collect(),
+                    infinite,
+                })
+            }
+            InverseQuery::Locate {
+                patch,
+                point,
+                anywhere,
+            } => {
+                let r = locate(patch, point, *anywhere)?;
+                Ok(InverseAnswer {
+                    names: &["s", "t"],
+                    solutions: r
+                        .points
+                        .iter()
+                        .map(|p| vec![alg(&p.s), alg(&p.t)])
+                        .collect(),
+                    infinite: r
+                        .infinite
+                        .then(|| "a whole curve of parameters maps to the point".to_string()),
+                })
+            }
+            InverseQuery::Ray {
+                patch,
+                origin,
+                direction,
+            } => {
+                let r = ray_hits(patch, origin, direction)?;
+                Ok(InverseAnswer {
+                    names: &["tau", "s", "t"],
+                    solutions: r
+                        .hits
+                        .iter()
+                        .map(|h| vec![ExactNumber::Expr(h.tau.clone()), alg(&h.s), alg(&h.t)])
+                        .collect(),
+                    infinite: r
+                        .infinite
+                        .then(|| "the ray runs along the surface".to_string()),
+                })
+            }
+        }
+    }
+
+    /// The exact value as a claim [`Value`]: `{count, solutions}` with every coordinate exact
+    /// when rational, else its nearest `f64` (the mismatches of a judged claim give irrational
+    /// coordinates exactly).
+    pub fn compute(&self, inputs: &Inputs<'_>) -> Result<Value, InputError> {
+        let answer = self
+            .answer()
+            .map_err(|e| inputs.error("op", InverseProblem::from(e)))?;
+        Ok(answer_value(&answer))
+    }
+}
+
+fn answer_value(answer: &InverseAnswer) -> Value {
+    let num = |x: &ExactNumber| -> Value {
+        Value::Number(x.rational().unwrap_or_else(|| {
+            crate::number::exact_f64(x.to_f64()).unwrap_or_else(BigRational::zero)
+        }))
+    };
+    Value::Map(vec![
+        (
+            "count".into(),
+            Value::Integer(i64::try_from(answer.solutions.len()).unwrap_or(i64::MAX)),
+        ),
+        (
+            "solutions".into(),
+            Value::List(
+                answer
+                    .solutions
+                    .iter()
+                    .map(|s| Value::List(s.iter().map(num).collect()))
+                    .collect(),
+            ),
+        ),
+    ])
+}
+
+fn to_array<const N: usize>(v: Vec<Q>) -> [Q; N] {
+    v.try_into()
+        .unwrap_or_else(|_| unreachable!("lengths checked at parsing"))
+}
+
+/// A required list of exactly `N` rationals.
+fn fixed<const N: usize>(inputs: &Inputs<'_>, name: &str) -> Result<[Q; N], InputError> {
+    let v = inputs.rationals(name)?;
+    let n = v.len();
+    v.try_into().map_err(|_| {
+        inputs.error(
+            name,
+            crate::io::Problem::FieldCount {
+                found: n,
+                expected: N,
+            },
+        )
+    })
+}
+
+/// What the claim says: tuples, or a bare count.
+enum Claimed {
+    Tuples(Vec<Vec<Q>>),
+    Count(usize),
+}
+
+fn read_claimed(
+    file: &ClaimFile,
+    claim: &Claim,
+    names: &'static str,
+    precision: Option<Precision>,
+) -> Result<Claimed, InputError> {
+    let width = names.split(", ").count();
+    let doc = &file.doc;
+    let t = doc.table(&claim.node, &claim.id)?;
+    let key = format!("{}.expect", claim.id);
+    let expect = Document::get(t, "expect")
+        .ok_or_else(|| doc.error(&claim.node, &claim.id, ClaimProblem::MissingExpect))?;
+    if let NodeValue::Number(_) = &expect.value {
+        return Ok(Claimed::Count(doc.usize(expect, &key)?));
+    }
+    let rows = doc.array(expect, &key)?;
+    if rows.len() > MAX_CLAIMED {
+        return Err(doc.error(
+            expect,
+            &key,
+            InverseProblem::TooManyClaimed {
+                count: rows.len(),
+                limit: MAX_CLAIMED,
+            },
+        ));
+    }
+    let mut out = Vec::with_capacity(rows.len());
+    for (i, n) in rows.iter().enumerate() {
+        let k = format!("{key}[{i}]");
+        let mut xs = doc.rationals(n, &k)?;
+        if xs.len() != width {
+            return Err(doc.error(
+                n,
+                &k,
+                InverseProblem::TupleWidth {
+                    found: xs.len(),
+                    expected: width,
+                    names,
+                },
+            ));
+        }
+        if let Some(p) = precision {
+            xs = xs
+                .iter()
+                .map(|x| crate::certify::measures::as_float(x, p))
+                .collect::<Option<Vec<_>>>()
+                .ok_or_else(|| {
+                    doc.error(
+                        n,
+                        &k,
+                        crate::io::Problem::Overflows {
+                            what: "a claimed parameter",
+                            precision: p,
+                        },
+                    )
+                })?;
+        }
+        out.push(xs);
+    }
+    Ok(Claimed::Tuples(out))
+}
+
+/// Does `tolerance` accept `claimed` for the exact number `x`? Enclosures of `x` are narrowed
+/// (2^-80, then by 2^-64 at a time, at most to 2^-848) until both ends get the same verdict.
+/// Also returns the rational the measures are taken at (exact, or the last enclosure's
+/// midpoint).
+pub fn accepts(
+    claimed: &Q,
+    x: &ExactNumber,
+    tolerance: &Tolerance,
+    leaf: &Leaf,
+) -> Result<(bool, Q), ToleranceNeeds> {
+    if let Some(r) = x.rational() {
+        return Ok((tolerance.accepts(claimed, &r, leaf)?, r));
+    }
+    let mut w = Q::new(BigInt::from(1), BigInt::from(1) << 80u32);
+    let mut mid = Q::zero();
+    for _ in 0..12 {
+        let (lo, hi) = x.enclosure(&w);
+        mid = (&lo + &hi) / Q::from_integer(BigInt::from(2));
+        let a = tolerance.accepts(claimed, &lo, leaf)?;
+        if a == tolerance.accepts(claimed, &hi, leaf)? {
+            return Ok((a, mid));
+        }
+        w /= Q::from_integer(BigInt::from(1) << 64u32);
+    }
+    Ok((false, mid))
+}
+
+/// Pair claimed tuples with exact solutions: nearest first, each used once, within the radius.
+fn pair(claimed: &[Vec<Q>], exact: &[Vec<f64>]) -> Vec<Option<usize>> {
+    let radius = 2f64.powi(MATCH_RADIUS_LOG2);
+    let mut cands: Vec<(f64, usize, usize)> = Vec::new();
+    for (i, c) in claimed.iter().enumerate() {
+        for (j, e) in exact.iter().enumerate() {
+            let mut worst = 0f64;
+            let mut ok = true;
+            for (cq, ef) in c.iter().zip(e) {
+                let cf = crate::number::round_f64(cq);
+                let d = (cf - ef).abs();
+                if d.is_nan() || d > radius * ef.abs().max(1.0) {
+                    ok = false;
+                    break;
+                }
+                worst = worst.max(d);
+            }
+            if ok {
+                cands.push((worst, i, j));
+            }
+        }
+    }
+    cands.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(Ordering::Equal));
+    let mut out = vec![None; claimed.len()];
+    let mut used = vec![false; exact.len()];
+    for (_, i, j) in cands {
+        if out[i].is_none() && !used[j] {
+            out[i] = Some(j);
+            used[j] = true;
+        }
+    }
+    out
+}
+
+/// Judge findings of claimed tuples against the exact answer (the typed core of [`judge`];
+/// `Err` when the tolerance needs what an inverse claim lacks, e.g. `bound`).
+pub fn findings(
+    claimed_tuples: Option<&[Vec<Q>]>,
+    claimed_count: usize,
+    answer: &InverseAnswer,
+    tolerance: &Tolerance,
+    precision: Option<Precision>,
+) -> Result<Vec<InverseFinding>, ToleranceNeeds> {
+    let mut out = Vec::new();
+    if let Some(what) = &answer.infinite {
+        out.push(InverseFinding::Infinite { what: what.clone() });
+    }
+    let Some(tuples) = claimed_tuples else {
+        if claimed_count != answer.solutions.len() {
+            out.push(InverseFinding::Count {
+                claimed: claimed_count,
+                exact: answer.solutions.len(),
+            });
+        }
+        return Ok(out);
+    };
+    let approx: Vec<Vec<f64>> = answer
+        .solutions
+        .iter()
+        .map(|s| s.iter().map(ExactNumber::to_f64).collect())
+        .collect();
+    let pairing = pair(tuples, &approx);
+    let leaf = Leaf {
+        precision,
+        ..Leaf::default()
+    };
+    let mut used = vec![false; answer.solutions.len()];
+    for (i, (c, p)) in tuples.iter().zip(&pairing).enumerate() {
+        let Some(j) = *p else {
+            let nearest = (0..approx.len()).min_by(|&a, &b| {
+                let d = |k: usize| -> f64 {
+                    c.iter()
+                        .zip(&approx[k])
+                        .map(|(x, e)| (crate::number::round_f64(x) - e).abs())
+                        .fold(0.0, f64::max)
+                };
+                d(a).partial_cmp(&d(b)).unwrap_or(Ordering::Equal)
+            });
+            out.push(InverseFinding::Extra {
+                claimed: i,
+                nearest,
+            });
+            continue;
+        };
+        used[j] = true;
+        for (k, (cq, x)) in c.iter().zip(&answer.solutions[j]).enumerate() {
+            let (ok, at) = accepts(cq, x, tolerance, &leaf)?;
+            if !ok {
+                out.push(InverseFinding::Coordinate {
+                    claimed: i,
+                    solution: j,
+                    coordinate: k,
+                    measures: Measures::new(cq, &at, precision),
+                });
+            }
+        }
+    }
+    for (j, u) in used.iter().enumerate() {
+        if !u {
+            out.push(InverseFinding::Missed { solution: j });
+        }
+    }
+    Ok(out)
+}
+
+fn mismatch(
+    f: &InverseFinding,
+    tuples: Option<&[Vec<Q>]>,
+    answer: &InverseAnswer,
+    tolerance: &Tolerance,
+) -> Mismatch {
+    let exact_text = |j: usize| tuple_text(&answer.solutions[j], answer.names);
+    let claimed = |i: usize| tuples.map_or_else(String::new, |t| claimed_text(&t[i]));
+    match f {
+        InverseFinding::Missed { solution } => Mismatch {
+            path: format!("solution {}", solution + 1),
+            claimed: "(none)".into(),
+            exact: exact_text(*solution),
+            reason: format!(
+                "missed: no claimed tuple within 2^{MATCH_RADIUS_LOG2} of the exact solution {}",
+                exact_text(*solution)
+            ),
+        },
+        InverseFinding::Extra {
+            claimed: i,
+            nearest,
+        } => Mismatch {
+            path: format!("[{i}]"),
+            claimed: claimed(*i),
+            exact: nearest.map_or_else(|| "(no solution)".into(), exact_text),
+            reason: match nearest {
+                Some(j) => format!(
+                    "extra: no exact solution within 2^{MATCH_RADIUS_LOG2} (the nearest is {})",
+                    exact_text(*j)
+                ),
+                None => "extra: there is no exact solution".into(),
+            },
+        },
+        InverseFinding::Coordinate {
+            claimed: i,
+            solution,
+            coordinate,
+            measures,
+        } => Mismatch {
+            path: format!("[{i}][{coordinate}]"),
+            claimed: claimed(*i),
+            exact: exact_text(*solution),
+            reason: format!(
+                "{} = {} breaks tolerance `{tolerance}` against {}: {}",
+                answer.names[*coordinate],
+                tuples.map_or_else(String::new, |t| crate::number::to_decimal_string(
+                    &t[*i][*coordinate],
+                    17
+                )),
+                answer.solutions[*solution][*coordinate].text(),
+                measures.text()
+            ),
+        },
+        InverseFinding::Count { claimed, exact } => Mismatch {
+            path: "count".into(),
+            claimed: claimed.to_string(),
+            exact: exact.to_string(),
+            reason: format!(
+                "{claimed} claimed, {exact} exact: {}",
+                (0..answer.solutions.len())
+                    .map(exact_text)
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            ),
+        },
+        InverseFinding::Infinite { what } => Mismatch {
+            path: "count".into(),
+            claimed: tuples.map_or(0, <[_]>::len).to_string(),
+            exact: "infinitely many".into(),
+            reason: what.clone(),
+        },
+    }
+}
+
+/// Judge an inverse claim (called by [`ClaimFile::judge`] for `intersect`, `locate`, `ray`).
+pub fn judge(
+    file: &ClaimFile,
+    claim: &Claim,
+    inputs: &Inputs<'_>,
+    op: &InverseOp<'_>,
+) -> Result<Judged, InputError> {
+    let (tolerance, precision) = file.tolerance_of(claim)?;
+    let seen_op;
+    let op = match precision {
+        Some(p) => {
+            seen_op = op.seen(inputs, p)?;
+            &seen_op
+        }
+        None => op,
+    };
+    let answer = op
+        .answer()
+        .map_err(|e| inputs.error("op", InverseProblem::from(e)))?;
+    let names = if answer.names.len() == 3 {
+        "tau, s, t"
+    } else {
+        "s, t"
+    };
+    let claimed = read_claimed(file, claim, names, precision)?;
+    let (tuples, count) = match &claimed {
+        Claimed::Tuples(t) => (Some(t.as_slice()), t.len()),
+        Claimed::Count(n) => (None, *n),
+    };
+    let found = findings(tuples, count, &answer, &tolerance, precision)
+        .map_err(|e| inputs.error("tolerance", e))?;
+    let mismatches: Vec<Mismatch> = found
+        .iter()
+        .map(|f| mismatch(f, tuples, &answer, &tolerance))
+        .collect();
+    let claimed_value = match &claimed {
+        Claimed::Tuples(t) => Value::Map(vec![
+            (
+                "count".into(),
+                Value::Integer(i64::try_from(t.len()).unwrap_or(i64::MAX)),
+            ),
+            (
+                "solutions".into(),
+                Value::List(t.iter().map(|x| Value::numbers(x)).collect()),
+            ),
+        ]),
+        Claimed::Count(n) => Value::Integer(i64::try_from(*n).unwrap_or(i64::MAX)),
+    };
+    let verdict = Verdict::of(mismatches, claim.erratum.is_some());
+    Ok(Judged {
+        file: file.path.display().to_string(),
+        id: claim.id.clone(),
+        op: claim.op.clone(),
+        source: claim.source.clone().or_else(|| file.source.clone()),
+        erratum: claim.erratum.clone(),
+        exact: answer_value(&answer),
+        claimed: claimed_value,
+        verdict,
+        tolerance,
+        precision,
+        floats: Vec::new(),
+    })
+}

@@ -1,0 +1,41 @@
+//! What is wrong in the inputs of an inverse claim (`intersect`, `locate`, `ray`) or of a batch
+//! of located points or ray hits ([`super::Problem::Inverse`]): the figures of each message as
+//! data.
+
+use crate::algebraic::AlgebraicError;
+
+/// What is wrong in an inverse claim's or batch's inputs.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum InverseProblem {
+    /// `patches` of an `intersect` claim names other than two curves.
+    #[error("an intersection needs two curves, {named} named")]
+    CurveCount {
+        /// How many names were given.
+        named: usize,
+    },
+    /// A ray whose direction is the zero vector.
+    #[error("the ray's direction is zero")]
+    ZeroDirection,
+    /// More claimed tuples (or batch rows) than the limit.
+    #[error("{count} claimed tuples, above the limit of {limit}")]
+    TooManyClaimed {
+        /// How many.
+        count: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// A claimed tuple with the wrong number of parameters.
+    #[error("{found} parameters, expected {expected} ({names})")]
+    TupleWidth {
+        /// How many were given.
+        found: usize,
+        /// How many the operation has.
+        expected: usize,
+        /// Their names (`"s, t"`, `"tau, s, t"`).
+        names: &'static str,
+    },
+    /// The exact computation refused the input (shape, caps, an unsupported configuration).
+    #[error(transparent)]
+    Algebraic(#[from] AlgebraicError),
+}
