@@ -217,6 +217,26 @@ Examples:
   tribez ray fixtures/inverse/dome.toml --origin 1/4,1/4,2 --direction 0,0,-1
   tribez ray fixtures/inverse/dome.toml --origin -1,-1,0 --direction 2,2,1 --format json
   tribez ray fixtures/inverse/hill.toml --height 1/3,1/3";
+    /// `tribez mesh`.
+    pub const MESH: &str = "\
+Examples:
+  tribez mesh check fixtures/mesh/hexagon_cubic.toml
+  tribez mesh patch fixtures/mesh/hexagon_cubic.toml --triangle 2 -o triangle2.toml";
+    /// `tribez mesh check`.
+    pub const MESH_CHECK: &str = "\
+Examples:
+  tribez mesh check fixtures/mesh/hexagon_cubic.toml
+  tribez mesh check fixtures/mesh/hexagon_cubic.toml --format json";
+    /// `tribez mesh patch`.
+    pub const MESH_PATCH: &str = "\
+Examples:
+  tribez mesh patch fixtures/mesh/hexagon_cubic.toml --triangle 2 -o triangle2.toml";
+    /// `tribez lookup`.
+    pub const LOOKUP: &str = "\
+Examples:
+  tribez lookup fixtures/mesh/hexagon_cubic.toml --at 1/3,1/5
+  tribez lookup fixtures/mesh/hexagon_cubic.toml --at 1/2,0 --float f32
+  tribez lookup fixtures/mesh/hexagon_cubic.toml --points fixtures/mesh/points.csv --format json";
 }
 
 #[cfg(test)]

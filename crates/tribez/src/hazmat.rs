@@ -62,6 +62,9 @@ hazmat!(
     functional,
     /// Joins: continuity between patches.
     join,
+    /// Exact linear algebra for least-squares fits: normal equations, a certified solver
+    /// (Dixon's p-adic lifting), null spaces, minimum-norm solutions.
+    linalg,
     /// Exact numbers: parsing, printing, correctly rounded conversions, ULPs.
     number,
     /// Control nets and polynomial patches.

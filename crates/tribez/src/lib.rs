@@ -39,6 +39,8 @@
 //!   result (docs/theory.md §14);
 //! * [`Rational`], [`parse_rational`], [`Precision`], [`Tolerance`], [`Algorithm`]: exact
 //!   numbers, precisions and tolerances, parsed from the same strings as the command line;
+//! * [`mesh`]: meshes of functional Bézier triangles sharing their ordinates (C0), exact
+//!   point location and lookup;
 //! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
 //!   results, judged in parallel;
 //! * [`algebraic`]: real algebraic numbers ([`RealAlgebraic`]) and the inverse problems they
@@ -64,6 +66,7 @@ mod domain;
 mod elevate;
 mod error;
 mod exact;
+pub mod fit;
 mod float;
 mod functional;
 mod fuzz;
@@ -71,6 +74,9 @@ pub mod hazmat;
 mod io;
 mod join;
 mod judge;
+mod judge_refusal;
+mod linalg;
+pub mod mesh;
 mod number;
 mod patch;
 mod patch_type;
@@ -94,8 +100,9 @@ pub use certify::report::{
 pub use error::CoreError;
 pub use exact::Algorithm;
 pub use float::Precision;
-pub use io::InputError;
+pub use io::{ClaimProblem, InputError, NeededKind, Problem, RowsProblem};
 pub use judge::{CoordinateJudgement, Judgement, judge, judge_algorithm, judge_with};
+pub use judge_refusal::{Lacks, Refusal};
 pub use num_rational::BigRational as Rational;
 pub use number::parse_rational;
 pub use patch_type::{Degree, Patch, PatchKind, SimplexDim};

@@ -15,6 +15,7 @@ pub mod intersect;
 pub mod inverse;
 pub mod join;
 pub mod matrix;
+pub mod mesh;
 pub mod plot;
 pub mod reproduce;
 pub mod subdivide;
@@ -108,6 +109,12 @@ pub enum Command {
     /// Every hit of a ray on a patch in R^3 (or a functional patch's graph), in order, exactly; --height for a data lookup.
     #[command(after_help = examples::RAY)]
     Ray(inverse::RayArgs),
+    /// Meshes of functional Bézier triangles sharing their ordinates (C0): `mesh check`, `mesh patch`.
+    #[command(after_help = examples::MESH)]
+    Mesh(mesh::Args),
+    /// The triangle(s) of a mesh containing a point and the exact value there; --float for the GPU path's errors.
+    #[command(after_help = examples::LOOKUP)]
+    Lookup(mesh::LookupArgs),
 }
 
 /// Where a command's output goes: `-o FILE`, or standard output.
@@ -163,6 +170,9 @@ pub fn main(cli: Cli) -> i32 {
         Command::Eval(a) => (eval::run(a), &a.out),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
         Command::Graph(a) => (graph::run(a), &a.out),
+        Command::Check(a) if a.results.is_some() && a.mesh.is_some() => {
+            (mesh::run_batch(a), &a.out)
+        }
         Command::Check(a) if a.results.is_some() => (batch::run(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
@@ -178,6 +188,8 @@ pub fn main(cli: Cli) -> i32 {
         Command::Intersect(a) => (intersect::run(a), &a.out),
         Command::Locate(a) => (inverse::run_locate(a), &a.out),
         Command::Ray(a) => (inverse::run_ray(a), &a.out),
+        Command::Mesh(a) => (mesh::run(a), mesh::output(a)),
+        Command::Lookup(a) => (mesh::run_lookup(a), &a.out),
         Command::Plot(a) => (plot::run(a), a),
     };
     let finished = result.and_then(|o| {

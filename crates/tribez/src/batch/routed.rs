@@ -1,0 +1,152 @@
+//! Routed batches: each row judged by one of several checkers, chosen from its inputs as the
+//! code saw them (what `tribez check --mesh MESH --results FILE` runs: a row goes to the
+//! triangle containing its point). Streamed in chunks like [`super::BatchChecker::check_file`];
+//! within a chunk the rows are routed in parallel, then each checker judges its rows in
+//! parallel, and the reports are merged ([`BatchReport::merge`], rows keep their numbers).
+
+use std::io::BufReader;
+use std::path::Path;
+
+use num_rational::BigRational;
+use rayon::prelude::*;
+
+use super::judge::RowScratch;
+use super::parse::{Chunk, Num, RowReader, parse_row};
+use super::{
+    Accumulator, BatchChecker, BatchError, BatchReport, FailedRow, Format, Judged, Source,
+};
+use crate::float::Precision;
+use crate::io::InputError;
+
+/// Where a row goes.
+pub enum Route {
+    /// To checker `k`.
+    To(usize),
+    /// Nowhere: a failed row with this reason (a point outside the mesh).
+    Fails(String),
+}
+
+impl BatchChecker {
+    /// Judge rows of a chunk (`(row, column, text)` as read), in parallel, into a report.
+    fn judge_texts(
+        &self,
+        rows: &[(usize, usize, &str)],
+        format: Format,
+        file: &str,
+        patch_name: &str,
+    ) -> Result<BatchReport, InputError> {
+        let p = &self.prepared;
+        let (width, dim) = (p.width(), p.patch.net.dim());
+        let mut acc = Accumulator::new(p, file, patch_name, Some(format));
+        let judged: Vec<Option<Judged>> = rows
+            .par_iter()
+            .map_init(
+                RowScratch::default,
+                |scratch, &(no, col, text)| -> Result<Option<Judged>, InputError> {
+                    let Some((inputs, claimed)) =
+                        parse_row(format, text, no, col, width, dim, p.precision, file)?
+                    else {
+                        return Ok(None);
+                    };
+                    Ok(Some(acc.judge(
+                        no,
+                        inputs,
+                        claimed,
+                        &Source::Text(text, col),
+                        scratch,
+                    )))
+                },
+            )
+            .collect::<Result<_, _>>()?;
+        for (j, &(_, col, text)) in judged.into_iter().zip(rows) {
+            if let Some(j) = j {
+                acc.add(j, &Source::Text(text, col));
+            }
+        }
+        Ok(acc.finish())
+    }
+}
+
+/// Check a results file whose rows have `width` inputs and `dim` claimed numbers, each row
+/// judged by `checker(route(inputs as seen))`. `checker(k)` may build checker `k` on first use.
+/// `template` gives the report's tolerance, precision, file and patch names (for the rows that
+/// fail to route, and for merging).
+#[allow(clippy::too_many_arguments)]
+pub fn check_file_routed<'c>(
+    path: &Path,
+    width: usize,
+    dim: usize,
+    precision: Option<Precision>,
+    template: BatchReport,
+    route: &(dyn Fn(&[Option<BigRational>]) -> Route + Sync),
+    checker: &(dyn Fn(usize) -> Result<&'c BatchChecker, BatchError> + Sync),
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<BatchReport, BatchError> {
+    let file = path.display().to_string();
+    let format = Format::of(path, &file)?;
+    let reader = std::fs::File::open(path)
+        .map_err(|e| InputError::file(&file, super::parse::cannot_read(&e)))?;
+    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file)
+        .expect_columns(width + dim);
+    let mut total = template.clone();
+    let mut chunk = Chunk::default();
+    loop {
+        let eof = reader.read(&mut chunk)?;
+        let rows: Vec<(usize, usize, &str)> = chunk.rows().collect();
+        let routes: Vec<Option<Route>> = rows
+            .par_iter()
+            .map(|&(no, col, text)| -> Result<Option<Route>, InputError> {
+                let Some((inputs, _)) =
+                    parse_row(format, text, no, col, width, dim, precision, &file)?
+                else {
+                    return Ok(None);
+                };
+                let seen: Vec<Option<BigRational>> = inputs
+                    .iter()
+                    .map(|x| match x {
+                        Num::Value { float, text_exact } => match precision {
+                            Some(_) => crate::number::exact_f64(*float),
+                            None => text_exact.clone(),
+                        },
+                        Num::NotFinite(_) => None,
+                    })
+                    .collect();
+                Ok(Some(route(&seen)))
+            })
+            .collect::<Result<_, _>>()?;
+        let mut groups: std::collections::BTreeMap<usize, Vec<(usize, usize, &str)>> =
+            Default::default();
+        let mut failed = template.clone();
+        for (r, row) in routes.into_iter().zip(&rows) {
+            match r {
+                None => {}
+                Some(Route::To(k)) => groups.entry(k).or_default().push(*row),
+                Some(Route::Fails(reason)) => {
+                    failed.checked += 1;
+                    failed.failed += 1;
+                    failed.histogram.add(f64::INFINITY);
+                    if failed.failures.len() < super::MAX_LISTED {
+                        failed.failures.push(FailedRow {
+                            line: row.0,
+                            reason,
+                            coords: Vec::new(),
+                        });
+                    }
+                }
+            }
+        }
+        total.merge(&failed)?;
+        for (k, rows) in groups {
+            let part = checker(k)?.judge_texts(&rows, format, &file, &template.patch)?;
+            total.merge(&part)?;
+        }
+        progress(total.checked, total.failed);
+        if eof {
+            break;
+        }
+    }
+    if total.checked == 0 {
+        return Err(InputError::file(&file, crate::io::RowsProblem::NoResultRows).into());
+    }
+    Ok(total)
+}
