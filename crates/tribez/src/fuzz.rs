@@ -21,6 +21,7 @@ pub const TARGETS: &[&str] = &[
     "batch_csv",
     "batch_jsonl",
     "batch_json_array",
+    "mesh",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -35,6 +36,7 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "batch_csv" => batch_csv(data),
         "batch_jsonl" => batch_jsonl(data),
         "batch_json_array" => batch_json_array(data),
+        "mesh" => mesh(data),
         _ => return false,
     }
     true
@@ -51,7 +53,14 @@ pub fn number(data: &[u8]) {
     }
 }
 
-/// `Polynomial::parse`: the first byte chooses the variable names, the rest is the text.
+/// The work limit of polynomial text in the fuzz target: 2^22 word operations, 256 times below
+/// the library's [`crate::symbolic::MAX_WORK`]. The parser's code paths are the same; each input
+/// stops after milliseconds instead of up to a second, so a run reaches millions of inputs (the
+/// full limit is exercised by the unit tests and by the replayed regressions).
+pub const FUZZ_WORK: u64 = 1 << 22;
+
+/// `Polynomial::parse` (with the work limit [`FUZZ_WORK`]): the first byte chooses the variable
+/// names, the rest is the text.
 pub fn polynomial(data: &[u8]) {
     const NAMES: [&[&str]; 4] = [
         &["u", "v", "w"],
@@ -63,7 +72,8 @@ pub fn polynomial(data: &[u8]) {
         return;
     };
     if let Some(t) = text(rest) {
-        let _ = crate::symbolic::Polynomial::parse(t, NAMES[usize::from(first) % NAMES.len()]);
+        let names = NAMES[usize::from(first) % NAMES.len()];
+        let _ = crate::symbolic::Polynomial::parse_with_work_limit(t, names, FUZZ_WORK);
     }
 }
 
@@ -149,4 +159,10 @@ pub fn batch_jsonl(data: &[u8]) {
 /// Rows of a results file that is one JSON array of rows (as [`batch_csv`]).
 pub fn batch_json_array(data: &[u8]) {
     crate::batch::fuzz_rows(crate::batch::Format::JsonArray, data);
+}
+
+/// A mesh file: the first byte chooses TOML (even) or JSON (odd); read, checked, round-tripped
+/// and looked up ([`crate::mesh::fuzz_mesh`]).
+pub fn mesh(data: &[u8]) {
+    crate::mesh::fuzz_mesh(data);
 }

@@ -27,7 +27,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
 use crate::domain::Domain;
-use crate::number::{q_add, q_div, q_mul, q_pow};
+use crate::number::{gcd, q_add, q_div, q_mul, q_pow, ratio};
 use crate::patch::ControlNet;
 use crate::simplex::multinomial;
 
@@ -138,15 +138,61 @@ impl Polynomial {
     }
 
     /// `self · other`.
+    ///
+    /// Computed over the integers: with `self = A/a` and `other = B/b` (`a`, `b` the least common
+    /// multiples of the coefficients' denominators, `A`, `B` integer polynomials) the product is
+    /// `A·B / (a·b)`, so every term product is an integer product and each coefficient of the
+    /// result is reduced to lowest terms once, instead of a gcd per term product.
     pub fn mul(&self, other: &Polynomial) -> Polynomial {
+        let (a, da) = self.integer_form();
+        let (b, db) = other.integer_form();
+        let mut sums: BTreeMap<Vec<u32>, BigInt> = BTreeMap::new();
+        for (ea, ca) in &a {
+            for (eb, cb) in &b {
+                let e: Vec<u32> = ea.iter().zip(eb.iter()).map(|(x, y)| x + y).collect();
+                let product = ca * cb;
+                match sums.entry(e) {
+                    std::collections::btree_map::Entry::Vacant(v) => {
+                        v.insert(product);
+                    }
+                    std::collections::btree_map::Entry::Occupied(mut o) => *o.get_mut() += product,
+                }
+            }
+        }
+        let d = da * db;
         let mut out = Polynomial::zero(self.nvars);
-        for (ea, ca) in &self.terms {
-            for (eb, cb) in &other.terms {
-                let e = ea.iter().zip(eb).map(|(a, b)| a + b).collect();
-                out.add_term(e, q_mul(ca, cb));
+        for (e, c) in sums {
+            if !c.is_zero() {
+                out.terms.insert(e, ratio(c, d.clone()));
             }
         }
         out
+    }
+
+    /// `(A, a)` with `self = A / a`: `a` the least common multiple of the denominators, `A` the
+    /// integer numerators over it.
+    fn integer_form(&self) -> (Vec<(&[u32], BigInt)>, BigInt) {
+        let mut lcm = BigInt::one();
+        for c in self.terms.values() {
+            let d = c.denom();
+            if !d.is_one() && !(&lcm % d).is_zero() {
+                let g = BigInt::from(gcd(lcm.magnitude(), d.magnitude()));
+                lcm = lcm / g * d;
+            }
+        }
+        let terms = self
+            .terms
+            .iter()
+            .map(|(e, c)| {
+                let n = if c.denom() == &lcm {
+                    c.numer().clone()
+                } else {
+                    c.numer() * (&lcm / c.denom())
+                };
+                (e.as_slice(), n)
+            })
+            .collect();
+        (terms, lcm)
     }
 
     /// `self^k`.
@@ -290,13 +336,23 @@ impl Polynomial {
     /// assert!(Polynomial::parse("x/y", &xy).is_err());
     /// ```
     pub fn parse(text: &str, names: &[&str]) -> Result<Polynomial, String> {
+        Self::parse_with_work_limit(text, names, MAX_WORK)
+    }
+
+    /// [`Polynomial::parse`] with a work limit of `limit` word operations instead of
+    /// [`MAX_WORK`] (the fuzz target reads with a smaller one, so that each input is quick).
+    pub fn parse_with_work_limit(
+        text: &str,
+        names: &[&str],
+        limit: u64,
+    ) -> Result<Polynomial, String> {
         check_names(names)?;
         let mut p = PolyParser {
             s: text.chars().collect(),
             pos: 0,
             names,
             depth: 0,
-            work: 0,
+            work: Budget { spent: 0, limit },
         };
         if p.peek().is_none() {
             return Err("empty polynomial".into());
@@ -345,9 +401,10 @@ pub const MAX_COEFFICIENT_BITS: u64 = 1 << 20;
 pub const MAX_TERM_PRODUCTS: usize = 1_000_000;
 
 /// The most arithmetic polynomial text may cost while it is read, in word operations: each
-/// product of two coefficients of `a` and `b` bits (with the reduction to lowest terms) is
-/// counted as `(⌊(a + b)/64⌋ + 1)²`. 2^30 is about forty times the cost of reading one number of
-/// 100,000 digits, so such numbers, and sums and products of up to three of them, are read,
+/// product of two coefficients of `a` and `b` bits is counted as `(⌊(a + b)/64⌋ + 1)²`
+/// (products are taken over the integers and each coefficient of a product is reduced to lowest
+/// terms once, see [`Polynomial::mul`]). 2^30 is about forty times the cost of reading one
+/// number of 100,000 digits, so such numbers, and sums and products of up to three of them, are read,
 /// while text that would multiply many huge coefficients (`(1e9999 + u + v)^9`) is refused
 /// before it is computed instead of running for minutes.
 pub const MAX_WORK: u64 = 1 << 30;
@@ -393,8 +450,15 @@ struct PolyParser<'a> {
     pos: usize,
     names: &'a [&'a str],
     depth: usize,
-    /// The arithmetic spent so far, in the units of [`MAX_WORK`].
-    work: u64,
+    /// The arithmetic spent so far, and the most it may spend.
+    work: Budget,
+}
+
+/// Word operations spent while polynomial text is read, and the limit ([`MAX_WORK`] unless
+/// [`Polynomial::parse_with_work_limit`] says otherwise).
+struct Budget {
+    spent: u64,
+    limit: u64,
 }
 
 /// What a factor of a term was, for the rule "a number only first or after `*` or `/`".
@@ -446,6 +510,7 @@ impl PolyParser<'_> {
             self.pos += 1;
             let t = self.term()?;
             check_sum(&out, &t)?;
+            charge_sum(&out, &t, &mut self.work)?;
             out.add_assign(if negate { t.negated() } else { t });
         }
     }
@@ -702,16 +767,60 @@ fn check_bits(bits: u64) -> Result<(), String> {
 
 /// A sum adds at most one bit to the larger numerator, and multiplies denominators.
 /// Charge `pairs` coefficient products of `bits` bits each against the budget [`MAX_WORK`].
-fn charge(work: &mut u64, pairs: usize, bits: u64) -> Result<(), String> {
+fn charge(work: &mut Budget, pairs: usize, bits: u64) -> Result<(), String> {
     let words = bits / 64 + 1;
-    let cost = (pairs as u64).saturating_mul(words.saturating_mul(words));
-    *work = work.saturating_add(cost);
-    if *work > MAX_WORK {
+    charge_units(
+        work,
+        (pairs as u64).saturating_mul(words.saturating_mul(words)),
+        &format!("coefficients of about {bits} bits in {pairs} products"),
+    )
+}
+
+/// Charge `units` word operations (`what` says what for, in the error).
+fn charge_units(work: &mut Budget, units: u64, what: &str) -> Result<(), String> {
+    work.spent = work.spent.saturating_add(units);
+    if work.spent > work.limit {
         return Err(format!(
-            "the text needs more than {MAX_WORK} word operations of exact arithmetic (coefficients of about {bits} bits in {pairs} products), above the work limit of polynomial text"
+            "the text needs more than {} word operations of exact arithmetic ({what}), above the work limit of polynomial text",
+            work.limit
         ));
     }
     Ok(())
+}
+
+/// Lehmer's gcd costs a few products' worth of word operations per word of its arguments.
+const GCD_WEIGHT: u64 = 8;
+
+/// Charge `a + b`: each coefficient sum of two terms with the same monomial cross-multiplies the
+/// denominators, then reduces by a gcd with their product, which costs about
+/// `words(numerator)·words(denominators) + GCD_WEIGHT·words(denominators)²` (cheap when the
+/// denominators are small, whatever the numerators).
+fn charge_sum(a: &Polynomial, b: &Polynomial, work: &mut Budget) -> Result<(), String> {
+    let (small, large) = if a.terms.len() <= b.terms.len() {
+        (a, b)
+    } else {
+        (b, a)
+    };
+    let meet = small
+        .terms
+        .keys()
+        .filter(|e| large.terms.contains_key(*e))
+        .count() as u64;
+    if meet == 0 {
+        return Ok(());
+    }
+    let denominator_bits = |p: &Polynomial| p.terms.values().map(|c| c.denom().bits()).max();
+    let d = denominator_bits(a).unwrap_or(0) + denominator_bits(b).unwrap_or(0);
+    let n = a.max_coefficient_bits() + b.max_coefficient_bits();
+    let (wd, wn) = (d / 64 + 1, n / 64 + 1);
+    let per_sum = wn
+        .saturating_mul(wd)
+        .saturating_add(GCD_WEIGHT.saturating_mul(wd.saturating_mul(wd)));
+    charge_units(
+        work,
+        meet.saturating_mul(per_sum),
+        &format!("{meet} sums of coefficients of about {n} bits"),
+    )
 }
 
 fn check_sum(a: &Polynomial, b: &Polynomial) -> Result<(), String> {
@@ -719,7 +828,7 @@ fn check_sum(a: &Polynomial, b: &Polynomial) -> Result<(), String> {
 }
 
 /// `a · b`, after checking the degree, the number of term products and the coefficient size.
-fn checked_mul(a: &Polynomial, b: &Polynomial, work: &mut u64) -> Result<Polynomial, String> {
+fn checked_mul(a: &Polynomial, b: &Polynomial, work: &mut Budget) -> Result<Polynomial, String> {
     if a.is_zero() || b.is_zero() {
         return Ok(Polynomial::zero(a.nvars));
     }
@@ -745,7 +854,7 @@ fn checked_mul(a: &Polynomial, b: &Polynomial, work: &mut u64) -> Result<Polynom
 }
 
 /// `a / b` for a non-zero constant `b`.
-fn checked_div(a: &Polynomial, b: &Polynomial, work: &mut u64) -> Result<Polynomial, String> {
+fn checked_div(a: &Polynomial, b: &Polynomial, work: &mut Budget) -> Result<Polynomial, String> {
     if b.degree().unwrap_or(0) > 0 {
         return Err(
             "the divisor is not a constant (only division by a number is a polynomial)".into(),
@@ -766,7 +875,7 @@ fn checked_div(a: &Polynomial, b: &Polynomial, work: &mut u64) -> Result<Polynom
 }
 
 /// `p^k`, after checking the degree `deg(p)·k` and the coefficient size `bits(p)·k`.
-fn checked_pow(p: &Polynomial, k: u64, work: &mut u64) -> Result<Polynomial, String> {
+fn checked_pow(p: &Polynomial, k: u64, work: &mut Budget) -> Result<Polynomial, String> {
     if k == 0 {
         return Ok(Polynomial::constant(p.nvars, BigRational::one()));
     }
@@ -880,6 +989,24 @@ mod tests {
         assert!(Polynomial::parse(&format!("{big}*u*{big} + {big}/3"), &uvw).is_ok());
         let e = Polynomial::parse("(1e9999 + u + v)^9", &uvw).unwrap_err();
         assert!(e.contains("work limit"), "{e}");
+    }
+
+    /// Sums are charged by the size of their denominators: numbers of 2,000 digits over small
+    /// denominators add cheaply, while the same sums of fractions whose denominators have 2,000
+    /// digits (each sum a gcd of such numbers) exceed a work limit of 2^20.
+    #[test]
+    fn sums_are_charged_by_the_size_of_their_denominators() {
+        let uvw = ["u", "v", "w"];
+        let big = format!("1{}", "0".repeat(2_000));
+        let small = format!("{big} + {big}/3 + {big}/7 + {big}/11 + {big}/13");
+        assert!(Polynomial::parse_with_work_limit(&small, &uvw, 1 << 20).is_ok());
+        let huge = format!("1/{big}1 + 1/{big}3 + 1/{big}7 + 1/{big}9 + 1/{big}11");
+        let e = Polynomial::parse_with_work_limit(&huge, &uvw, 1 << 20).unwrap_err();
+        assert!(
+            e.contains("work limit") && e.contains("sums of coefficients"),
+            "{e}"
+        );
+        assert!(Polynomial::parse(&huge, &uvw).is_ok());
     }
 
     #[test]
@@ -1161,6 +1288,27 @@ mod tests {
             // the power operator and (a+b)**2 in SymPy's unexpanded style
             let sq = format!("({text})**2");
             prop_assert_eq!(Polynomial::parse(&sq, &names).unwrap(), p.mul(&p));
+        }
+
+        /// The integer-form product equals the term-by-term product of rationals (each term
+        /// product reduced, then summed), the definition it replaces.
+        #[test]
+        fn product_equals_the_term_by_term_product(a in poly_strategy(), b in poly_strategy()) {
+            let mut want = Polynomial::zero(a.nvars);
+            for (ea, ca) in &a.terms {
+                for (eb, cb) in &b.terms {
+                    let e = ea.iter().zip(eb).map(|(x, y)| x + y).collect();
+                    want.add_term(e, ca * cb);
+                }
+            }
+            let got = a.mul(&b);
+            // Ratio's == compares values: check lowest terms and the stored zeros separately
+            for c in got.terms.values() {
+                prop_assert!(!c.is_zero());
+                prop_assert!(c.denom().is_positive());
+                prop_assert!(num_integer::Integer::gcd(c.numer(), c.denom()).is_one());
+            }
+            prop_assert_eq!(got, want);
         }
 
         #[test]

@@ -34,7 +34,9 @@ pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 
 pub use arith::gcd;
-pub(crate) use arith::{add as q_add, div as q_div, mul as q_mul, pow as q_pow, sub as q_sub};
+pub(crate) use arith::{
+    add as q_add, div as q_div, mul as q_mul, pow as q_pow, ratio, sub as q_sub,
+};
 pub use exact::{exact_f32, exact_f64, exact_value, pow2};
 pub use format::BinaryFloat;
 pub use parse::{
@@ -42,8 +44,8 @@ pub use parse::{
     parse_rational,
 };
 pub use print::{
-    display_f32, display_f64, display_float, format_rational, hex_f32, hex_f64, hex_float,
-    push_decimal, push_rational, to_decimal_string,
+    display_f32, display_f64, display_float, format_points, format_rational, format_tuple, hex_f32,
+    hex_f64, hex_float, push_decimal, push_rational, to_decimal_string,
 };
 pub use round::{is_faithful, is_faithful_f32, is_faithful_f64, round_f32, round_f64, round_to};
 pub use ulp::{

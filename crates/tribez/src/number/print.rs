@@ -75,14 +75,17 @@ const TEN19: u64 = 10_000_000_000_000_000_000;
 /// quadratic part run at the speed of num-bigint's long division. A number of
 /// [`super::MAX_DIGITS`] digits prints in tens of milliseconds.
 pub fn push_decimal(out: &mut String, x: &BigUint) {
-    let mut bytes = Vec::new();
-    let limbs = x.to_u64_digits();
-    if limbs.len() < SPLIT_LIMBS {
-        push_chunks(&mut bytes, limbs, None);
+    if x.bits() <= 64 * (SPLIT_LIMBS as u64 - 1) {
+        let mut limbs = [0u64; SPLIT_LIMBS];
+        let mut len = 0;
+        for (slot, limb) in limbs.iter_mut().zip(x.iter_u64_digits()) {
+            *slot = limb;
+            len += 1;
+        }
+        push_chunks(out, &mut limbs[..len], None);
     } else {
-        split_decimal(&mut bytes, x, None);
+        split_decimal(out, x, None);
     }
-    out.push_str(std::str::from_utf8(&bytes).expect("ASCII digits"));
 }
 
 /// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
@@ -101,11 +104,11 @@ fn power_of_ten(k: usize) -> &'static BigUint {
 }
 
 /// The digits of `x`, exactly `width` of them (leading zeros) when given.
-fn split_decimal(out: &mut Vec<u8>, x: &BigUint, width: Option<usize>) {
-    let limbs = x.to_u64_digits();
+fn split_decimal(out: &mut String, x: &BigUint, width: Option<usize>) {
+    let mut limbs = x.to_u64_digits();
     let len = limbs.len();
     if len < SPLIT_LIMBS {
-        push_chunks(out, limbs, width.map(|w| w / 19));
+        push_chunks(out, &mut limbs, width.map(|w| w / 19));
         return;
     }
     // the largest k with 10^(19·2^k) of at most half the limbs of x (19·2^k digits each side)
@@ -119,58 +122,77 @@ fn split_decimal(out: &mut Vec<u8>, x: &BigUint, width: Option<usize>) {
     split_decimal(out, &lo, Some(low_digits));
 }
 
-/// The digits of the little-endian limbs `limbs`; with `chunks`, exactly `19·chunks` digits
-/// (leading zeros), else no leading zero.
-fn push_chunks(out: &mut Vec<u8>, mut limbs: Vec<u64>, chunks: Option<usize>) {
-    while limbs.last() == Some(&0) {
-        limbs.pop();
+/// The digits of the little-endian limbs `limbs` (fewer than [`SPLIT_LIMBS`]; they are used up);
+/// with `chunks`, exactly `19·chunks` digits (leading zeros), else no leading zero. Nothing is
+/// allocated: the base-`10^19` digits are kept on the stack.
+fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
+    debug_assert!(limbs.len() < SPLIT_LIMBS);
+    let mut len = limbs.len();
+    while len > 0 && limbs[len - 1] == 0 {
+        len -= 1;
     }
     // v = floor((2^128 − 1) / d) − 2^64 for the normalised d = 10^19
     let v = (u128::MAX / u128::from(TEN19) - (1u128 << 64)) as u64;
-    let mut digits: Vec<u64> = Vec::with_capacity(limbs.len() * 64 / 63 + 2);
-    while limbs.len() > 1 {
+    // each limb gives at most 64/log2(10^19) < 1.02 chunks: SPLIT_LIMBS + 2 is enough
+    let mut digits = [0u64; SPLIT_LIMBS + 2];
+    let mut count = 0;
+    while len > 1 {
         let mut r = 0u64;
-        for limb in limbs.iter_mut().rev() {
+        for limb in limbs[..len].iter_mut().rev() {
             let (q, rem) = div_2by1(r, *limb, TEN19, v);
             *limb = q;
             r = rem;
         }
-        digits.push(r);
-        if limbs.last() == Some(&0) {
-            limbs.pop();
+        digits[count] = r;
+        count += 1;
+        if limbs[len - 1] == 0 {
+            len -= 1;
         }
     }
     // the last limb may exceed 10^19: one more word division
-    if let Some(&top) = limbs.first() {
-        digits.push(top % TEN19);
+    if len == 1 {
+        let top = limbs[0];
+        digits[count] = top % TEN19;
+        count += 1;
         if top >= TEN19 {
-            digits.push(top / TEN19);
+            digits[count] = top / TEN19;
+            count += 1;
         }
     }
-    while digits.len() > 1 && digits.last() == Some(&0) {
-        digits.pop();
+    while count > 1 && digits[count - 1] == 0 {
+        count -= 1;
     }
-    out.reserve(19 * digits.len().max(chunks.unwrap_or(0)) + 1);
-    let top = match chunks {
-        Some(c) => {
-            debug_assert!(digits.len() <= c.max(1));
-            for _ in digits.len()..c {
-                out.extend_from_slice(&[b'0'; 19]);
-            }
-            None
-        }
-        None => Some(digits.pop().unwrap_or(0)),
-    };
+    out.reserve(19 * count.max(chunks.unwrap_or(0)) + 1);
     let mut buf = [b'0'; 20];
-    if let Some(top) = top {
-        let start = fill_digits(&mut buf, top);
-        out.extend_from_slice(&buf[start..]);
+    match chunks {
+        Some(c) => {
+            debug_assert!(count <= c.max(1));
+            for _ in count..c {
+                out.push_str("0000000000000000000");
+            }
+        }
+        None => {
+            // the leading chunk without leading zeros (0 itself is "0")
+            let top = if count == 0 {
+                0
+            } else {
+                count -= 1;
+                digits[count]
+            };
+            let start = fill_digits(&mut buf, top);
+            out.push_str(ascii(&buf[start..]));
+        }
     }
-    for &d in digits.iter().rev() {
+    for &d in digits[..count].iter().rev() {
         buf = [b'0'; 20];
         fill_digits(&mut buf, d);
-        out.extend_from_slice(&buf[1..]);
+        out.push_str(ascii(&buf[1..]));
     }
+}
+
+/// Digits written by [`fill_digits`] as text.
+fn ascii(digits: &[u8]) -> &str {
+    std::str::from_utf8(digits).expect("ASCII digits")
 }
 
 /// `(q, r)` with `u1·2^64 + u0 = q·d + r`, `0 ≤ r < d`, for a normalised `d` (top bit set),
@@ -394,4 +416,32 @@ fn hex_text(neg: bool, lead: u8, frac: u64, width: usize, exp: i64) -> String {
     }
     let digits = format!("{frac:0width$x}");
     format!("{sign}0x{lead}.{}p{exp:+}", digits.trim_end_matches('0'))
+}
+
+/// `(1/2, 1/3, 1/6)`: a tuple of exact numbers as text, for messages and reports.
+pub fn format_tuple(xs: &[BigRational]) -> String {
+    format!(
+        "({})",
+        xs.iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+/// `(1, 2), (7, 3)` style text for messages.
+pub fn format_points(points: &[Vec<BigRational>]) -> String {
+    points
+        .iter()
+        .map(|p| {
+            format!(
+                "({})",
+                p.iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }

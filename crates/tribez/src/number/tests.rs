@@ -887,6 +887,15 @@ fn decimal_printing_at_the_edges() {
             assert_eq!(s, x.to_string());
         }
     }
+    // around every limb boundary, and the stack path's largest size (23 limbs) and the split
+    for bits in (0..=40u32).map(|k| 64 * k) {
+        let p = BigUint::one() << bits;
+        for x in [p.clone(), &p - 1u32, &p + 1u32, &p * 3u32 - 1u32] {
+            let mut s = String::new();
+            push_decimal(&mut s, &x);
+            assert_eq!(s, x.to_string());
+        }
+    }
     let mut s = String::new();
     push_decimal(&mut s, &BigUint::zero());
     assert_eq!(s, "0");
