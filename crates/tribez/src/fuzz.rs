@@ -22,6 +22,7 @@ pub const TARGETS: &[&str] = &[
     "batch_jsonl",
     "batch_json_array",
     "mesh",
+    "batch_inverse",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -37,6 +38,7 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "batch_jsonl" => batch_jsonl(data),
         "batch_json_array" => batch_json_array(data),
         "mesh" => mesh(data),
+        "batch_inverse" => batch_inverse(data),
         _ => return false,
     }
     true
@@ -165,4 +167,10 @@ pub fn batch_json_array(data: &[u8]) {
 /// and looked up ([`crate::mesh::fuzz_mesh`]).
 pub fn mesh(data: &[u8]) {
     crate::mesh::fuzz_mesh(data);
+}
+
+/// Rows of an inverse batch (`check --locate-results`, `--ray-results`): the first byte chooses
+/// the kind, the format and the precision ([`crate::batch::inverse`]).
+pub fn batch_inverse(data: &[u8]) {
+    crate::batch::inverse::fuzz_inverse_rows(data);
 }

@@ -29,7 +29,9 @@ pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_cur
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
-pub use surfaces::{Hit, Located, Locations, RayHits, locate, ray_hits};
+pub use surfaces::{
+    Hit, Located, Locations, RayHits, check_locate_patch, check_ray_patch, locate, ray_hits,
+};
 pub use system::{Expr, Half, Partner, Region, Solution, Solved, solve};
 
 /// The largest degree of a univariate polynomial whose roots are isolated.

@@ -253,6 +253,22 @@ fn tangents(h: &[BiPoly]) -> [Vec<BiPoly>; 2] {
     [part(&bi_dx), part(&bi_dy)]
 }
 
+/// Does [`locate`] take `p` (a planar Bézier or rational triangle patch within the caps)? What
+/// a batch of locate rows checks once, before its first row.
+pub fn check_locate_patch(p: &Patch) -> Result<(), AlgebraicError> {
+    if matches!(p.as_any(), AnyPatch::Functional(_)) {
+        return Err(AlgebraicError::Shape(
+            "locate takes a planar parametric patch (m = 2, d = 2), not a functional patch".into(),
+        ));
+    }
+    homogeneous(p, "the patch", 2).map(|_| ())
+}
+
+/// Does [`ray_hits`] take `p` (a triangle patch in ℝ³ or a functional patch within the caps)?
+pub fn check_ray_patch(p: &Patch) -> Result<(), AlgebraicError> {
+    homogeneous(p, "the patch", 3).map(|_| ())
+}
+
 /// Every parameter point `(s, t)` of the closed triangle (of the whole plane with `anywhere`)
 /// that the planar patch `p` (`m = 2`, `d = 2`; Bézier or rational, degree at most
 /// [`MAX_PATCH_DEGREE`]) maps to `point`, exactly.

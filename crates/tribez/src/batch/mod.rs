@@ -27,12 +27,16 @@ use num_traits::ToPrimitive;
 use rayon::prelude::*;
 
 mod histogram;
+pub mod inverse;
 mod judge;
 mod parse;
 mod report;
 pub(crate) mod routed;
 
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
+pub use inverse::{
+    InverseBatchChecker, InverseBatchOptions, InverseBatchReport, InverseFailedRow, InverseKind,
+};
 pub use parse::Format;
 pub(crate) use parse::fuzz_rows;
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
@@ -124,6 +128,23 @@ pub enum BatchError {
     /// A mesh that is not valid (`check --mesh`): its first problem.
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
+    /// An inverse batch (`--locate-results`, `--ray-results`) with a tolerance only an
+    /// evaluation has (`cond`, `bound`).
+    #[error(
+        "tolerance `{tolerance}` needs an evaluation (a condition number or an algorithm's bound); inverse batches take exact, ulps=N, abs=E, rel=E, correctly_rounded or faithful"
+    )]
+    ToleranceEvalOnly {
+        /// The tolerance.
+        tolerance: Tolerance,
+    },
+    /// An inverse batch about a patch its problem does not take.
+    #[error("{patch}: {error}")]
+    InversePatch {
+        /// The patch's name.
+        patch: String,
+        /// Why.
+        error: crate::algebraic::AlgebraicError,
+    },
     /// A control point is outside the precision's range.
     #[error("a control point of the patch overflows {}", precision.name())]
     ControlPointOverflows {

@@ -35,6 +35,16 @@ pub enum InverseProblem {
         /// Their names (`"s, t"`, `"tau, s, t"`).
         names: &'static str,
     },
+    /// A row of an inverse batch that is not its query then whole claimed tuples (or `none`).
+    #[error("{found} columns; a {kind} row is {layout}")]
+    RowColumns {
+        /// Columns in the row (an upper bound when it is too long to be split).
+        found: usize,
+        /// `locate` or `ray`.
+        kind: &'static str,
+        /// The row layout.
+        layout: &'static str,
+    },
     /// The exact computation refused the input (shape, caps, an unsupported configuration).
     #[error(transparent)]
     Algebraic(#[from] AlgebraicError),

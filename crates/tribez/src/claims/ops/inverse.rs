@@ -164,6 +164,17 @@ impl ExactNumber {
     }
 }
 
+/// JSON: the algebraic number's or the expression's own ([`RealAlgebraic::to_json`],
+/// [`Expr::to_json`]).
+impl serde::Serialize for ExactNumber {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            ExactNumber::Algebraic(x) => x.serialize(s),
+            ExactNumber::Expr(e) => e.serialize(s),
+        }
+    }
+}
+
 /// The exact answer of an inverse claim.
 #[derive(Clone, Debug)]
 pub struct InverseAnswer {
@@ -668,6 +679,28 @@ pub fn findings(
     Ok(out)
 }
 
+/// Judge claimed tuples (or, with `claimed_tuples` `None`, a bare claimed count) against the
+/// exact answer: every finding with its mismatch (the exact solution shown in full). What an
+/// inverse claim ([`judge`]) and a row of an inverse batch ([`crate::batch::inverse`]) both
+/// call. `Err` when the tolerance needs what an inverse answer lacks (`cond`, `bound`).
+pub fn judge_answer(
+    claimed_tuples: Option<&[Vec<Q>]>,
+    claimed_count: usize,
+    answer: &InverseAnswer,
+    tolerance: &Tolerance,
+    precision: Option<Precision>,
+) -> Result<Vec<(InverseFinding, Mismatch)>, ToleranceNeeds> {
+    Ok(
+        findings(claimed_tuples, claimed_count, answer, tolerance, precision)?
+            .into_iter()
+            .map(|f| {
+                let m = mismatch(&f, claimed_tuples, answer, tolerance);
+                (f, m)
+            })
+            .collect(),
+    )
+}
+
 fn mismatch(
     f: &InverseFinding,
     tuples: Option<&[Vec<Q>]>,
@@ -771,11 +804,10 @@ pub fn judge(
         Claimed::Tuples(t) => (Some(t.as_slice()), t.len()),
         Claimed::Count(n) => (None, *n),
     };
-    let found = findings(tuples, count, &answer, &tolerance, precision)
-        .map_err(|e| inputs.error("tolerance", e))?;
-    let mismatches: Vec<Mismatch> = found
-        .iter()
-        .map(|f| mismatch(f, tuples, &answer, &tolerance))
+    let mismatches: Vec<Mismatch> = judge_answer(tuples, count, &answer, &tolerance, precision)
+        .map_err(|e| inputs.error("tolerance", e))?
+        .into_iter()
+        .map(|(_, m)| m)
         .collect();
     let claimed_value = match &claimed {
         Claimed::Tuples(t) => Value::Map(vec![

@@ -50,7 +50,7 @@ mod inputs;
 pub mod inverse;
 mod join;
 mod point;
-mod seen;
+pub(crate) mod seen;
 #[cfg(test)]
 mod tests;
 

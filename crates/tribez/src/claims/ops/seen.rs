@@ -17,6 +17,28 @@ use crate::spatch::SPatch;
 
 type Q = BigRational;
 
+/// Who an error about a rounded patch is blamed on: a claim's input (its file, line and key), or
+/// a whole file (a batch's patch).
+pub trait Blame {
+    /// The error of input `name`.
+    fn blame(&self, name: &str, problem: Problem) -> InputError;
+}
+
+impl Blame for Inputs<'_> {
+    fn blame(&self, name: &str, problem: Problem) -> InputError {
+        self.error(name, problem)
+    }
+}
+
+/// Errors blamed on a whole file (its name).
+pub struct FileBlame<'a>(pub &'a str);
+
+impl Blame for FileBlame<'_> {
+    fn blame(&self, _name: &str, problem: Problem) -> InputError {
+        InputError::file(self.0, problem)
+    }
+}
+
 fn round(q: &Q, p: Precision) -> Option<Q> {
     crate::certify::measures::as_float(q, p)
 }
@@ -131,9 +153,9 @@ pub fn domain(
 }
 
 /// A polynomial patch with its control points rounded (its domain stays exact).
-pub fn patch(inputs: &Inputs<'_>, patch: &Patch, p: Precision) -> Result<Patch, InputError> {
+pub fn patch(inputs: &dyn Blame, patch: &Patch, p: Precision) -> Result<Patch, InputError> {
     if patch.net.coords().iter().any(|q| round(q, p).is_none()) {
-        return Err(inputs.error("patch", overflows("a control point", p)));
+        return Err(inputs.blame("patch", overflows("a control point", p)));
     }
     Ok(Patch {
         net: patch.net.map(|q| round(q, p).unwrap_or_default()),
@@ -143,48 +165,44 @@ pub fn patch(inputs: &Inputs<'_>, patch: &Patch, p: Precision) -> Result<Patch, 
 
 /// A rational patch as seen: its homogeneous net `(w c, w)` rounded.
 pub fn rational(
-    inputs: &Inputs<'_>,
+    inputs: &dyn Blame,
     r: &RationalPatch,
     p: Precision,
 ) -> Result<RationalPatch, InputError> {
     let hr = r.homogeneous().map(|q| round(q, p));
     if hr.coords().iter().any(Option::is_none) {
-        return Err(inputs.error("patch", overflows("a weighted control point", p)));
+        return Err(inputs.blame("patch", overflows("a weighted control point", p)));
     }
     let hr = hr.map(|q| q.clone().unwrap_or_default());
     RationalPatch::from_homogeneous(&hr, &r.patch)
-        .map_err(|e| inputs.error("patch", rounded(None, p, e)))
+        .map_err(|e| inputs.blame("patch", rounded(None, p, e).into()))
 }
 
 /// An S-patch as seen: its polygon and control points rounded.
-pub fn spatch(inputs: &Inputs<'_>, s: &SPatch, p: Precision) -> Result<SPatch, InputError> {
+pub fn spatch(inputs: &dyn Blame, s: &SPatch, p: Precision) -> Result<SPatch, InputError> {
     let mut verts = Vec::new();
     for v in s.polygon.vertices() {
         verts.push(
             v.iter()
                 .map(|q| round(q, p))
                 .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| inputs.error("patch", overflows("a number", p)))?,
+                .ok_or_else(|| inputs.blame("patch", overflows("a number", p)))?,
         );
     }
     let polygon = crate::spatch::Polygon::new(verts)
-        .map_err(|e| inputs.error("patch", rounded(Some("the polygon"), p, e)))?;
+        .map_err(|e| inputs.blame("patch", rounded(Some("the polygon"), p, e).into()))?;
     let net = s.net.map(|q| round(q, p));
     if net.coords().iter().any(Option::is_none) {
-        return Err(inputs.error("patch", overflows("a control point", p)));
+        return Err(inputs.blame("patch", overflows("a control point", p)));
     }
     let mut out = SPatch::new(polygon, net.map(|q| q.clone().unwrap_or_default()))
-        .map_err(|e| inputs.error("patch", e))?;
+        .map_err(|e| inputs.blame("patch", e.into()))?;
     out.name = s.name.clone();
     Ok(out)
 }
 
 /// A patch of any kind as seen.
-pub fn any_patch(
-    inputs: &Inputs<'_>,
-    any: &AnyPatch,
-    p: Precision,
-) -> Result<AnyPatch, InputError> {
+pub fn any_patch(inputs: &dyn Blame, any: &AnyPatch, p: Precision) -> Result<AnyPatch, InputError> {
     Ok(match any {
         AnyPatch::Bezier(x) => AnyPatch::Bezier(patch(inputs, x, p)?),
         AnyPatch::Functional(x) => AnyPatch::Functional(patch(inputs, x, p)?),
