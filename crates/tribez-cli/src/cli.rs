@@ -142,8 +142,8 @@ Examples:
     pub const CHECK: &str = "\
 Examples:
   tribez check fixtures/finn_day30.claims.toml
-  tribez check fixtures --junit junit.xml --record-baseline baseline.json
-  tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --precision f64 --tolerance ulps=4 --plot map.svg --html report.html";
+  tribez check --patch fixtures/peers/peer_cubic.toml --results fixtures/peers/bezier_results.csv --precision f64 --tolerance ulps=4 --plot map.svg --html report.html
+  tribez check --patch fixtures/inverse/peer/triangle.toml --locate-results fixtures/inverse/peer/locate.rows.csv --precision f64 --tolerance ulps=16";
     /// `tribez certify`.
     pub const CERTIFY: &str = "\
 Examples:

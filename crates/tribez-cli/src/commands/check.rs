@@ -17,12 +17,31 @@ pub struct Args {
     #[arg(value_name = "FILE_OR_DIR")]
     pub paths: Vec<PathBuf>,
     /// Batch mode: the patch the results are about.
-    #[arg(long, value_name = "PATCH", requires = "results")]
+    #[arg(long, value_name = "PATCH")]
     pub patch: Option<PathBuf>,
     /// Batch mode: CSV, JSON-lines or JSON-array-of-rows results (input coordinates, then the
     /// claimed coordinates).
     #[arg(long, value_name = "FILE")]
     pub results: Option<PathBuf>,
+    /// Batch mode: answers to `tribez locate` from another implementation, one row per point:
+    /// `x, y`, then the claimed (s, t) pairs (`x, y, s, t` for one), or `none`; each row
+    /// judged against every exact parameter point of the closed triangle.
+    #[arg(
+        long,
+        value_name = "FILE",
+        requires = "patch",
+        conflicts_with_all = ["results", "mesh", "ray_results"]
+    )]
+    pub locate_results: Option<PathBuf>,
+    /// Batch mode: answers to `tribez ray` from another implementation, one row per ray:
+    /// `ox, oy, oz, dx, dy, dz`, then the claimed first hit `tau, s, t`, or `none`.
+    #[arg(
+        long,
+        value_name = "FILE",
+        requires = "patch",
+        conflicts_with_all = ["results", "mesh"]
+    )]
+    pub ray_results: Option<PathBuf>,
     /// Batch mode on a mesh: the results are lookups `x, y, value` in this mesh file (each row judged in the triangle containing its point as seen).
     #[arg(
         long,
@@ -93,6 +112,11 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
                 "{flag} applies to batches (--patch PATCH --results FILE); claim files state it per claim"
             )));
         }
+    }
+    if args.patch.is_some() {
+        return Err(CliError::Usage(
+            "--patch needs --results FILE, --locate-results FILE or --ray-results FILE".into(),
+        ));
     }
     if args.paths.is_empty() {
         return Err(CliError::Usage(

@@ -13,6 +13,7 @@ pub mod graph;
 pub mod halve;
 pub mod intersect;
 pub mod inverse;
+pub mod inverse_batch;
 pub mod join;
 pub mod matrix;
 pub mod mesh;
@@ -174,6 +175,9 @@ pub fn main(cli: Cli) -> i32 {
             (mesh::run_batch(a), &a.out)
         }
         Command::Check(a) if a.results.is_some() => (batch::run(a), &a.out),
+        Command::Check(a) if a.locate_results.is_some() || a.ray_results.is_some() => {
+            (inverse_batch::run(a), &a.out)
+        }
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),
