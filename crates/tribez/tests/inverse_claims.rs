@@ -129,3 +129,54 @@ fn bad_inverse_claims_are_located_errors() {
         "{err}"
     );
 }
+
+/// `ray` claims in the `height` form (fixtures/inverse/height.claims.toml, values by hand): the
+/// vertical line through (x, y) of a functional patch, claimed as (z, s, t).
+#[test]
+fn height_claims_are_the_data_lookup() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/inverse");
+    let f = ClaimFile::read(&dir.join("height.claims.toml")).unwrap();
+    let judged = f.judge_all().unwrap();
+    assert_eq!(judged.len(), 5);
+    for j in &judged {
+        if j.id == "height-wrong" {
+            let r = reasons(&j.verdict);
+            assert!(matches!(j.verdict, Verdict::KnownErratum(_)), "{r:?}");
+            assert_eq!(r.len(), 1, "{r:?}");
+            assert!(r[0].starts_with("[0][0]: z = 0.625000001"), "{r:?}");
+            assert!(r[0].contains("against 5/8"), "{r:?}");
+        } else {
+            assert_eq!(
+                j.verdict,
+                Verdict::Holds,
+                "{}: {:?}",
+                j.id,
+                reasons(&j.verdict)
+            );
+        }
+    }
+    // `height` with `origin`, or on a patch that is not functional: an error naming the input
+    let dir = tempfile::tempdir().unwrap();
+    let hill = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/inverse/hill.toml");
+    let dome = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/inverse/dome.toml");
+    for (patch, extra, says) in [
+        (
+            &hill,
+            "origin = [\"0\", \"0\", \"1\"]\n",
+            "instead of `origin`",
+        ),
+        (&dome, "", "takes a functional patch"),
+    ] {
+        let text = format!(
+            "[patches]\np = {:?}\n\n[[claim]]\nid = \"h\"\nop = \"ray\"\npatch = \"p\"\nheight = [\"0\", \"0\"]\n{extra}expect = []\n",
+            patch.display().to_string()
+        );
+        let path = dir.path().join("h.claims.toml");
+        std::fs::write(&path, text).unwrap();
+        let e = ClaimFile::read(&path)
+            .and_then(|f| f.judge_all())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(says), "{e}");
+    }
+}

@@ -45,6 +45,17 @@ pub enum InverseProblem {
         /// The row layout.
         layout: &'static str,
     },
+    /// A `ray` claim with `height` and also `origin` or `direction`.
+    #[error(
+        "`height` is the vertical line through a point: give it instead of `origin` and `direction`"
+    )]
+    HeightAndRay,
+    /// A `ray` claim with `height` on a patch that is not a functional triangle patch.
+    #[error("`height` takes a functional patch over a triangle (m = 2), not {what}")]
+    HeightNotFunctional {
+        /// What the patch is.
+        what: String,
+    },
     /// The exact computation refused the input (shape, caps, an unsupported configuration).
     #[error(transparent)]
     Algebraic(#[from] AlgebraicError),

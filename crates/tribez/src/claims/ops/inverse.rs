@@ -26,6 +26,12 @@
 //! origin = ["1/5", "1/5", "3"]
 //! direction = ["1/10", "1/20", "-1"]
 //! expect = [["2.5", "0.2", "0.3"]]      # (τ, s, t) triples
+//!
+//! [[claim]]
+//! op = "ray"
+//! patch = "hill"                        # a functional patch over a triangle
+//! height = ["1/4", "1/4"]               # the vertical line through (x, y): the data lookup
+//! expect = [["0.625", "0.25", "0.25"]]  # (z, s, t): the height f(x, y), (x, y)'s parameters
 //! ```
 //!
 //! `expect` is a list of parameter tuples (its length is the claimed count; `[]` claims there is
@@ -59,6 +65,7 @@ use super::seen;
 use crate::algebraic::{
     AlgebraicError, Curve, Expr, RealAlgebraic, intersect_curves, locate, ray_hits,
 };
+use crate::any_patch::AnyPatch;
 use crate::certify::measures::{Leaf, Measures, Tolerance, ToleranceNeeds};
 use crate::float::Precision;
 use crate::io::tree::{Document, Value as NodeValue};
@@ -104,6 +111,13 @@ pub enum InverseQuery<'a> {
         origin: [Q; 3],
         /// Its direction.
         direction: [Q; 3],
+    },
+    /// `ray` with `height`: the vertical line through a point of a functional patch's domain.
+    Height {
+        /// The functional triangle patch.
+        patch: Cow<'a, Patch>,
+        /// The point (x, y).
+        at: [Q; 2],
     },
 }
 
@@ -301,6 +315,31 @@ impl<'a> InverseOp<'a> {
                     anywhere: inputs.opt_bool("anywhere")?.unwrap_or(false),
                 }
             }
+            _ if inputs.get("height").is_some() => {
+                if let Some(k) = ["origin", "direction"]
+                    .into_iter()
+                    .find(|k| inputs.get(k).is_some())
+                {
+                    return Err(inputs.error(k, InverseProblem::HeightAndRay));
+                }
+                let at = fixed::<2>(inputs, "height")?;
+                let patch = inputs.file.patch_for(inputs.claim)?;
+                match patch.as_any() {
+                    AnyPatch::Functional(f) if f.net.m() == 2 => {}
+                    other => {
+                        return Err(inputs.error(
+                            "height",
+                            InverseProblem::HeightNotFunctional {
+                                what: other.described().to_string(),
+                            },
+                        ));
+                    }
+                }
+                InverseQuery::Height {
+                    patch: Cow::Borrowed(patch),
+                    at,
+                }
+            }
             _ => {
                 let origin = fixed::<3>(inputs, "origin")?;
                 let direction = fixed::<3>(inputs, "direction")?;
@@ -346,6 +385,10 @@ impl<'a> InverseOp<'a> {
                 patch: patch(x)?,
                 origin: to_array(nums("origin", origin)?),
                 direction: to_array(nums("direction", direction)?),
+            },
+            InverseQuery::Height { patch: x, at } => InverseQuery::Height {
+                patch: patch(x)?,
+                at: to_array(nums("height", at)?),
             },
         };
         Ok(InverseOp { query })
@@ -419,6 +462,37 @@ impl<'a> InverseOp<'a> {
                     infinite: r
                         .infinite
                         .then(|| "the ray runs along the surface".to_string()),
+                })
+            }
+            InverseQuery::Height { patch, at } => {
+                // (x, y)'s barycentric coordinates (1 − s − t, s, t) in the domain; outside the
+                // closed triangle the vertical line misses the patch
+                let AnyPatch::Functional(f) = patch.as_any() else {
+                    return Err(AlgebraicError::Shape(
+                        "`height` takes a functional patch".into(),
+                    ));
+                };
+                let lambda = f
+                    .domain_or_reference()
+                    .barycentric(at)
+                    .map_err(|e| AlgebraicError::Shape(e.to_string()))?;
+                let solutions = if lambda.iter().any(|l| l < &Q::zero()) {
+                    Vec::new()
+                } else {
+                    let z = patch
+                        .evaluate(&lambda)
+                        .map_err(|e| AlgebraicError::Shape(e.to_string()))?;
+                    vec![
+                        [&z[0], &lambda[1], &lambda[2]]
+                            .into_iter()
+                            .map(|x| ExactNumber::Algebraic(RealAlgebraic::rational(x.clone())))
+                            .collect(),
+                    ]
+                };
+                Ok(InverseAnswer {
+                    names: &["z", "s", "t"],
+                    solutions,
+                    infinite: None,
                 })
             }
         }
@@ -794,10 +868,10 @@ pub fn judge(
     let answer = op
         .answer()
         .map_err(|e| inputs.error("op", InverseProblem::from(e)))?;
-    let names = if answer.names.len() == 3 {
-        "tau, s, t"
-    } else {
-        "s, t"
+    let names = match answer.names {
+        ["z", ..] => "z, s, t",
+        [_, _, _] => "tau, s, t",
+        _ => "s, t",
     };
     let claimed = read_claimed(file, claim, names, precision)?;
     let (tuples, count) = match &claimed {

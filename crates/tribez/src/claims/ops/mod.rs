@@ -26,7 +26,7 @@
 //! | `graph` | (a functional patch) | the control points `(ξ_α, b_α)` of its graph, keyed by multi-index |
 //! | `intersect` | `patches = ["a", "b"]` (two planar curves) | the intersections' `(s, t)`: `expect` lists claimed pairs, or is a count ([`inverse`]) |
 //! | `locate` | `point` (x, y), optional `anywhere` | the parameters `(s, t)` mapping to the point ([`inverse`]) |
-//! | `ray` | `origin`, `direction` | the hits `(τ, s, t)` with `τ ≥ 0` ([`inverse`]) |
+//! | `ray` | `origin`, `direction`; or `height` (x, y) on a functional patch | the hits `(τ, s, t)` with `τ ≥ 0`; with `height`, `(z, s, t)` ([`inverse`]) |
 //!
 //! `eval` also takes rational patches (`at` or `cartesian`) and S-patches (`cartesian` only).
 //!
@@ -136,7 +136,7 @@ op_names! {
     Graph = "graph" ["patch"];
     Intersect = "intersect" ["patches"];
     Locate = "locate" ["patch", "point", "anywhere"];
-    Ray = "ray" ["patch", "origin", "direction"];
+    Ray = "ray" ["patch", "origin", "direction", "height"];
 }
 
 /// Every operation name, for messages.
