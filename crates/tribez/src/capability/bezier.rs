@@ -223,7 +223,7 @@ impl Constructions for Polynomial<'_> {
         Cow::Borrowed(&self.patch.net)
     }
 
-    fn from_linear_net(
+    fn with_linear_net(
         &self,
         net: ControlNet<BigRational>,
         f: Option<&[Vec<BigRational>]>,

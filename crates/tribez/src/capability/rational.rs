@@ -194,7 +194,7 @@ impl Constructions for RationalPatch {
         Cow::Owned(self.homogeneous())
     }
 
-    fn from_linear_net(
+    fn with_linear_net(
         &self,
         net: ControlNet<BigRational>,
         f: Option<&[Vec<BigRational>]>,

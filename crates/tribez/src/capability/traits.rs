@@ -299,7 +299,7 @@ pub(crate) fn with_net(
 ///
 /// Elevation, subpatches and every split are linear in the control points, so a kind gives the
 /// net they run on ([`Constructions::linear_net`]: the control points, or a rational patch's
-/// homogeneous net `(w c, w)`) and the way back ([`Constructions::from_linear_net`]); the
+/// homogeneous net `(w c, w)`) and the way back ([`Constructions::with_linear_net`]); the
 /// constructions themselves are written once, here.
 pub trait Constructions {
     /// The net the linear constructions run on: the control points, or for a rational patch
@@ -307,21 +307,21 @@ pub trait Constructions {
     fn linear_net(&self) -> Cow<'_, ControlNet<BigRational>>;
     /// The patch of this kind whose [`Constructions::linear_net`] is `net`, over the
     /// sub-simplex `f` of this patch's domain (`None`: the same domain), with this patch's name.
-    fn from_linear_net(
+    fn with_linear_net(
         &self,
         net: ControlNet<BigRational>,
         f: Option<&[Vec<BigRational>]>,
     ) -> Result<AnyPatch, CoreError>;
     /// Degree elevation by `r` (docs/theory.md §6).
     fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
-        self.from_linear_net(crate::elevate::elevate(&self.linear_net(), r), None)
+        self.with_linear_net(crate::elevate::elevate(&self.linear_net(), r), None)
     }
     /// The subpatch over the simplex with the given barycentric vertices (docs/theory.md §4):
     /// `c′_α = b[f_0^{α_0}, …, f_m^{α_m}]`. Its Cartesian domain, if the patch has one, is the
     /// image of the vertices.
     fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
         let net = crate::blossom::subpatch(&self.linear_net(), vertices)?;
-        self.from_linear_net(net, Some(vertices))
+        self.with_linear_net(net, Some(vertices))
     }
     /// The pieces of a split (docs/theory.md §5), each over its sub-simplex.
     fn pieces(&self, split: &Split<'_>) -> Result<Vec<SubPatch>, CoreError> {
@@ -375,7 +375,7 @@ pub trait Constructions {
         pieces
             .into_iter()
             .map(|(index, p)| {
-                let patch = self.from_linear_net(p.net, Some(&p.domain_in_parent))?;
+                let patch = self.with_linear_net(p.net, Some(&p.domain_in_parent))?;
                 Ok(SubPatch {
                     index,
                     domain_in_parent: p.domain_in_parent,
@@ -431,12 +431,12 @@ impl<T: Constructions + ?Sized> Constructions for &T {
     fn linear_net(&self) -> Cow<'_, ControlNet<BigRational>> {
         (**self).linear_net()
     }
-    fn from_linear_net(
+    fn with_linear_net(
         &self,
         net: ControlNet<BigRational>,
         f: Option<&[Vec<BigRational>]>,
     ) -> Result<AnyPatch, CoreError> {
-        (**self).from_linear_net(net, f)
+        (**self).with_linear_net(net, f)
     }
     fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
         (**self).blossom(args)
