@@ -16,8 +16,8 @@ use num_rational::BigRational;
 use crate::any_patch::AnyPatch;
 use crate::capability::traits::{
     BoundText, Constructions, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
-    InputSpace, Narrow, PointEvaluator, Seen, Shape, SymbolicForm, exact_values, narrowed,
-    round_input, with_net,
+    InputSpace, Narrow, PointEvaluator, Seen, Shape, SymbolicForm, check_len, exact_values,
+    narrowed, round_input, with_net,
 };
 use crate::certify::Certifier;
 use crate::error::CoreError;
@@ -31,19 +31,6 @@ pub const POLYNOMIAL_NOTE: &str = "bound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i
 struct Exact {
     evaluator: ExactEvaluator,
     m: usize,
-}
-
-/// `input` must have `m + 1` coordinates.
-pub(crate) fn check_len(input: &[BigRational], expected: usize) -> Result<(), CoreError> {
-    if input.len() == expected {
-        Ok(())
-    } else {
-        Err(CoreError::WrongLength {
-            what: "point".into(),
-            expected,
-            found: input.len(),
-        })
-    }
 }
 
 impl PointEvaluator for Exact {

@@ -14,7 +14,7 @@ use num_rational::BigRational;
 use crate::capability::traits::SymbolicForm;
 
 use crate::any_patch::AnyPatch;
-use crate::capability::bezier::check_len;
+use crate::capability::traits::check_len;
 use crate::capability::traits::{
     BoundText, Constructions, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
     InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input, with_net,

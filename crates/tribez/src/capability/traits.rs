@@ -267,6 +267,19 @@ pub enum Split<'a> {
     },
 }
 
+/// `input` must have `m + 1` coordinates.
+pub(crate) fn check_len(input: &[BigRational], expected: usize) -> Result<(), CoreError> {
+    if input.len() == expected {
+        Ok(())
+    } else {
+        Err(CoreError::WrongLength {
+            what: "point".into(),
+            expected,
+            found: input.len(),
+        })
+    }
+}
+
 /// The Cartesian domain of a piece over the sub-simplex `f` (barycentric points) of a parent
 /// with domain `parent`: the image of `f`; the reference domain stays the reference domain.
 fn piece_domain(
@@ -330,7 +343,7 @@ pub trait Constructions {
         let m = net.m();
         let pieces: Vec<(usize, sd::Piece<BigRational>)> = match split {
             Split::At(t) => {
-                crate::capability::bezier::check_len(t, m + 1)?;
+                check_len(t, m + 1)?;
                 sd::split_at(&net, t)
                     .into_iter()
                     .enumerate()
