@@ -384,3 +384,56 @@ fn a_subpatch_of_a_patch_with_a_domain_has_the_image_domain() {
     let b = json(&["eval", out.to_str().unwrap(), "--cartesian", "--at", "3,3"]);
     assert_eq!(a["results"][0]["point"], b["results"][0]["point"]);
 }
+
+/// A functional patch stays functional through every construction (its ordinates over the same
+/// Cartesian points), so the pieces are again data a lookup or a functional claim takes.
+#[test]
+fn constructions_of_a_functional_patch_stay_functional() {
+    let d = tempfile::tempdir().unwrap();
+    // f(x, y) = x + 2y over the triangle (0,0), (2,0), (0,2): ordinates at the Bézier
+    // abscissae of a linear patch are the corner values 0, 2, 4
+    let f = write(
+        &d,
+        "plane.toml",
+        "kind = \"functional\"\ndegree = 1\ndomain = [[0, 0], [2, 0], [0, 2]]\n\n[control_points]\n\"1,0,0\" = [0]\n\"0,1,0\" = [2]\n\"0,0,1\" = [4]\n",
+    );
+    let runs: [&[&str]; 4] = [
+        &["elevate", &f, "--by", "2"],
+        &[
+            "subpatch",
+            &f,
+            "--vertex",
+            "1,0,0",
+            "--vertex",
+            "1/2,1/2,0",
+            "--vertex",
+            "0,0,1",
+        ],
+        &["halve", &f, "--edge", "1,3"],
+        &["subdivide", &f, "--midpoints"],
+    ];
+    for args in runs {
+        let out = json(args);
+        let patches: Vec<Value> = match out.get("pieces") {
+            Some(p) => p
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| p["patch"].clone())
+                .collect(),
+            None => vec![out],
+        };
+        for (k, p) in patches.iter().enumerate() {
+            assert_eq!(p["kind"], "functional", "{args:?}");
+            // read back: at the Cartesian point (1/2, 1/4), in this piece's domain or not,
+            // the value is x + 2y = 1 (a linear function, exactly reproduced everywhere)
+            let file = write(&d, &format!("piece{k}.json"), &p.to_string());
+            let v = json(&["eval", &file, "--cartesian", "--at", "1/2,1/4"]);
+            assert_eq!(
+                v["results"][0]["point"],
+                serde_json::json!(["1"]),
+                "{args:?}"
+            );
+        }
+    }
+}

@@ -45,6 +45,15 @@ impl AnyPatch {
         }
     }
 
+    /// Its name, to change (an S-patch's too).
+    pub fn name_mut(&mut self) -> &mut Option<String> {
+        match self {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => &mut p.name,
+            AnyPatch::Rational(r) => &mut r.patch.name,
+            AnyPatch::SPatch(s) => &mut s.name,
+        }
+    }
+
     /// The polynomial patch, for the kinds that are one (Bézier and functional).
     pub fn polynomial(&self) -> Option<&BezierPatch> {
         match self {

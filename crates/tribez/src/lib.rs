@@ -92,7 +92,9 @@ mod testing;
 
 pub use algebraic::{AlgebraicError, Curve, CurveIntersections, RealAlgebraic, intersect_curves};
 pub use api_error::Error;
-pub use capability::{Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram};
+pub use capability::{
+    Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram, Split, SubPatch,
+};
 pub use certify::measures::Tolerance;
 pub use certify::report::{
     CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, PointResult, RandomPoints, certify,
@@ -106,3 +108,4 @@ pub use judge_refusal::{Lacks, Refusal};
 pub use num_rational::BigRational as Rational;
 pub use number::parse_rational;
 pub use patch_type::{Degree, Patch, PatchKind, SimplexDim};
+pub use subdivide::HalvingOrder;

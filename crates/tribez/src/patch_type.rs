@@ -276,21 +276,7 @@ impl Patch {
 
     /// Capability: the constructions (Bézier, functional and rational patches; not S-patches).
     pub fn constructions(&self) -> Option<Box<dyn Constructions + '_>> {
-        use crate::capability::bezier::Polynomial;
-        match &self.any {
-            AnyPatch::Bezier(p) => Some(Box::new(Polynomial {
-                patch: p,
-                wrap: AnyPatch::Bezier,
-                functional: false,
-            })),
-            AnyPatch::Functional(p) => Some(Box::new(Polynomial {
-                patch: p,
-                wrap: AnyPatch::Functional,
-                functional: true,
-            })),
-            AnyPatch::Rational(r) => Some(Box::new(r)),
-            AnyPatch::SPatch(_) => None,
-        }
+        crate::capability::constructions(&self.any)
     }
 
     /// Its sizes.

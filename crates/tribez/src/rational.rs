@@ -340,26 +340,6 @@ pub fn homogenised_residual(f: &Polynomial, x: &[Polynomial], w: &Polynomial) ->
 }
 
 impl RationalPatch {
-    /// Degree elevation by `r`, on the homogeneous net (docs/theory.md §6 applied to `(w c, w)`):
-    /// the same rational patch, degree `n + r`. An error if an elevated weight is zero (possible
-    /// only with weights of both signs).
-    pub fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError> {
-        RationalPatch::from_homogeneous(
-            &crate::elevate::elevate(&self.homogeneous(), r),
-            &self.patch,
-        )
-    }
-
-    /// The same rational patch over the sub-simplex `[f_0, …, f_m]` (barycentric points of the
-    /// parent): the homogeneous net's subpatch (docs/theory.md §4), then back to points and weights.
-    /// The result keeps the parent's name and domain.
-    pub fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError> {
-        RationalPatch::from_homogeneous(
-            &crate::blossom::subpatch(&self.homogeneous(), f)?,
-            &self.patch,
-        )
-    }
-
     /// The rational blossom `b[u_1, …, u_n] = X[u_1, …, u_n] / W[u_1, …, u_n]`: the blossom of
     /// the homogeneous net `(w_α c_α, w_α)` (docs/theory.md §4: de Casteljau with argument `u_k` at
     /// level `k`), projected by its last coordinate. It is symmetric in its arguments, and on the
@@ -392,15 +372,6 @@ impl RationalPatch {
         }
         Ok(x.iter().map(|c| c / w).collect())
     }
-
-    /// Split at `t` into `m + 1` pieces (piece `s`: vertex `s` replaced by `t`), on the
-    /// homogeneous net.
-    pub fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError> {
-        crate::subdivide::split_at(&self.homogeneous(), t)
-            .iter()
-            .map(|h| RationalPatch::from_homogeneous(h, &self.patch))
-            .collect()
-    }
 }
 
 impl RationalPatch {
@@ -417,6 +388,7 @@ impl RationalPatch {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::any_patch::AnyPatch;
     use crate::number::parse_rational as q;
     use num_traits::One;
     use proptest::prelude::*;
@@ -455,6 +427,33 @@ mod tests {
 
     fn r(xs: &[&str]) -> Vec<BigRational> {
         xs.iter().map(|x| q(x).unwrap()).collect()
+    }
+
+    /// The constructions of [`crate::capability::Constructions`], back to rational patches.
+    trait Rational {
+        fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError>;
+        fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError>;
+        fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError>;
+    }
+
+    fn rational(a: AnyPatch) -> RationalPatch {
+        match a {
+            AnyPatch::Rational(r) => r,
+            other => panic!("a rational construction gave {}", other.described()),
+        }
+    }
+
+    impl Rational for RationalPatch {
+        fn elevate(&self, r: usize) -> Result<RationalPatch, CoreError> {
+            crate::capability::Constructions::elevate(self, r).map(rational)
+        }
+        fn subpatch(&self, f: &[Vec<BigRational>]) -> Result<RationalPatch, CoreError> {
+            crate::capability::Constructions::subpatch(self, f).map(rational)
+        }
+        fn split_at(&self, t: &[BigRational]) -> Result<Vec<RationalPatch>, CoreError> {
+            let pieces = crate::capability::Constructions::split_at(self, t)?;
+            Ok(pieces.into_iter().map(rational).collect())
+        }
     }
 
     #[test]

@@ -2,11 +2,9 @@
 
 use std::path::PathBuf;
 
-use super::construct::AnyPatchReport;
-use super::construct::{PatchReport, check_size, child_patch};
+use super::construct::{PatchReport, check_size, constructions, relabel};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Arguments of `tribez elevate`.
@@ -24,35 +22,11 @@ pub struct Args {
 /// Run `tribez elevate`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (parent, rational) = super::points_patch(&file, "elevate", read_any_patch(&args.patch)?)?;
-    if let Some(r) = rational {
-        // a rational patch: elevate the homogeneous net (w c, w)
-        let (m, n) = (r.patch.net.m(), r.patch.net.degree());
-        check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-        let mut up = r.elevate(args.by).map_err(|e| CliError::core(&file, e))?;
-        let label = format!("elevated to degree {}", n + args.by);
-        up.patch = child_patch(&r.patch, up.patch.net, None, &label)?;
-        return Outcome::rendered(
-            &AnyPatchReport(AnyPatch::Rational(up)),
-            args.out.format,
-            true,
-        );
-    }
-    let (m, n) = (parent.net.m(), parent.net.degree());
+    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let c = constructions(&file, "elevate", &patch)?;
+    let (m, n) = (patch.simplex_dim(), patch.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let net = tribez::hazmat::elevate::elevate(&parent.net, args.by);
-    let patch = child_patch(
-        &parent,
-        net,
-        None,
-        &format!("elevated to degree {}", n + args.by),
-    )?;
-    Outcome::rendered(
-        &PatchReport {
-            patch,
-            domain_in_parent: None,
-        },
-        args.out.format,
-        true,
-    )
+    let mut up = c.elevate(args.by).map_err(|e| CliError::core(&file, e))?;
+    relabel(&mut up, &format!("elevated to degree {}", n + args.by));
+    Outcome::rendered(&PatchReport::of(up), args.out.format, true)
 }

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use super::construct::AnyPatchReport;
+use super::construct::PatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::Patch;
@@ -29,5 +29,5 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         ))
     })?;
     let g = graph.map_err(|e| CliError::core(&file, e))?;
-    Outcome::rendered(&AnyPatchReport(g), args.out.format, true)
+    Outcome::rendered(&PatchReport::of(g), args.out.format, true)
 }

@@ -5,11 +5,11 @@
 
 use std::path::PathBuf;
 
-use super::construct::{PiecesReport, child_patch, construction_net, parse_edge, rational_pieces};
+use super::construct::{PiecesReport, constructions, parse_edge, relabel};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::subdivide::{HalvingOrder, Piece, add_and_halve, halve, halve_domains};
+use tribez::{HalvingOrder, Split};
 
 /// Arguments of `tribez halve`.
 #[derive(Debug, clap::Args)]
@@ -29,35 +29,19 @@ pub struct Args {
 /// Run `tribez halve`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (parent, rational) = construction_net(&file, "halve", read_any_patch(&args.patch)?)?;
-    let (i, j) = parse_edge(&args.edge, parent.net.m())?;
-    let halves = if args.add_and_halve {
-        let [a, b] = halve_domains(parent.net.m(), i, j);
-        [
-            Piece {
-                domain_in_parent: a,
-                net: add_and_halve(&parent.net, i, j, HalvingOrder::TopDown),
-            },
-            Piece {
-                domain_in_parent: b,
-                net: add_and_halve(&parent.net, j, i, HalvingOrder::TopDown),
-            },
-        ]
-    } else {
-        halve(&parent.net, i, j)
+    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let c = constructions(&file, "halve", &patch)?;
+    let edge = parse_edge(&args.edge, patch.simplex_dim())?;
+    let split = Split::Halve {
+        edge,
+        add_and_halve: args.add_and_halve.then_some(HalvingOrder::TopDown),
     };
-    let label = |k: usize| format!("half {} of edge {}", k + 1, args.edge);
-    if let Some(r) = rational {
-        let report = rational_pieces(&file, &r, halves.into(), label)?;
-        return Outcome::rendered(&report, args.out.format, true);
+    let mut halves = c.pieces(&split).map_err(|e| CliError::core(&file, e))?;
+    for h in &mut halves {
+        relabel(
+            &mut h.patch,
+            &format!("half {} of edge {}", h.index + 1, args.edge),
+        );
     }
-    let pieces = halves
-        .into_iter()
-        .enumerate()
-        .map(|(k, p)| {
-            let patch = child_patch(&parent, p.net, Some(&p.domain_in_parent), &label(k))?;
-            Ok((p.domain_in_parent, patch))
-        })
-        .collect::<Result<_, CliError>>()?;
-    Outcome::rendered(&PiecesReport { pieces }, args.out.format, true)
+    Outcome::rendered(&PiecesReport(halves), args.out.format, true)
 }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use serde::Serialize;
 use serde_json::Value as Json;
 
-use super::construct::AnyPatchReport;
+use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, strings, to_json, tuple};
@@ -73,7 +73,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             })?;
         let b = c1_neighbour(&a, &edge, v)
             .map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
-        return Outcome::rendered(&AnyPatchReport(AnyPatch::Bezier(b)), args.out.format, true);
+        return Outcome::rendered(&PatchReport::of(AnyPatch::Bezier(b)), args.out.format, true);
     }
     let bpath = args.b.as_ref().ok_or_else(|| {
         CliError::Usage("give two patches (A B), or one with --make-c1 --domain X,Y".into())

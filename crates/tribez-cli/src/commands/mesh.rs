@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use num_rational::BigRational;
 use serde_json::{Value as Json, json};
 
-use super::construct::AnyPatchReport;
+use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::{OutputArgs, examples};
 use crate::report::Render;
@@ -178,7 +178,7 @@ fn run_patch(args: &PatchArgs) -> Result<Outcome, CliError> {
         )));
     }
     let patch = mesh.triangle_patch(args.triangle)?;
-    Outcome::rendered(&AnyPatchReport(patch.into_any()), args.out.format, true)
+    Outcome::rendered(&PatchReport::of(patch.into_any()), args.out.format, true)
 }
 
 /// One float lookup, judged.

@@ -283,26 +283,3 @@ pub fn constructions<'a>(
         ))
     })
 }
-
-/// A patch for the commands that take polynomial and rational patches alike: its points patch,
-/// and the rational patch when it is one. S-patches are a usage error naming `command`.
-pub fn points_patch(
-    file: &str,
-    command: &str,
-    any: tribez::hazmat::any_patch::AnyPatch,
-) -> Result<
-    (
-        tribez::hazmat::patch::BezierPatch,
-        Option<tribez::hazmat::rational::RationalPatch>,
-    ),
-    CliError,
-> {
-    use tribez::hazmat::any_patch::AnyPatch;
-    match any {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Ok((p, None)),
-        AnyPatch::Rational(r) => Ok((r.patch.clone(), Some(r))),
-        AnyPatch::SPatch(_) => Err(CliError::Usage(format!(
-            "{file}: `tribez {command}` does not take S-patches"
-        ))),
-    }
-}

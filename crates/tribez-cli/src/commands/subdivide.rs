@@ -11,14 +11,12 @@ use num_rational::BigRational;
 use num_traits::Zero;
 use serde_json::Value as Json;
 
-use super::construct::{
-    PiecesReport, barycentric_points, child_patch, construction_net, rational_pieces,
-};
+use super::construct::{PiecesReport, barycentric_points, constructions, relabel};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
+use tribez::Split;
 use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::subdivide::{Piece, midpoint_split, replaced, split_at, split_at_pieces};
 
 /// Arguments of `tribez subdivide`.
 #[derive(Debug, clap::Args)]
@@ -39,105 +37,66 @@ pub struct Args {
 /// Run `tribez subdivide`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let (parent, rational) = construction_net(&file, "subdivide", read_any_patch(&args.patch)?)?;
-    let m = parent.net.m();
-    // (piece, its number among the m+1 of a split at a point)
-    let (pieces, numbers, total, note): (Vec<Piece<BigRational>>, Vec<usize>, usize, _) =
-        match &args.at {
-            Some(text) => {
-                let t = barycentric_points(std::slice::from_ref(text), "at", m)?.remove(0);
-                let (pieces, numbers, note) = split_at_point(&parent.net, &t, text)?;
-                (pieces, numbers, m + 1, note)
-            }
-            None => {
-                let pieces = midpoint_split(&parent.net).map_err(|e| CliError::core(&file, e))?;
-                let n = pieces.len();
-                (pieces, (1..=n).collect(), n, None)
-            }
-        };
-    let label = |k: usize| format!("piece {} of {total}", numbers[k]);
-    if let Some(r) = rational {
-        let report = rational_pieces(&file, &r, pieces, label)?;
-        return Outcome::rendered(
-            &Noted {
-                note,
-                inner: report,
-            },
-            args.out.format,
-            true,
-        );
+    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let c = constructions(&file, "subdivide", &patch)?;
+    let m = patch.simplex_dim();
+    let (mut pieces, total, note) = match &args.at {
+        Some(text) => {
+            let t = barycentric_points(std::slice::from_ref(text), "at", m)?.remove(0);
+            let note = boundary_note(&t, text)?;
+            let pieces = c
+                .pieces(&Split::At(&t))
+                .map_err(|e| CliError::core(format!("--at {text}"), e))?;
+            (pieces, m + 1, note)
+        }
+        None => {
+            let pieces = c
+                .pieces(&Split::Midpoints)
+                .map_err(|e| CliError::core(&file, e))?;
+            let n = pieces.len();
+            (pieces, n, None)
+        }
+    };
+    for p in &mut pieces {
+        relabel(&mut p.patch, &format!("piece {} of {total}", p.index + 1));
     }
-    let pieces = pieces
-        .into_iter()
-        .enumerate()
-        .map(|(k, p)| {
-            let patch = child_patch(&parent, p.net, Some(&p.domain_in_parent), &label(k))?;
-            Ok((p.domain_in_parent, patch))
-        })
-        .collect::<Result<_, CliError>>()?;
     Outcome::rendered(
         &Noted {
             note,
-            inner: PiecesReport { pieces },
+            inner: PiecesReport(pieces),
         },
         args.out.format,
         true,
     )
 }
 
-/// Pieces, their numbers among the m+1 of the full split, and the note on degenerate pieces.
-type Split = (Vec<Piece<BigRational>>, Vec<usize>, Option<String>);
-
-/// The pieces of a split at `t` with their numbers (1-based: piece k replaces corner k), and a
-/// note naming the degenerate pieces omitted when `t` lies on a facet. A corner is an error.
-fn split_at_point(
-    net: &tribez::hazmat::patch::ControlNet<BigRational>,
-    t: &[BigRational],
-    text: &str,
-) -> Result<Split, CliError> {
-    let what = || format!("--at {text}");
+/// The note naming the degenerate pieces left out when `t` lies on a facet (piece `k` replaces
+/// corner `k` by the point, so `t_k = 0` makes it degenerate); a corner is an error.
+fn boundary_note(t: &[BigRational], text: &str) -> Result<Option<String>, CliError> {
     let zero: Vec<usize> = (0..t.len()).filter(|&k| t[k].is_zero()).collect();
     if zero.is_empty() {
-        let pieces = split_at_pieces(net, t).map_err(|e| CliError::core(what(), e))?;
-        let n = pieces.len();
-        return Ok((pieces, (1..=n).collect(), None));
+        return Ok(None);
     }
     if zero.len() + 1 >= t.len() {
         let corner = (0..t.len()).find(|k| !zero.contains(k)).unwrap_or(0) + 1;
         return Err(CliError::check(
-            what(),
+            format!("--at {text}"),
             format!(
                 "the point is corner {corner} of the domain: every piece but one would be degenerate and that one is the patch itself"
             ),
         ));
     }
-    let m = net.m();
-    let (pieces, numbers): (Vec<_>, Vec<_>) = split_at(net, t)
-        .into_iter()
-        .enumerate()
-        .filter(|(s, _)| !t[*s].is_zero())
-        .map(|(s, n)| {
-            (
-                Piece {
-                    domain_in_parent: replaced(m, s, t),
-                    net: n,
-                },
-                s + 1,
-            )
-        })
-        .unzip();
     let names: Vec<String> = zero.iter().map(|k| (k + 1).to_string()).collect();
     let (piece_word, verb) = if zero.len() == 1 {
         ("piece", "is")
     } else {
         ("pieces", "are")
     };
-    let note = format!(
+    Ok(Some(format!(
         "--at {text} lies on the boundary (coordinate {} is 0): {piece_word} {} {verb} degenerate and omitted; piece k replaces corner k by the point",
         names.join(", "),
         names.join(", "),
-    );
-    Ok((pieces, numbers, Some(note)))
+    )))
 }
 
 /// A report with an optional note: a `#` comment first in text (the TOML document stays valid),

@@ -9,13 +9,15 @@
 //! * bound: `γ_K Σ|c_i| B_i(|λ|)` (docs/theory.md §14.1, [`crate::certify::bound::a_priori`]),
 //!   the condition number `Σ|c_i| B_i(|λ|)`, via [`crate::certify::Certifier`].
 
+use std::borrow::Cow;
+
 use num_rational::BigRational;
 
 use crate::any_patch::AnyPatch;
 use crate::capability::traits::{
     BoundText, Constructions, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
-    InputSpace, Narrow, PointEvaluator, Seen, Shape, SymbolicForm, exact_values, narrowed,
-    round_input,
+    InputSpace, Narrow, PointEvaluator, Seen, Shape, SymbolicForm, check_len, exact_values,
+    narrowed, round_input, with_net,
 };
 use crate::certify::Certifier;
 use crate::error::CoreError;
@@ -29,19 +31,6 @@ pub const POLYNOMIAL_NOTE: &str = "bound: |fl(p) − P(λ)| ≤ γ_K Σ|c_i| B_i
 struct Exact {
     evaluator: ExactEvaluator,
     m: usize,
-}
-
-/// `input` must have `m + 1` coordinates.
-pub(crate) fn check_len(input: &[BigRational], expected: usize) -> Result<(), CoreError> {
-    if input.len() == expected {
-        Ok(())
-    } else {
-        Err(CoreError::WrongLength {
-            what: "point".into(),
-            expected,
-            found: input.len(),
-        })
-    }
 }
 
 impl PointEvaluator for Exact {
@@ -205,15 +194,6 @@ impl<F: Narrow> ErrorBound for Program<F> {
     }
 }
 
-/// A polynomial patch with a new net (name and domain kept).
-fn with_net(p: &BezierPatch, net: ControlNet<BigRational>) -> BezierPatch {
-    BezierPatch {
-        name: p.name.clone(),
-        net,
-        domain: p.domain.clone(),
-    }
-}
-
 /// The constructions of a polynomial patch; `wrap` makes the result the same kind (Bézier or
 /// functional).
 pub(crate) struct Polynomial<'a> {
@@ -226,26 +206,20 @@ pub(crate) struct Polynomial<'a> {
 }
 
 impl Constructions for Polynomial<'_> {
-    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
-        let net = crate::elevate::elevate(&self.patch.net, r);
-        Ok((self.wrap)(with_net(self.patch, net)))
+    fn linear_net(&self) -> Cow<'_, ControlNet<BigRational>> {
+        Cow::Borrowed(&self.patch.net)
     }
 
-    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
-        let net = crate::blossom::subpatch(&self.patch.net, vertices)?;
-        Ok((self.wrap)(with_net(self.patch, net)))
+    fn with_linear_net(
+        &self,
+        net: ControlNet<BigRational>,
+        f: Option<&[Vec<BigRational>]>,
+    ) -> Result<AnyPatch, CoreError> {
+        Ok((self.wrap)(with_net(self.patch, net, f)?))
     }
 
     fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
         crate::blossom::blossom(&self.patch.net, args)
-    }
-
-    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
-        check_len(t, self.patch.net.m() + 1)?;
-        Ok(crate::subdivide::split_at(&self.patch.net, t)
-            .into_iter()
-            .map(|net| (self.wrap)(with_net(self.patch, net)))
-            .collect())
     }
 
     fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {

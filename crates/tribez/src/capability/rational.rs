@@ -7,21 +7,24 @@
 //! * bound: `(e_N + |q| e_D)/|D̂| + ε|ŷ|/(1−ε) + η` when certifying a run, its a-priori form for a
 //!   claimed value ([`crate::certify::bound`]), via [`RationalCertifier`].
 
+use std::borrow::Cow;
+
 use num_rational::BigRational;
 
 use crate::capability::traits::SymbolicForm;
 
 use crate::any_patch::AnyPatch;
-use crate::capability::bezier::check_len;
+use crate::capability::traits::check_len;
 use crate::capability::traits::{
     BoundText, Constructions, ErrorBound, ExactEval, FloatCase, FloatEval, FloatProgram,
-    InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input,
+    InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input, with_net,
 };
 use crate::certify::beyond::RationalCertifier;
 use crate::certify::bound::roundings;
 use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
+use crate::patch::ControlNet;
 use crate::rational::RationalPatch;
 
 /// The explanation of the rational bound in a certification report.
@@ -187,24 +190,22 @@ impl<F: Narrow> ErrorBound for Program<F> {
 }
 
 impl Constructions for RationalPatch {
-    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
-        RationalPatch::elevate(self, r).map(AnyPatch::Rational)
+    fn linear_net(&self) -> Cow<'_, ControlNet<BigRational>> {
+        Cow::Owned(self.homogeneous())
     }
 
-    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
-        RationalPatch::subpatch(self, vertices).map(AnyPatch::Rational)
+    fn with_linear_net(
+        &self,
+        net: ControlNet<BigRational>,
+        f: Option<&[Vec<BigRational>]>,
+    ) -> Result<AnyPatch, CoreError> {
+        let mut r = RationalPatch::from_homogeneous(&net, &self.patch)?;
+        r.patch = with_net(&self.patch, r.patch.net, f)?;
+        Ok(AnyPatch::Rational(r))
     }
 
     fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
         RationalPatch::blossom(self, args)
-    }
-
-    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
-        check_len(t, self.patch.net.m() + 1)?;
-        Ok(RationalPatch::split_at(self, t)?
-            .into_iter()
-            .map(AnyPatch::Rational)
-            .collect())
     }
 
     fn domain(&self) -> crate::domain::Domain {

@@ -12,7 +12,7 @@ use num_rational::BigRational;
 
 use crate::capability::traits::SymbolicForm;
 
-use crate::capability::bezier::check_len;
+use crate::capability::traits::check_len;
 use crate::capability::traits::{
     BoundText, CoordinateCase, CoordinateText, ErrorBound, ExactEval, FloatCase, FloatEval,
     FloatProgram, InputSpace, Narrow, PointEvaluator, Seen, Shape, narrowed, round_input,

@@ -13,7 +13,10 @@
 //! Floats cross these traits as `f64`: an `f32` value widens exactly, and a precision says which
 //! format the numbers belong to.
 
+use std::borrow::Cow;
+
 use num_rational::BigRational;
+use num_traits::Zero;
 
 use crate::any_patch::AnyPatch;
 use crate::derivative::TangentFrame;
@@ -21,6 +24,8 @@ use crate::domain::Domain;
 use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
+use crate::patch::{BezierPatch, ControlNet};
+use crate::subdivide::HalvingOrder;
 use crate::symbolic::Polynomial;
 
 /// How a point of a kind's domain is given.
@@ -226,16 +231,187 @@ pub trait ErrorBound: Send + Sync {
     }
 }
 
+/// A piece of a construction: a patch of the parent's kind over a sub-simplex of the parent's
+/// domain.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubPatch {
+    /// Which piece: for [`Split::At`] piece `s` replaces corner `s` by the point (0-based); for
+    /// [`Split::Halve`] 0 keeps corner `i`, 1 keeps corner `j`; for [`Split::Midpoints`] the
+    /// corner pieces 0, 1, 2, then the middle one, 3.
+    pub index: usize,
+    /// Its simplex: `m + 1` barycentric points of the parent's domain, in order.
+    pub domain_in_parent: Vec<Vec<BigRational>>,
+    /// The patch, of the parent's kind and name. A parent with a Cartesian domain gives a piece
+    /// whose domain is the image of [`SubPatch::domain_in_parent`], so that the piece takes the
+    /// same Cartesian points to the same values as the parent.
+    pub patch: AnyPatch,
+}
+
+/// How [`Constructions::pieces`] cuts a patch (docs/theory.md §5).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Split<'a> {
+    /// At a barycentric point `t`: the `m + 1` faces of the de Casteljau pyramid, piece `s`
+    /// replacing corner `s` by `t`. A piece whose simplex is degenerate (`t_s = 0`: `t` lies on
+    /// the facet opposite corner `s`) is left out.
+    At(&'a [BigRational]),
+    /// The four-way split of a triangle at its edge midpoints.
+    Midpoints,
+    /// Halving along the edge between corners `i` and `j` (0-based): by blossoms (`None`) or by
+    /// the in-place additions and halvings of the Wikipedia article "Bézier triangle" in the
+    /// given order (`Some`); the result is the same.
+    Halve {
+        /// The edge's corners, 0-based.
+        edge: (usize, usize),
+        /// `None`: blossoms; `Some(order)`: add-and-halve.
+        add_and_halve: Option<HalvingOrder>,
+    },
+}
+
+/// `input` must have `m + 1` coordinates.
+pub(crate) fn check_len(input: &[BigRational], expected: usize) -> Result<(), CoreError> {
+    if input.len() == expected {
+        Ok(())
+    } else {
+        Err(CoreError::WrongLength {
+            what: "point".into(),
+            expected,
+            found: input.len(),
+        })
+    }
+}
+
+/// The Cartesian domain of a piece over the sub-simplex `f` (barycentric points) of a parent
+/// with domain `parent`: the image of `f`; the reference domain stays the reference domain.
+fn piece_domain(
+    parent: &Option<Domain>,
+    f: Option<&[Vec<BigRational>]>,
+) -> Result<Option<Domain>, CoreError> {
+    match (parent, f) {
+        (Some(d), Some(f)) => Ok(Some(Domain::new(
+            f.iter().map(|v| d.cartesian(v)).collect(),
+        )?)),
+        (d, _) => Ok(d.clone()),
+    }
+}
+
+/// The patch `like` with the net `net` over the sub-simplex `f` of its domain (`None`: the same
+/// domain); its name is kept.
+pub(crate) fn with_net(
+    like: &BezierPatch,
+    net: ControlNet<BigRational>,
+    f: Option<&[Vec<BigRational>]>,
+) -> Result<BezierPatch, CoreError> {
+    Ok(BezierPatch {
+        name: like.name.clone(),
+        net,
+        domain: piece_domain(&like.domain, f)?,
+    })
+}
+
 /// Capability: the constructions, exact, returning patches of the same kind.
+///
+/// Elevation, subpatches and every split are linear in the control points, so a kind gives the
+/// net they run on ([`Constructions::linear_net`]: the control points, or a rational patch's
+/// homogeneous net `(w c, w)`) and the way back ([`Constructions::with_linear_net`]); the
+/// constructions themselves are written once, here.
 pub trait Constructions {
-    /// Degree elevation by `r`.
-    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError>;
-    /// The subpatch over the simplex with the given barycentric vertices.
-    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError>;
+    /// The net the linear constructions run on: the control points, or for a rational patch
+    /// the homogeneous net `(w_α c_α, w_α)` (docs/theory.md §10).
+    fn linear_net(&self) -> Cow<'_, ControlNet<BigRational>>;
+    /// The patch of this kind whose [`Constructions::linear_net`] is `net`, over the
+    /// sub-simplex `f` of this patch's domain (`None`: the same domain), with this patch's name.
+    fn with_linear_net(
+        &self,
+        net: ControlNet<BigRational>,
+        f: Option<&[Vec<BigRational>]>,
+    ) -> Result<AnyPatch, CoreError>;
+    /// Degree elevation by `r` (docs/theory.md §6).
+    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
+        self.with_linear_net(crate::elevate::elevate(&self.linear_net(), r), None)
+    }
+    /// The subpatch over the simplex with the given barycentric vertices (docs/theory.md §4):
+    /// `c′_α = b[f_0^{α_0}, …, f_m^{α_m}]`. Its Cartesian domain, if the patch has one, is the
+    /// image of the vertices.
+    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
+        let net = crate::blossom::subpatch(&self.linear_net(), vertices)?;
+        self.with_linear_net(net, Some(vertices))
+    }
+    /// The pieces of a split (docs/theory.md §5), each over its sub-simplex.
+    fn pieces(&self, split: &Split<'_>) -> Result<Vec<SubPatch>, CoreError> {
+        use crate::subdivide as sd;
+        let net = self.linear_net();
+        let m = net.m();
+        let pieces: Vec<(usize, sd::Piece<BigRational>)> = match split {
+            Split::At(t) => {
+                check_len(t, m + 1)?;
+                sd::split_at(&net, t)
+                    .into_iter()
+                    .enumerate()
+                    .filter(|(s, _)| !t[*s].is_zero())
+                    .map(|(s, n)| {
+                        let domain_in_parent = sd::replaced(m, s, t);
+                        (
+                            s,
+                            sd::Piece {
+                                domain_in_parent,
+                                net: n,
+                            },
+                        )
+                    })
+                    .collect()
+            }
+            Split::Midpoints => sd::midpoint_split(&net)?.into_iter().enumerate().collect(),
+            Split::Halve {
+                edge: (i, j),
+                add_and_halve,
+            } => {
+                sd::check_edge(m, i + 1, j + 1)?;
+                let halves = match add_and_halve {
+                    None => sd::halve(&net, *i, *j),
+                    Some(order) => {
+                        let [a, b] = sd::halve_domains(m, *i, *j);
+                        [
+                            sd::Piece {
+                                domain_in_parent: a,
+                                net: sd::add_and_halve(&net, *i, *j, *order),
+                            },
+                            sd::Piece {
+                                domain_in_parent: b,
+                                net: sd::add_and_halve(&net, *j, *i, *order),
+                            },
+                        ]
+                    }
+                };
+                halves.into_iter().enumerate().collect()
+            }
+        };
+        pieces
+            .into_iter()
+            .map(|(index, p)| {
+                let patch = self.with_linear_net(p.net, Some(&p.domain_in_parent))?;
+                Ok(SubPatch {
+                    index,
+                    domain_in_parent: p.domain_in_parent,
+                    patch,
+                })
+            })
+            .collect()
+    }
+    /// Split at the barycentric point `t` into `m + 1` pieces (piece `s` replaces corner `s`
+    /// by `t`); a point on a facet is an error ([`CoreError::SplitOnFace`]), since a piece
+    /// would be degenerate ([`Constructions::pieces`] leaves such pieces out instead).
+    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
+        if let Some(s) = t.iter().position(Zero::is_zero) {
+            return Err(CoreError::SplitOnFace { corner: s + 1 });
+        }
+        Ok(self
+            .pieces(&Split::At(t))?
+            .into_iter()
+            .map(|p| p.patch)
+            .collect())
+    }
     /// The blossom `b[u_1, …, u_n]` at `n` barycentric arguments.
     fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError>;
-    /// Split at the barycentric point `t` into `m + 1` pieces.
-    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError>;
     /// The graph `(x, y, f(x, y))` of a functional patch as a parametric patch, control points
     /// `(ξ_α, b_α)` at the Bézier abscissae (docs/theory.md §13); `None` for the kinds that are
     /// not functions.
@@ -265,17 +441,18 @@ pub trait Constructions {
 }
 
 impl<T: Constructions + ?Sized> Constructions for &T {
-    fn elevate(&self, r: usize) -> Result<AnyPatch, CoreError> {
-        (**self).elevate(r)
+    fn linear_net(&self) -> Cow<'_, ControlNet<BigRational>> {
+        (**self).linear_net()
     }
-    fn subpatch(&self, vertices: &[Vec<BigRational>]) -> Result<AnyPatch, CoreError> {
-        (**self).subpatch(vertices)
+    fn with_linear_net(
+        &self,
+        net: ControlNet<BigRational>,
+        f: Option<&[Vec<BigRational>]>,
+    ) -> Result<AnyPatch, CoreError> {
+        (**self).with_linear_net(net, f)
     }
     fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
         (**self).blossom(args)
-    }
-    fn split_at(&self, t: &[BigRational]) -> Result<Vec<AnyPatch>, CoreError> {
-        (**self).split_at(t)
     }
     fn graph(&self) -> Option<Result<AnyPatch, CoreError>> {
         (**self).graph()

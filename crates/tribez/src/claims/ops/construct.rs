@@ -415,13 +415,16 @@ impl<'a> Construction<'a> {
                     )
                 }
             },
-            Construction::Subpatch { patch, vertices } => match patch.as_ref() {
-                AnyPatch::Rational(r) => {
-                    // the subpatch of the homogeneous net (w c, w), with its place in the parent
-                    let sub = r
-                        .subpatch(vertices)
-                        .map_err(|e| inputs.error("vertices", e))?;
-                    Value::Map(vec![
+            Construction::Subpatch { patch, vertices } => {
+                let constructions =
+                    crate::capability::constructions(patch).expect("checked when parsed");
+                match constructions
+                    .subpatch(vertices)
+                    .map_err(|e| inputs.error("vertices", e))?
+                {
+                    // a rational subpatch (of the homogeneous net (w c, w)), with its place in
+                    // the parent
+                    AnyPatch::Rational(sub) => Value::Map(vec![
                         ("control_points".into(), net_value(&sub.patch.net)),
                         (
                             "weights".into(),
@@ -434,16 +437,10 @@ impl<'a> Construction<'a> {
                             "domain_in_parent".into(),
                             Value::List(vertices.iter().map(|v| Value::numbers(v)).collect()),
                         ),
-                    ])
+                    ]),
+                    other => net_value(&other.polynomial().expect("a polynomial kind").net),
                 }
-                other => {
-                    let p = other.polynomial().expect("checked when parsed");
-                    net_value(
-                        &crate::blossom::subpatch(&p.net, vertices)
-                            .map_err(|e| inputs.error("vertices", e))?,
-                    )
-                }
-            },
+            }
             Construction::Subdivide { patch, mode } => match mode {
                 SubdivideMode::At(t) => {
                     pieces(split_at_pieces(&patch.net, t).map_err(|e| inputs.error("at", e))?)
