@@ -22,6 +22,7 @@ pub const TARGETS: &[&str] = &[
     "batch_jsonl",
     "batch_json_array",
     "mesh",
+    "fit_data",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -37,6 +38,7 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "batch_jsonl" => batch_jsonl(data),
         "batch_json_array" => batch_json_array(data),
         "mesh" => mesh(data),
+        "fit_data" => fit_data(data),
         _ => return false,
     }
     true
@@ -165,4 +167,10 @@ pub fn batch_json_array(data: &[u8]) {
 /// and looked up ([`crate::mesh::fuzz_mesh`]).
 pub fn mesh(data: &[u8]) {
     crate::mesh::fuzz_mesh(data);
+}
+
+/// A data file of a fit (`tribez fit DATA`): the first byte chooses the degree; parsed, and a
+/// small file fitted and its residuals checked ([`crate::fit::fuzz_fit_data`]).
+pub fn fit_data(data: &[u8]) {
+    crate::fit::fuzz_fit_data(data);
 }
