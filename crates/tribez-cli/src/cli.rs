@@ -237,6 +237,11 @@ Examples:
   tribez lookup fixtures/mesh/hexagon_cubic.toml --at 1/3,1/5
   tribez lookup fixtures/mesh/hexagon_cubic.toml --at 1/2,0 --float f32
   tribez lookup fixtures/mesh/hexagon_cubic.toml --points fixtures/mesh/points.csv --format json";
+    /// `tribez fit`.
+    pub const FIT: &str = "\
+Examples:
+  tribez fit fixtures/fit/numpy/data.csv --mesh fixtures/fit/numpy/mesh.toml -o fitted.toml
+  tribez fit fixtures/fit/small/data.csv --mesh fixtures/fit/small/mesh.toml --degree 3 --smoothness c1 --format json";
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@ pub const TARGETS: &[&str] = &[
     "batch_json_array",
     "mesh",
     "batch_inverse",
+    "fit_data",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -39,6 +40,7 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "batch_json_array" => batch_json_array(data),
         "mesh" => mesh(data),
         "batch_inverse" => batch_inverse(data),
+        "fit_data" => fit_data(data),
         _ => return false,
     }
     true
@@ -173,4 +175,10 @@ pub fn mesh(data: &[u8]) {
 /// the kind, the format and the precision ([`crate::batch::inverse`]).
 pub fn batch_inverse(data: &[u8]) {
     crate::batch::inverse::fuzz_inverse_rows(data);
+}
+
+/// A data file of a fit (`tribez fit DATA`): the first byte chooses the degree; parsed, and a
+/// small file fitted and its residuals checked ([`crate::fit::fuzz_fit_data`]).
+pub fn fit_data(data: &[u8]) {
+    crate::fit::fuzz_fit_data(data);
 }

@@ -12,6 +12,7 @@ use tribez::claims::{self, ClaimsOptions, ClaimsReport};
 
 /// Arguments of `tribez check`.
 #[derive(Debug, clap::Args)]
+#[command(group(clap::ArgGroup::new("mesh_input").args(["results", "fit"]).multiple(false)))]
 pub struct Args {
     /// Claim files (`*.claims.toml`, `*.claims.json`) or directories searched recursively.
     #[arg(value_name = "FILE_OR_DIR")]
@@ -30,7 +31,7 @@ pub struct Args {
         long,
         value_name = "FILE",
         requires = "patch",
-        conflicts_with_all = ["results", "mesh", "ray_results"]
+        conflicts_with_all = ["results", "mesh", "fit", "ray_results"]
     )]
     pub locate_results: Option<PathBuf>,
     /// Batch mode: answers to `tribez ray` from another implementation, one row per ray:
@@ -39,17 +40,25 @@ pub struct Args {
         long,
         value_name = "FILE",
         requires = "patch",
-        conflicts_with_all = ["results", "mesh"]
+        conflicts_with_all = ["results", "mesh", "fit"]
     )]
     pub ray_results: Option<PathBuf>,
-    /// Batch mode on a mesh: the results are lookups `x, y, value` in this mesh file (each row judged in the triangle containing its point as seen).
+    /// A mesh file: with --results, the results are lookups `x, y, value` in it (each row judged
+    /// in the triangle containing its point as seen); with --fit, it is a fit computed in
+    /// floating point by other code, judged against the exact least-squares fit.
     #[arg(
         long,
         value_name = "MESH",
-        requires = "results",
+        requires = "mesh_input",
         conflicts_with = "patch"
     )]
     pub mesh: Option<PathBuf>,
+    /// Judge the fitted mesh given with --mesh against the exact least-squares fit of this data
+    /// file (CSV rows `x,y,value`); --tolerance `cond=K` (default `cond`, K = 1: the error within
+    /// K times what the conditioning of the fit allows at the unit roundoff of --precision,
+    /// default f64), `abs=E`, `rel=E` or `exact`.
+    #[arg(long, value_name = "DATA", requires = "mesh", conflicts_with = "patch")]
+    pub fit: Option<PathBuf>,
     /// Batch mode: the tolerance every row is judged with (default `exact`): `exact`, `ulps=N`,
     /// `abs=E`, `rel=E`, `correctly_rounded`, `faithful`, `cond=K` (|y − q| ≤ K·ε·Σ|c|B(|λ|)),
     /// `cond` (K = (m+1)·n for this patch: de Casteljau's own constant, n = 3 on a triangle gives
@@ -109,7 +118,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     ] {
         if given {
             return Err(CliError::Usage(format!(
-                "{flag} applies to batches (--patch PATCH --results FILE); claim files state it per claim"
+                "{flag} applies to batches (--patch PATCH --results FILE) and fits (--mesh FITTED --fit DATA); claim files state it per claim"
             )));
         }
     }

@@ -9,6 +9,7 @@ pub mod construct;
 pub mod derivative;
 pub mod elevate;
 pub mod eval;
+pub mod fit;
 pub mod graph;
 pub mod halve;
 pub mod intersect;
@@ -116,6 +117,9 @@ pub enum Command {
     /// The triangle(s) of a mesh containing a point and the exact value there; --float for the GPU path's errors.
     #[command(after_help = examples::LOOKUP)]
     Lookup(mesh::LookupArgs),
+    /// The exact least-squares fit of data x,y,value by a mesh (C0 or C1): the fitted mesh, the residuals exact and as decimals.
+    #[command(after_help = examples::FIT)]
+    Fit(fit::Args),
 }
 
 /// Where a command's output goes: `-o FILE`, or standard output.
@@ -178,6 +182,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Check(a) if a.locate_results.is_some() || a.ray_results.is_some() => {
             (inverse_batch::run(a), &a.out)
         }
+        Command::Check(a) if a.fit.is_some() => (fit::run_check(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),
@@ -194,6 +199,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Ray(a) => (inverse::run_ray(a), &a.out),
         Command::Mesh(a) => (mesh::run(a), mesh::output(a)),
         Command::Lookup(a) => (mesh::run_lookup(a), &a.out),
+        Command::Fit(a) => (fit::run(a), a),
         Command::Plot(a) => (plot::run(a), a),
     };
     let finished = result.and_then(|o| {

@@ -349,7 +349,8 @@ impl ClaimFile {
                 ClaimProblem::ToleranceNeedsPrecision { tolerance },
             ));
         }
-        if tolerance.needs_condition() && claim.op != "eval" {
+        // `lookup` has a condition number too (in the triangle found; `bound` it refuses itself)
+        if tolerance.needs_condition() && claim.op != "eval" && claim.op != "lookup" {
             return Err(self.doc.error(
                 at("tolerance"),
                 &format!("{}.tolerance", claim.id),
@@ -365,6 +366,9 @@ impl ClaimFile {
         let op = ops::ClaimOp::parse(&inputs)?;
         if let ops::ClaimOp::Inverse(inverse) = &op {
             return ops::inverse::judge(self, claim, &inputs, inverse);
+        }
+        if let ops::ClaimOp::Lookup(lookup) = &op {
+            return ops::lookup::judge(self, claim, &inputs, lookup);
         }
         let (tolerance, precision) = self.tolerance_of(claim)?;
         // with `precision`, every operation but `eval` computes from the inputs as the code saw

@@ -103,3 +103,67 @@ pub(crate) fn parse_limited(
     }
     Ok(out)
 }
+
+/// The most rows the fuzz target [`fuzz_fit_data`] fits (every file is parsed, up to
+/// [`MAX_DATA_ROWS`]).
+const FUZZ_FIT_ROWS: usize = 32;
+/// The largest numerator or denominator (in bits) of a number the fuzz target fits with.
+const FUZZ_FIT_BITS: u64 = 512;
+
+/// The fuzz target `fit_data` ([`crate::hazmat::io::fuzz::fit_data`]): the first byte chooses
+/// the degree (1 to 3); the rest is parsed as a data file (every size capped: at most
+/// [`MAX_DATA_ROWS`] rows, each row stored only after the count is checked). A small file of
+/// moderate numbers is then fitted (minimum norm) on the unit square cut along its diagonal,
+/// and the fit's residuals are checked against the fitted mesh's own lookups:
+/// `Σ (f(x_i, y_i) − v_i)²` is the residual sum of squares reported, and the largest
+/// absolute residual squared is at most that sum.
+pub fn fuzz_fit_data(data: &[u8]) {
+    use num_traits::{Signed, Zero};
+    let Some((&first, rest)) = data.split_first() else {
+        return;
+    };
+    let Ok(text) = std::str::from_utf8(rest) else {
+        return;
+    };
+    let Ok(rows) = parse_data(text, "fuzz.csv") else {
+        return;
+    };
+    assert!(!rows.is_empty() && rows.len() <= MAX_DATA_ROWS);
+    assert!(rows.windows(2).all(|w| w[0].line < w[1].line));
+    let small =
+        |q: &BigRational| q.numer().bits() <= FUZZ_FIT_BITS && q.denom().bits() <= FUZZ_FIT_BITS;
+    if rows.len() > FUZZ_FIT_ROWS
+        || !rows
+            .iter()
+            .all(|r| small(&r.x) && small(&r.y) && small(&r.value))
+    {
+        return;
+    }
+    let q = |n: i64| BigRational::from_integer(n.into());
+    let mesh = crate::mesh::Mesh::new(
+        vec![[q(0), q(0)], [q(1), q(0)], [q(1), q(1)], [q(0), q(1)]],
+        vec![[0, 1, 2], [0, 2, 3]],
+        1 + usize::from(first % 3),
+    )
+    .expect("a valid mesh");
+    let options = super::FitOptions {
+        regularize: true,
+        ..super::FitOptions::default()
+    };
+    let Ok(f) = super::fit(&mesh, &rows, "fuzz.csv", &options) else {
+        return;
+    };
+    let mut rss = BigRational::zero();
+    for r in &rows {
+        let hits = f
+            .mesh
+            .lookup(&[r.x.clone(), r.y.clone()])
+            .expect("every ordinate");
+        let (_, value) = hits.first().expect("the point was located by the fit");
+        let d = value - &r.value;
+        rss += &d * &d;
+    }
+    assert_eq!(rss, f.rss, "residual sum of squares");
+    let (m, _) = f.max_residual.expect("at least one row");
+    assert!(!m.is_negative() && &m * &m <= f.rss);
+}

@@ -42,7 +42,7 @@ use num_traits::{One, Signed, Zero};
 use serde::Serialize;
 
 pub use c1::{InteriorEdge, c1_constraints, interior_edges, mu};
-pub use data::{DataPoint, MAX_DATA_ROWS, parse_data, read_data};
+pub use data::{DataPoint, MAX_DATA_ROWS, fuzz_fit_data, parse_data, read_data};
 pub use judge::{FloatFitOptions, FloatFitReport, OrdinateError, judge_float_fit};
 
 use crate::linalg::LinalgError;
@@ -527,13 +527,14 @@ impl FitReport {
     pub fn text(&self) -> String {
         use std::fmt::Write;
         let mut s = String::new();
+        let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
         let _ = writeln!(
             s,
-            "fit of {} ({} rows) on {} ({} triangles, degree {}), {}: {} ordinates",
+            "fit of {} ({}) on {} ({}, degree {}), {}: {} ordinates",
             self.data,
-            self.rows,
+            plural(self.rows, "row"),
             self.mesh,
-            self.triangles,
+            plural(self.triangles, "triangle"),
             self.degree,
             self.smoothness.to_string().to_uppercase(),
             self.ordinates

@@ -470,3 +470,35 @@ fn float_fits_are_judged() {
         "tolerance `ulps=1` does not apply to fits (use cond=K, cond, abs=E, rel=E or exact)"
     );
 }
+
+#[test]
+fn the_numpy_fits_are_judged() {
+    // fixtures/fit/numpy: numpy's lstsq fit (fit_numpy.py) passes the default tolerance (`cond`,
+    // K = 1, f64); the same fit with one ordinate moved by 1e-6 fails it by orders of magnitude,
+    // and passes an absolute tolerance above the move. `tribez check --mesh --fit` relies on
+    // these (crates/tribez-cli/tests/fit_cli.rs).
+    let dir = fixtures().join("numpy");
+    let data = read_data(&dir.join("data.csv")).unwrap();
+    let judge = |file: &str, tolerance: &str| {
+        let m = Mesh::from_file(dir.join(file)).unwrap();
+        let options = FloatFitOptions {
+            tolerance: tolerance.parse().unwrap(),
+            ..FloatFitOptions::default()
+        };
+        judge_float_fit(&m, &data, file, "data.csv", &options).unwrap()
+    };
+    assert_eq!(
+        FloatFitOptions::default(),
+        FloatFitOptions {
+            tolerance: "cond".parse().unwrap(),
+            precision: crate::float::Precision::F64,
+        }
+    );
+    let good = judge("fitted_numpy.toml", "cond");
+    assert!(good.passed && good.error_ratio.unwrap() < 1.0, "{good:?}");
+    assert_eq!((good.rank, good.ordinates), (49, 49));
+    let bad = judge("fitted_numpy_perturbed.toml", "cond");
+    assert!(!bad.passed && bad.error_ratio.unwrap() > 1e3, "{bad:?}");
+    assert!(judge("fitted_numpy_perturbed.toml", "abs=2e-6").passed);
+    assert!(!judge("fitted_numpy_perturbed.toml", "abs=1e-7").passed);
+}

@@ -44,6 +44,22 @@ pub enum ClaimProblem {
         /// The operations tribez knows.
         known: Vec<&'static str>,
     },
+    /// A `lookup` claim at a point outside its mesh (as seen, with `precision`).
+    #[error("the point ({x}, {y}) lies outside the mesh {mesh}")]
+    OutsideMesh {
+        /// `x`, exact.
+        x: String,
+        /// `y`, exact.
+        y: String,
+        /// The mesh file.
+        mesh: String,
+    },
+    /// `tolerance = "bound"` on a `lookup` claim: de Casteljau's bound does not cover the
+    /// barycentric coordinates a float lookup computes first.
+    #[error(
+        "tolerance `bound` does not apply to `lookup` claims (the float lookup's barycentric coordinates are not covered by de Casteljau's bound); use cond=K, ulps=N, abs=E or rel=E"
+    )]
+    BoundNotForLookup,
     /// An operation given a kind of patch it does not take.
     #[error("operation `{op}` does not take a {kind} patch")]
     KindNotTaken {
@@ -77,7 +93,7 @@ pub enum ClaimProblem {
     },
     /// A tolerance relative to the condition number on an operation other than `eval`.
     #[error(
-        "tolerance `{tolerance}` applies to `eval` claims only (it needs the condition number Σ|c_i|B_i)"
+        "tolerance `{tolerance}` applies to `eval` claims only (`cond` also to `lookup`; it needs the condition number Σ|c_i|B_i)"
     )]
     ToleranceEvalOnly {
         /// The tolerance.

@@ -312,7 +312,7 @@ impl fmt::Display for InputError {
         }
         write!(f, ": {}", self.problem)?;
         if let Some(n) = &self.named_at {
-            write!(f, " (patch named at {}:{}: {})", n.file, n.line, n.key)?;
+            write!(f, " (named at {}:{}: {})", n.file, n.line, n.key)?;
         }
         Ok(())
     }

@@ -381,6 +381,17 @@ impl Mesh {
         Ok(casteljau(self.degree, b, &located.barycentric))
     }
 
+    /// `Σ_α |b_α| B^n_α(|λ|)` of triangle `located.triangle` at its barycentric coordinates: the
+    /// condition number of de Casteljau's algorithm there (docs/theory.md §14.1), which the
+    /// `cond` tolerances of `lookup` claims scale with.
+    pub fn condition(&self, located: &Located) -> Result<BigRational, MeshError> {
+        use num_traits::Signed;
+        let b = self.triangle_ordinates(located.triangle)?;
+        let b: Vec<BigRational> = b.iter().map(Signed::abs).collect();
+        let l = located.barycentric.clone().map(|q| q.abs());
+        Ok(casteljau(self.degree, b, &l))
+    }
+
     /// Every triangle containing the point and the value there (equal for all of them in a
     /// C0 mesh); empty outside the mesh; an error if an ordinate needed is absent.
     pub fn lookup(

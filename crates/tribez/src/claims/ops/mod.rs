@@ -27,6 +27,7 @@
 //! | `intersect` | `patches = ["a", "b"]` (two planar curves) | the intersections' `(s, t)`: `expect` lists claimed pairs, or is a count ([`inverse`]) |
 //! | `locate` | `point` (x, y), optional `anywhere` | the parameters `(s, t)` mapping to the point ([`inverse`]) |
 //! | `ray` | `origin`, `direction`; or `height` (x, y) on a functional patch | the hits `(τ, s, t)` with `τ ≥ 0`; with `height`, `(z, s, t)` ([`inverse`]) |
+//! | `lookup` | `mesh` (a mesh file beside the claim file), `at` (x, y); optional `triangle` (claimed) | the value of the mesh at the point (with `triangle`: `{triangle, value}`) ([`lookup`]) |
 //!
 //! `eval` also takes rational patches (`at` or `cartesian`) and S-patches (`cartesian` only).
 //!
@@ -49,6 +50,7 @@ mod forms;
 mod inputs;
 pub mod inverse;
 mod join;
+pub mod lookup;
 mod point;
 pub(crate) mod seen;
 #[cfg(test)]
@@ -69,6 +71,7 @@ pub use forms::{Basis, Form};
 pub use inputs::{Inputs, Point};
 pub use inverse::InverseOp;
 pub use join::JoinOp;
+pub use lookup::LookupOp;
 pub use point::{FloatEval, PointOp, eval_float as float_view};
 
 macro_rules! op_names {
@@ -137,6 +140,7 @@ op_names! {
     Intersect = "intersect" ["patches"];
     Locate = "locate" ["patch", "point", "anywhere"];
     Ray = "ray" ["patch", "origin", "direction", "height"];
+    Lookup = "lookup" ["mesh", "at", "triangle"];
 }
 
 /// Every operation name, for messages.
@@ -158,6 +162,8 @@ pub enum ClaimOp<'a> {
     Join(JoinOp<'a>),
     /// `intersect`, `locate`, `ray` (judged by [`inverse::judge`]).
     Inverse(InverseOp<'a>),
+    /// `lookup` (judged by [`lookup::judge`]).
+    Lookup(LookupOp),
 }
 
 impl<'a> ClaimOp<'a> {
@@ -205,6 +211,7 @@ impl<'a> ClaimOp<'a> {
             | N::EdgeCurve => ClaimOp::Construction(Construction::parse(inputs, name)?),
             N::Join => ClaimOp::Join(JoinOp::parse(inputs)?),
             N::Intersect | N::Locate | N::Ray => ClaimOp::Inverse(InverseOp::parse(inputs, name)?),
+            N::Lookup => ClaimOp::Lookup(LookupOp::parse(inputs)?),
         })
     }
 
@@ -222,6 +229,7 @@ impl<'a> ClaimOp<'a> {
             ClaimOp::Construction(o) => ClaimOp::Construction(o.seen(inputs, p)?),
             ClaimOp::Join(o) => ClaimOp::Join(o.seen(inputs, p)?),
             ClaimOp::Inverse(o) => ClaimOp::Inverse(o.seen(inputs, p)?),
+            ClaimOp::Lookup(o) => ClaimOp::Lookup(o.seen(inputs, p)?),
         })
     }
 
@@ -233,6 +241,7 @@ impl<'a> ClaimOp<'a> {
             ClaimOp::Construction(o) => o.compute(inputs),
             ClaimOp::Join(o) => o.compute(inputs),
             ClaimOp::Inverse(o) => o.compute(inputs),
+            ClaimOp::Lookup(o) => o.compute(inputs),
         }
     }
 

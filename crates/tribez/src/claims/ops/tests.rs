@@ -79,7 +79,7 @@ fn op_names_keys_and_lookup_agree() {
         assert_eq!(OpName::from_name(op.name()), Some(*op));
         assert!(!op.keys().is_empty());
     }
-    assert_eq!(OpName::ALL.len(), 24);
+    assert_eq!(OpName::ALL.len(), 25);
     assert_eq!(OpName::from_name("evaluate"), None);
     assert_error(
         FINN,
