@@ -22,7 +22,7 @@
 //! With a precision, every number denotes the float nearest its text (hex floats are exact), the
 //! patch is rounded likewise, and the exact answer is that of the query and patch as the float
 //! code saw them. Rows are streamed in chunks of [`super::CHUNK`] (bounded memory), each line at
-//! most [`super::parse::MAX_ROW_BYTES`] and its number of fields capped before it is split, and
+//! most `MAX_ROW_BYTES` (the row reader's cap) and its number of fields capped before it is split, and
 //! judged in parallel; the report lists the first [`MAX_LISTED`] failures in line order.
 
 use std::io::{BufReader, Read};
