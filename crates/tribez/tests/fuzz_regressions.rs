@@ -43,7 +43,23 @@ fn every_regression_input_is_handled() {
 #[test]
 fn every_fuzz_target_calls_its_entry_point_by_a_public_path() {
     let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz");
-    let manifest = std::fs::read_to_string(fuzz.join("Cargo.toml")).unwrap();
+    let text = std::fs::read_to_string(fuzz.join("Cargo.toml")).unwrap();
+    // parsed, so that a malformed manifest (a duplicate key) fails here and not in cargo-fuzz
+    let manifest: toml_edit::DocumentMut = text.parse().expect("fuzz/Cargo.toml parses");
+    let bins: Vec<(String, String)> = manifest["bin"]
+        .as_array_of_tables()
+        .expect("[[bin]] tables")
+        .iter()
+        .map(|t| {
+            let field = |k: &str| t[k].as_str().unwrap_or_default().to_string();
+            (field("name"), field("path"))
+        })
+        .collect();
+    assert_eq!(
+        bins.len(),
+        TARGETS.len(),
+        "fuzz/Cargo.toml declares {bins:?}"
+    );
     for target in TARGETS {
         let source = std::fs::read_to_string(fuzz.join(format!("fuzz_targets/{target}.rs")))
             .unwrap_or_else(|e| panic!("fuzz/fuzz_targets/{target}.rs: {e}"));
@@ -52,9 +68,11 @@ fn every_fuzz_target_calls_its_entry_point_by_a_public_path() {
             source.contains(&call),
             "fuzz/fuzz_targets/{target}.rs must call {call}"
         );
+        let declared = (target.to_string(), format!("fuzz_targets/{target}.rs"));
         assert!(
-            manifest.contains(&format!("name = \"{target}\"")),
-            "fuzz/Cargo.toml must declare the target {target}"
+            bins.contains(&declared),
+            "fuzz/Cargo.toml must declare the target {target} at {}",
+            declared.1
         );
     }
 }
