@@ -194,8 +194,6 @@ impl ExactEvaluator {
     }
 }
 
-/// `Σ_α s_α a^α` per coordinate, the integer Bernstein sum with the multinomials already folded
-/// into `s_α` (so `bernstein::basis` is called with unit coefficients avoided).
 /// `[1, x, x², …, xⁿ]`.
 pub(crate) fn powers(x: &BigInt, n: usize) -> Vec<BigInt> {
     let mut v = Vec::with_capacity(n + 1);
@@ -207,6 +205,8 @@ pub(crate) fn powers(x: &BigInt, n: usize) -> Vec<BigInt> {
     v
 }
 
+/// `Σ_α s_α a^α` per coordinate, the integer Bernstein sum with the multinomials already folded
+/// into `s_α` (so `bernstein::basis` is called with unit coefficients avoided).
 fn monomial_sum(scaled: &ControlNet<BigInt>, a: &[BigInt]) -> Vec<BigInt> {
     let n = scaled.degree();
     let pw: Vec<Vec<BigInt>> = a.iter().map(|x| powers(x, n)).collect();
