@@ -566,6 +566,21 @@ fn check_fit_usage_errors() {
         ]),
         &["--tolerance", "ulps=1", "does not apply to fits"],
     );
+    // the options of evaluation batches are refused, each by name
+    for extra in [
+        &["--plot", "map.svg"][..],
+        &["--html", "r.html"],
+        &["--cartesian"],
+        &["--baseline", "b.json"],
+        &["--record-baseline", "b.json"],
+    ] {
+        fails(
+            tribez()
+                .args(["check", "--mesh", &fitted, "--fit", &data])
+                .args(extra),
+            &[extra[0], "is not available with --fit"],
+        );
+    }
     fails(
         tribez().args([
             "check",

@@ -99,6 +99,35 @@ pub struct Args {
     pub out: OutputArgs,
 }
 
+impl Args {
+    /// Refuse the first of `flags` given on the command line (of `--plot`, `--html`,
+    /// `--cartesian`, `--baseline`, `--record-baseline`: the options of evaluation batches), with
+    /// the usage error `message(flag)`.
+    pub fn refuse(&self, flags: &[&str], message: impl Fn(&str) -> String) -> Result<(), CliError> {
+        let given = |flag: &str| match flag {
+            "--plot" => self.plot.is_some(),
+            "--html" => self.html.is_some(),
+            "--cartesian" => self.cartesian,
+            "--baseline" => self.baseline.is_some(),
+            "--record-baseline" => self.record_baseline.is_some(),
+            _ => false,
+        };
+        match flags.iter().find(|f| given(f)) {
+            Some(flag) => Err(CliError::Usage(message(flag))),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The options of evaluation batches that other kinds of check refuse.
+pub const EVALUATION_ONLY: [&str; 5] = [
+    "--plot",
+    "--html",
+    "--cartesian",
+    "--baseline",
+    "--record-baseline",
+];
+
 /// Judge every claim file under `paths` (files or directories); notes on skipped entries of
 /// the directories go to standard error first.
 pub fn judge_paths(paths: &[PathBuf], options: &ClaimsOptions) -> Result<ClaimsReport, CliError> {

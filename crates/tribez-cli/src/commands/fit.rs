@@ -184,19 +184,9 @@ pub fn run_check(args: &super::check::Args) -> Result<Outcome, CliError> {
             "give either claim files or --mesh/--fit, not both".into(),
         ));
     }
-    for (given, flag) in [
-        (args.plot.is_some(), "--plot"),
-        (args.html.is_some(), "--html"),
-        (args.cartesian, "--cartesian"),
-        (args.baseline.is_some(), "--baseline"),
-        (args.record_baseline.is_some(), "--record-baseline"),
-    ] {
-        if given {
-            return Err(CliError::Usage(format!(
-                "{flag} is not available with --fit (one judgement of a whole fit)"
-            )));
-        }
-    }
+    args.refuse(&super::check::EVALUATION_ONLY, |flag| {
+        format!("{flag} is not available with --fit (one judgement of a whole fit)")
+    })?;
     let mesh_path = args
         .mesh
         .as_ref()

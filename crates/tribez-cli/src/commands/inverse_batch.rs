@@ -28,19 +28,9 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             "give either claim files or --patch/{flag}, not both"
         )));
     }
-    for (given, other) in [
-        (args.plot.is_some(), "--plot"),
-        (args.html.is_some(), "--html"),
-        (args.cartesian, "--cartesian"),
-        (args.baseline.is_some(), "--baseline"),
-        (args.record_baseline.is_some(), "--record-baseline"),
-    ] {
-        if given {
-            return Err(CliError::Usage(format!(
-                "{other} is not available with {flag} (it concerns evaluation batches)"
-            )));
-        }
-    }
+    args.refuse(&super::check::EVALUATION_ONLY, |other| {
+        format!("{other} is not available with {flag} (it concerns evaluation batches)")
+    })?;
     let patch_path = args
         .patch
         .as_ref()

@@ -379,17 +379,9 @@ pub fn run_batch(args: &super::check::Args) -> Result<Outcome, CliError> {
             "give either claim files or --mesh/--results, not both".into(),
         ));
     }
-    for (given, flag) in [
-        (args.plot.is_some(), "--plot"),
-        (args.html.is_some(), "--html"),
-        (args.cartesian, "--cartesian"),
-    ] {
-        if given {
-            return Err(CliError::Usage(format!(
-                "{flag} is not available with --mesh (the rows are x, y, value: Cartesian already)"
-            )));
-        }
-    }
+    args.refuse(&["--plot", "--html", "--cartesian"], |flag| {
+        format!("{flag} is not available with --mesh (the rows are x, y, value: Cartesian already)")
+    })?;
     let mesh_path = args.mesh.as_ref().expect("checked by the caller");
     let results = args.results.as_ref().expect("checked by the caller");
     let (mesh, _) = read_valid_mesh(mesh_path)?;
