@@ -350,7 +350,8 @@ impl Mesh {
 
     /// Every triangle containing the point (closed triangles), with exact barycentric
     /// coordinates, by increasing triangle number; empty outside the mesh. Exact
-    /// (docs/theory.md §17).
+    /// (docs/theory.md §17). Degenerate triangles (collinear vertices, which [`Mesh::check`]
+    /// reports) are skipped.
     pub fn locate(&self, point: &[BigRational; 2]) -> Vec<Located> {
         let grid = self
             .grid
@@ -363,6 +364,11 @@ impl Mesh {
             .candidates(x, y)
             .filter_map(|t| {
                 let tri = self.triangles[t].map(|v| &self.vertices[v]);
+                // a degenerate triangle (zero area: `mesh check` reports it) contains no point
+                // with barycentric coordinates
+                if locate::orient(tri[0], tri[1], tri[2]).is_zero() {
+                    return None;
+                }
                 locate::inside(tri, point).then(|| Located {
                     triangle: t,
                     barycentric: barycentric(tri, point),
