@@ -152,5 +152,10 @@ fn bad_edges_and_split_points_of_the_wrong_length_are_errors() {
         add_and_halve: None,
     };
     assert!(c.pieces(&bad).is_err());
+    let huge = Split::Halve {
+        edge: (usize::MAX, 0),
+        add_and_halve: None,
+    };
+    assert!(c.pieces(&huge).is_err());
     assert!(c.pieces(&Split::At(&v(&["1/2", "1/2"]))).is_err());
 }

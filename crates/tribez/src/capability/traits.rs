@@ -365,7 +365,7 @@ pub trait Constructions {
                 edge: (i, j),
                 add_and_halve,
             } => {
-                sd::check_edge(m, i + 1, j + 1)?;
+                sd::check_edge(m, i.saturating_add(1), j.saturating_add(1))?;
                 let halves = match add_and_halve {
                     None => sd::halve(&net, *i, *j),
                     Some(order) => {
