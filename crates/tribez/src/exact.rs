@@ -319,6 +319,60 @@ mod tests {
         }
     }
 
+    /// Primes of a denominator met at only one control point are decided from the point
+    /// (`p | C(n;α)` or `p | a_k`) rather than from residues: 7 at `α = (6, 1, 0)`, where
+    /// `C(7; 6, 1, 0) = 7`; 11 at `(2, 2, 3)` (`C = 210`); 13 at two points (read off residues).
+    /// Points whose coordinates are multiples of 11 or 13, or zero, make those primes divide the
+    /// numerator; the results must still be in lowest terms and equal the reference.
+    #[test]
+    fn horner_kernel_lone_primes_against_the_reference() {
+        let simplex = Simplex::new(2, 7);
+        let alphas: Vec<Vec<u32>> = simplex.iter().map(<[u32]>::to_vec).collect();
+        let coords: Vec<BigRational> = alphas
+            .iter()
+            .enumerate()
+            .flat_map(|(r, alpha)| {
+                let den: i64 = match alpha.as_slice() {
+                    [6, 1, 0] => 7,
+                    [2, 2, 3] => 11 * 2,
+                    [1, 3, 3] | [0, 0, 7] => 13,
+                    _ => 1,
+                };
+                let r = r as i64;
+                [r - 7, 3 * r + 1].map(|p| BigRational::new(BigInt::from(p), BigInt::from(den)))
+            })
+            .collect();
+        let net = ControlNet::new(simplex, 2, coords);
+        let eval = ExactEvaluator::new(&net);
+        let parts = |v: &[BigRational]| -> Vec<(BigInt, BigInt)> {
+            v.iter()
+                .map(|x| (x.numer().clone(), x.denom().clone()))
+                .collect()
+        };
+        for a in [
+            [1, 1, 1],
+            [11, 22, 33],
+            [1, 11, 5],
+            [13, 2, 26],
+            [0, 5, 8],
+            [7, 0, 0],
+            [77, 143, 1],
+            [3, 5, 0],
+        ] {
+            let d: i64 = a.iter().sum();
+            let lambda: Vec<BigRational> = a
+                .iter()
+                .map(|&x| BigRational::new(BigInt::from(x), BigInt::from(d)))
+                .collect();
+            let expected = evaluate_rational(&net, &lambda, Algorithm::Casteljau);
+            assert_eq!(
+                parts(&eval.evaluate_fast(&lambda)),
+                parts(&expected),
+                "at {a:?}"
+            );
+        }
+    }
+
     #[test]
     fn horner_kernel_on_a_known_quadratic() {
         // The module doc example, plus the reduced-denominator case: at a corner the value is

@@ -24,7 +24,10 @@
 //! `p^{min(v_p(N), v_p(L))}` over the known primes `p` of `L` (powers of two by trailing zeros,
 //! odd primes by residues modulo word-sized products of primes, computed as dot products of the
 //! 32-bit halves of `N` with precomputed powers `2^{32h} mod M`). The two factors are coprime
-//! after the first step, so their product is the whole gcd.
+//! after the first step, so their product is the whole gcd. A prime of `L` reached at its full
+//! exponent by one control point only (most primes, with random denominators) needs no residue:
+//! `p | N` exactly when `p` divides that point's multinomial or a coordinate `a_k` it involves
+//! (see `Lone`); candidates are confirmed by a remainder before they are divided out.
 
 use std::sync::OnceLock;
 
@@ -99,6 +102,33 @@ fn small_primes() -> &'static [u32] {
     })
 }
 
+/// The prime factorisation of an odd word by trial division up to `2^16`, ascending; `None` when
+/// a cofactor `≥ 2^32` is left (it could be composite).
+fn factor_odd(mut r: u64) -> Option<Vec<(u64, u32)>> {
+    let mut out = Vec::new();
+    for &p in &small_primes()[1..] {
+        let p = u64::from(p);
+        if p * p > r {
+            break;
+        }
+        let mut e = 0u32;
+        while r.is_multiple_of(p) {
+            r /= p;
+            e += 1;
+        }
+        if e > 0 {
+            out.push((p, e));
+        }
+    }
+    if r > 1 {
+        if r >= 1 << 32 {
+            return None;
+        }
+        out.push((r, 1));
+    }
+    Some(out)
+}
+
 /// The prime factorisation of a least common multiple of denominators: `2^e2 · Π p^e`.
 #[derive(Clone, Debug, Default)]
 pub struct Factors {
@@ -121,27 +151,9 @@ impl Factors {
             let q = q.magnitude();
             let tz = q.trailing_zeros().unwrap_or(0);
             e2 = e2.max(tz);
-            let mut r = (q >> tz).to_u64()?;
-            for &p in &small_primes()[1..] {
-                let p = u64::from(p);
-                if p * p > r {
-                    break;
-                }
-                let mut e = 0u32;
-                while r % p == 0 {
-                    r /= p;
-                    e += 1;
-                }
-                if e > 0 {
-                    let slot = exps.entry(p).or_insert(0);
-                    *slot = (*slot).max(e);
-                }
-            }
-            if r > 1 {
-                if r >= 1 << 32 {
-                    return None;
-                }
-                exps.entry(r).or_insert(1);
+            for (p, e) in factor_odd((q >> tz).to_u64()?)? {
+                let slot = exps.entry(p).or_insert(0);
+                *slot = (*slot).max(e);
             }
         }
         Some(Factors {
@@ -165,11 +177,88 @@ impl Factors {
 /// Limbs per residue-table row (small under test, so that the multi-chunk path runs too).
 const CHUNK: usize = if cfg!(test) { 3 } else { 128 };
 
-/// Residue tables for the odd primes of `L_c`.
+/// A prime `p` of `L_c` (exponent `e`) at which exactly one control point `α` has a denominator
+/// with the full exponent `e`. Modulo `p` every other term of `N = Σ C(n;α) z_α a^α` vanishes and
+/// `p ∤ z_α` (its numerator is coprime to its denominator, and `L_c / q_α` has no factor `p`), so
+/// `p | N` exactly when `p | C(n;α)` or `p | a_k` for some `k` with `α_k > 0`: decided per point
+/// from `gcd(a_k, L_c)` without reading `N`. With random denominators most primes of `L_c` are
+/// such primes; only the others need residues of `N`.
+#[derive(Clone, Debug)]
+struct Lone {
+    p: u64,
+    e: u32,
+    /// `p | C(n;α)`: then `p | N` at every point.
+    always: bool,
+    /// The `k` with `α_k > 0`.
+    support: Vec<u32>,
+}
+
+/// Which odd primes of `L_c` are [`Lone`]: factor each control point's denominator (all fit a
+/// word when `L_c` was factored) and count the points at the full exponent.
+fn census(
+    factors: &Factors,
+    net: &ControlNet<BigRational>,
+    c: usize,
+) -> (Vec<(u64, u32)>, Vec<Lone>) {
+    use std::collections::HashMap;
+    let full = |p: u64| {
+        factors
+            .odd
+            .binary_search_by_key(&p, |&(q, _)| q)
+            .map(|i| factors.odd[i].1)
+            .ok()
+    };
+    // prime -> (points at the full exponent, the first such point's rank)
+    let mut at_full: HashMap<u64, (usize, usize)> = HashMap::new();
+    let mut memo: HashMap<u64, Vec<(u64, u32)>> = HashMap::new();
+    for (r, point) in net.points().enumerate() {
+        let q = point[c].denom().magnitude();
+        let odd = (q >> q.trailing_zeros().unwrap_or(0))
+            .to_u64()
+            .expect("factored denominators have word-sized odd parts");
+        let primes = memo
+            .entry(odd)
+            .or_insert_with(|| factor_odd(odd).expect("factored denominators factor"));
+        for &(p, e) in primes.iter() {
+            if full(p) == Some(e) {
+                let slot = at_full.entry(p).or_insert((0, r));
+                slot.0 += 1;
+            }
+        }
+    }
+    let simplex = net.simplex();
+    let alphas: Vec<&[u32]> = simplex.iter().collect();
+    let (mut shared, mut lone) = (Vec::new(), Vec::new());
+    for &(p, e) in &factors.odd {
+        match at_full.get(&p) {
+            Some(&(1, r)) => {
+                let alpha = alphas[r];
+                let always = (crate::simplex::multinomial(alpha) % p).is_zero();
+                let support = (0u32..)
+                    .zip(alpha)
+                    .filter(|&(_, &x)| x > 0)
+                    .map(|(k, _)| k)
+                    .collect();
+                lone.push(Lone {
+                    p,
+                    e,
+                    always,
+                    support,
+                });
+            }
+            _ => shared.push((p, e)),
+        }
+    }
+    (shared, lone)
+}
+
+/// Residue tables for the odd primes of `L_c` that are not [`Lone`], and the lone ones.
 #[derive(Clone, Debug)]
 struct Reducer {
-    factors: Factors,
-    /// `(M, first prime, end prime, 2^{64·CHUNK} mod M)`: `M` the product of `primes[first..end]`, `< 2^64`.
+    /// The primes read off residues of `N`, with their exponents in `L_c`, ascending.
+    shared: Vec<(u64, u32)>,
+    lone: Vec<Lone>,
+    /// `(M, first prime, end prime, 2^{64·CHUNK} mod M)`: `M` the product of `shared[first..end]`, `< 2^64`.
     moduli: Vec<(u64, usize, usize, u64)>,
     /// `2^{64h} mod M` for `h < CHUNK`, `CHUNK` entries per modulus.
     table: Vec<u64>,
@@ -178,13 +267,13 @@ struct Reducer {
 }
 
 impl Reducer {
-    fn new(factors: Factors) -> Self {
+    fn new(shared: Vec<(u64, u32)>, lone: Vec<Lone>) -> Self {
         let mut moduli = Vec::new();
         let mut i = 0;
-        while i < factors.odd.len() {
-            let mut m = factors.odd[i].0;
+        while i < shared.len() {
+            let mut m = shared[i].0;
             let mut j = i + 1;
-            while let Some(next) = factors.odd.get(j).and_then(|&(p, _)| m.checked_mul(p)) {
+            while let Some(next) = shared.get(j).and_then(|&(p, _)| m.checked_mul(p)) {
                 m = next;
                 j += 1;
             }
@@ -203,20 +292,46 @@ impl Reducer {
         }
         let inverses = moduli.iter().map(|&(m, ..)| inverse_odd(m)).collect();
         Reducer {
-            factors,
+            shared,
+            lone,
             moduli,
             table,
             inverses,
         }
     }
 
-    /// Divide `limbs` by `gcd(limbs, L_odd)` (the odd part of `L`), pushing the primes removed
-    /// (with multiplicity) onto `removed`.
-    fn strip_odd(&self, limbs: &mut Vec<u64>, removed: &mut Vec<u64>) {
-        if self.moduli.is_empty() || limbs.is_empty() {
+    /// Divide `limbs` by `gcd(limbs, L_odd)` (`L_odd` the odd part of `L`, as limbs), pushing
+    /// the primes removed (with multiplicity) onto `removed`. `a` is the point: the lone primes
+    /// are decided from it; a candidate is divided out only after its residue confirms it.
+    fn strip_odd(&self, limbs: &mut Vec<u64>, a: &[u64], l_odd: &[u64], removed: &mut Vec<u64>) {
+        if limbs.is_empty() {
             return;
         }
         let mut hits = Vec::new();
+        if !self.lone.is_empty() {
+            // g_k = gcd(a_k, L_odd) (0 when a_k = 0: every prime divides it)
+            let g: Vec<u64> = a
+                .iter()
+                .map(|&x| {
+                    let odd = x >> x.trailing_zeros().min(63);
+                    match x {
+                        0 => 0,
+                        _ if odd == 1 => 1,
+                        _ => gcd_u64(rem_hensel(l_odd, odd, inverse_odd(odd)), odd),
+                    }
+                })
+                .collect();
+            for l in &self.lone {
+                if l.always
+                    || l.support.iter().any(|&k| {
+                        let g = g[k as usize];
+                        g != 1 && g.is_multiple_of(l.p)
+                    })
+                {
+                    hits.push((l.p, l.e));
+                }
+            }
+        }
         let single = limbs.len() <= CHUNK;
         for (k, &(m, first, end, big)) in self.moduli.iter().enumerate() {
             let row = &self.table[k * CHUNK..(k + 1) * CHUNK];
@@ -246,7 +361,7 @@ impl Reducer {
                     r = ((u128::from(r) * u128::from(big) + dot) % mm) as u64;
                 }
             }
-            for &(p, e) in &self.factors.odd[first..end] {
+            for &(p, e) in &self.shared[first..end] {
                 if r.is_multiple_of(p) {
                     hits.push((p, e));
                 }
@@ -519,7 +634,10 @@ impl FastNet {
                             >> denominators[c].magnitude().trailing_zeros().unwrap_or(0)),
                     ),
                     e2: denominators[c].magnitude().trailing_zeros().unwrap_or(0),
-                    reducer: f.map(Reducer::new),
+                    reducer: f.map(|f| {
+                        let (shared, lone) = census(&f, net, c);
+                        Reducer::new(shared, lone)
+                    }),
                     rows,
                 }
             })
@@ -608,7 +726,7 @@ impl FastNet {
                         sums_ready = true;
                     }
                     let neg = rows.evaluate(n, a, pw, sp, row_bufs, acc);
-                    return reduce(c, neg, acc, &den);
+                    return reduce(c, neg, acc, a, &den);
                 }
                 self.horner(c, self.m, n, 0, a, pw, bufs);
                 let mut h = std::mem::take(&mut bufs[0]);
@@ -622,7 +740,7 @@ impl FastNet {
                     let v = BigInt::from(from_limbs(&h)) - BigInt::from(&c.shift * &*sp);
                     (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
                 };
-                reduce(c, neg, &mut limbs, &den)
+                reduce(c, neg, &mut limbs, a, &den)
             })
             .collect()
     }
@@ -684,7 +802,13 @@ fn div_exact_words(x: &mut Vec<u64>, factors: &[u64]) {
 /// prime, so `n` rounds remove `p^{min(v_p(N), n·v_p(D))}`); then the odd primes of `L_c` up to
 /// their exponents in `L_c` from what is left, which makes `p^{min(v_p(N), v_p(L_c D^n))}` in all.
 /// Remainders and exact quotients by odd words are Hensel divisions (no division instruction).
-fn reduce(c: &Coordinate, neg: bool, limbs: &mut Vec<u64>, pt: &PointDenominator) -> BigRational {
+fn reduce(
+    c: &Coordinate,
+    neg: bool,
+    limbs: &mut Vec<u64>,
+    a: &[u64],
+    pt: &PointDenominator,
+) -> BigRational {
     let sign = if neg { Sign::Minus } else { Sign::Plus };
     if limbs.is_empty() {
         return BigRational::zero();
@@ -712,7 +836,7 @@ fn reduce(c: &Coordinate, neg: bool, limbs: &mut Vec<u64>, pt: &PointDenominator
     }
     // The odd primes of L_c.
     let mut from_l = Vec::new();
-    reducer.strip_odd(limbs, &mut from_l);
+    reducer.strip_odd(limbs, a, &c.odd_denominator, &mut from_l);
     let mut den = Vec::new();
     if from_l.is_empty() && from_d.is_empty() {
         mul_into(&mut den, &c.odd_denominator, &pt.odd_pow);
