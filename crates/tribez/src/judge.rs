@@ -373,11 +373,11 @@ pub fn judge_algorithm(
 ) -> Result<Judgement, Error> {
     let shape = patch.shape();
     if claimed.len() != shape.dimension {
-        return Err(Error::Size {
+        return Err(Error::Refusal(Refusal::Size {
             what: "claimed coordinates",
             expected: shape.dimension,
             found: claimed.len(),
-        });
+        }));
     }
     let side = exact_side(patch, algorithm, input, tolerance, precision, intended)
         .map_err(|(_, e)| Error::from(e))?;

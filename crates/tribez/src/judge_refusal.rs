@@ -1,7 +1,7 @@
 //! Why the judge cannot judge a float result: a capability the kind lacks, a point outside the
 //! proven bound's hypotheses, an undefined value, a non-finite number, a size that does not
-//! match. Data only (below the input layer, so that a claim file's error can carry it);
-//! [`crate::Error`] has the same variants at the public surface.
+//! match. Data only (below the input layer, so that a claim file's error can carry it); at the
+//! public surface it is [`crate::Error::Refusal`] (and [`crate::Error::Core`]).
 
 use num_rational::BigRational;
 
@@ -10,7 +10,7 @@ use crate::error::CoreError;
 use crate::exact::Algorithm;
 use crate::float::Precision;
 
-/// Why a float result cannot be judged ([`crate::Error`]'s variants of the same names).
+/// Why a float result cannot be judged ([`crate::Error::Refusal`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Refusal {
     /// A mathematical precondition the input violates (a number that overflows the
@@ -66,7 +66,7 @@ pub enum Refusal {
     },
 }
 
-/// What a kind of patch cannot do ([`crate::Error::Unsupported`], [`Refusal::Unsupported`]).
+/// What a kind of patch cannot do ([`Refusal::Unsupported`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Lacks {
     /// It has no float program.

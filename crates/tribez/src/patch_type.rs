@@ -6,7 +6,7 @@ use std::path::Path;
 use num_rational::BigRational;
 
 use crate::any_patch::AnyPatch;
-use crate::api_error::Error;
+use crate::api_error::{Error, Refusal};
 use crate::capability::{Constructions, ExactEval, FloatEval, InputSpace, Shape};
 use crate::domain::Domain;
 use crate::error::CoreError;
@@ -113,11 +113,11 @@ fn check_count(m: usize, n: usize, found: usize, what: &'static str) -> Result<(
     }
     match usize::try_from(c) {
         Ok(expected) if expected == found => Ok(()),
-        Ok(expected) => Err(Error::Size {
+        Ok(expected) => Err(Error::Refusal(Refusal::Size {
             what,
             expected,
             found,
-        }),
+        })),
         Err(_) => Err(too_many()),
     }
 }
@@ -131,18 +131,18 @@ fn net(
     check_count(m, n, points.len(), "control points")?;
     let d = points[0].len();
     if d == 0 {
-        return Err(Error::Size {
+        return Err(Error::Refusal(Refusal::Size {
             what: "coordinates of a control point",
             expected: 1,
             found: 0,
-        });
+        }));
     }
     if let Some(p) = points.iter().find(|p| p.len() != d) {
-        return Err(Error::Size {
+        return Err(Error::Refusal(Refusal::Size {
             what: "coordinates of a control point",
             expected: d,
             found: p.len(),
-        });
+        }));
     }
     let coords = points.into_iter().flatten().collect();
     Ok(ControlNet::new(Simplex::new(m, n), d, coords))
@@ -168,11 +168,11 @@ impl Patch {
     ) -> Result<Patch, Error> {
         let net = net(m.0, n.0, points)?;
         if weights.len() != net.len() {
-            return Err(Error::Size {
+            return Err(Error::Refusal(Refusal::Size {
                 what: "weights",
                 expected: net.len(),
                 found: weights.len(),
-            });
+            }));
         }
         Ok(Patch {
             any: AnyPatch::Rational(RationalPatch::new(BezierPatch::new(net), weights)),

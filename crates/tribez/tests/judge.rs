@@ -3,8 +3,8 @@
 //! fixtures/beyond/pentagon.claims.toml.
 
 use tribez::{
-    Algorithm, Degree, Error, Patch, PatchKind, Precision, Rational, SimplexDim, Tolerance, judge,
-    judge_algorithm, judge_with, parse_rational,
+    Algorithm, Degree, Error, Patch, PatchKind, Precision, Rational, Refusal, SimplexDim,
+    Tolerance, judge, judge_algorithm, judge_with, parse_rational,
 };
 
 fn q(s: &str) -> Rational {
@@ -230,11 +230,11 @@ fn s_patch_pentagon() {
     // cond=K is not defined for S-patches (the float coordinates add their own error)
     assert!(matches!(
         judge(&p, &[2.0, 2.0], &claimed, &tol("cond=4"), Precision::F64),
-        Err(Error::Unsupported { .. })
+        Err(Error::Refusal(Refusal::Unsupported { .. }))
     ));
     assert!(matches!(
         judge(&p, &[2.0, 2.0], &claimed, &tol("cond"), Precision::F64),
-        Err(Error::Unsupported { .. })
+        Err(Error::Refusal(Refusal::Unsupported { .. }))
     ));
 }
 
@@ -272,30 +272,30 @@ fn sizes_are_errors_never_panics() {
     let r = tol("ulps=1");
     assert!(matches!(
         judge(&p, &[0.5, 0.5], &RN_SEEN, &r, Precision::F64),
-        Err(Error::Size {
+        Err(Error::Refusal(Refusal::Size {
             expected: 3,
             found: 2,
             ..
-        })
+        }))
     ));
     assert!(matches!(
         judge(&p, &INPUT, &[0.5], &r, Precision::F64),
-        Err(Error::Size {
+        Err(Error::Refusal(Refusal::Size {
             expected: 3,
             found: 1,
             ..
-        })
+        }))
     ));
     assert!(judge(&p, &[f64::NAN, 0.5, 0.5], &RN_SEEN, &r, Precision::F64).is_err());
     // a wrong number of control points, or of weights, or ragged points
     let six: Vec<Vec<Rational>> = (0..6).map(|_| qs(&["0", "0"])).collect();
     assert!(matches!(
         Patch::bezier(SimplexDim(2), Degree(3), six.clone()),
-        Err(Error::Size {
+        Err(Error::Refusal(Refusal::Size {
             expected: 10,
             found: 6,
             ..
-        })
+        }))
     ));
     // (m, n) = (1, 5) also has 6 points: the newtypes keep the call unambiguous
     assert_eq!(

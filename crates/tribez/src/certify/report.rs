@@ -16,7 +16,7 @@ use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::api_error::{Error, Lacks};
+use crate::api_error::{Error, Lacks, Refusal};
 use crate::capability::{FloatCase, FloatEval, FloatProgram, InputSpace};
 use crate::certify::bound::roundings;
 use crate::certify::measures::{Measures, sci};
@@ -384,12 +384,12 @@ fn algorithms(
         Some(a) if offered.contains(&a) => Ok(vec![a]),
         // a kind with one algorithm: its de Casteljau (homogeneous, or after Wachspress)
         Some(Algorithm::Casteljau) if offered.len() == 1 => Ok(offered.to_vec()),
-        Some(a) => Err(Error::Unsupported {
+        Some(a) => Err(Error::Refusal(Refusal::Unsupported {
             kind: patch.kind().plural(),
             what: Lacks::CertifyAlgorithm {
                 algorithm: algorithm_key(a),
             },
-        }),
+        })),
     }
 }
 
@@ -425,11 +425,11 @@ fn points_of(patch: &Patch, options: &CertifyOptions) -> Result<Vec<Vec<BigRatio
         }
         &CertifyPoints::Random { count, seed } => {
             if count == 0 {
-                return Err(Error::Size {
+                return Err(Error::Refusal(Refusal::Size {
                     what: "random points",
                     expected: 1,
                     found: 0,
-                });
+                }));
             }
             match &input {
                 InputSpace::Barycentric { m } => random_points(*m, count, seed)
@@ -479,10 +479,10 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
         None => vec![Precision::F64, Precision::F32],
         Some(p) => vec![p],
     };
-    let float = patch.float().ok_or(Error::Unsupported {
+    let float = patch.float().ok_or(Error::Refusal(Refusal::Unsupported {
         kind: patch.kind().plural(),
         what: Lacks::FloatProgramToCertify,
-    })?;
+    }))?;
     let algorithms = algorithms(options.algorithm, patch, float)?;
     let points = points_of(patch, options)?;
     let shape = patch.shape();
