@@ -431,23 +431,24 @@ impl EvalReport {
         struct Results<'a> {
             results: &'a [PointResult],
         }
-        const OPEN: &[u8] = b"{\n  \"results\": [";
-        const CLOSE: &[u8] = b"\n  ]\n}";
-        let parts: Vec<Vec<u8>> = self
+        const OPEN: &str = "{\n  \"results\": [";
+        const CLOSE: &str = "\n  ]\n}";
+        // serde_json's `to_string_pretty` writes a `String` without checking the UTF-8 again
+        // (a Vec<u8> would need `str::from_utf8` over every byte of the output)
+        let parts: Vec<String> = self
             .results
             .par_chunks(chunk.max(1))
             .map(|results| {
-                let mut buf = Vec::with_capacity(256 * results.len());
-                serde_json::to_writer_pretty(&mut buf, &Results { results })
+                let text = serde_json::to_string_pretty(&Results { results })
                     .expect("a point result serialises");
-                debug_assert!(buf.starts_with(OPEN) && buf.ends_with(CLOSE));
-                buf.truncate(buf.len() - CLOSE.len());
-                buf.drain(..OPEN.len());
-                buf
+                debug_assert!(text.starts_with(OPEN) && text.ends_with(CLOSE));
+                text
             })
             .collect();
+        let inner =
+            |part: &'_ String| -> std::ops::Range<usize> { OPEN.len()..part.len() - CLOSE.len() };
         let quoted = |s: &str| serde_json::to_string(s).expect("a string serialises");
-        let mut out = String::with_capacity(parts.iter().map(Vec::len).sum::<usize>() + 256);
+        let mut out = String::with_capacity(parts.iter().map(String::len).sum::<usize>() + 256);
         out += &format!("{{\n  \"patch\": {}", quoted(&self.file));
         if let Some(kind) = self.kind {
             out += &format!(",\n  \"kind\": {}", quoted(kind));
@@ -457,7 +458,7 @@ impl EvalReport {
             if i > 0 {
                 out.push(',');
             }
-            out += std::str::from_utf8(part).expect("serde_json writes UTF-8");
+            out += &part[inner(part)];
         }
         out += if parts.is_empty() { "]" } else { "\n  ]" };
         out += "\n}\n";
