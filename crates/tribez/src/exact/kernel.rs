@@ -135,6 +135,8 @@ pub struct Factors {
     e2: u64,
     /// Odd primes with exponents, ascending.
     odd: Vec<(u64, u32)>,
+    /// Each denominator's odd part, factored (for [`census`]).
+    of_odd_part: std::collections::HashMap<u64, Vec<(u64, u32)>>,
 }
 
 impl Factors {
@@ -143,22 +145,26 @@ impl Factors {
     pub fn of<'a>(denominators: impl Iterator<Item = &'a BigInt>) -> Option<Factors> {
         let mut e2 = 0u64;
         let mut exps: std::collections::BTreeMap<u64, u32> = Default::default();
-        let mut seen = std::collections::HashSet::new();
+        let mut of_odd_part = std::collections::HashMap::new();
         for q in denominators {
-            if !seen.insert(q.clone()) {
-                continue;
-            }
             let q = q.magnitude();
             let tz = q.trailing_zeros().unwrap_or(0);
             e2 = e2.max(tz);
-            for (p, e) in factor_odd((q >> tz).to_u64()?)? {
+            let odd = (q >> tz).to_u64()?;
+            if of_odd_part.contains_key(&odd) {
+                continue;
+            }
+            let primes = factor_odd(odd)?;
+            for &(p, e) in &primes {
                 let slot = exps.entry(p).or_insert(0);
                 *slot = (*slot).max(e);
             }
+            of_odd_part.insert(odd, primes);
         }
         Some(Factors {
             e2,
             odd: exps.into_iter().collect(),
+            of_odd_part,
         })
     }
 
@@ -210,16 +216,12 @@ fn census(
     };
     // prime -> (points at the full exponent, the first such point's rank)
     let mut at_full: HashMap<u64, (usize, usize)> = HashMap::new();
-    let mut memo: HashMap<u64, Vec<(u64, u32)>> = HashMap::new();
     for (r, point) in net.points().enumerate() {
         let q = point[c].denom().magnitude();
         let odd = (q >> q.trailing_zeros().unwrap_or(0))
             .to_u64()
             .expect("factored denominators have word-sized odd parts");
-        let primes = memo
-            .entry(odd)
-            .or_insert_with(|| factor_odd(odd).expect("factored denominators factor"));
-        for &(p, e) in primes.iter() {
+        for &(p, e) in &factors.of_odd_part[&odd] {
             if full(p) == Some(e) {
                 let slot = at_full.entry(p).or_insert((0, r));
                 slot.0 += 1;
@@ -227,13 +229,20 @@ fn census(
         }
     }
     let simplex = net.simplex();
+    let n = net.degree() as u64;
     let alphas: Vec<&[u32]> = simplex.iter().collect();
     let (mut shared, mut lone) = (Vec::new(), Vec::new());
     for &(p, e) in &factors.odd {
         match at_full.get(&p) {
             Some(&(1, r)) => {
                 let alpha = alphas[r];
-                let always = (crate::simplex::multinomial(alpha) % p).is_zero();
+                // Legendre: v_p(C(n;α)) = (Σ_k s_p(α_k) − s_p(n)) / (p − 1), s_p the sum of
+                // the base-p digits, so p | C(n;α) exactly when the digit sums differ.
+                let always = alpha
+                    .iter()
+                    .map(|&x| digit_sum(u64::from(x), p))
+                    .sum::<u64>()
+                    > digit_sum(n, p);
                 let support = (0u32..)
                     .zip(alpha)
                     .filter(|&(_, &x)| x > 0)
@@ -250,6 +259,16 @@ fn census(
         }
     }
     (shared, lone)
+}
+
+/// The sum of the base-`p` digits of `x`.
+fn digit_sum(mut x: u64, p: u64) -> u64 {
+    let mut s = 0;
+    while x > 0 {
+        s += x % p;
+        x /= p;
+    }
+    s
 }
 
 /// Residue tables for the odd primes of `L_c` that are not [`Lone`], and the lone ones.
