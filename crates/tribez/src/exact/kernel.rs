@@ -261,6 +261,25 @@ fn census(
     (shared, lone)
 }
 
+/// The cost of one word gcd in [`FastNet::new`]'s choice between lone primes and residues, in
+/// limb products (0 under test, so that the small nets of the tests take the lone path too).
+const GCD_COST: u64 = if cfg!(test) { 0 } else { 600 };
+
+/// How many word-sized products the ascending `primes` fill (as [`Reducer::new`] packs them).
+fn moduli_count(primes: impl Iterator<Item = u64>) -> usize {
+    let (mut count, mut m) = (0, 1u64);
+    for p in primes {
+        match m.checked_mul(p) {
+            Some(next) if count > 0 => m = next,
+            _ => {
+                count += 1;
+                m = p;
+            }
+        }
+    }
+    count
+}
+
 /// The sum of the base-`p` digits of `x`.
 fn digit_sum(mut x: u64, p: u64) -> u64 {
     let mut s = 0;
@@ -655,7 +674,18 @@ impl FastNet {
                     e2: denominators[c].magnitude().trailing_zeros().unwrap_or(0),
                     reducer: f.map(|f| {
                         let (shared, lone) = census(&f, net, c);
-                        Reducer::new(shared, lone)
+                        // Deciding lone primes costs m + 1 word gcds with L per point; residues
+                        // cost a pass over N (about as long as L) per modulus they fill. Keep
+                        // the cheaper (the gcds win at high degrees, where L has many primes).
+                        let limbs = f.product().bits().div_ceil(64) + 1;
+                        let saved =
+                            moduli_count(lone.iter().map(|l| l.p)) as u64 * (2 * limbs + 30);
+                        let cost = (m as u64 + 1) * (2 * limbs + GCD_COST);
+                        if saved > cost {
+                            Reducer::new(shared, lone)
+                        } else {
+                            Reducer::new(f.odd.clone(), Vec::new())
+                        }
                     }),
                     rows,
                 }
