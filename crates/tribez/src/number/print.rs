@@ -162,11 +162,15 @@ fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
     while count > 1 && digits[count - 1] == 0 {
         count -= 1;
     }
-    out.reserve(19 * count.max(chunks.unwrap_or(0)) + 1);
+    // all the chunks' digits into one buffer, checked as text once (a check per 19-digit chunk
+    // cost more than the digits themselves)
+    let mut text = [b'0'; 19 * (SPLIT_LIMBS + 2) + 1];
+    let mut end = 0;
     let mut buf = [b'0'; 20];
     match chunks {
         Some(c) => {
             debug_assert!(count <= c.max(1));
+            out.reserve(19 * c.max(count));
             for _ in count..c {
                 out.push_str("0000000000000000000");
             }
@@ -180,14 +184,17 @@ fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
                 digits[count]
             };
             let start = fill_digits(&mut buf, top);
-            out.push_str(ascii(&buf[start..]));
+            end = 20 - start;
+            text[..end].copy_from_slice(&buf[start..]);
         }
     }
     for &d in digits[..count].iter().rev() {
         buf = [b'0'; 20];
         fill_digits(&mut buf, d);
-        out.push_str(ascii(&buf[1..]));
+        text[end..end + 19].copy_from_slice(&buf[1..]);
+        end += 19;
     }
+    out.push_str(ascii(&text[..end]));
 }
 
 /// Digits written by [`fill_digits`] as text.
