@@ -53,7 +53,7 @@ pub(super) fn parse_num(
     file: &str,
     line: usize,
 ) -> Result<Num, InputError> {
-    let t = f.text.trim().trim_matches('"');
+    let t = unquoted(f.text);
     let body = t.trim_start_matches(['+', '-']);
     let named = |name: &str| body.eq_ignore_ascii_case(name);
     if t.is_empty() || named("nan") || named("inf") || named("infinity") {
@@ -73,12 +73,7 @@ pub(super) fn parse_num(
     };
     match precision {
         Some(p) => {
-            // Fast path: the standard library's correctly rounded decimal parsing.
-            let fast = match p {
-                Precision::F64 => t.parse::<f64>().ok(),
-                Precision::F32 => t.parse::<f32>().ok().map(f64::from),
-            };
-            if let Some(x) = fast {
+            if let Some(x) = std_float(t, p) {
                 if x.is_finite() {
                     return Ok(Num::Value {
                         float: x,
@@ -106,6 +101,62 @@ pub(super) fn parse_num(
             })
         }
     }
+}
+
+/// A field's text without the white space and double quotes around it.
+fn unquoted(text: &str) -> &str {
+    // a field that starts and ends with a printable ASCII character other than `"` (most of
+    // them) is its own text: neither trim removes anything
+    let bare = |b: Option<&u8>| b.is_some_and(|&b| b.is_ascii_graphic() && b != b'"');
+    let bytes = text.as_bytes();
+    if bare(bytes.first()) && bare(bytes.last()) {
+        text
+    } else {
+        text.trim().trim_matches('"')
+    }
+}
+
+/// The standard library's correctly rounded parse of a number's text to the float of `p`
+/// nearest it (the fast path of [`parse_num`]; `None` for text it does not take, such as
+/// fractions and hex floats).
+fn std_float(t: &str, p: Precision) -> Option<f64> {
+    match p {
+        Precision::F64 => t.parse::<f64>().ok(),
+        Precision::F32 => t.parse::<f32>().ok().map(f64::from),
+    }
+}
+
+/// The numbers of a CSV row as floats of `p`, straight from its text: its `inputs.len() =
+/// width` input numbers and `claimed.len() = dim` claimed ones (the buffers are cleared
+/// first), when the row has `width + dim` fields and [`std_float`] reads every one of them
+/// as a finite float: then [`parse_row`] would give these floats (each a `Num::Value` without
+/// `text_exact`). `false` for any other row (blank and comment lines, other numbers, errors),
+/// which [`parse_row`] then reads. No allocation once the buffers have grown.
+pub(super) fn csv_floats(
+    row: &str,
+    width: usize,
+    dim: usize,
+    p: Precision,
+    inputs: &mut Vec<f64>,
+    claimed: &mut Vec<f64>,
+) -> bool {
+    inputs.clear();
+    claimed.clear();
+    // the line ending is white space the last field's trim would drop
+    for (i, field) in row.trim_ascii_end().split(',').enumerate() {
+        let x = match std_float(unquoted(field), p) {
+            Some(x) if x.is_finite() => x,
+            _ => return false,
+        };
+        if i < width {
+            inputs.push(x);
+        } else if i < width + dim {
+            claimed.push(x);
+        } else {
+            return false;
+        }
+    }
+    inputs.len() == width && claimed.len() == dim
 }
 
 impl Num {
@@ -721,7 +772,7 @@ pub(super) fn texts_of(
     };
     fields
         .iter()
-        .map(|f| f.text.trim().trim_matches('"').to_string())
+        .map(|f| unquoted(f.text).to_string())
         .collect()
 }
 
@@ -784,6 +835,59 @@ mod tests {
         let at: Vec<(usize, usize, &str)> =
             fields.iter().map(|(l, f)| (*l, f.column, f.text)).collect();
         assert_eq!(at, vec![(2, 5, "1"), (2, 8, "\"a]\\\"b\""), (2, 17, "2")]);
+    }
+
+    /// [`csv_floats`] reads a row exactly when [`parse_row`] gives finite floats without exact
+    /// values, and then reads the same floats.
+    #[test]
+    fn csv_floats_agree_with_parse_row() {
+        let rows = [
+            "0.5,0.25,0.25,1,2,3\n",
+            "0.5,0.25,0.25,1,2,3",
+            "0.5,0.25,0.25,1,2,3\r\n",
+            " 0.5 ,\t0.25,\"0.25\",+1e0,-2.5E-3,3.\n",
+            "\u{a0}0.5,.25,0.25,1,2,3\n",
+            "0.5,0.25,0.25,1,2\n",
+            "0.5,0.25,0.25,1,2,3,4\n",
+            "0.5,0.25,0.25,1,2,\n",
+            "0.5,0.25,0.25,1,nan,3\n",
+            "0.5,0.25,0.25,1,-inf,3\n",
+            "0.5,0.25,0.25,1,1e400,3\n",
+            "0.5,0.25,0.25,1,1e39,3\n",
+            "0x1.8p-1,0.25,0.25,1,2,3\n",
+            "1/2,0.25,0.25,1,2,3\n",
+            "0.5,0.25,0.25,1,2,3 # note\n",
+            "# 0.5,0.25,0.25,1,2,3\n",
+            "\n",
+            "1e-400,0.25,0.25,1,2,3\n",
+            "0.1000000000000000055511151231257827,0.25,0.25,1,2,3\n",
+        ];
+        for row in rows {
+            for p in [Precision::F64, Precision::F32] {
+                let (mut inputs, mut claimed) = (Vec::new(), Vec::new());
+                let fast = csv_floats(row, 3, 3, p, &mut inputs, &mut claimed);
+                let full = parse_row(Format::Csv, row, 1, 1, 3, 3, Some(p), "f");
+                let floats = |xs: &[Num]| {
+                    xs.iter()
+                        .map(|x| match x {
+                            Num::Value {
+                                float,
+                                text_exact: None,
+                            } => Some(*float),
+                            _ => None,
+                        })
+                        .collect::<Option<Vec<f64>>>()
+                };
+                let plain = match &full {
+                    Ok(Some((i, c))) => floats(i).zip(floats(c)),
+                    _ => None,
+                };
+                assert_eq!(fast, plain.is_some(), "{row:?} {p:?}");
+                if let Some((i, c)) = plain {
+                    assert_eq!((inputs, claimed), (i, c), "{row:?} {p:?}");
+                }
+            }
+        }
     }
 
     #[test]
