@@ -341,6 +341,9 @@ pub(super) struct RowReader<R> {
     data_seen: bool,
     /// JSON array: how many bytes of a byte-order mark have been skipped.
     bom: usize,
+    /// Line formats: read lines in bulk after the first ([`Self::read_lines`]); false: every
+    /// line one by one (the reference the tests hold the bulk reading to).
+    bulk: bool,
 }
 
 impl<R: BufRead> RowReader<R> {
@@ -358,6 +361,7 @@ impl<R: BufRead> RowReader<R> {
             columns: None,
             data_seen: false,
             bom: 0,
+            bulk: true,
         }
     }
 
@@ -426,41 +430,134 @@ impl<R: BufRead> RowReader<R> {
         chunk.clear();
         chunk.first_line = self.line;
         if self.format != Format::JsonArray {
-            while chunk.starts.len() < CHUNK {
-                let start = chunk.text.len();
-                let mut text = std::mem::take(&mut chunk.text);
-                let n = self.read_line(&mut text);
-                chunk.text = text;
-                if n? == 0 {
-                    return Ok(true);
-                }
-                chunk.starts.push(start);
-                if self.format == Format::Csv && !self.data_seen {
-                    let t = chunk.text[start..].trim();
-                    if !t.is_empty() && !t.starts_with('#') {
-                        self.data_seen = true;
-                        if let Some(names) = csv_header(t) {
-                            if let Some(n) = self.columns.filter(|&n| n != names) {
-                                return Err(InputError {
-                                    file: self.file.clone(),
-                                    line: Some(self.line),
-                                    column: None,
-                                    key: None,
-                                    problem: Box::new(Problem::HeaderWidth { names, expected: n }),
-                                    named_at: None,
-                                });
-                            }
-                            // the header is kept as a blank row, so that row i stays line
-                            // first_line + i
-                            chunk.text.truncate(start);
-                        }
-                    }
-                }
-                self.line += 1;
-            }
-            return Ok(false);
+            return self.read_lines(chunk);
         }
         self.read_array(chunk)
+    }
+
+    /// Line formats: the next lines into `chunk` (at most [`CHUNK`]); true at the end of the
+    /// file. The first line (which may start with a byte-order mark) and, in CSV, the lines up
+    /// to the first data line (which may be a header) are read one by one, the rest in bulk.
+    fn read_lines(&mut self, chunk: &mut Chunk) -> Result<bool, InputError> {
+        while chunk.starts.len() < CHUNK
+            && (!self.bulk || self.line == 1 || (self.format == Format::Csv && !self.data_seen))
+        {
+            let start = chunk.text.len();
+            let mut text = std::mem::take(&mut chunk.text);
+            let n = self.read_line(&mut text);
+            chunk.text = text;
+            if n? == 0 {
+                return Ok(true);
+            }
+            chunk.starts.push(start);
+            if self.format == Format::Csv && !self.data_seen {
+                let t = chunk.text[start..].trim();
+                if !t.is_empty() && !t.starts_with('#') {
+                    self.data_seen = true;
+                    if let Some(names) = csv_header(t) {
+                        if let Some(n) = self.columns.filter(|&n| n != names) {
+                            return Err(InputError {
+                                file: self.file.clone(),
+                                line: Some(self.line),
+                                column: None,
+                                key: None,
+                                problem: Box::new(Problem::HeaderWidth { names, expected: n }),
+                                named_at: None,
+                            });
+                        }
+                        // the header is kept as a blank row, so that row i stays line
+                        // first_line + i
+                        chunk.text.truncate(start);
+                    }
+                }
+            }
+            self.line += 1;
+        }
+        self.read_bulk(chunk)
+    }
+
+    /// Whole lines appended to `chunk` until it holds [`CHUNK`] rows or the file ends (true
+    /// then): the bytes copied straight from the reader's buffer, each line found by `memchr`,
+    /// and checked UTF-8 in one pass at the end. The errors are [`Self::read_line`]'s, for the
+    /// first line that has one: a line not UTF-8 (before any later line's), longer than
+    /// [`MAX_ROW_BYTES`], or that cannot be read.
+    fn read_bulk(&mut self, chunk: &mut Chunk) -> Result<bool, InputError> {
+        let mut bytes = std::mem::take(&mut chunk.text).into_bytes();
+        // where the line being read starts in `bytes`
+        let mut line_start = bytes.len();
+        let result = loop {
+            if chunk.starts.len() == CHUNK {
+                break Ok(false);
+            }
+            let buf = match self.reader.fill_buf() {
+                Ok(buf) => buf,
+                Err(e) => {
+                    break Err(InputError::file(
+                        &self.file,
+                        RowsProblem::CannotReadLine {
+                            line: self.line,
+                            reason: plain_io_error(&e),
+                        },
+                    ));
+                }
+            };
+            if buf.is_empty() {
+                if bytes.len() > line_start {
+                    // a last line without a line ending
+                    chunk.starts.push(line_start);
+                    line_start = bytes.len();
+                    self.line += 1;
+                }
+                break Ok(true);
+            }
+            let mut used = 0;
+            let mut too_long = false;
+            while chunk.starts.len() < CHUNK && used < buf.len() {
+                let rest = &buf[used..];
+                let (take, done) = match memchr::memchr(b'\n', rest) {
+                    Some(i) => (i + 1, true),
+                    None => (rest.len(), false),
+                };
+                if bytes.len() - line_start + take > MAX_ROW_BYTES {
+                    too_long = true;
+                    break;
+                }
+                bytes.extend_from_slice(&rest[..take]);
+                used += take;
+                if done {
+                    chunk.starts.push(line_start);
+                    line_start = bytes.len();
+                    self.line += 1;
+                }
+            }
+            self.reader.consume(used);
+            if too_long {
+                break Err(InputError::at(
+                    &self.file,
+                    Some(self.line),
+                    None,
+                    RowsProblem::LineTooLong {
+                        limit_mib: MAX_ROW_BYTES >> 20,
+                    },
+                ));
+            }
+        };
+        // the complete lines (a partial one is left only by an error, which comes after them)
+        bytes.truncate(line_start);
+        match String::from_utf8(bytes) {
+            Ok(text) => chunk.text = text,
+            Err(e) => {
+                let at = e.utf8_error().valid_up_to();
+                let bytes = e.into_bytes();
+                let i = chunk.starts.partition_point(|&s| s <= at) - 1;
+                let start = chunk.starts[i];
+                let end = chunk.starts.get(i + 1).copied().unwrap_or(bytes.len());
+                let mut err = not_utf8(&self.file, &bytes[start..end], at - start);
+                err.line = Some(chunk.first_line + i);
+                return Err(err);
+            }
+        }
+        result
     }
 
     /// A JSON array of rows: scan it (brackets, strings and escapes), cutting out each row's
@@ -898,6 +995,65 @@ mod tests {
                     assert_eq!((inputs, claimed), (i, c), "{row:?} {p:?}");
                 }
             }
+        }
+    }
+
+    /// Every chunk and error of `text` read by `reader` (buffer of `capacity` bytes, in bulk or
+    /// line by line).
+    fn chunks(
+        text: &[u8],
+        format: Format,
+        capacity: usize,
+        bulk: bool,
+    ) -> (Vec<(usize, Vec<usize>, String)>, Option<String>) {
+        let reader = std::io::BufReader::with_capacity(capacity, text);
+        let mut rows = RowReader::new(reader, format, "f").expect_columns(2);
+        rows.bulk = bulk;
+        let mut out = Vec::new();
+        let mut chunk = Chunk::default();
+        loop {
+            match rows.read(&mut chunk) {
+                Ok(eof) => {
+                    out.push((chunk.first_line, chunk.starts.clone(), chunk.text.clone()));
+                    if eof {
+                        return (out, None);
+                    }
+                }
+                Err(e) => return (out, Some(e.to_string())),
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// Lines read in bulk are the lines read one by one: the same rows, line numbers and
+        /// errors (a byte-order mark, a header, comments, blank lines, CRLF, no final line
+        /// ending, bytes that are not UTF-8), whatever the buffer size.
+        #[test]
+        fn lines_read_in_bulk_are_lines_read_one_by_one(
+            lines in proptest::collection::vec(0usize..9, 0..40),
+            bom in proptest::bool::ANY,
+            end in proptest::bool::ANY,
+            capacity in 1usize..64,
+            json in proptest::bool::ANY,
+        ) {
+            let pool: [&[u8]; 9] = [
+                b"1,2", b"0.5,-3e4", b"", b"# c", b"x,y", b"1,\xff", b"\xe2\x82", b"\"\xc3\xa9\",1", b" 1 , 2 ",
+            ];
+            let mut text = Vec::new();
+            if bom {
+                text.extend_from_slice(BOM.as_bytes());
+            }
+            for (i, &k) in lines.iter().enumerate() {
+                text.extend_from_slice(pool[k]);
+                if i + 1 < lines.len() || end {
+                    text.extend_from_slice(if i % 3 == 0 { b"\r\n" } else { b"\n" });
+                }
+            }
+            let format = if json { Format::JsonLines } else { Format::Csv };
+            proptest::prop_assert_eq!(
+                chunks(&text, format, capacity, true),
+                chunks(&text, format, capacity, false)
+            );
         }
     }
 
