@@ -1057,6 +1057,21 @@ mod tests {
         }
     }
 
+    /// A line longer than [`MAX_ROW_BYTES`] after the first is the same error in bulk, and a
+    /// line not UTF-8 before it comes first.
+    #[test]
+    fn a_long_line_read_in_bulk_is_the_error_of_a_line_read_alone() {
+        let long = vec![b'1'; MAX_ROW_BYTES];
+        for before in [&b"1,2\n3,4\n"[..], b"1,2\n3,\xff\n"] {
+            let mut text = before.to_vec();
+            text.extend_from_slice(&long);
+            text.extend_from_slice(b"\n5,6\n");
+            let bulk = chunks(&text, Format::Csv, 1 << 20, true);
+            assert_eq!(bulk, chunks(&text, Format::Csv, 1 << 20, false));
+            assert!(bulk.1.is_some());
+        }
+    }
+
     #[test]
     fn the_format_is_told_by_the_first_two_non_space_characters() {
         let dir = std::env::temp_dir().join(format!("tribez-format-{}", std::process::id()));
