@@ -466,3 +466,82 @@ proptest! {
         }
     }
 }
+
+/// A number as a results file may spell it (`style` picks the spelling): each spelling denotes
+/// `x` exactly, except the decimal exponent form, which rounds to it.
+fn spelled(x: f64, style: u8) -> String {
+    use tribez::hazmat::number::hex_f64;
+    match style % 6 {
+        _ if !x.is_finite() => "NaN".into(),
+        0 | 1 => format!("{x:?}"),
+        2 => format!(" {x:?}\t"),
+        3 => format!("\"{x:?}\""),
+        4 => format!("{x:e}"),
+        _ => hex_f64(x),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+    /// The CSV path judges most rows from their floats alone (parsed straight from the text,
+    /// decided by the float filter, the report's failures and worst row kept per slab of rows);
+    /// JSON lines and rows in memory take the full path (every number parsed in full, every row
+    /// noted in order). Over thousands of rows (several slabs), many ties for the worst row,
+    /// failures, NaNs, blank and comment lines, quoted, spaced and hex numbers, the reports are
+    /// the same, text and JSON, byte for byte.
+    #[test]
+    fn the_csv_fast_path_gives_the_reports_of_the_full_path(
+        spec in prop::collection::vec(row_spec(), 1..3),
+        repeat in 1usize..4000,
+        styles in prop::collection::vec(any::<u8>(), 1..64),
+        extra in prop::collection::vec((0usize..9000, any::<bool>()), 0..4),
+        tolerance in prop::sample::select(vec!["ulps=1", "ulps=1/2", "cond=9", "exact", "correctly_rounded"]),
+        f32 in proptest::bool::weighted(0.2),
+        header in any::<bool>(),
+    ) {
+        // the spec's rows over and over, then a few rows of their own
+        let mut all: Vec<_> = spec.iter().cycle().take(spec.len() * repeat).cloned().collect();
+        all.extend((0..50).map(|i| (f64::from(i) / 50.0, 0.5, [Some((i % 7) as i8 - 3), Some(0), None])));
+        let (points, values) = rows(&all);
+        let options = BatchOptions {
+            tolerance: Tolerance::parse(tolerance).unwrap(),
+            precision: Some(if f32 { Precision::F32 } else { Precision::F64 }),
+            ..BatchOptions::default()
+        };
+        let c = BatchChecker::new(finn(), &options).unwrap();
+        let (mut csv, mut jsonl) = (String::new(), String::new());
+        if header {
+            csv.push_str("u,v,w,x,y,z\n");
+            jsonl.push('\n');
+        }
+        let mut lines = 0;
+        for (i, (p, v)) in points.chunks(3).zip(values.chunks(3)).enumerate() {
+            for &(at, comment) in &extra {
+                if at == i {
+                    let line = if comment { "# a comment\n" } else { "\n" };
+                    csv.push_str(line);
+                    jsonl.push_str(line);
+                    lines += 1;
+                }
+            }
+            let texts: Vec<String> = p.iter().chain(v).enumerate()
+                .map(|(k, &x)| spelled(x, styles[(i * 6 + k) % styles.len()]))
+                .collect();
+            csv.push_str(&texts.join(","));
+            csv.push_str(if i % 2 == 0 { "\n" } else { "\r\n" });
+            let quoted: Vec<String> = texts.iter().map(|t| format!("\"{}\"", t.trim().trim_matches('"'))).collect();
+            jsonl.push_str(&format!("[{}]\n", quoted.join(", ")));
+        }
+        let check = |text: &str, format| {
+            c.check_reader(text.as_bytes(), format, "<memory>", "finn", &mut |_, _| {}).unwrap()
+        };
+        let fast = check(&csv, Format::Csv);
+        let full = check(&jsonl, Format::JsonLines);
+        prop_assert_eq!(fast.text(), full.text());
+        prop_assert_eq!(fast.json(), full.json());
+        if lines == 0 && !header {
+            let memory = c.check_rows(&points, &values, 1, "<memory>", "finn").unwrap().0;
+            same(&fast, &memory);
+        }
+    }
+}

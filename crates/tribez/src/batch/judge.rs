@@ -23,13 +23,11 @@ pub(super) struct RowOutcome {
     pub(super) ulps: f64,
     /// A lower bound on it (equal to `ulps` when computed exactly).
     pub(super) ulps_lower: f64,
-    /// The ULP figures are the plain filter stage's loose bounds (to be tightened by
-    /// [`Prepared::settle_ulps`]).
-    pub(super) loose: bool,
-    /// The ULP figures were computed exactly by [`Prepared::settle_ulps`] (the verdict was not).
+    /// The ULP figures were computed exactly by [`Prepared::filtered`] (the verdict was not).
     pub(super) settled_exactly: bool,
     pub(super) failure: Option<String>,
-    /// The parsed row (kept for failures and the worst row, to report them exactly).
+    /// The parsed row (kept for failures and the worst row, to report them exactly); empty for
+    /// a row [`Prepared::filtered`] decided, until its caller fills them.
     pub(super) inputs: Vec<Num>,
     pub(super) claimed: Vec<Num>,
 }
@@ -240,7 +238,8 @@ impl Prepared {
         (pass, worst, reason, coords)
     }
 
-    /// Judge one row: filter first, exact when undecided.
+    /// Judge one row: filter first, exact when undecided; the ULP figures settled as
+    /// [`Prepared::filtered`] settles them.
     pub(super) fn row(
         &self,
         line: usize,
@@ -257,70 +256,17 @@ impl Prepared {
                 fell_back: false,
                 ulps: f64::INFINITY,
                 ulps_lower: f64::INFINITY,
-                loose: false,
                 settled_exactly: false,
                 failure: reason,
                 inputs,
                 claimed,
             };
         }
-        if let Some((filter, th)) = &self.filter {
-            let (sc, enc, lambda, ys) = load(scratch, &inputs, &claimed, filter.dim());
-            let RowJudgement {
-                decision,
-                ulps,
-                ulps_lower,
-                tight,
-            } = match &self.cartesian_map {
-                None => filter.judge_tight(th, lambda, ys, sc, enc),
-                Some(map) => {
-                    let (mut bary, mut radius) = (Vec::new(), Vec::new());
-                    if map.barycentric(lambda, &mut bary, &mut radius) {
-                        filter.judge_tight_uncertain(th, &bary, &radius, ys, sc, enc)
-                    } else {
-                        RowJudgement {
-                            decision: Decision::Undecided,
-                            ulps: f64::INFINITY,
-                            ulps_lower: 0.0,
-                            tight: false,
-                        }
-                    }
-                }
-            };
-            // Cartesian figures are rigorous but never "loose" plain-stage ones: the settling
-            // pass (barycentric inputs only) computes straddling rows exactly instead
-            let tight = tight || self.cartesian_map.is_some();
-            match decision {
-                Decision::Pass => {
-                    return RowOutcome {
-                        line,
-                        pass: true,
-                        fell_back: false,
-                        ulps,
-                        ulps_lower,
-                        loose: !tight,
-                        settled_exactly: false,
-                        failure: None,
-                        inputs,
-                        claimed,
-                    };
-                }
-                Decision::Fail => {
-                    return RowOutcome {
-                        line,
-                        pass: false,
-                        fell_back: false,
-                        ulps,
-                        ulps_lower,
-                        loose: !tight,
-                        settled_exactly: false,
-                        failure: Some(String::new()),
-                        inputs,
-                        claimed,
-                    };
-                }
-                Decision::Undecided => {}
-            }
+        scratch.load(&inputs, &claimed);
+        if let Some(mut o) = self.filtered(line, scratch) {
+            o.inputs = inputs;
+            o.claimed = claimed;
+            return o;
         }
         let (pass, ulps, reason, _) = self.exact_row(&inputs, &claimed, None, false);
         RowOutcome {
@@ -329,27 +275,109 @@ impl Prepared {
             fell_back: self.filter.is_some(),
             ulps,
             ulps_lower: ulps,
-            loose: false,
             settled_exactly: false,
             failure: if pass { None } else { reason },
             inputs,
             claimed,
         }
     }
+
+    /// Judge a row of finite floats (in `scratch.lambda` and `scratch.ys`: the numbers as the
+    /// code saw them) by the float filter alone, and settle its ULP figures: `None` when there
+    /// is no filter or it cannot decide (the row then needs exact arithmetic). The outcome's
+    /// numbers (`inputs`, `claimed`) are left empty, for the caller to fill when it keeps the
+    /// row.
+    ///
+    /// Settling, for the histogram and the worst-row search: a row the plain filter stage
+    /// decided gets the compensated enclosure (the errors, to a small fraction of an ulp,
+    /// instead of the looseness of the plain bounds); a row whose enclosure still straddles a
+    /// histogram boundary (an error that may be exactly 0, or exactly 1/2 ulp as at a rounding
+    /// midpoint) is computed exactly, so every row lands in its true bucket. Cartesian rows keep
+    /// the widened enclosure's ends (upper bounds, like every filter-decided row's figures);
+    /// settling straddling rows exactly would cost the exact arithmetic the filter saved for
+    /// most rows (their enclosures are a few ulps wide).
+    pub(super) fn filtered(&self, line: usize, scratch: &mut RowScratch) -> Option<RowOutcome> {
+        let (filter, th) = self.filter.as_ref()?;
+        let RowScratch {
+            filter: sc,
+            enc,
+            lambda,
+            ys,
+            bary,
+            radius,
+        } = scratch;
+        enc.resize(filter.dim(), Enclosure::default());
+        let RowJudgement {
+            decision,
+            mut ulps,
+            mut ulps_lower,
+            tight,
+        } = match &self.cartesian_map {
+            None => filter.judge_tight(th, lambda, ys, sc, enc),
+            Some(map) => {
+                if map.barycentric(lambda, bary, radius) {
+                    filter.judge_tight_uncertain(th, bary, radius, ys, sc, enc)
+                } else {
+                    RowJudgement {
+                        decision: Decision::Undecided,
+                        ulps: f64::INFINITY,
+                        ulps_lower: 0.0,
+                        tight: false,
+                    }
+                }
+            }
+        };
+        let pass = match decision {
+            Decision::Pass => true,
+            Decision::Fail => false,
+            Decision::Undecided => return None,
+        };
+        let mut settled_exactly = false;
+        if ulps.is_finite() && self.cartesian_map.is_none() {
+            if !tight {
+                let (lo, hi) = filter.ulps_bounds(th, lambda, ys, sc, enc);
+                ulps_lower = ulps_lower.max(lo);
+                ulps = ulps.min(hi);
+            }
+            use super::UlpHistogram;
+            if UlpHistogram::bucket(ulps_lower) != UlpHistogram::bucket(ulps) {
+                ulps = self.exact_ulps(lambda, ys);
+                ulps_lower = ulps;
+                settled_exactly = true;
+            }
+        }
+        Some(RowOutcome {
+            line,
+            pass,
+            fell_back: false,
+            ulps,
+            ulps_lower,
+            settled_exactly,
+            failure: (!pass).then(String::new),
+            inputs: Vec::new(),
+            claimed: Vec::new(),
+        })
+    }
 }
 
 impl Prepared {
-    /// The row's largest error in ULPs, computed exactly (the numbers as floats of the batch's
-    /// precision; no verdict, condition number or report figures: the histogram's lean path).
-    fn exact_ulps(&self, inputs: &[Num], claimed: &[Num]) -> f64 {
-        let Some(lambda) = self.seen_point(inputs) else {
+    /// The row's largest error in ULPs, computed exactly, from its finite floats (the numbers as
+    /// the code saw them, with a precision; no verdict, condition number or report figures: the
+    /// histogram's lean path).
+    fn exact_ulps(&self, inputs: &[f64], claimed: &[f64]) -> f64 {
+        let Some(lambda) = inputs
+            .iter()
+            .map(|&x| crate::number::exact_f64(x))
+            .collect::<Option<Vec<_>>>()
+            .and_then(|x| self.barycentric(x))
+        else {
             return f64::INFINITY;
         };
         let exact = self.seen.evaluate_fast(&lambda);
         claimed
             .iter()
             .zip(&exact)
-            .map(|(y, q)| match self.seen_value(y) {
+            .map(|(&y, q)| match crate::number::exact_f64(y) {
                 None => f64::INFINITY,
                 Some(yq) if &yq == q => 0.0,
                 Some(yq) => {
@@ -362,67 +390,32 @@ impl Prepared {
             })
             .fold(0.0, f64::max)
     }
+}
 
-    /// Settle a row's ULP figures for the histogram and the worst-row search: a row the plain
-    /// filter stage decided gets the compensated enclosure (the errors, to a small fraction of an
-    /// ulp, instead of the looseness of the plain bounds); a row whose enclosure still straddles
-    /// a histogram boundary (an error that may be exactly 0, or exactly 1/2 ulp as at a rounding
-    /// midpoint) is computed exactly, so every row lands in its true bucket.
-    pub(super) fn settle_ulps(&self, o: &mut RowOutcome, scratch: &mut RowScratch) {
-        let Some((filter, th)) = &self.filter else {
-            return;
+/// Per-thread buffers of the judge: the filter's scratch and enclosures, the row's inputs and
+/// claimed values as floats, and (Cartesian rows) its barycentric coordinates with their radii.
+#[derive(Default)]
+pub(super) struct RowScratch {
+    filter: Scratch,
+    enc: Vec<Enclosure>,
+    /// The row's inputs as floats.
+    pub(super) lambda: Vec<f64>,
+    /// The row's claimed coordinates as floats.
+    pub(super) ys: Vec<f64>,
+    bary: Vec<f64>,
+    radius: Vec<f64>,
+}
+
+impl RowScratch {
+    /// Load a row's numbers as floats (NaN for a number that is not finite).
+    fn load(&mut self, inputs: &[Num], claimed: &[Num]) {
+        let float = |x: &Num| match x {
+            Num::Value { float, .. } => *float,
+            Num::NotFinite(_) => f64::NAN,
         };
-        if !o.ulps.is_finite() {
-            return;
-        }
-        // Cartesian rows: the widened enclosure's ends are the figures (upper bounds, like every
-        // filter-decided row's); settling straddling rows exactly would cost the exact
-        // arithmetic the filter saved for most rows (their enclosures are a few ulps wide)
-        if self.cartesian_map.is_some() {
-            return;
-        }
-        if o.loose {
-            let (sc, enc, lambda, ys) = load(scratch, &o.inputs, &o.claimed, filter.dim());
-            let (lo, hi) = filter.ulps_bounds(th, lambda, ys, sc, enc);
-            o.ulps_lower = o.ulps_lower.max(lo);
-            o.ulps = o.ulps.min(hi);
-            o.loose = false;
-        }
-        use super::UlpHistogram;
-        if UlpHistogram::bucket(o.ulps_lower) != UlpHistogram::bucket(o.ulps) {
-            let u = self.exact_ulps(&o.inputs, &o.claimed);
-            o.ulps = u;
-            o.ulps_lower = u;
-            o.settled_exactly = true;
-        }
+        self.lambda.clear();
+        self.lambda.extend(inputs.iter().map(float));
+        self.ys.clear();
+        self.ys.extend(claimed.iter().map(float));
     }
 }
-
-/// Load a row's numbers as floats into the thread's buffers (`dim` enclosures ready).
-fn load<'a>(
-    scratch: &'a mut RowScratch,
-    inputs: &[Num],
-    claimed: &[Num],
-    dim: usize,
-) -> (
-    &'a mut Scratch,
-    &'a mut Vec<Enclosure>,
-    &'a mut Vec<f64>,
-    &'a mut Vec<f64>,
-) {
-    let float = |x: &Num| match x {
-        Num::Value { float, .. } => *float,
-        Num::NotFinite(_) => f64::NAN,
-    };
-    let (sc, enc, lambda, ys) = scratch;
-    lambda.clear();
-    lambda.extend(inputs.iter().map(float));
-    ys.clear();
-    ys.extend(claimed.iter().map(float));
-    enc.resize(dim, Enclosure::default());
-    (sc, enc, lambda, ys)
-}
-
-/// Per-thread buffers of the filter: its scratch, the enclosures, the row's inputs and claimed
-/// values as floats.
-pub(super) type RowScratch = (Scratch, Vec<Enclosure>, Vec<f64>, Vec<f64>);

@@ -53,7 +53,7 @@ pub(super) fn parse_num(
     file: &str,
     line: usize,
 ) -> Result<Num, InputError> {
-    let t = f.text.trim().trim_matches('"');
+    let t = unquoted(f.text);
     let body = t.trim_start_matches(['+', '-']);
     let named = |name: &str| body.eq_ignore_ascii_case(name);
     if t.is_empty() || named("nan") || named("inf") || named("infinity") {
@@ -73,12 +73,7 @@ pub(super) fn parse_num(
     };
     match precision {
         Some(p) => {
-            // Fast path: the standard library's correctly rounded decimal parsing.
-            let fast = match p {
-                Precision::F64 => t.parse::<f64>().ok(),
-                Precision::F32 => t.parse::<f32>().ok().map(f64::from),
-            };
-            if let Some(x) = fast {
+            if let Some(x) = std_float(t, p) {
                 if x.is_finite() {
                     return Ok(Num::Value {
                         float: x,
@@ -106,6 +101,72 @@ pub(super) fn parse_num(
             })
         }
     }
+}
+
+/// A field's text without the white space and double quotes around it.
+fn unquoted(text: &str) -> &str {
+    // a field that starts and ends with a printable ASCII character other than `"` (most of
+    // them) is its own text: neither trim removes anything
+    let bare = |b: Option<&u8>| b.is_some_and(|&b| b.is_ascii_graphic() && b != b'"');
+    let bytes = text.as_bytes();
+    if bare(bytes.first()) && bare(bytes.last()) {
+        text
+    } else {
+        text.trim().trim_matches('"')
+    }
+}
+
+/// The standard library's correctly rounded parse of a number's text to the float of `p`
+/// nearest it (the fast path of [`parse_num`]; `None` for text it does not take, such as
+/// fractions and hex floats).
+fn std_float(t: &str, p: Precision) -> Option<f64> {
+    match p {
+        Precision::F64 => t.parse::<f64>().ok(),
+        Precision::F32 => t.parse::<f32>().ok().map(f64::from),
+    }
+}
+
+/// The numbers of a CSV row as floats of `p`, straight from its text: its `inputs.len() =
+/// width` input numbers and `claimed.len() = dim` claimed ones (the buffers are cleared
+/// first), when the row has `width + dim` fields and [`std_float`] reads every one of them
+/// as a finite float: then [`parse_row`] would give these floats (each a `Num::Value` without
+/// `text_exact`). `false` for any other row (blank and comment lines, other numbers, errors),
+/// which [`parse_row`] then reads. No allocation once the buffers have grown.
+pub(super) fn csv_floats(
+    row: &str,
+    width: usize,
+    dim: usize,
+    p: Precision,
+    inputs: &mut Vec<f64>,
+    claimed: &mut Vec<f64>,
+) -> bool {
+    inputs.clear();
+    claimed.clear();
+    // the line ending is white space the last field's trim would drop; the commas are found
+    // in one pass over the row (`str::split` calls `memchr` once per field, slow on short ones)
+    let row = row.trim_ascii_end();
+    let mut start = 0;
+    let fields = memchr::memchr_iter(b',', row.as_bytes())
+        .chain([row.len()])
+        .map(|end| {
+            let field = &row[start..end];
+            start = end + 1;
+            field
+        });
+    for (i, field) in fields.enumerate() {
+        let x = match std_float(unquoted(field), p) {
+            Some(x) if x.is_finite() => x,
+            _ => return false,
+        };
+        if i < width {
+            inputs.push(x);
+        } else if i < width + dim {
+            claimed.push(x);
+        } else {
+            return false;
+        }
+    }
+    inputs.len() == width && claimed.len() == dim
 }
 
 impl Num {
@@ -279,6 +340,9 @@ pub(super) struct RowReader<R> {
     data_seen: bool,
     /// JSON array: how many bytes of a byte-order mark have been skipped.
     bom: usize,
+    /// Line formats: read lines in bulk after the first ([`Self::read_lines`]); false: every
+    /// line one by one (the reference the tests hold the bulk reading to).
+    bulk: bool,
 }
 
 impl<R: BufRead> RowReader<R> {
@@ -296,6 +360,7 @@ impl<R: BufRead> RowReader<R> {
             columns: None,
             data_seen: false,
             bom: 0,
+            bulk: true,
         }
     }
 
@@ -364,41 +429,134 @@ impl<R: BufRead> RowReader<R> {
         chunk.clear();
         chunk.first_line = self.line;
         if self.format != Format::JsonArray {
-            while chunk.starts.len() < CHUNK {
-                let start = chunk.text.len();
-                let mut text = std::mem::take(&mut chunk.text);
-                let n = self.read_line(&mut text);
-                chunk.text = text;
-                if n? == 0 {
-                    return Ok(true);
-                }
-                chunk.starts.push(start);
-                if self.format == Format::Csv && !self.data_seen {
-                    let t = chunk.text[start..].trim();
-                    if !t.is_empty() && !t.starts_with('#') {
-                        self.data_seen = true;
-                        if let Some(names) = csv_header(t) {
-                            if let Some(n) = self.columns.filter(|&n| n != names) {
-                                return Err(InputError {
-                                    file: self.file.clone(),
-                                    line: Some(self.line),
-                                    column: None,
-                                    key: None,
-                                    problem: Box::new(Problem::HeaderWidth { names, expected: n }),
-                                    named_at: None,
-                                });
-                            }
-                            // the header is kept as a blank row, so that row i stays line
-                            // first_line + i
-                            chunk.text.truncate(start);
-                        }
-                    }
-                }
-                self.line += 1;
-            }
-            return Ok(false);
+            return self.read_lines(chunk);
         }
         self.read_array(chunk)
+    }
+
+    /// Line formats: the next lines into `chunk` (at most [`CHUNK`]); true at the end of the
+    /// file. The first line (which may start with a byte-order mark) and, in CSV, the lines up
+    /// to the first data line (which may be a header) are read one by one, the rest in bulk.
+    fn read_lines(&mut self, chunk: &mut Chunk) -> Result<bool, InputError> {
+        while chunk.starts.len() < CHUNK
+            && (!self.bulk || self.line == 1 || (self.format == Format::Csv && !self.data_seen))
+        {
+            let start = chunk.text.len();
+            let mut text = std::mem::take(&mut chunk.text);
+            let n = self.read_line(&mut text);
+            chunk.text = text;
+            if n? == 0 {
+                return Ok(true);
+            }
+            chunk.starts.push(start);
+            if self.format == Format::Csv && !self.data_seen {
+                let t = chunk.text[start..].trim();
+                if !t.is_empty() && !t.starts_with('#') {
+                    self.data_seen = true;
+                    if let Some(names) = csv_header(t) {
+                        if let Some(n) = self.columns.filter(|&n| n != names) {
+                            return Err(InputError {
+                                file: self.file.clone(),
+                                line: Some(self.line),
+                                column: None,
+                                key: None,
+                                problem: Box::new(Problem::HeaderWidth { names, expected: n }),
+                                named_at: None,
+                            });
+                        }
+                        // the header is kept as a blank row, so that row i stays line
+                        // first_line + i
+                        chunk.text.truncate(start);
+                    }
+                }
+            }
+            self.line += 1;
+        }
+        self.read_bulk(chunk)
+    }
+
+    /// Whole lines appended to `chunk` until it holds [`CHUNK`] rows or the file ends (true
+    /// then): the bytes copied straight from the reader's buffer, each line found by `memchr`,
+    /// and checked UTF-8 in one pass at the end. The errors are [`Self::read_line`]'s, for the
+    /// first line that has one: a line not UTF-8 (before any later line's), longer than
+    /// [`MAX_ROW_BYTES`], or that cannot be read.
+    fn read_bulk(&mut self, chunk: &mut Chunk) -> Result<bool, InputError> {
+        let mut bytes = std::mem::take(&mut chunk.text).into_bytes();
+        // where the line being read starts in `bytes`
+        let mut line_start = bytes.len();
+        let result = loop {
+            if chunk.starts.len() == CHUNK {
+                break Ok(false);
+            }
+            let buf = match self.reader.fill_buf() {
+                Ok(buf) => buf,
+                Err(e) => {
+                    break Err(InputError::file(
+                        &self.file,
+                        RowsProblem::CannotReadLine {
+                            line: self.line,
+                            reason: plain_io_error(&e),
+                        },
+                    ));
+                }
+            };
+            if buf.is_empty() {
+                if bytes.len() > line_start {
+                    // a last line without a line ending
+                    chunk.starts.push(line_start);
+                    line_start = bytes.len();
+                    self.line += 1;
+                }
+                break Ok(true);
+            }
+            let mut used = 0;
+            let mut too_long = false;
+            while chunk.starts.len() < CHUNK && used < buf.len() {
+                let rest = &buf[used..];
+                let (take, done) = match memchr::memchr(b'\n', rest) {
+                    Some(i) => (i + 1, true),
+                    None => (rest.len(), false),
+                };
+                if bytes.len() - line_start + take > MAX_ROW_BYTES {
+                    too_long = true;
+                    break;
+                }
+                bytes.extend_from_slice(&rest[..take]);
+                used += take;
+                if done {
+                    chunk.starts.push(line_start);
+                    line_start = bytes.len();
+                    self.line += 1;
+                }
+            }
+            self.reader.consume(used);
+            if too_long {
+                break Err(InputError::at(
+                    &self.file,
+                    Some(self.line),
+                    None,
+                    RowsProblem::LineTooLong {
+                        limit_mib: MAX_ROW_BYTES >> 20,
+                    },
+                ));
+            }
+        };
+        // the complete lines (a partial one is left only by an error, which comes after them)
+        bytes.truncate(line_start);
+        match String::from_utf8(bytes) {
+            Ok(text) => chunk.text = text,
+            Err(e) => {
+                let at = e.utf8_error().valid_up_to();
+                let bytes = e.into_bytes();
+                let i = chunk.starts.partition_point(|&s| s <= at) - 1;
+                let start = chunk.starts[i];
+                let end = chunk.starts.get(i + 1).copied().unwrap_or(bytes.len());
+                let mut err = not_utf8(&self.file, &bytes[start..end], at - start);
+                err.line = Some(chunk.first_line + i);
+                return Err(err);
+            }
+        }
+        result
     }
 
     /// A JSON array of rows: scan it (brackets, strings and escapes), cutting out each row's
@@ -721,7 +879,7 @@ pub(super) fn texts_of(
     };
     fields
         .iter()
-        .map(|f| f.text.trim().trim_matches('"').to_string())
+        .map(|f| unquoted(f.text).to_string())
         .collect()
 }
 
@@ -784,6 +942,133 @@ mod tests {
         let at: Vec<(usize, usize, &str)> =
             fields.iter().map(|(l, f)| (*l, f.column, f.text)).collect();
         assert_eq!(at, vec![(2, 5, "1"), (2, 8, "\"a]\\\"b\""), (2, 17, "2")]);
+    }
+
+    /// [`csv_floats`] reads a row exactly when [`parse_row`] gives finite floats without exact
+    /// values, and then reads the same floats.
+    #[test]
+    fn csv_floats_agree_with_parse_row() {
+        let rows = [
+            "0.5,0.25,0.25,1,2,3\n",
+            "0.5,0.25,0.25,1,2,3",
+            "0.5,0.25,0.25,1,2,3\r\n",
+            " 0.5 ,\t0.25,\"0.25\",+1e0,-2.5E-3,3.\n",
+            "\u{a0}0.5,.25,0.25,1,2,3\n",
+            "0.5,0.25,0.25,1,2\n",
+            "0.5,0.25,0.25,1,2,3,4\n",
+            "0.5,0.25,0.25,1,2,\n",
+            "0.5,0.25,0.25,1,nan,3\n",
+            "0.5,0.25,0.25,1,-inf,3\n",
+            "0.5,0.25,0.25,1,1e400,3\n",
+            "0.5,0.25,0.25,1,1e39,3\n",
+            "0x1.8p-1,0.25,0.25,1,2,3\n",
+            "1/2,0.25,0.25,1,2,3\n",
+            "0.5,0.25,0.25,1,2,3 # note\n",
+            "# 0.5,0.25,0.25,1,2,3\n",
+            "\n",
+            "1e-400,0.25,0.25,1,2,3\n",
+            "0.1000000000000000055511151231257827,0.25,0.25,1,2,3\n",
+        ];
+        for row in rows {
+            for p in [Precision::F64, Precision::F32] {
+                let (mut inputs, mut claimed) = (Vec::new(), Vec::new());
+                let fast = csv_floats(row, 3, 3, p, &mut inputs, &mut claimed);
+                let full = parse_row(Format::Csv, row, 1, 1, 3, 3, Some(p), "f");
+                let floats = |xs: &[Num]| {
+                    xs.iter()
+                        .map(|x| match x {
+                            Num::Value {
+                                float,
+                                text_exact: None,
+                            } => Some(*float),
+                            _ => None,
+                        })
+                        .collect::<Option<Vec<f64>>>()
+                };
+                let plain = match &full {
+                    Ok(Some((i, c))) => floats(i).zip(floats(c)),
+                    _ => None,
+                };
+                assert_eq!(fast, plain.is_some(), "{row:?} {p:?}");
+                if let Some((i, c)) = plain {
+                    assert_eq!((inputs, claimed), (i, c), "{row:?} {p:?}");
+                }
+            }
+        }
+    }
+
+    /// Every chunk and error of `text` read by `reader` (buffer of `capacity` bytes, in bulk or
+    /// line by line).
+    fn chunks(
+        text: &[u8],
+        format: Format,
+        capacity: usize,
+        bulk: bool,
+    ) -> (Vec<(usize, Vec<usize>, String)>, Option<String>) {
+        let reader = std::io::BufReader::with_capacity(capacity, text);
+        let mut rows = RowReader::new(reader, format, "f").expect_columns(2);
+        rows.bulk = bulk;
+        let mut out = Vec::new();
+        let mut chunk = Chunk::default();
+        loop {
+            match rows.read(&mut chunk) {
+                Ok(eof) => {
+                    out.push((chunk.first_line, chunk.starts.clone(), chunk.text.clone()));
+                    if eof {
+                        return (out, None);
+                    }
+                }
+                Err(e) => return (out, Some(e.to_string())),
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// Lines read in bulk are the lines read one by one: the same rows, line numbers and
+        /// errors (a byte-order mark, a header, comments, blank lines, CRLF, no final line
+        /// ending, bytes that are not UTF-8), whatever the buffer size.
+        #[test]
+        fn lines_read_in_bulk_are_lines_read_one_by_one(
+            lines in proptest::collection::vec(0usize..9, 0..40),
+            bom in proptest::bool::ANY,
+            end in proptest::bool::ANY,
+            capacity in 1usize..64,
+            json in proptest::bool::ANY,
+        ) {
+            let pool: [&[u8]; 9] = [
+                b"1,2", b"0.5,-3e4", b"", b"# c", b"x,y", b"1,\xff", b"\xe2\x82", b"\"\xc3\xa9\",1", b" 1 , 2 ",
+            ];
+            let mut text = Vec::new();
+            if bom {
+                text.extend_from_slice(BOM.as_bytes());
+            }
+            for (i, &k) in lines.iter().enumerate() {
+                text.extend_from_slice(pool[k]);
+                if i + 1 < lines.len() || end {
+                    text.extend_from_slice(if i % 3 == 0 { b"\r\n" } else { b"\n" });
+                }
+            }
+            let format = if json { Format::JsonLines } else { Format::Csv };
+            proptest::prop_assert_eq!(
+                chunks(&text, format, capacity, true),
+                chunks(&text, format, capacity, false)
+            );
+        }
+    }
+
+    /// A line longer than [`MAX_ROW_BYTES`] after the first is the same error in bulk, and a
+    /// line not UTF-8 before it comes first.
+    #[test]
+    fn a_long_line_read_in_bulk_is_the_error_of_a_line_read_alone() {
+        let long = vec![b'1'; MAX_ROW_BYTES];
+        for before in [&b"1,2\n3,4\n"[..], b"1,2\n3,\xff\n"] {
+            let mut text = before.to_vec();
+            text.extend_from_slice(&long);
+            text.extend_from_slice(b"\n5,6\n");
+            let bulk = chunks(&text, Format::Csv, 1 << 20, true);
+            assert_eq!(bulk, chunks(&text, Format::Csv, 1 << 20, false));
+            assert!(bulk.1.is_some());
+        }
     }
 
     #[test]

@@ -10,11 +10,8 @@ use std::path::Path;
 use num_rational::BigRational;
 use rayon::prelude::*;
 
-use super::judge::RowScratch;
 use super::parse::{Chunk, Num, RowReader, parse_row};
-use super::{
-    Accumulator, BatchChecker, BatchError, BatchReport, FailedRow, Format, Judged, Source,
-};
+use super::{Accumulator, BatchChecker, BatchError, BatchReport, FailedRow, Format};
 use crate::float::Precision;
 use crate::io::InputError;
 
@@ -35,34 +32,9 @@ impl BatchChecker {
         file: &str,
         patch_name: &str,
     ) -> Result<BatchReport, InputError> {
-        let p = &self.prepared;
-        let (width, dim) = (p.width(), p.patch.net.dim());
-        let mut acc = Accumulator::new(p, file, patch_name, Some(format));
-        let judged: Vec<Option<Judged>> = rows
-            .par_iter()
-            .map_init(
-                RowScratch::default,
-                |scratch, &(no, col, text)| -> Result<Option<Judged>, InputError> {
-                    let Some((inputs, claimed)) =
-                        parse_row(format, text, no, col, width, dim, p.precision, file)?
-                    else {
-                        return Ok(None);
-                    };
-                    Ok(Some(acc.judge(
-                        no,
-                        inputs,
-                        claimed,
-                        &Source::Text(text, col),
-                        scratch,
-                    )))
-                },
-            )
-            .collect::<Result<_, _>>()?;
-        for (j, &(_, col, text)) in judged.into_iter().zip(rows) {
-            if let Some(j) = j {
-                acc.add(j, &Source::Text(text, col));
-            }
-        }
+        let mut acc = Accumulator::new(&self.prepared, file, patch_name, Some(format));
+        let slabs = acc.judge_slabs(rows, format, false);
+        acc.merge(slabs, rows, None)?;
         Ok(acc.finish())
     }
 }
