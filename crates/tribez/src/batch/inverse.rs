@@ -33,7 +33,7 @@ use num_traits::Zero;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::parse::{Chunk, Field, Format, Num, RowReader, cannot_read, parse_num};
+use super::parse::{Chunk, Field, Format, Num, RowReader, open_results, parse_num};
 use super::parse::{split_csv, split_json_row};
 use super::{BatchError, MAX_LISTED};
 use crate::algebraic::{check_locate_patch, check_ray_patch};
@@ -335,10 +335,7 @@ impl InverseBatchChecker {
         patch_name: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<InverseBatchReport, BatchError> {
-        let file = path.display().to_string();
-        let format = Format::of(path, &file)?;
-        let reader =
-            std::fs::File::open(path).map_err(|e| InputError::file(&file, cannot_read(&e)))?;
+        let (file, format, reader) = open_results(path)?;
         self.check_reader(reader, format, &file, patch_name, progress)
     }
 

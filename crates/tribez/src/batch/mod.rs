@@ -180,10 +180,7 @@ impl BatchChecker {
         patch_name: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<BatchReport, BatchError> {
-        let file = path.display().to_string();
-        let format = Format::of(path, &file)?;
-        let reader = std::fs::File::open(path)
-            .map_err(|e| InputError::file(&file, parse::cannot_read(&e)))?;
+        let (file, format, reader) = parse::open_results(path)?;
         self.check_reader(reader, format, &file, patch_name, progress)
     }
 
@@ -196,10 +193,7 @@ impl BatchChecker {
         progress: &mut dyn FnMut(u64, u64),
         row: &mut dyn FnMut(RowPoint),
     ) -> Result<BatchReport, BatchError> {
-        let file = path.display().to_string();
-        let format = Format::of(path, &file)?;
-        let reader = std::fs::File::open(path)
-            .map_err(|e| InputError::file(&file, parse::cannot_read(&e)))?;
+        let (file, format, reader) = parse::open_results(path)?;
         check_reader(
             &self.prepared,
             reader,

@@ -216,6 +216,17 @@ pub enum Format {
     JsonArray,
 }
 
+/// A results file to read: its name as errors and reports give it, its [`Format`], and the file
+/// opened (its errors name the file).
+pub(crate) fn open_results(
+    path: &std::path::Path,
+) -> Result<(String, Format, std::fs::File), InputError> {
+    let file = path.display().to_string();
+    let format = Format::of(path, &file)?;
+    let reader = std::fs::File::open(path).map_err(|e| InputError::file(&file, cannot_read(&e)))?;
+    Ok((file, format, reader))
+}
+
 impl Format {
     /// The format of `path`: by extension, then (for JSON) by its first two non-space characters.
     pub fn of(path: &std::path::Path, file: &str) -> Result<Format, InputError> {
@@ -997,6 +1008,9 @@ mod tests {
         }
     }
 
+    /// A chunk as read: its first line, the starts of its rows, its text.
+    type ChunkRead = (usize, Vec<usize>, String);
+
     /// Every chunk and error of `text` read by `reader` (buffer of `capacity` bytes, in bulk or
     /// line by line).
     fn chunks(
@@ -1004,7 +1018,7 @@ mod tests {
         format: Format,
         capacity: usize,
         bulk: bool,
-    ) -> (Vec<(usize, Vec<usize>, String)>, Option<String>) {
+    ) -> (Vec<ChunkRead>, Option<String>) {
         let reader = std::io::BufReader::with_capacity(capacity, text);
         let mut rows = RowReader::new(reader, format, "f").expect_columns(2);
         rows.bulk = bulk;

@@ -54,10 +54,7 @@ pub fn check_file_routed<'c>(
     checker: &(dyn Fn(usize) -> Result<&'c BatchChecker, BatchError> + Sync),
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<BatchReport, BatchError> {
-    let file = path.display().to_string();
-    let format = Format::of(path, &file)?;
-    let reader = std::fs::File::open(path)
-        .map_err(|e| InputError::file(&file, super::parse::cannot_read(&e)))?;
+    let (file, format, reader) = super::parse::open_results(path)?;
     let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file)
         .expect_columns(width + dim);
     let mut total = template.clone();
