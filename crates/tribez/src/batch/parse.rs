@@ -997,14 +997,12 @@ mod tests {
         }
     }
 
+    /// What a reader read: every chunk (first line, row starts, text), then its error if any.
+    type Read = (Vec<(usize, Vec<usize>, String)>, Option<String>);
+
     /// Every chunk and error of `text` read by `reader` (buffer of `capacity` bytes, in bulk or
     /// line by line).
-    fn chunks(
-        text: &[u8],
-        format: Format,
-        capacity: usize,
-        bulk: bool,
-    ) -> (Vec<(usize, Vec<usize>, String)>, Option<String>) {
+    fn chunks(text: &[u8], format: Format, capacity: usize, bulk: bool) -> Read {
         let reader = std::io::BufReader::with_capacity(capacity, text);
         let mut rows = RowReader::new(reader, format, "f").expect_columns(2);
         rows.bulk = bulk;
