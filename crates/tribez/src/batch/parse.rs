@@ -1008,17 +1008,12 @@ mod tests {
         }
     }
 
-    /// A chunk as read: its first line, the starts of its rows, its text.
-    type ChunkRead = (usize, Vec<usize>, String);
+    /// What a reader read: every chunk (first line, row starts, text), then its error if any.
+    type Read = (Vec<(usize, Vec<usize>, String)>, Option<String>);
 
     /// Every chunk and error of `text` read by `reader` (buffer of `capacity` bytes, in bulk or
     /// line by line).
-    fn chunks(
-        text: &[u8],
-        format: Format,
-        capacity: usize,
-        bulk: bool,
-    ) -> (Vec<ChunkRead>, Option<String>) {
+    fn chunks(text: &[u8], format: Format, capacity: usize, bulk: bool) -> Read {
         let reader = std::io::BufReader::with_capacity(capacity, text);
         let mut rows = RowReader::new(reader, format, "f").expect_columns(2);
         rows.bulk = bulk;
