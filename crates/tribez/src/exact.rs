@@ -293,7 +293,7 @@ mod tests {
         fn horner_kernel_equals_rational_de_casteljau(
             net in net_strategy(),
             raw in proptest::collection::vec((0u64..70_000, 1u64..70_000, any::<bool>()), 4),
-            kind in 0u8..5,
+            kind in 0u8..7,
         ) {
             let m = net.m();
             let lambda: Vec<BigRational> = raw.iter().take(m + 1).map(|&(a, q, neg)| {
@@ -302,6 +302,10 @@ mod tests {
                     1 => (a * u64::from(a % 3 != 0), 1),
                     2 => (a << 40, 1u64 << 50),
                     3 => (a, (q % 8192 + 1) << 50), // lcm may overflow a word: fallback
+                    // Coordinates below 2^16 and 2^8: the triangle rows run in blocks of 4 and
+                    // 8 coordinates per word (17-bit coordinates above: blocks of 3; 57-bit: 1).
+                    5 => (a % 65_536, q % 65_536 + 1),
+                    6 => (a % 256, q % 256 + 1),
                     _ => (a, q),
                 };
                 let x = BigRational::new(BigInt::from(a), BigInt::from(q));

@@ -37,8 +37,8 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::limbs::{
-    add, add_mul, div_exact_odd, gcd_u64, inverse_odd, mul_into, mul_word, mul_word_add_mul,
-    rem_hensel, shl, shr, signed_add, trailing_zeros, trim,
+    OddDivisor, add, add_mul, div_exact_odd, dot_columns, gcd_u64, inverse_odd, mul_into, mul_word,
+    mul_word_add_mul, rem_hensel, shl, shr, signed_add, trailing_zeros, trim,
 };
 use crate::patch::ControlNet;
 use crate::simplex::count;
@@ -191,7 +191,7 @@ const CHUNK: usize = if cfg!(test) { 3 } else { 128 };
 /// such primes; only the others need residues of `N`.
 #[derive(Clone, Debug)]
 struct Lone {
-    p: u64,
+    p: OddDivisor,
     e: u32,
     /// `p | C(n;α)`: then `p | N` at every point.
     always: bool,
@@ -249,7 +249,7 @@ fn census(
                     .map(|(k, _)| k)
                     .collect();
                 lone.push(Lone {
-                    p,
+                    p: OddDivisor::new(p),
                     e,
                     always,
                     support,
@@ -294,7 +294,7 @@ fn digit_sum(mut x: u64, p: u64) -> u64 {
 #[derive(Clone, Debug)]
 struct Reducer {
     /// The primes read off residues of `N`, with their exponents in `L_c`, ascending.
-    shared: Vec<(u64, u32)>,
+    shared: Vec<(OddDivisor, u32)>,
     lone: Vec<Lone>,
     /// `(M, first prime, end prime, 2^{64·CHUNK} mod M)`: `M` the product of `shared[first..end]`, `< 2^64`.
     moduli: Vec<(u64, usize, usize, u64)>,
@@ -330,7 +330,10 @@ impl Reducer {
         }
         let inverses = moduli.iter().map(|&(m, ..)| inverse_odd(m)).collect();
         Reducer {
-            shared,
+            shared: shared
+                .into_iter()
+                .map(|(p, e)| (OddDivisor::new(p), e))
+                .collect(),
             lone,
             moduli,
             table,
@@ -363,7 +366,7 @@ impl Reducer {
                 if l.always
                     || l.support.iter().any(|&k| {
                         let g = g[k as usize];
-                        g != 1 && g.is_multiple_of(l.p)
+                        g != 1 && l.p.divides(g)
                     })
                 {
                     hits.push((l.p, l.e));
@@ -400,19 +403,20 @@ impl Reducer {
                 }
             }
             for &(p, e) in &self.shared[first..end] {
-                if r.is_multiple_of(p) {
+                if p.divides(r) {
                     hits.push((p, e));
                 }
             }
         }
         for (p, e) in hits {
-            let inv = inverse_odd(p);
             for _ in 0..e {
-                if !rem_hensel(limbs, p, inv).is_multiple_of(p) {
+                // `rem_hensel` is in 0..=p, and 0 or p when p divides.
+                let c = rem_hensel(limbs, p.p, p.inv);
+                if c != 0 && c != p.p {
                     break;
                 }
-                div_exact_odd(limbs, p, inv);
-                removed.push(p);
+                div_exact_odd(limbs, p.p, p.inv);
+                removed.push(p.p);
             }
         }
     }
@@ -445,9 +449,11 @@ struct Coordinate {
 /// at degree 20 than the global form.
 #[derive(Clone, Debug)]
 struct Rows {
-    /// `C(N, j)(z_j + K_k)` (all `≥ 0`), limb ranges `limbs[starts[r]..starts[r+1]]` per rank.
+    /// `C(N, j)(z_j + K_k)` (all `≥ 0`): row `k` at `offset[k]`, its numbers zero-padded to
+    /// `width[k]` limbs each (the row's longest), one after another in `j`.
     limbs: Vec<u64>,
-    starts: Vec<usize>,
+    offset: Vec<usize>,
+    width: Vec<usize>,
     /// `K_k = max(0, −min_j z_j)` per row; the row sum is `H_k − K_k (a_0 + a_1)^{n−k}`.
     shift: Vec<Vec<u64>>,
     e: Vec<Vec<u64>>,
@@ -456,7 +462,8 @@ struct Rows {
 
 impl Rows {
     fn new(n: usize, net: &ControlNet<BigRational>, c: usize) -> Rows {
-        let (mut limbs, mut starts, mut shift) = (Vec::new(), vec![0], Vec::new());
+        let (mut limbs, mut offset, mut width, mut shift) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         let mut row_lcm = Vec::with_capacity(n + 1);
         for k in 0..=n {
             let nn = n - k;
@@ -475,10 +482,21 @@ impl Rows {
             } else {
                 BigInt::zero()
             };
-            for (j, zj) in z.iter().enumerate() {
-                let t = (zj + &kk) * BigInt::from(crate::simplex::binomial(nn as u64, j as u64));
-                limbs.extend(to_limbs(t.magnitude()));
-                starts.push(limbs.len());
+            let coefs: Vec<Vec<u64>> = z
+                .iter()
+                .enumerate()
+                .map(|(j, zj)| {
+                    let t =
+                        (zj + &kk) * BigInt::from(crate::simplex::binomial(nn as u64, j as u64));
+                    to_limbs(t.magnitude())
+                })
+                .collect();
+            let w = coefs.iter().map(Vec::len).max().unwrap_or(0);
+            offset.push(limbs.len());
+            width.push(w);
+            for t in coefs {
+                limbs.extend(&t);
+                limbs.extend(std::iter::repeat_n(0, w - t.len()));
             }
             shift.push(to_limbs(kk.magnitude()));
             row_lcm.push(l);
@@ -497,7 +515,8 @@ impl Rows {
         }
         Rows {
             limbs,
-            starts,
+            offset,
+            width,
             shift,
             e,
             f,
@@ -505,32 +524,53 @@ impl Rows {
     }
 
     /// The numerator over `L_c` at `a` into `s` (its magnitude); returns whether it is negative.
+    /// `pw[j] = a_1^j` and `sp[N] = (a_0 + a_1)^N`; `block` the point's [`Block`] words.
+    ///
+    /// A row `Σ_j s_j a_0^{N−j} a_1^j` runs by blocks of `b` consecutive `j` (the first block
+    /// short when `b ∤ N + 1`): `R ← R·a_0^b + a_1^{j_0} Σ_{i<b} s_{j_0+i} a_0^{b−1−i} a_1^i`,
+    /// whose multipliers `a_0^b` and `a_0^{b−1−i} a_1^i` are single words, so that a step of the
+    /// accumulator multiplies by `b` coordinates at once instead of one.
     #[allow(clippy::too_many_arguments)] // the per-point inputs and the reused buffers
-    /// `sp[N] = (a_0 + a_1)^N`.
     fn evaluate(
         &self,
         n: usize,
         a: &[u64],
         pw: &[Vec<u64>],
         sp: &[Vec<u64>],
+        block: &Block,
         bufs: &mut [Vec<u64>; 4],
         s: &mut Vec<u64>,
     ) -> bool {
         let [r, corr, y, z] = bufs;
         s.clear();
         let mut s_neg = false;
+        let b = block.b;
         for k in (0..=n).rev() {
             let nn = n - k;
-            let base = k * (2 * n + 3 - k) / 2;
-            r.clear();
-            r.extend_from_slice(&self.limbs[self.starts[base]..self.starts[base + 1]]);
-            for (j, p) in pw.iter().enumerate().take(nn + 1).skip(1) {
-                mul_word_add_mul(
-                    r,
-                    a[0],
-                    &self.limbs[self.starts[base + j]..self.starts[base + j + 1]],
-                    p,
-                );
+            let w = self.width[k];
+            let coefs = |j: usize, len: usize| {
+                &self.limbs[self.offset[k] + j * w..self.offset[k] + (j + len) * w]
+            };
+            // The first, possibly short, block: j = 0..r0.
+            let r0 = match (nn + 1) % b {
+                0 => b,
+                r0 => r0,
+            };
+            let mut short = [0u64; 8];
+            let first = if r0 == b {
+                &block.words[..b]
+            } else {
+                for (i, x) in short.iter_mut().enumerate().take(r0) {
+                    *x = block.a0.pow((r0 - 1 - i) as u32) * block.a1.pow(i as u32);
+                }
+                &short[..r0]
+            };
+            dot_columns(r, coefs(0, r0), w, first);
+            let mut j0 = r0;
+            while j0 <= nn {
+                dot_columns(z, coefs(j0, b), w, &block.words[..b]);
+                mul_word_add_mul(r, block.a0b, z, &pw[j0]);
+                j0 += b;
             }
             let mut r_neg = false;
             if !self.shift[k].is_empty() {
@@ -558,6 +598,37 @@ impl Rows {
             }
         }
         s_neg
+    }
+}
+
+/// The single-word multipliers of a point's blocked row Horner ([`Rows::evaluate`]): the block
+/// length `b` (at most 8) with `a_0^b < 2^64` and every `a_0^{b−1−i} a_1^i < 2^64`.
+struct Block {
+    b: usize,
+    /// `a_0^b`.
+    a0b: u64,
+    /// `a_0^{b−1−i} a_1^i`, `i < b`.
+    words: [u64; 8],
+    a0: u64,
+    a1: u64,
+}
+
+impl Block {
+    fn new(a0: u64, a1: u64) -> Self {
+        let bits = (64 - (a0 | a1).leading_zeros()).max(1) as usize;
+        // x < 2^bits, so x^b < 2^{b·bits} ≤ 2^64.
+        let b = (64 / bits).clamp(1, 8);
+        let mut words = [0u64; 8];
+        for (i, w) in words.iter_mut().enumerate().take(b) {
+            *w = a0.pow((b - 1 - i) as u32) * a1.pow(i as u32);
+        }
+        Block {
+            b,
+            a0b: a0.pow(b as u32),
+            words,
+            a0,
+            a1,
+        }
     }
 }
 
@@ -679,7 +750,7 @@ impl FastNet {
                         // the cheaper (the gcds win at high degrees, where L has many primes).
                         let limbs = f.product().bits().div_ceil(64) + 1;
                         let saved =
-                            moduli_count(lone.iter().map(|l| l.p)) as u64 * (2 * limbs + 30);
+                            moduli_count(lone.iter().map(|l| l.p.p)) as u64 * (2 * limbs + 30);
                         let cost = (m as u64 + 1) * (2 * limbs + GCD_COST);
                         if saved > cost {
                             Reducer::new(shared, lone)
@@ -762,6 +833,7 @@ impl FastNet {
             bufs.resize(self.m, Vec::new());
         }
         let mut sums_ready = false;
+        let block = Block::new(a[0], a.get(1).copied().unwrap_or(0));
         let den = PointDenominator::new(d, n);
         let mut sum_pow: Option<BigUint> = None;
         self.coords
@@ -774,7 +846,7 @@ impl FastNet {
                         fill_powers(sp, n, &sum01);
                         sums_ready = true;
                     }
-                    let neg = rows.evaluate(n, a, pw, sp, row_bufs, acc);
+                    let neg = rows.evaluate(n, a, pw, sp, &block, row_bufs, acc);
                     return reduce(c, neg, acc, a, &den);
                 }
                 self.horner(c, self.m, n, 0, a, pw, bufs);

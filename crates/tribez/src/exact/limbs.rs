@@ -27,7 +27,8 @@ pub(super) fn mul_word(x: &mut Vec<u64>, w: u64) {
     }
 }
 
-/// `x ← x + s · v` (`v` any number of limbs).
+/// `x ← x + s · v` (`v` any number of limbs), two limbs of `v` per pass over `x` (GMP's
+/// `addmul_2`: half the loads and stores of `x` of one pass per limb).
 #[inline]
 pub(super) fn add_mul(x: &mut Vec<u64>, s: &[u64], v: &[u64]) {
     if s.is_empty() || v.is_empty() {
@@ -35,25 +36,89 @@ pub(super) fn add_mul(x: &mut Vec<u64>, s: &[u64], v: &[u64]) {
     }
     let need = x.len().max(s.len() + v.len()) + 1;
     x.resize(need, 0);
-    for (i, &vi) in v.iter().enumerate() {
-        if vi == 0 {
-            continue;
-        }
-        let mut carry = 0u64;
-        for (d, &sj) in x[i..i + s.len()].iter_mut().zip(s) {
-            let t = u128::from(sj) * u128::from(vi) + u128::from(*d) + u128::from(carry);
-            *d = t as u64;
-            carry = (t >> 64) as u64;
-        }
-        let mut k = i + s.len();
-        while carry != 0 {
-            let (r, o) = x[k].overflowing_add(carry);
-            x[k] = r;
-            carry = u64::from(o);
-            k += 1;
-        }
+    let mut pairs = v.chunks_exact(2);
+    let mut i = 0;
+    for pair in pairs.by_ref() {
+        addmul_2(&mut x[i..], s, pair[0], pair[1]);
+        i += 2;
+    }
+    if let &[last] = pairs.remainder() {
+        addmul_1(&mut x[i..], s, last);
     }
     trim(x);
+}
+
+/// `x ← x + s · w` for a word `w`; `x` is longer than `s` and has room for the carry.
+#[inline]
+fn addmul_1(x: &mut [u64], s: &[u64], w: u64) {
+    if w == 0 {
+        return;
+    }
+    let mut carry = 0u64;
+    let (head, tail) = x.split_at_mut(s.len());
+    for (d, &sj) in head.iter_mut().zip(s) {
+        let t = u128::from(sj) * u128::from(w) + u128::from(*d) + u128::from(carry);
+        *d = t as u64;
+        carry = (t >> 64) as u64;
+    }
+    propagate(tail, carry);
+}
+
+/// `x ← x + s · (v0 + v1·2^64)`; `x` is at least two limbs longer than `s` and has room for the
+/// carry. Each step adds `s_i v0` at limb `i` and `s_i v1` at limb `i + 1`, carrying two limbs.
+#[inline]
+fn addmul_2(x: &mut [u64], s: &[u64], v0: u64, v1: u64) {
+    let (mut c0, mut c1) = (0u64, 0u64);
+    let (head, tail) = x.split_at_mut(s.len());
+    for (d, &si) in head.iter_mut().zip(s) {
+        // Both below 2^128: (2^64 − 1)^2 + 2 (2^64 − 1) = 2^128 − 1.
+        let p0 = u128::from(si) * u128::from(v0) + u128::from(*d) + u128::from(c0);
+        *d = p0 as u64;
+        let p1 = u128::from(si) * u128::from(v1) + (p0 >> 64) + u128::from(c1);
+        c0 = p1 as u64;
+        c1 = (p1 >> 64) as u64;
+    }
+    let t0 = u128::from(tail[0]) + u128::from(c0);
+    tail[0] = t0 as u64;
+    let t1 = u128::from(tail[1]) + u128::from(c1) + (t0 >> 64);
+    tail[1] = t1 as u64;
+    propagate(&mut tail[2..], (t1 >> 64) as u64);
+}
+
+/// Add the word `carry` at the bottom of `x` (which has room for it).
+#[inline]
+fn propagate(x: &mut [u64], mut carry: u64) {
+    let mut k = 0;
+    while carry != 0 {
+        let (r, o) = x[k].overflowing_add(carry);
+        x[k] = r;
+        carry = u64::from(o);
+        k += 1;
+    }
+}
+
+/// `out ← Σ_i s_i w_i` for `r` numbers `s_i` of `width` limbs each, stored one after another
+/// in `mat`, and words `w_i`: column by column, the products' low and high halves summed apart
+/// (each sum below `r · 2^64`), so a column costs `r` products and no carry chain between them.
+#[inline]
+pub(super) fn dot_columns(out: &mut Vec<u64>, mat: &[u64], width: usize, words: &[u64]) {
+    debug_assert_eq!(mat.len(), width * words.len());
+    out.clear();
+    out.resize(width + 2, 0);
+    let mut carry = 0u128;
+    for (l, o) in out.iter_mut().take(width).enumerate() {
+        let (mut lo, mut hi) = (carry, 0u128);
+        for (i, &w) in words.iter().enumerate() {
+            let p = u128::from(mat[i * width + l]) * u128::from(w);
+            lo += u128::from(p as u64);
+            hi += p >> 64;
+        }
+        *o = lo as u64;
+        carry = (lo >> 64) + hi;
+    }
+    out[width] = carry as u64;
+    out[width + 1] = (carry >> 64) as u64;
+    trim(out);
 }
 
 /// `x ← x · w + s · v`, one fused pass when `v` is a single limb.
@@ -286,12 +351,52 @@ pub(super) fn trailing_zeros(x: &[u64]) -> u64 {
     tz
 }
 
-/// `gcd(a, b)` of machine words.
+/// `gcd(a, b)` of machine words (Stein's binary algorithm: shifts and subtractions, no
+/// division instruction).
 pub(super) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
-    while b != 0 {
-        (a, b) = (b, a % b);
+    if a == 0 || b == 0 {
+        return a | b;
     }
-    a
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// An odd word divisor with the constants of the divisibility test by multiplication
+/// (Granlund and Montgomery, "Division by invariant integers using multiplication", §9): for
+/// odd `p`, `p | x` exactly when `x · p⁻¹ mod 2^64 ≤ ⌊(2^64 − 1)/p⌋`, since multiplication by
+/// `p⁻¹` maps the multiples `0, p, 2p, …` of `p` below `2^64` onto `0, 1, 2, …` and the other
+/// words above them.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct OddDivisor {
+    pub(super) p: u64,
+    pub(super) inv: u64,
+    limit: u64,
+}
+
+impl OddDivisor {
+    pub(super) fn new(p: u64) -> Self {
+        OddDivisor {
+            p,
+            inv: inverse_odd(p),
+            limit: u64::MAX / p,
+        }
+    }
+
+    /// `p | x`.
+    #[inline]
+    pub(super) fn divides(&self, x: u64) -> bool {
+        x.wrapping_mul(self.inv) <= self.limit
+    }
 }
 
 #[cfg(test)]
@@ -305,6 +410,52 @@ mod tests {
             .flat_map(|&l| [l as u32, (l >> 32) as u32])
             .collect();
         BigUint::new(halves)
+    }
+
+    /// `add_mul` (one and two limbs of `v` per pass) and `dot_columns` against num-bigint, on
+    /// every length up to 9 limbs, with limbs near `2^64` (the carries' worst case), zeros and
+    /// small words, from a fixed-seed generator.
+    #[test]
+    fn add_mul_and_dot_columns_match_num_bigint() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            match state % 4 {
+                0 => u64::MAX - (state >> 60),
+                1 => 0,
+                2 => state >> 48,
+                _ => state,
+            }
+        };
+        let mut limbs = |len: usize| -> Vec<u64> { (0..len).map(|_| next()).collect() };
+        for xs in 0..9 {
+            for ss in 1..9 {
+                for vs in 1..6 {
+                    let (x0, s, v) = (limbs(xs), limbs(ss), limbs(vs));
+                    let mut x = x0.clone();
+                    add_mul(&mut x, &s, &v);
+                    assert_eq!(
+                        big(&x),
+                        big(&x0) + big(&s) * big(&v),
+                        "{x0:?} + {s:?} {v:?}"
+                    );
+                    assert_ne!(x.last(), Some(&0), "trimmed");
+                }
+                let rows = xs % 8 + 1;
+                let (mat, words) = (limbs(rows * ss), limbs(rows));
+                let mut out = vec![7];
+                dot_columns(&mut out, &mat, ss, &words);
+                let expected: BigUint = mat
+                    .chunks(ss)
+                    .zip(&words)
+                    .map(|(s, &w)| big(s) * BigUint::from(w))
+                    .sum();
+                assert_eq!(big(&out), expected);
+                assert_ne!(out.last(), Some(&0), "trimmed");
+            }
+        }
     }
 
     #[test]
@@ -325,7 +476,36 @@ mod tests {
         shr(&mut t, 70);
         assert_eq!(big(&t), big(&a) >> 70u32);
         assert_eq!(trailing_zeros(&[0, 8]), 67);
-        assert_eq!(gcd_u64(12, 18), 6);
+        for (x, y) in [
+            (12u64, 18u64),
+            (0, 5),
+            (5, 0),
+            (0, 0),
+            (1 << 40, 3 << 38),
+            (u64::MAX, 3),
+        ] {
+            let (mut a, mut b) = (x, y);
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            assert_eq!(gcd_u64(x, y), a, "gcd({x}, {y})");
+        }
+        for p in [1u64, 3, 5, 65_521, 4_294_967_291, u64::MAX] {
+            let d = OddDivisor::new(p);
+            for x in [
+                0u64,
+                1,
+                2,
+                p,
+                p - 1,
+                p.wrapping_add(1),
+                p.wrapping_mul(3),
+                u64::MAX,
+                u64::MAX / p * p,
+            ] {
+                assert_eq!(d.divides(x), x % p == 0, "{p} | {x}");
+            }
+        }
         let mut f = a.clone();
         mul_word_add_mul(&mut f, u64::MAX, &s, &[u64::MAX]);
         assert_eq!(
