@@ -344,24 +344,39 @@ impl Reducer {
     /// Divide `limbs` by `gcd(limbs, L_odd)` (`L_odd` the odd part of `L`, as limbs), pushing
     /// the primes removed (with multiplicity) onto `removed`. `a` is the point: the lone primes
     /// are decided from it; a candidate is divided out only after its residue confirms it.
-    fn strip_odd(&self, limbs: &mut Vec<u64>, a: &[u64], l_odd: &[u64], removed: &mut Vec<u64>) {
+    fn strip_odd(
+        &self,
+        limbs: &mut Vec<u64>,
+        a: &[u64],
+        l_odd: &[u64],
+        removed: &mut Vec<u64>,
+        hits: &mut Vec<(OddDivisor, u32)>,
+    ) {
         if limbs.is_empty() {
             return;
         }
-        let mut hits = Vec::new();
+        hits.clear();
         if !self.lone.is_empty() {
             // g_k = gcd(a_k, L_odd) (0 when a_k = 0: every prime divides it)
-            let g: Vec<u64> = a
-                .iter()
-                .map(|&x| {
-                    let odd = x >> x.trailing_zeros().min(63);
-                    match x {
-                        0 => 0,
-                        _ if odd == 1 => 1,
-                        _ => gcd_u64(rem_hensel(l_odd, odd, inverse_odd(odd)), odd),
-                    }
-                })
-                .collect();
+            let gcd = |x: u64| {
+                let odd = x >> x.trailing_zeros().min(63);
+                match x {
+                    0 => 0,
+                    _ if odd == 1 => 1,
+                    _ => gcd_u64(rem_hensel(l_odd, odd, inverse_odd(odd)), odd),
+                }
+            };
+            let mut small = [0u64; 4];
+            let large: Vec<u64>;
+            let g: &[u64] = if a.len() <= small.len() {
+                for (g, &x) in small.iter_mut().zip(a) {
+                    *g = gcd(x);
+                }
+                &small[..a.len()]
+            } else {
+                large = a.iter().map(|&x| gcd(x)).collect();
+                &large
+            };
             for l in &self.lone {
                 if l.always
                     || l.support.iter().any(|&k| {
@@ -408,7 +423,7 @@ impl Reducer {
                 }
             }
         }
-        for (p, e) in hits {
+        for &(p, e) in hits.iter() {
             for _ in 0..e {
                 // `rem_hensel` is in 0..=p, and 0 or p when p divides.
                 let c = rem_hensel(limbs, p.p, p.inv);
@@ -647,6 +662,7 @@ struct Scratch {
     bufs: Vec<Vec<u64>>,
     row_bufs: [Vec<u64>; 4],
     acc: Vec<u64>,
+    reduce: ReduceScratch,
 }
 
 thread_local! {
@@ -681,11 +697,15 @@ fn to_limbs(x: &BigUint) -> Vec<u64> {
 }
 
 fn from_limbs(x: &[u64]) -> BigUint {
-    BigUint::new(
-        x.iter()
-            .flat_map(|&l| [l as u32, (l >> 32) as u32])
-            .collect(),
-    )
+    from_limbs_with(x, &mut Vec::new())
+}
+
+/// [`from_limbs`] through the reusable buffer `halves` (num-bigint builds from 32-bit digits),
+/// so that the only allocation is the result's.
+fn from_limbs_with(x: &[u64], halves: &mut Vec<u32>) -> BigUint {
+    halves.clear();
+    halves.extend(x.iter().flat_map(|&l| [l as u32, (l >> 32) as u32]));
+    BigUint::from_slice(halves)
 }
 
 impl FastNet {
@@ -826,6 +846,7 @@ impl FastNet {
             bufs,
             row_bufs,
             acc,
+            reduce: red,
         } = scratch;
         // Powers a_1^j, j = 0..n (reusing the thread's buffers: no allocation per point).
         fill_powers(pw, n, &[a[1]]);
@@ -841,13 +862,13 @@ impl FastNet {
             .map(|c| {
                 if let Some(rows) = &c.rows {
                     if !sums_ready {
-                        let mut sum01 = vec![a[0]];
-                        add(&mut sum01, &[a[1]]);
-                        fill_powers(sp, n, &sum01);
+                        let (sum, carry) = a[0].overflowing_add(a[1]);
+                        let sum01 = [sum, u64::from(carry)];
+                        fill_powers(sp, n, &sum01[..1 + usize::from(carry)]);
                         sums_ready = true;
                     }
                     let neg = rows.evaluate(n, a, pw, sp, &block, row_bufs, acc);
-                    return reduce(c, neg, acc, a, &den);
+                    return reduce(c, neg, acc, a, &den, red);
                 }
                 self.horner(c, self.m, n, 0, a, pw, bufs);
                 let mut h = std::mem::take(&mut bufs[0]);
@@ -861,7 +882,7 @@ impl FastNet {
                     let v = BigInt::from(from_limbs(&h)) - BigInt::from(&c.shift * &*sp);
                     (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
                 };
-                reduce(c, neg, &mut limbs, a, &den)
+                reduce(c, neg, &mut limbs, a, &den, red)
             })
             .collect()
     }
@@ -929,6 +950,7 @@ fn reduce(
     limbs: &mut Vec<u64>,
     a: &[u64],
     pt: &PointDenominator,
+    scratch: &mut ReduceScratch,
 ) -> BigRational {
     let sign = if neg { Sign::Minus } else { Sign::Plus };
     if limbs.is_empty() {
@@ -939,12 +961,21 @@ fn reduce(
         let dn = BigUint::from(pt.d).pow(pt.n as u32);
         return BigRational::new(v, BigInt::from(&c.denominator * dn));
     };
+    let ReduceScratch {
+        from_d,
+        from_l,
+        hits,
+        l,
+        dp,
+        den,
+        halves,
+    } = scratch;
     // Powers of two.
     let twos = c.e2 + pt.n as u64 * pt.tz;
     let s2 = trailing_zeros(limbs).min(twos);
     shr(limbs, s2);
     // The odd part of D^n.
-    let mut from_d = Vec::new();
+    from_d.clear();
     if pt.odd > 1 {
         for _ in 0..pt.n {
             let g = gcd_u64(rem_hensel(limbs, pt.odd, pt.odd_inv), pt.odd);
@@ -956,21 +987,35 @@ fn reduce(
         }
     }
     // The odd primes of L_c.
-    let mut from_l = Vec::new();
-    reducer.strip_odd(limbs, a, &c.odd_denominator, &mut from_l);
-    let mut den = Vec::new();
+    from_l.clear();
+    reducer.strip_odd(limbs, a, &c.odd_denominator, from_l, hits);
     if from_l.is_empty() && from_d.is_empty() {
-        mul_into(&mut den, &c.odd_denominator, &pt.odd_pow);
+        mul_into(den, &c.odd_denominator, &pt.odd_pow);
     } else {
-        let mut l = c.odd_denominator.clone();
-        div_exact_words(&mut l, &from_l);
-        let mut dp = pt.odd_pow.clone();
-        div_exact_words(&mut dp, &from_d);
-        mul_into(&mut den, &l, &dp);
+        l.clear();
+        l.extend_from_slice(&c.odd_denominator);
+        div_exact_words(l, from_l);
+        dp.clear();
+        dp.extend_from_slice(&pt.odd_pow);
+        div_exact_words(dp, from_d);
+        mul_into(den, l, dp);
     }
-    shl(&mut den, twos - s2);
+    shl(den, twos - s2);
+    let numer = from_limbs_with(limbs, halves);
     BigRational::new_raw(
-        BigInt::from_biguint(sign, from_limbs(limbs)),
-        BigInt::from(from_limbs(&den)),
+        BigInt::from_biguint(sign, numer),
+        BigInt::from(from_limbs_with(den, halves)),
     )
+}
+
+/// [`reduce`]'s buffers, reused from coordinate to coordinate and point to point.
+#[derive(Default)]
+struct ReduceScratch {
+    from_d: Vec<u64>,
+    from_l: Vec<u64>,
+    hits: Vec<(OddDivisor, u32)>,
+    l: Vec<u64>,
+    dp: Vec<u64>,
+    den: Vec<u64>,
+    halves: Vec<u32>,
 }
