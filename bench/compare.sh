@@ -12,15 +12,17 @@
 #     Triangle.evaluate_barycentric_multi of the Python package `bezier`;
 # then `tribez check` of CHECK_CLAIMS f64 results at n = 3, end to end, against reading, parsing
 # and evaluating the same CSV in f64 on one thread; then whole-process exact evaluation:
-# `tribez eval PATCH --points FILE --format json`, process start to exit (best of PROCESS_RUNS),
-# against gmpy2's integer homogeneous Horner timed in-process (best of 5; Python's start, reading
-# and printing excluded), on the issue's workloads PROCESS_CASES ("degree:points ..."), with the
-# kernel alone on the same points beside it and the values compared as text.
+# `tribez eval PATCH --points FILE --format json`, process start to exit, against gmpy2's integer
+# homogeneous Horner timed in-process (Python's start, reading and printing excluded), on the
+# issue's workloads PROCESS_CASES ("degree:points ..."), with the kernel alone on the same points
+# beside it and the values compared as text: PROCESS_ROUNDS rounds, each timing gmpy2 (best of 3),
+# the kernel (best of 3) and the whole process (PROCESS_RUNS runs) in turn; each figure is the
+# best over all rounds.
 #
 # The peers are installed once into bench/.venv from the pinned bench/peers/requirements.txt
 # (bench/venv.sh; needs python3 and PyPI). Environment: EXACT_POINTS (1000), FLOAT_POINTS
 # (100000), CHECK_CLAIMS (1000000), ALL_PEERS (unset), SYMPY_POINTS (50), PROCESS_CASES
-# ("3:4000 10:2000 20:500"), PROCESS_RUNS (7), ONLY (unset; "process" or "check": that part alone).
+# ("3:4000 10:2000 20:500"), PROCESS_RUNS (3), PROCESS_ROUNDS (5), ONLY (unset; "process" or "check": that part alone).
 # Timings move between runs on a shared machine: compare the ratios of one run, not absolutes.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -44,7 +46,10 @@ ratio() { echo "$1 / $2" | bc -l; }
 peer() { (cd "$PEERS" && "$PY" "$@"); }
 
 PROCESS_CASES="${PROCESS_CASES:-3:4000 10:2000 20:500}"
-PROCESS_RUNS="${PROCESS_RUNS:-7}"
+PROCESS_RUNS="${PROCESS_RUNS:-3}"
+PROCESS_ROUNDS="${PROCESS_ROUNDS:-5}"
+min() { if [ -z "$1" ]; then echo "$2"; else echo "if ($1 < $2) $1 else $2" | bc -l; fi; }
+median() { printf '%s\n' "$@" | sort -g | awk '{v[NR]=$1} END {print (NR % 2) ? v[(NR+1)/2] : (v[NR/2] + v[NR/2+1]) / 2}'; }
 ONLY="${ONLY:-}"
 echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
 
@@ -90,13 +95,20 @@ for spec in $PROCESS_CASES; do
   peer workload.py --degree "$n" --points "$points" --seed $((1000 + n)) > "$case"
   peer to_tribez.py "$case" "$WORK/process_n$n.toml" "$WORK/process_n$n.csv"
   peer exact.py "$case" --backend gmpy2 --algo horner > "$WORK/process_peer_$n.json"
-  theirs=$(peer exact.py "$case" --backend gmpy2 --algo horner --time --repeat 5 | field seconds)
-  kernel=$(SPEED_REPEAT=5 SPEED_NO_CHECK=1 "$SPEED" exact "$case" | field seconds)
-  whole=$(peer wall.py "$PROCESS_RUNS" "$WORK/process_out_$n.json" "$TRIBEZ" eval "$WORK/process_n$n.toml" \
-    --points "$WORK/process_n$n.csv" --format json)
-  best=$(echo "$whole" | field best)
-  median=$(echo "$whole" | field median)
-  cpu=$(echo "$whole" | field cpu_median)
+  # The three timings alternate over PROCESS_ROUNDS rounds and each keeps its best, so that all
+  # three sample the same stretches of a machine whose speed drifts (the medians are over all
+  # the whole-process runs).
+  theirs=""; kernel=""; best=""; medians=""; cpus=""
+  for _ in $(seq "$PROCESS_ROUNDS"); do
+    t=$(peer exact.py "$case" --backend gmpy2 --algo horner --time --repeat 3 | field seconds)
+    k=$(SPEED_REPEAT=3 SPEED_NO_CHECK=1 "$SPEED" exact "$case" | field seconds)
+    whole=$(peer wall.py "$PROCESS_RUNS" "$WORK/process_out_$n.json" "$TRIBEZ" eval "$WORK/process_n$n.toml" \
+      --points "$WORK/process_n$n.csv" --format json)
+    theirs=$(min "$theirs" "$t"); kernel=$(min "$kernel" "$k"); best=$(min "$best" "$(echo "$whole" | field best)")
+    medians="$medians $(echo "$whole" | field median)"; cpus="$cpus $(echo "$whole" | field cpu_median)"
+  done
+  median=$(median $medians)
+  cpu=$(median $cpus)
   same=$("$PY" - "$WORK/process_out_$n.json" "$WORK/process_peer_$n.json" <<'PYEOF'
 import json, sys
 ours = [r["point"] for r in json.load(open(sys.argv[1]))["results"]]

@@ -423,9 +423,11 @@ impl EvalReport {
         self.json_text_in_chunks(chunk)
     }
 
-    /// [`EvalReport::json_text`] with the points rendered `chunk` at a time: each chunk as the
-    /// `results` array of a one-key object, pretty-printed by serde (so its points sit at the
-    /// depth they have in the report), then cut out of it and joined.
+    /// [`EvalReport::json_text`] with the points rendered `chunk` at a time. A point without
+    /// float paths is written directly ([`push_exact_point`]: its strings are digits, `-` and
+    /// `/`, which JSON never escapes); any other point as the `results` array of a one-key
+    /// object, pretty-printed by serde (so it sits at the depth it has in the report), then cut
+    /// out of it. The parts are joined in order.
     fn json_text_in_chunks(&self, chunk: usize) -> String {
         #[derive(Serialize)]
         struct Results<'a> {
@@ -433,20 +435,31 @@ impl EvalReport {
         }
         const OPEN: &str = "{\n  \"results\": [";
         const CLOSE: &str = "\n  ]\n}";
-        // serde_json's `to_string_pretty` writes a `String` without checking the UTF-8 again
-        // (a Vec<u8> would need `str::from_utf8` over every byte of the output)
         let parts: Vec<String> = self
             .results
             .par_chunks(chunk.max(1))
             .map(|results| {
-                let text = serde_json::to_string_pretty(&Results { results })
-                    .expect("a point result serialises");
-                debug_assert!(text.starts_with(OPEN) && text.ends_with(CLOSE));
-                text
+                let mut part = String::new();
+                for (i, r) in results.iter().enumerate() {
+                    if i > 0 {
+                        part.push(',');
+                    }
+                    if r.floats.is_empty() {
+                        push_exact_point(&mut part, r);
+                    } else {
+                        // serde_json's `to_string_pretty` writes a `String` without checking
+                        // the UTF-8 again
+                        let text = serde_json::to_string_pretty(&Results {
+                            results: std::slice::from_ref(r),
+                        })
+                        .expect("a point result serialises");
+                        debug_assert!(text.starts_with(OPEN) && text.ends_with(CLOSE));
+                        part += &text[OPEN.len()..text.len() - CLOSE.len()];
+                    }
+                }
+                part
             })
             .collect();
-        let inner =
-            |part: &'_ String| -> std::ops::Range<usize> { OPEN.len()..part.len() - CLOSE.len() };
         let quoted = |s: &str| serde_json::to_string(s).expect("a string serialises");
         let mut out = String::with_capacity(parts.iter().map(String::len).sum::<usize>() + 256);
         out += &format!("{{\n  \"patch\": {}", quoted(&self.file));
@@ -458,12 +471,51 @@ impl EvalReport {
             if i > 0 {
                 out.push(',');
             }
-            out += &part[inner(part)];
+            out += part;
         }
         out += if parts.is_empty() { "]" } else { "\n  ]" };
         out += "\n}\n";
         out
     }
+}
+
+/// A point without float paths as serde's pretty printer writes it at depth 2 of the report
+/// (`\n` and four spaces, then the object), without the escape scan of every string.
+fn push_exact_point(out: &mut String, r: &PointResult) {
+    debug_assert!(r.floats.is_empty());
+    out.push_str("\n    {");
+    let mut first = true;
+    let mut field = |out: &mut String, key: &str, xs: &[BigRational]| {
+        out.push_str(if first { "\n      \"" } else { ",\n      \"" });
+        first = false;
+        out.push_str(key);
+        out.push_str("\": [");
+        for (i, x) in xs.iter().enumerate() {
+            out.push_str(if i == 0 {
+                "\n        \""
+            } else {
+                ",\n        \""
+            });
+            let start = out.len();
+            push_rational(out, x);
+            debug_assert!(
+                out[start..]
+                    .bytes()
+                    .all(|b| b.is_ascii_digit() || b == b'-' || b == b'/')
+            );
+            out.push('"');
+        }
+        out.push_str(if xs.is_empty() { "]" } else { "\n      ]" });
+    };
+    field(out, "at", &r.at);
+    field(out, "point", &r.point);
+    if let Some(c) = &r.cartesian {
+        field(out, "cartesian", c);
+    }
+    if let Some(l) = &r.lambda {
+        field(out, "wachspress", l);
+    }
+    out.push_str("\n    }");
 }
 
 /// `(a, b, c)` for people.
@@ -572,6 +624,9 @@ mod tests {
                 Some(FloatChoice::F32),
             ),
             args("finn_day30.toml", &["0,0,1"], false, None),
+            args("finn_day30.toml", &["1/3,1/5", "0,0"], true, None),
+            args("beyond/pentagon_depth2.toml", &["2,2", "1,1"], true, None),
+            args("beyond/octant_quartic.toml", &["1/2,1/4,1/4"], false, None),
             args(
                 "beyond/octant_quartic.toml",
                 &["1/2,1/4,1/4", "1,0,0"],
