@@ -678,7 +678,13 @@ fn fill_powers(out: &mut Vec<Vec<u64>>, n: usize, x: &[u64]) {
     out[0].push(1);
     for j in 1..=n {
         let (lo, hi) = out.split_at_mut(j);
-        mul_into(&mut hi[0], &lo[j - 1], x);
+        if let &[w] = x {
+            hi[0].clear();
+            hi[0].extend_from_slice(&lo[j - 1]);
+            mul_word(&mut hi[0], w);
+        } else {
+            mul_into(&mut hi[0], &lo[j - 1], x);
+        }
     }
 }
 
@@ -768,7 +774,7 @@ impl FastNet {
                         // Deciding lone primes costs m + 1 word gcds with L per point; residues
                         // cost a pass over N (about as long as L) per modulus they fill. Keep
                         // the cheaper (the gcds win at high degrees, where L has many primes).
-                        let limbs = f.product().bits().div_ceil(64) + 1;
+                        let limbs = denominators[c].bits().div_ceil(64) + 1;
                         let saved =
                             moduli_count(lone.iter().map(|l| l.p.p)) as u64 * (2 * limbs + 30);
                         let cost = (m as u64 + 1) * (2 * limbs + GCD_COST);
