@@ -31,6 +31,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed};
+use rayon::prelude::*;
 
 use crate::patch::ControlNet;
 use crate::simplex::multinomial;
@@ -121,6 +122,7 @@ impl ExactEvaluator {
     pub fn new(net: &ControlNet<BigRational>) -> Self {
         let dim = net.dim();
         let factored: Vec<Option<kernel::Factors>> = (0..dim)
+            .into_par_iter()
             .map(|c| kernel::Factors::of(net.points().map(|p| p[c].denom())))
             .collect();
         let denominators: Vec<BigInt> = factored

@@ -35,6 +35,7 @@ use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
+use rayon::prelude::*;
 
 use super::limbs::{
     OddDivisor, add, add_mul, div_exact_odd, dot_columns, gcd_u64, inverse_odd, mul_into, mul_word,
@@ -730,8 +731,12 @@ impl FastNet {
                 counts[t * (n + 1) + nn] = if t == 0 { 1 } else { count(t, nn) };
             }
         }
-        let coords = (0..dim)
-            .zip(factored)
+        // The coordinates are prepared independently, on all cores (at high degrees this is the
+        // serial part of a whole evaluation run).
+        debug_assert_eq!(factored.len(), dim);
+        let coords = factored
+            .into_par_iter()
+            .enumerate()
             .map(|(c, f)| {
                 let min = integer
                     .points()
