@@ -454,6 +454,11 @@ struct Coordinate {
     reducer: Option<Reducer>,
     /// The row-scaled form, for triangles.
     rows: Option<Rows>,
+    /// `max_α bits(|z_α|)`: with `σ = Σ_k a_k`, `|N| ≤ max|z_α| σ^n < 2^{z_bits + n·bits(σ)}`,
+    /// which decides whether [`horner_fixed`] may run.
+    z_bits: u64,
+    /// `K_c` as limbs (for [`horner_fixed`]).
+    shift_limbs: Vec<u64>,
 }
 
 /// A triangle with each row `k` (`α_2 = k`) brought to its own common denominator `L_k`:
@@ -764,10 +769,13 @@ impl FastNet {
                     starts.push(limbs.len());
                 }
                 let rows = (m == 2).then(|| Rows::new(n, net, c));
+                let z_bits = integer.points().map(|p| p[c].bits()).max().unwrap_or(0);
                 Coordinate {
                     limbs,
                     starts,
+                    shift_limbs: to_limbs(&shift),
                     shift,
+                    z_bits,
                     denominator: denominators[c].magnitude().clone(),
                     odd_denominator: to_limbs(
                         &(denominators[c].magnitude()
@@ -868,9 +876,24 @@ impl FastNet {
         let block = Block::new(a[0], a.get(1).copied().unwrap_or(0));
         let den = PointDenominator::new(d, n);
         let mut sum_pow: Option<BigUint> = None;
+        let sum: u128 = a.iter().map(|&x| u128::from(x)).sum();
+        let sum_bits = u64::from(128 - sum.leading_zeros());
         self.coords
             .iter()
             .map(|c| {
+                if self.m == 2 {
+                    // Small results: fixed-width two's complement, no lengths to track.
+                    let need = c.z_bits + n as u64 * sum_bits + 1;
+                    let fixed = match need {
+                        0..=128 => Some(horner_fixed::<2>(c, n, a, acc)),
+                        129..=192 => Some(horner_fixed::<3>(c, n, a, acc)),
+                        193..=256 => Some(horner_fixed::<4>(c, n, a, acc)),
+                        _ => None,
+                    };
+                    if let Some(neg) = fixed {
+                        return reduce(c, neg, acc, a, &den, red);
+                    }
+                }
                 if let Some(rows) = &c.rows {
                     if !sums_ready {
                         let (sum, carry) = a[0].overflowing_add(a[1]);
@@ -896,6 +919,100 @@ impl FastNet {
                 reduce(c, neg, &mut limbs, a, &den, red)
             })
             .collect()
+    }
+}
+
+/// `x ← x · w mod 2^{64W}`.
+#[inline(always)]
+fn mul_word_fixed<const W: usize>(x: &mut [u64; W], w: u64) {
+    let mut carry = 0u64;
+    for d in x.iter_mut() {
+        let t = u128::from(*d) * u128::from(w) + u128::from(carry);
+        *d = t as u64;
+        carry = (t >> 64) as u64;
+    }
+}
+
+/// `x ← x + s · p mod 2^{64W}` (`s` any length: limbs from `W` on vanish modulo `2^{64W}`).
+#[inline(always)]
+fn add_mul_fixed<const W: usize>(x: &mut [u64; W], s: &[u64], p: &[u64; W]) {
+    for (i, &si) in s.iter().enumerate().take(W) {
+        let mut carry = 0u64;
+        for (d, &pj) in x[i..].iter_mut().zip(p) {
+            let t = u128::from(si) * u128::from(pj) + u128::from(*d) + u128::from(carry);
+            *d = t as u64;
+            carry = (t >> 64) as u64;
+        }
+    }
+}
+
+/// A triangle's numerator `N = Σ_α s_α a^α − K_c σ^n` (`σ = Σ_k a_k`) computed modulo `2^{64W}`
+/// in two's complement, into `out` as a magnitude; returns whether `N < 0`. Exact when
+/// `|N| < 2^{64W − 1}`, which the caller ensures from `|N| ≤ max_α |z_α| σ^n`: every operation is
+/// a ring operation modulo `2^{64W}`, so the intermediate values may wrap; only the final value
+/// must fit. The nested Horner is the plain one (`T ← T a_0 + s_j a_1^j` along a row, then
+/// `S ← S a_2 + T`): at the small degrees where the result fits four limbs it has no lengths,
+/// signs or allocations to track.
+fn horner_fixed<const W: usize>(c: &Coordinate, n: usize, a: &[u64], out: &mut Vec<u64>) -> bool {
+    let mut s = [0u64; W];
+    for k in (0..=n).rev() {
+        let base = k * (2 * n + 3 - k) / 2;
+        let mut t = [0u64; W];
+        let mut p = [0u64; W];
+        p[0] = 1;
+        add_mul_fixed(&mut t, c.coef(base), &p);
+        for j in 1..=n - k {
+            mul_word_fixed(&mut t, a[0]);
+            mul_word_fixed(&mut p, a[1]);
+            add_mul_fixed(&mut t, c.coef(base + j), &p);
+        }
+        mul_word_fixed(&mut s, a[2]);
+        // s ← s + t
+        let mut carry = false;
+        for (d, &x) in s.iter_mut().zip(&t) {
+            let (r1, o1) = d.overflowing_add(x);
+            let (r2, o2) = r1.overflowing_add(u64::from(carry));
+            *d = r2;
+            carry = o1 || o2;
+        }
+    }
+    if !c.shift_limbs.is_empty() {
+        // s ← s − K σ^n, as s + K·(−σ^n): σ^n by word products when σ is one word.
+        let mut q = [0u64; W];
+        q[0] = 1;
+        let sum: u128 = a.iter().map(|&x| u128::from(x)).sum();
+        for _ in 0..n {
+            match u64::try_from(sum) {
+                Ok(w) => mul_word_fixed(&mut q, w),
+                Err(_) => {
+                    let mut next = [0u64; W];
+                    let sigma = [sum as u64, (sum >> 64) as u64];
+                    add_mul_fixed(&mut next, &sigma, &q);
+                    q = next;
+                }
+            }
+        }
+        negate_fixed(&mut q);
+        add_mul_fixed(&mut s, &c.shift_limbs, &q);
+    }
+    let neg = s[W - 1] >> 63 == 1;
+    if neg {
+        negate_fixed(&mut s);
+    }
+    out.clear();
+    out.extend_from_slice(&s);
+    trim(out);
+    neg
+}
+
+/// `x ← −x mod 2^{64W}`.
+#[inline(always)]
+fn negate_fixed<const W: usize>(x: &mut [u64; W]) {
+    let mut carry = true;
+    for d in x.iter_mut() {
+        let (r, o) = (!*d).overflowing_add(u64::from(carry));
+        *d = r;
+        carry = o;
     }
 }
 
