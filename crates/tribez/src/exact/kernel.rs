@@ -19,15 +19,24 @@
 //! Every multiplication of an accumulator is by one machine word, in place; only the edge terms
 //! `s_j a_1^j` multiply by a short power of `a_1` (`⌈j·bits(a_1)/64⌉` limbs).
 //!
+//! Triangles run one of two specialisations of the same sum, both tested equal to the rational de
+//! Casteljau algorithm: when `max_α |z_α| · (Σ_k a_k)^n < 2^{64W−1}` for `W ≤ 4` (small degrees),
+//! the plain nested Horner modulo `2^{64W}` in two's complement ([`horner_fixed`]: the value is
+//! exact because only the final one must fit); otherwise the row-scaled form ([`Rows`]), whose rows
+//! run in blocks of `b` coordinates per machine word (`a_0^b < 2^64`).
+//!
 //! The reduction to lowest terms never runs a big gcd: `gcd(N, L D^n)` is the product of
 //! `gcd(N, D^n)`, found by at most `n` word gcds `g = gcd(N mod D, D)`, `N ← N/g`, and of
 //! `p^{min(v_p(N), v_p(L))}` over the known primes `p` of `L` (powers of two by trailing zeros,
-//! odd primes by residues modulo word-sized products of primes, computed as dot products of the
-//! 32-bit halves of `N` with precomputed powers `2^{32h} mod M`). The two factors are coprime
+//! odd primes by residues modulo word-sized products `M` of primes, computed as dot products of
+//! the limbs of `N` with precomputed powers `2^{64h} mod M`). The two factors are coprime
 //! after the first step, so their product is the whole gcd. A prime of `L` reached at its full
 //! exponent by one control point only (most primes, with random denominators) needs no residue:
 //! `p | N` exactly when `p` divides that point's multinomial or a coordinate `a_k` it involves
-//! (see `Lone`); candidates are confirmed by a remainder before they are divided out.
+//! (see `Lone`); candidates are confirmed by a remainder before they are divided out. Word gcds
+//! are binary, and whether a known odd prime divides a word is one product by its inverse modulo
+//! `2^64` and a comparison ([`OddDivisor`]), so that the reduction of a numerator of up to
+//! `CHUNK` limbs runs no division instruction.
 
 use std::sync::OnceLock;
 
@@ -462,8 +471,9 @@ struct Coordinate {
 }
 
 /// A triangle with each row `k` (`α_2 = k`) brought to its own common denominator `L_k`:
-/// row integers `z_j = c_{(n−k−j, j, k)} L_k`, coefficients `C(n−k, j) z_j` split into positive
-/// and negative parts, and the outer Horner in `a_2` on the fractions `S_k / M_k`,
+/// row integers `z_j = c_{(n−k−j, j, k)} L_k`, coefficients `C(n−k, j)(z_j + K_k)` made
+/// non-negative by the row's shift `K_k` (corrected by `K_k (a_0 + a_1)^{n−k}` per point), and
+/// the outer Horner in `a_2` on the fractions `S_k / M_k`,
 /// `M_k = lcm(L_k, …, L_n)`: `S_k = S_{k+1} a_2 e_k + R_k f_k` with the per-patch integers
 /// `e_k = M_k / M_{k+1}` and `f_k = C(n, k) M_k / L_k`; `M_0 = L_c`. The accumulators are
 /// `|L_k|`-sized inside a row instead of `|L_c|`-sized: about `n/4` times fewer limb operations
