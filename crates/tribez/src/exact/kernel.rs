@@ -592,7 +592,7 @@ impl Rows {
                 &block.words[..b]
             } else {
                 for (i, x) in short.iter_mut().enumerate().take(r0) {
-                    *x = block.a0.pow((r0 - 1 - i) as u32) * block.a1.pow(i as u32);
+                    *x = block.word(r0, i);
                 }
                 &short[..r0]
             };
@@ -649,17 +649,22 @@ impl Block {
         let bits = (64 - (a0 | a1).leading_zeros()).max(1) as usize;
         // x < 2^bits, so x^b < 2^{b·bits} ≤ 2^64.
         let b = (64 / bits).clamp(1, 8);
-        let mut words = [0u64; 8];
-        for (i, w) in words.iter_mut().enumerate().take(b) {
-            *w = a0.pow((b - 1 - i) as u32) * a1.pow(i as u32);
-        }
-        Block {
+        let mut block = Block {
             b,
             a0b: a0.pow(b as u32),
-            words,
+            words: [0; 8],
             a0,
             a1,
+        };
+        for i in 0..b {
+            block.words[i] = block.word(b, i);
         }
+        block
+    }
+
+    /// `a_0^{r−1−i} a_1^i` (`i < r ≤ b`: below `2^64`).
+    fn word(&self, r: usize, i: usize) -> u64 {
+        self.a0.pow((r - 1 - i) as u32) * self.a1.pow(i as u32)
     }
 }
 
@@ -895,9 +900,9 @@ impl FastNet {
                     // Small results: fixed-width two's complement, no lengths to track.
                     let need = c.z_bits + n as u64 * sum_bits + 1;
                     let fixed = match need {
-                        0..=128 => Some(horner_fixed::<2>(c, n, a, acc)),
-                        129..=192 => Some(horner_fixed::<3>(c, n, a, acc)),
-                        193..=256 => Some(horner_fixed::<4>(c, n, a, acc)),
+                        0..=128 => Some(horner_fixed::<2>(c, n, a, sum, acc)),
+                        129..=192 => Some(horner_fixed::<3>(c, n, a, sum, acc)),
+                        193..=256 => Some(horner_fixed::<4>(c, n, a, sum, acc)),
                         _ => None,
                     };
                     if let Some(neg) = fixed {
@@ -956,14 +961,20 @@ fn add_mul_fixed<const W: usize>(x: &mut [u64; W], s: &[u64], p: &[u64; W]) {
     }
 }
 
-/// A triangle's numerator `N = Σ_α s_α a^α − K_c σ^n` (`σ = Σ_k a_k`) computed modulo `2^{64W}`
+/// A triangle's numerator `N = Σ_α s_α a^α − K_c σ^n` (`σ = Σ_k a_k`, given as `sum`) computed modulo `2^{64W}`
 /// in two's complement, into `out` as a magnitude; returns whether `N < 0`. Exact when
 /// `|N| < 2^{64W − 1}`, which the caller ensures from `|N| ≤ max_α |z_α| σ^n`: every operation is
 /// a ring operation modulo `2^{64W}`, so the intermediate values may wrap; only the final value
 /// must fit. The nested Horner is the plain one (`T ← T a_0 + s_j a_1^j` along a row, then
 /// `S ← S a_2 + T`): at the small degrees where the result fits four limbs it has no lengths,
 /// signs or allocations to track.
-fn horner_fixed<const W: usize>(c: &Coordinate, n: usize, a: &[u64], out: &mut Vec<u64>) -> bool {
+fn horner_fixed<const W: usize>(
+    c: &Coordinate,
+    n: usize,
+    a: &[u64],
+    sum: u128,
+    out: &mut Vec<u64>,
+) -> bool {
     let mut s = [0u64; W];
     for k in (0..=n).rev() {
         let base = k * (2 * n + 3 - k) / 2;
@@ -990,7 +1001,6 @@ fn horner_fixed<const W: usize>(c: &Coordinate, n: usize, a: &[u64], out: &mut V
         // s ← s − K σ^n, as s + K·(−σ^n): σ^n by word products when σ is one word.
         let mut q = [0u64; W];
         q[0] = 1;
-        let sum: u128 = a.iter().map(|&x| u128::from(x)).sum();
         for _ in 0..n {
             match u64::try_from(sum) {
                 Ok(w) => mul_word_fixed(&mut q, w),
