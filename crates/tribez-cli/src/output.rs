@@ -31,7 +31,12 @@ static STAGED: Mutex<Staging> = Mutex::new(Staging { files: Vec::new() });
 /// with exit status 0 or 1. Errors (a target that is not a regular file, a directory that
 /// cannot be written, a full disk) are reported now, before anything is committed.
 pub fn stage(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
-    staging().stage(path, bytes)
+    staging().stage(path, &[bytes])
+}
+
+/// [`stage`] the parts `parts` written one after another.
+pub fn stage_parts<T: AsRef<[u8]>>(path: &Path, parts: &[T]) -> Result<(), CliError> {
+    staging().stage(path, parts)
 }
 
 /// Commit every staged file (called once, at the end of a successful run).
@@ -54,8 +59,17 @@ fn staging() -> MutexGuard<'static, Staging> {
 /// Write `bytes` to standard output. A closed pipe is quiet (`Ok`); any other failure is an
 /// error naming standard output.
 pub fn write_stdout(bytes: &[u8]) -> Result<(), CliError> {
+    write_stdout_parts(&[bytes])
+}
+
+/// [`write_stdout`] the parts `parts`, one after another.
+pub fn write_stdout_parts<T: AsRef<[u8]>>(parts: &[T]) -> Result<(), CliError> {
     let mut out = std::io::stdout().lock();
-    match out.write_all(bytes).and_then(|()| out.flush()) {
+    let written = parts
+        .iter()
+        .try_for_each(|part| out.write_all(part.as_ref()))
+        .and_then(|()| out.flush());
+    match written {
         Ok(()) => Ok(()),
         Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(()),
         Err(e) => Err(InputError::file("<standard output>", cannot_write(&e)).into()),
@@ -85,7 +99,11 @@ struct Staged {
 
 impl Staging {
     /// See [`stage`].
-    pub(crate) fn stage(&mut self, path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    pub(crate) fn stage<T: AsRef<[u8]>>(
+        &mut self,
+        path: &Path,
+        parts: &[T],
+    ) -> Result<(), CliError> {
         let file = path.display().to_string();
         let fail = |message: String| CliError::check(&file, message);
         let name = path
@@ -143,7 +161,9 @@ impl Staging {
                 // keep the permissions of the file being replaced (exactly, not less the umask)
                 tmp.as_file().set_permissions(permissions)?;
             }
-            tmp.write_all(bytes)?;
+            for part in parts {
+                tmp.write_all(part.as_ref())?;
+            }
             tmp.as_file().sync_all()
         })();
         written.map_err(|e| fail(format!("cannot write: {e}")))?;
@@ -184,7 +204,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let target = dir.path().join("out.txt");
         let mut s = Staging::default();
-        s.stage(&target, b"hello\n").unwrap();
+        s.stage(&target, &[b"hello\n"]).unwrap();
         assert!(!target.exists());
         drop(s);
         assert_eq!(listing(dir.path()), Vec::<String>::new());
@@ -195,8 +215,8 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let (a, b) = (dir.path().join("a"), dir.path().join("b"));
         let mut s = Staging::default();
-        s.stage(&a, b"1").unwrap();
-        s.stage(&b, b"2").unwrap();
+        s.stage(&a, &[b"1"]).unwrap();
+        s.stage(&b, &[b"2"]).unwrap();
         s.commit().unwrap();
         assert_eq!(std::fs::read(&a).unwrap(), b"1");
         assert_eq!(std::fs::read(&b).unwrap(), b"2");
@@ -207,9 +227,9 @@ mod tests {
     fn the_same_target_twice_is_refused() {
         let dir = tempfile::tempdir().unwrap();
         let mut s = Staging::default();
-        s.stage(&dir.path().join("r.xml"), b"1").unwrap();
+        s.stage(&dir.path().join("r.xml"), &[b"1"]).unwrap();
         let twice = dir.path().join(".").join("r.xml");
-        let e = s.stage(&twice, b"2").unwrap_err().to_string();
+        let e = s.stage(&twice, &[b"2"]).unwrap_err().to_string();
         assert!(e.contains("two outputs"), "{e}");
     }
 
@@ -222,7 +242,7 @@ mod tests {
         std::fs::write(&target, "old").unwrap();
         std::fs::set_permissions(&target, std::fs::Permissions::from_mode(0o600)).unwrap();
         let mut s = Staging::default();
-        s.stage(&target, b"new").unwrap();
+        s.stage(&target, &[b"new"]).unwrap();
         s.commit().unwrap();
         let md = std::fs::metadata(&target).unwrap();
         assert_eq!(md.permissions().mode() & 0o7777, 0o600);
@@ -243,7 +263,7 @@ mod tests {
             (dir.path(), "directory"),
             (Path::new("/dev/null"), "not a regular file"),
         ] {
-            let e = s.stage(path, b"x").unwrap_err().to_string();
+            let e = s.stage(path, &[b"x"]).unwrap_err().to_string();
             assert!(e.contains(word), "{}: {e}", path.display());
         }
         assert_eq!(std::fs::read(&aim).unwrap(), b"keep");

@@ -10,12 +10,14 @@ use std::path::PathBuf;
 use num_rational::BigRational;
 use rayon::prelude::*;
 use serde::{Serialize, Serializer};
+#[cfg(test)]
 use serde_json::Value as Json;
 
 use super::{CliError, Outcome, check_barycentric, parse_list};
 use crate::cli::{OutputArgs, TextOrJson};
+#[cfg(test)]
 use crate::report::{Render, to_json};
-use tribez::capability::{FloatProgram, InputSpace};
+use tribez::capability::{FloatProgram, InputSpace, PointEvaluator};
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::exact::word_point;
 use tribez::hazmat::float::Precision;
@@ -127,7 +129,9 @@ pub struct PointResult {
     floats: Vec<FloatResult>,
 }
 
-/// The whole evaluation report.
+/// The whole evaluation report as one tree: the reference the streamed output of [`run`] is
+/// tested against (the generic JSON exporter and `text()`).
+#[cfg(test)]
 #[derive(Serialize)]
 pub struct EvalReport {
     #[serde(rename = "patch")]
@@ -331,151 +335,202 @@ fn header(patch: &Patch) -> (String, Option<&'static str>) {
     }
 }
 
-/// Run `tribez eval`.
+/// Run `tribez eval`: every point is evaluated and rendered on the core that evaluates it, a
+/// chunk of points per task, and the rendered chunks are written in order without being joined
+/// (the digits of large results are much of the work). Nothing is written unless every point
+/// succeeded; the first failing point in the order of the points is reported.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let report = evaluate(args)?;
-    // rendered point by point on all cores (the digits of large results are much of the work)
-    let output = match args.out.format {
-        TextOrJson::Json => report.json_text(),
-        TextOrJson::Text => {
-            let points: Vec<String> = report.results.par_iter().map(point_text).collect();
-            let mut out = format!("{}: {}\n", report.file, report.header);
-            out.extend(points);
-            out
-        }
+    run_in_chunks(args, None)
+}
+
+/// [`run`] with `chunk` points per task (by default many chunks per core, so that the cores
+/// share the work evenly to the end).
+fn run_in_chunks(args: &Args, chunk: Option<usize>) -> Result<Outcome, CliError> {
+    let mut input = EvalInput::read(args)?;
+    let raw = std::mem::take(&mut input.raw);
+    let eval = Evaluators::new(args, &input.file, &input.patch)?;
+    let format = args.out.format;
+    let chunk = chunk
+        .unwrap_or(raw.len() / (16 * rayon::current_num_threads()))
+        .clamp(1, 1024);
+    let parts: Vec<Result<String, CliError>> = raw
+        .into_par_iter()
+        .chunks(chunk)
+        .enumerate()
+        .map(|(k, points)| {
+            let mut part = String::new();
+            for (i, (what, p)) in points.into_iter().enumerate() {
+                let r = eval.point(&what, p)?;
+                match format {
+                    TextOrJson::Json => {
+                        if k > 0 || i > 0 {
+                            part.push(',');
+                        }
+                        push_json_point(&mut part, &r);
+                    }
+                    TextOrJson::Text => part += &point_text(&r),
+                }
+            }
+            Ok(part)
+        })
+        .collect();
+    let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let (open, close) = match format {
+        TextOrJson::Json => json_envelope(&input.file, input.kind, parts.is_empty()),
+        TextOrJson::Text => (format!("{}: {}\n", input.file, input.header), String::new()),
     };
+    let mut output = Vec::with_capacity(parts.len() + 2);
+    output.push(open);
+    output.extend(parts);
+    output.push(close);
     Ok(Outcome {
         output,
         success: true,
     })
 }
 
-/// The report of `tribez eval`.
-fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
-    let file = args.patch.display().to_string();
-    let patch = Patch::from(read_any_patch(&args.patch)?);
-    let shape = patch.shape();
-    let width = match shape.input {
-        InputSpace::Polygon { .. } => {
-            if !args.cartesian {
-                return Err(CliError::Usage(format!(
-                    "{file} is an S-patch: give Cartesian points of its polygon with --cartesian --at x,y"
-                )));
-            }
-            2
-        }
-        InputSpace::Barycentric { m } if args.cartesian => m,
-        InputSpace::Barycentric { m } => m + 1,
-    };
-    let raw = raw_points(args, width)?;
-    let precisions = args.float.map(FloatChoice::precisions).unwrap_or_default();
-    let programs: Vec<Box<dyn FloatProgram + '_>> = match patch.float() {
-        Some(float) => precisions
-            .iter()
-            .map(|&p| {
-                float
-                    .float_program(p)
-                    .map_err(|e| CliError::core(format!("{file}: {}", p.name()), e))
-            })
-            .collect::<Result<_, _>>()?,
-        None => Vec::new(),
-    };
-    let exact = patch.exact().exact_evaluator();
-    // every point's result or error; the first error in the order of the points is reported
-    let results: Vec<Result<PointResult, CliError>> = raw
-        .into_par_iter()
-        .map(|(what, p)| {
-            let fail = |e| CliError::core(&what, e);
-            let (at, cartesian) = input_of(args, &patch, p).map_err(fail)?;
-            let point = exact.evaluate(&at).map_err(fail)?;
-            let lambda = exact.coordinates(&at).map_err(fail)?;
-            let mut floats = Vec::new();
-            for program in &programs {
-                floats.extend(float_results(&patch, program.as_ref(), &at, &point).map_err(fail)?);
-            }
-            Ok(PointResult {
-                at,
-                cartesian,
-                lambda,
-                point,
-                floats,
-            })
-        })
-        .collect();
-    let results = results.into_iter().collect::<Result<_, _>>()?;
-    let (header, kind) = header(&patch);
-    let report = EvalReport {
-        file,
-        kind,
-        header,
-        results,
-    };
-    Ok(report)
+/// What `tribez eval` reads: the patch, the points (with a description each, for errors), and
+/// the report's first line and `kind`.
+struct EvalInput {
+    file: String,
+    patch: Patch,
+    header: String,
+    kind: Option<&'static str>,
+    raw: Vec<(String, Vec<BigRational>)>,
 }
 
-impl EvalReport {
-    /// The JSON report, pretty-printed with two-space indents and a final newline: the same
-    /// bytes as [`Render::json`] printed by the JSON exporter, written without building the tree,
-    /// each point's part on any core.
-    fn json_text(&self) -> String {
-        // a few chunks per core, so that the cores share the work evenly
-        let chunk = (self.results.len() / (8 * rayon::current_num_threads())).clamp(16, 4096);
-        self.json_text_in_chunks(chunk)
+impl EvalInput {
+    fn read(args: &Args) -> Result<Self, CliError> {
+        let file = args.patch.display().to_string();
+        let patch = Patch::from(read_any_patch(&args.patch)?);
+        let width = match patch.shape().input {
+            InputSpace::Polygon { .. } => {
+                if !args.cartesian {
+                    return Err(CliError::Usage(format!(
+                        "{file} is an S-patch: give Cartesian points of its polygon with --cartesian --at x,y"
+                    )));
+                }
+                2
+            }
+            InputSpace::Barycentric { m } if args.cartesian => m,
+            InputSpace::Barycentric { m } => m + 1,
+        };
+        let raw = raw_points(args, width)?;
+        let (header, kind) = header(&patch);
+        Ok(EvalInput {
+            file,
+            patch,
+            header,
+            kind,
+            raw,
+        })
+    }
+}
+
+/// The patch's exact evaluator and its float programs (every precision asked for).
+struct Evaluators<'p> {
+    args: &'p Args,
+    patch: &'p Patch,
+    exact: Box<dyn PointEvaluator + 'p>,
+    programs: Vec<Box<dyn FloatProgram + 'p>>,
+}
+
+impl<'p> Evaluators<'p> {
+    fn new(args: &'p Args, file: &str, patch: &'p Patch) -> Result<Self, CliError> {
+        let precisions = args.float.map(FloatChoice::precisions).unwrap_or_default();
+        let programs = match patch.float() {
+            Some(float) => precisions
+                .iter()
+                .map(|&p| {
+                    float
+                        .float_program(p)
+                        .map_err(|e| CliError::core(format!("{file}: {}", p.name()), e))
+                })
+                .collect::<Result<_, _>>()?,
+            None => Vec::new(),
+        };
+        Ok(Evaluators {
+            args,
+            patch,
+            exact: patch.exact().exact_evaluator(),
+            programs,
+        })
     }
 
-    /// [`EvalReport::json_text`] with the points rendered `chunk` at a time. A point without
-    /// float paths is written directly ([`push_exact_point`]: its strings are digits, `-` and
-    /// `/`, which JSON never escapes); any other point as the `results` array of a one-key
-    /// object, pretty-printed by serde (so it sits at the depth it has in the report), then cut
-    /// out of it. The parts are joined in order.
-    fn json_text_in_chunks(&self, chunk: usize) -> String {
-        #[derive(Serialize)]
-        struct Results<'a> {
-            results: &'a [PointResult],
+    /// The result at the raw point `p` (described by `what` in errors).
+    fn point(&self, what: &str, p: Vec<BigRational>) -> Result<PointResult, CliError> {
+        let fail = |e| CliError::core(what, e);
+        let (at, cartesian) = input_of(self.args, self.patch, p).map_err(fail)?;
+        let point = self.exact.evaluate(&at).map_err(fail)?;
+        let lambda = self.exact.coordinates(&at).map_err(fail)?;
+        let mut floats = Vec::new();
+        for program in &self.programs {
+            let judged = float_results(self.patch, program.as_ref(), &at, &point).map_err(fail)?;
+            floats.extend(judged);
         }
-        const OPEN: &str = "{\n  \"results\": [";
-        const CLOSE: &str = "\n  ]\n}";
-        let parts: Vec<String> = self
-            .results
-            .par_chunks(chunk.max(1))
-            .map(|results| {
-                let mut part = String::new();
-                for (i, r) in results.iter().enumerate() {
-                    if i > 0 {
-                        part.push(',');
-                    }
-                    if r.floats.is_empty() {
-                        push_exact_point(&mut part, r);
-                    } else {
-                        // serde_json's `to_string_pretty` writes a `String` without checking
-                        // the UTF-8 again
-                        let text = serde_json::to_string_pretty(&Results {
-                            results: std::slice::from_ref(r),
-                        })
-                        .expect("a point result serialises");
-                        debug_assert!(text.starts_with(OPEN) && text.ends_with(CLOSE));
-                        part += &text[OPEN.len()..text.len() - CLOSE.len()];
-                    }
-                }
-                part
-            })
-            .collect();
-        let quoted = |s: &str| serde_json::to_string(s).expect("a string serialises");
-        let mut out = String::with_capacity(parts.iter().map(String::len).sum::<usize>() + 256);
-        out += &format!("{{\n  \"patch\": {}", quoted(&self.file));
-        if let Some(kind) = self.kind {
-            out += &format!(",\n  \"kind\": {}", quoted(kind));
-        }
-        out += ",\n  \"results\": [";
-        for (i, part) in parts.iter().enumerate() {
-            if i > 0 {
-                out.push(',');
-            }
-            out += part;
-        }
-        out += if parts.is_empty() { "]" } else { "\n  ]" };
-        out += "\n}\n";
-        out
+        Ok(PointResult {
+            at,
+            cartesian,
+            lambda,
+            point,
+            floats,
+        })
+    }
+}
+
+/// The report of `tribez eval` as one tree, point by point in order (the reference of the tests).
+#[cfg(test)]
+fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
+    let mut input = EvalInput::read(args)?;
+    let raw = std::mem::take(&mut input.raw);
+    let eval = Evaluators::new(args, &input.file, &input.patch)?;
+    let results = raw
+        .into_iter()
+        .map(|(what, p)| eval.point(&what, p))
+        .collect::<Result<_, _>>()?;
+    Ok(EvalReport {
+        file: input.file,
+        kind: input.kind,
+        header: input.header,
+        results,
+    })
+}
+
+/// The JSON report's text before and after its results: the same bytes as the JSON exporter
+/// writes around them from the report's tree (two-space indents and a final newline).
+fn json_envelope(file: &str, kind: Option<&str>, empty: bool) -> (String, String) {
+    let quoted = |s: &str| serde_json::to_string(s).expect("a string serialises");
+    let mut open = format!("{{\n  \"patch\": {}", quoted(file));
+    if let Some(kind) = kind {
+        open += &format!(",\n  \"kind\": {}", quoted(kind));
+    }
+    open += ",\n  \"results\": [";
+    let close = if empty { "]\n}\n" } else { "\n  ]\n}\n" };
+    (open, close.to_owned())
+}
+
+/// A point as serde's pretty printer writes it at depth 2 of the report (`\n` and four spaces,
+/// then the object). Without float paths it is written directly ([`push_exact_point`]: its
+/// strings are digits, `-` and `/`, which JSON never escapes); with them, as the `results`
+/// array of a one-key object pretty-printed by serde (so that it sits at the depth it has in
+/// the report), cut out of it.
+fn push_json_point(out: &mut String, r: &PointResult) {
+    #[derive(Serialize)]
+    struct Results<'a> {
+        results: &'a [PointResult],
+    }
+    const OPEN: &str = "{\n  \"results\": [";
+    const CLOSE: &str = "\n  ]\n}";
+    if r.floats.is_empty() {
+        push_exact_point(out, r);
+    } else {
+        // serde_json's `to_string_pretty` writes a `String` without checking the UTF-8 again
+        let text = serde_json::to_string_pretty(&Results {
+            results: std::slice::from_ref(r),
+        })
+        .expect("a point result serialises");
+        debug_assert!(text.starts_with(OPEN) && text.ends_with(CLOSE));
+        *out += &text[OPEN.len()..text.len() - CLOSE.len()];
     }
 }
 
@@ -569,6 +624,7 @@ fn point_text(r: &PointResult) -> String {
     out
 }
 
+#[cfg(test)]
 impl Render for EvalReport {
     fn text(&self) -> String {
         let mut out = format!("{}: {}\n", self.file, self.header);
@@ -648,13 +704,8 @@ mod tests {
         ];
         for a in &cases {
             let report = evaluate(a).unwrap();
-            let generic = render(&report, crate::report::Format::Json);
-            assert_eq!(Some(report.json_text()), generic, "{}", a.patch.display());
-            for chunk in 1..=3 {
-                let text = report.json_text_in_chunks(chunk);
-                assert_eq!(Some(text), generic, "{} by {chunk}", a.patch.display());
-            }
-            let text = run(&Args {
+            let generic = render(&report, crate::report::Format::Json).unwrap();
+            let text_args = Args {
                 out: OutputArgs {
                     format: TextOrJson::Text,
                     output: None,
@@ -663,9 +714,16 @@ mod tests {
                 patch: a.patch.clone(),
                 points: None,
                 ..*a
-            })
-            .unwrap();
-            assert_eq!(text.output, report.text());
+            };
+            let name = a.patch.display();
+            assert_eq!(run(a).unwrap().output.concat(), generic, "{name}");
+            assert_eq!(run(&text_args).unwrap().output.concat(), report.text());
+            for chunk in 1..=3 {
+                let json = run_in_chunks(a, Some(chunk)).unwrap().output.concat();
+                assert_eq!(json, generic, "{name} by {chunk}");
+                let text = run_in_chunks(&text_args, Some(chunk)).unwrap();
+                assert_eq!(text.output.concat(), report.text(), "{name} by {chunk}");
+            }
         }
     }
 

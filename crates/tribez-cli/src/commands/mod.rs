@@ -142,8 +142,9 @@ impl OutputTarget for LatexOutputArgs {
 
 /// What a command produced: its rendered output and whether every claim held.
 pub struct Outcome {
-    /// Rendered output.
-    pub output: String,
+    /// Rendered output, in parts written one after another (a large report is rendered in
+    /// parts on all cores, and they are written without being joined).
+    pub output: Vec<String>,
     /// False when some claim failed (exit status 1).
     pub success: bool,
 }
@@ -161,7 +162,10 @@ impl Outcome {
                 format!("--format {format:?} is not available for this command").to_lowercase(),
             )
         })?;
-        Ok(Outcome { output, success })
+        Ok(Outcome {
+            output: vec![output],
+            success,
+        })
     }
 }
 
@@ -222,8 +226,8 @@ pub fn main(cli: Cli) -> i32 {
 /// all when the run ends, see [`output`]).
 pub fn emit(outcome: &Outcome, out: &dyn OutputTarget) -> Result<(), CliError> {
     match out.output() {
-        None => output::write_stdout(outcome.output.as_bytes()),
-        Some(path) => output::stage(path, outcome.output.as_bytes()),
+        None => output::write_stdout_parts(&outcome.output),
+        Some(path) => output::stage_parts(path, &outcome.output),
     }
 }
 

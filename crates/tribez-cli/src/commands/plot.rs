@@ -58,7 +58,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let svg = crate::picture::patch::plot(&patch, &options)?;
     crate::picture::stage(&args.output, &svg, "-o")?;
     Ok(Outcome {
-        output: String::new(),
+        output: Vec::new(),
         success: true,
     })
 }
