@@ -288,6 +288,45 @@ mod tests {
     }
 
     proptest! {
+        /// The word paths of `lcm_big` and `div_exact` (shift, Hensel remainder and division)
+        /// against num-integer's lcm and num-bigint's division: multi-limb and word operands,
+        /// either sign, many trailing zeros, divisors `2^t · odd`.
+        #[test]
+        fn lcm_and_exact_division_agree_with_num_integer(
+            limbs in proptest::collection::vec(any::<u64>(), 0..6),
+            zeros in 0u32..200,
+            neg: bool,
+            w in any::<u64>(),
+            t in 0u32..64,
+            other in proptest::collection::vec(any::<u64>(), 1..4),
+        ) {
+            use num_integer::Integer;
+            use num_traits::Zero;
+            let mut x = BigInt::zero();
+            for &l in &limbs {
+                x = (x << 64u32) + BigInt::from(l);
+            }
+            x <<= zeros;
+            if neg {
+                x = -x;
+            }
+            let word = ((w >> t) | 1) << t;
+            let b = BigInt::from(word);
+            prop_assert_eq!(kernel::lcm_big(&x, &b), x.lcm(&b));
+            prop_assert_eq!(kernel::lcm_big(&b, &x), x.lcm(&b));
+            prop_assert_eq!(kernel::div_exact(&(&x * &b), &b), x.clone());
+            let mut y = BigInt::zero();
+            for &l in &other {
+                y = (y << 64u32) + BigInt::from(l);
+            }
+            if !y.is_zero() {
+                prop_assert_eq!(kernel::lcm_big(&x, &y), x.lcm(&y));
+                prop_assert_eq!(kernel::div_exact(&(&x * &y), &y), x.clone());
+            }
+        }
+    }
+
+    proptest! {
         #![proptest_config(ProptestConfig::with_cases(256))]
         /// The fast kernel equals the rational de Casteljau (gcd after every operation), at
         /// barycentric points, homogeneous points, points with zeros, negative and huge coordinates.

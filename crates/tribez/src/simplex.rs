@@ -60,16 +60,27 @@ pub fn count(m: usize, n: usize) -> usize {
 /// assert_eq!(multinomial(&[2, 0, 1]).to_string(), "3");
 /// ```
 pub fn multinomial(alpha: &[u32]) -> BigUint {
-    let mut acc = BigUint::from(1u32);
+    // the product of binomials C(α_0 + … + α_k, α_k), each step `acc · total / i` exact; on
+    // a 128-bit word while it fits (every patch of moderate degree), then on big integers
+    let mut word: u128 = 1;
     let mut total: u64 = 0;
-    for &a in alpha {
-        for i in 1..=u64::from(a) {
-            total += 1;
-            acc *= total;
-            acc /= i;
+    let mut steps = alpha.iter().flat_map(|&a| 1..=u64::from(a));
+    for i in steps.by_ref() {
+        total += 1;
+        match word.checked_mul(u128::from(total)) {
+            Some(w) => word = w / u128::from(i),
+            None => {
+                let mut acc = BigUint::from(word) * total / i;
+                for i in steps {
+                    total += 1;
+                    acc *= total;
+                    acc /= i;
+                }
+                return acc;
+            }
         }
     }
-    acc
+    BigUint::from(word)
 }
 
 /// All multi-indices of degree `n` on the `m`-simplex, in canonical order, with rank/unrank.
@@ -281,6 +292,19 @@ mod tests {
         for n in 0..12 {
             let total: BigUint = Simplex::new(2, n).iter().map(multinomial).sum();
             assert_eq!(total, BigUint::from(3u32).pow(n as u32));
+        }
+        // across the end of the 128-bit path: |α|! / Π α_k! from factorials on big integers
+        let factorial = |k: u32| (1..=k).fold(BigUint::from(1u32), |acc, i| acc * i);
+        for alpha in [
+            [40u32, 40, 40],
+            [0, 70, 1],
+            [33, 34, 35],
+            [100, 0, 0],
+            [60, 61, 0],
+        ] {
+            let by_factorials = factorial(alpha.iter().sum())
+                / alpha.iter().map(|&a| factorial(a)).product::<BigUint>();
+            assert_eq!(multinomial(&alpha), by_factorials, "{alpha:?}");
         }
     }
 

@@ -70,15 +70,31 @@ pub fn word_point(lambda: &[BigRational]) -> Option<(Vec<u64>, u64)> {
         .map(|a| (a, d))
 }
 
-/// `a / b` for `b | a`, by a machine word when `b` fits one (num-bigint's single-digit path).
+/// `a / b` for `b | a`. A word `b = 2^t o` (`o` odd) divides by a shift and a Hensel division by
+/// `o` (no division instruction; a denominator is nearly always a word); others by num-bigint.
 pub fn div_exact(a: &BigInt, b: &BigInt) -> BigInt {
     match b.to_u64() {
-        Some(w) => a / w,
-        None => a / b,
+        Some(w) if w != 0 => {
+            let mut x = to_limbs(a.magnitude());
+            let t = w.trailing_zeros();
+            debug_assert!(trailing_zeros(&x) >= u64::from(t) || x.is_empty());
+            shr(&mut x, u64::from(t));
+            let o = w >> t;
+            if o > 1 {
+                div_exact_odd(&mut x, o, inverse_odd(o));
+            }
+            let q = BigInt::from_biguint(a.sign(), from_limbs(&x));
+            debug_assert_eq!(&q * b, *a, "div_exact: {b} does not divide {a}");
+            q
+        }
+        _ => a / b,
     }
 }
 
-/// `lcm(a, b)` computing the gcd on the smaller operand (`gcd(a mod b, b)`).
+/// `lcm(a, b)` (non-negative), computing the gcd on the smaller operand (`gcd(a mod b, b)`); when
+/// that one is a word `2^t o` (`o` odd), on words: `gcd = 2^min(t, v₂(a)) · gcd(r, o)` with `r`
+/// the Hensel remainder of `a` by `o` (which has the same gcd with `o`), and the lcm is one
+/// product by a word.
 pub fn lcm_big(a: &BigInt, b: &BigInt) -> BigInt {
     if a.is_zero() || b.is_zero() {
         return BigInt::zero();
@@ -88,10 +104,25 @@ pub fn lcm_big(a: &BigInt, b: &BigInt) -> BigInt {
     } else {
         (b, a)
     };
+    if let Some(w) = small.magnitude().to_u64() {
+        let mut x = to_limbs(big.magnitude());
+        let t = w.trailing_zeros();
+        let o = w >> t;
+        let odd_gcd = if o > 1 {
+            gcd_u64(rem_hensel(&x, o, inverse_odd(o)), o)
+        } else {
+            1
+        };
+        let g = (1u64 << t.min(trailing_zeros(&x) as u32)) * odd_gcd;
+        mul_word(&mut x, w / g);
+        return BigInt::from(from_limbs(&x));
+    }
     let g = (big % small).gcd(small);
     (big / &g * small).abs()
 }
 
+/// The primes below `2^16` (sieved once, when a number needs trial division beyond
+/// [`PRIMES_BELOW_256`]).
 fn small_primes() -> &'static [u32] {
     static PRIMES: OnceLock<Vec<u32>> = OnceLock::new();
     PRIMES.get_or_init(|| {
@@ -112,22 +143,58 @@ fn small_primes() -> &'static [u32] {
     })
 }
 
+/// The 54 primes below 256, sieved at compile time: they factor every odd part below
+/// `257² = 66049` (all 16-bit denominators) without the sieve to `2^16`.
+const PRIMES_BELOW_256: [u32; 54] = {
+    let mut composite = [false; 256];
+    let mut out = [0u32; 54];
+    let (mut i, mut count) = (2, 0);
+    while i < 256 {
+        if !composite[i] {
+            out[count] = i as u32;
+            count += 1;
+            let mut j = i * i;
+            while j < 256 {
+                composite[j] = true;
+                j += i;
+            }
+        }
+        i += 1;
+    }
+    assert!(count == 54);
+    out
+};
+
 /// The prime factorisation of an odd word by trial division up to `2^16`, ascending; `None` when
 /// a cofactor `≥ 2^32` is left (it could be composite).
 fn factor_odd(mut r: u64) -> Option<Vec<(u64, u32)>> {
     let mut out = Vec::new();
-    for &p in &small_primes()[1..] {
-        let p = u64::from(p);
-        if p * p > r {
-            break;
-        }
+    let mut divide = |r: &mut u64, p: u64| {
         let mut e = 0u32;
         while r.is_multiple_of(p) {
-            r /= p;
+            *r /= p;
             e += 1;
         }
         if e > 0 {
             out.push((p, e));
+        }
+    };
+    let mut done = false;
+    for &p in &PRIMES_BELOW_256[1..] {
+        let p = u64::from(p);
+        if p * p > r {
+            done = true;
+            break;
+        }
+        divide(&mut r, p);
+    }
+    if !done {
+        for &p in &small_primes()[PRIMES_BELOW_256.len()..] {
+            let p = u64::from(p);
+            if p * p > r {
+                break;
+            }
+            divide(&mut r, p);
         }
     }
     if r > 1 {
@@ -139,14 +206,24 @@ fn factor_odd(mut r: u64) -> Option<Vec<(u64, u32)>> {
     Some(out)
 }
 
+/// The odd part of a positive `q` and its power of two `v₂(q)`, or `None` when the odd part
+/// does not fit a word.
+fn odd_part(q: &BigUint) -> Option<(u64, u64)> {
+    let tz = q.trailing_zeros().unwrap_or(0);
+    match q.to_u64() {
+        Some(w) => Some((w >> tz, tz)),
+        None => Some(((q >> tz).to_u64()?, tz)),
+    }
+}
+
 /// The prime factorisation of a least common multiple of denominators: `2^e2 · Π p^e`.
 #[derive(Clone, Debug, Default)]
 pub struct Factors {
     e2: u64,
     /// Odd primes with exponents, ascending.
     odd: Vec<(u64, u32)>,
-    /// Each denominator's odd part, factored (for [`census`]).
-    of_odd_part: std::collections::HashMap<u64, Vec<(u64, u32)>>,
+    /// Each denominator's odd part, factored (for [`census`]), ascending by the odd part.
+    of_odd_part: Vec<(u64, Vec<(u64, u32)>)>,
 }
 
 impl Factors {
@@ -154,22 +231,23 @@ impl Factors {
     /// factored by trial division up to `2^16` (odd part `≥ 2^64`, or a cofactor `≥ 2^32`).
     pub fn of<'a>(denominators: impl Iterator<Item = &'a BigInt>) -> Option<Factors> {
         let mut e2 = 0u64;
-        let mut exps: std::collections::BTreeMap<u64, u32> = Default::default();
-        let mut of_odd_part = std::collections::HashMap::new();
+        let mut odd_parts = Vec::new();
         for q in denominators {
-            let q = q.magnitude();
-            let tz = q.trailing_zeros().unwrap_or(0);
+            let (odd, tz) = odd_part(q.magnitude())?;
             e2 = e2.max(tz);
-            let odd = (q >> tz).to_u64()?;
-            if of_odd_part.contains_key(&odd) {
-                continue;
-            }
+            odd_parts.push(odd);
+        }
+        odd_parts.sort_unstable();
+        odd_parts.dedup();
+        let mut exps: std::collections::BTreeMap<u64, u32> = Default::default();
+        let mut of_odd_part = Vec::with_capacity(odd_parts.len());
+        for odd in odd_parts {
             let primes = factor_odd(odd)?;
             for &(p, e) in &primes {
                 let slot = exps.entry(p).or_insert(0);
                 *slot = (*slot).max(e);
             }
-            of_odd_part.insert(odd, primes);
+            of_odd_part.push((odd, primes));
         }
         Some(Factors {
             e2,
@@ -227,11 +305,13 @@ fn census(
     // prime -> (points at the full exponent, the first such point's rank)
     let mut at_full: HashMap<u64, (usize, usize)> = HashMap::new();
     for (r, point) in net.points().enumerate() {
-        let q = point[c].denom().magnitude();
-        let odd = (q >> q.trailing_zeros().unwrap_or(0))
-            .to_u64()
+        let (odd, _) = odd_part(point[c].denom().magnitude())
             .expect("factored denominators have word-sized odd parts");
-        for &(p, e) in &factors.of_odd_part[&odd] {
+        let i = factors
+            .of_odd_part
+            .binary_search_by_key(&odd, |&(o, _)| o)
+            .expect("every denominator's odd part was factored");
+        for &(p, e) in &factors.of_odd_part[i].1 {
             if full(p) == Some(e) {
                 let slot = at_full.entry(p).or_insert((0, r));
                 slot.0 += 1;
@@ -536,7 +616,12 @@ impl Rows {
         let mut f = vec![Vec::new(); n + 1];
         let mut m_next = BigInt::one();
         for k in (0..=n).rev() {
-            let m_k = lcm_big(&m_next, &row_lcm[k]);
+            // lcm(m_{k+1}, L_k) from the row's denominators (words: no big gcd)
+            let base = k * (2 * n + 3 - k) / 2;
+            let m_k = (0..=n - k).fold(m_next.clone(), |acc, j| {
+                lcm_big(&acc, net.point(base + j)[c].denom())
+            });
+            debug_assert_eq!(m_k, lcm_big(&m_next, &row_lcm[k]));
             e[k] = to_limbs((&m_k / &m_next).magnitude());
             f[k] = to_limbs(
                 (&m_k / &row_lcm[k] * BigInt::from(crate::simplex::binomial(n as u64, k as u64)))
@@ -1166,4 +1251,60 @@ struct ReduceScratch {
     dp: Vec<u64>,
     den: Vec<u64>,
     halves: Vec<u32>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Trial division by every odd number up to the square root: the reference for
+    /// [`factor_odd`] (which divides by the primes below 256, then by the sieved primes below
+    /// `2^16`, and refuses a cofactor `≥ 2^32`).
+    fn naive(mut r: u64) -> Vec<(u64, u32)> {
+        let mut out = Vec::new();
+        let mut p = 3;
+        while p * p <= r {
+            let mut e = 0;
+            while r.is_multiple_of(p) {
+                r /= p;
+                e += 1;
+            }
+            if e > 0 {
+                out.push((p, e));
+            }
+            p += 2;
+        }
+        if r > 1 {
+            out.push((r, 1));
+        }
+        out
+    }
+
+    #[test]
+    fn factor_odd_agrees_with_naive_trial_division() {
+        let cases = [
+            1,
+            3,
+            255,
+            257 * 257,
+            255 * 257,
+            251 * 251 * 3,
+            65_537 * 257,
+            65_521 * 65_519,
+            3u64.pow(40),
+            65_521 * 65_521 * 7,
+        ];
+        for r in cases {
+            assert_eq!(factor_odd(r), Some(naive(r)), "{r}");
+        }
+        // every odd number below 70,000 (across 257² = 66,049, where the sieve takes over)
+        for r in (1..70_000).step_by(2) {
+            assert_eq!(factor_odd(r), Some(naive(r)), "{r}");
+        }
+        // a cofactor of 2^32 or more is refused (it could be composite)
+        assert_eq!(factor_odd(4_294_967_311), None);
+        assert_eq!(factor_odd((1 << 61) - 1), None);
+        assert_eq!(factor_odd(65_537 * 4_294_967_311), None);
+        assert_eq!(factor_odd(1_000_003 * 999_983), None);
+    }
 }
