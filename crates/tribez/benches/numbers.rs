@@ -29,7 +29,7 @@ fn numbers(c: &mut Criterion) {
     }
     // printing: tribez's decimal digits against num-bigint's, from the sizes of exact results at
     // degree 3 to 20 (5 and 33 limbs) to the digit limit
-    for limbs in [5u32, 33, 5200] {
+    for limbs in [5u32, 13, 33, 5200] {
         let x = (BigUint::from(3u32).pow(limbs * 41) * 7u32) >> 1u32;
         let shift = x.bits() - u64::from(limbs) * 64 + 1;
         let x = x >> shift;

@@ -91,6 +91,9 @@ pub fn push_decimal(out: &mut String, x: &BigUint) {
 /// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
 const SPLIT_LIMBS: usize = 24;
 
+/// Division passes by `10^19` that [`push_chunks`] runs in one sweep over the limbs.
+const FUSED: usize = 4;
+
 /// `10^(19·2^k)` for `k = 0, 1, …`, each computed once.
 fn power_of_ten(k: usize) -> &'static BigUint {
     static POWERS: [OnceLock<BigUint>; 24] = [const { OnceLock::new() }; 24];
@@ -134,18 +137,33 @@ fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
     // v = floor((2^128 − 1) / d) − 2^64 for the normalised d = 10^19
     let v = (u128::MAX / u128::from(TEN19) - (1u128 << 64)) as u64;
     // each limb gives at most 64/log2(10^19) < 1.02 chunks: SPLIT_LIMBS + 2 is enough
-    let mut digits = [0u64; SPLIT_LIMBS + 2];
+    // (FUSED − 1 more: the last fused pass may produce leading zero chunks, trimmed below)
+    let mut digits = [0u64; SPLIT_LIMBS + 2 + FUSED];
     let mut count = 0;
     while len > 1 {
-        let mut r = 0u64;
-        for limb in limbs[..len].iter_mut().rev() {
-            let (q, rem) = div_2by1(r, *limb, TEN19, v);
-            *limb = q;
-            r = rem;
+        if len > 2 {
+            // FUSED passes in one sweep: pass s divides the quotient limb that pass s − 1 has
+            // just produced, so the passes' remainder chains run side by side (each division
+            // waits on the previous remainder; one chain alone leaves the multipliers idle)
+            let mut r = [0u64; FUSED];
+            for limb in limbs[..len].iter_mut().rev() {
+                let mut x = *limb;
+                for rem in &mut r {
+                    (x, *rem) = div_2by1(*rem, x, TEN19, v);
+                }
+                *limb = x;
+            }
+            digits[count..count + FUSED].copy_from_slice(&r);
+            count += FUSED;
+        } else {
+            let mut r = 0u64;
+            for limb in limbs[..len].iter_mut().rev() {
+                (*limb, r) = div_2by1(r, *limb, TEN19, v);
+            }
+            digits[count] = r;
+            count += 1;
         }
-        digits[count] = r;
-        count += 1;
-        if limbs[len - 1] == 0 {
+        while len > 0 && limbs[len - 1] == 0 {
             len -= 1;
         }
     }
@@ -189,9 +207,7 @@ fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
         }
     }
     for &d in digits[..count].iter().rev() {
-        buf = [b'0'; 20];
-        fill_digits(&mut buf, d);
-        text[end..end + 19].copy_from_slice(&buf[1..]);
+        fill_19(&mut text[end..end + 19], d);
         end += 19;
     }
     out.push_str(ascii(&text[..end]));
@@ -222,13 +238,41 @@ fn div_2by1(u1: u64, u0: u64, d: u64, v: u64) -> (u64, u64) {
     (q1, r)
 }
 
+/// The two decimal digits of each number below 100.
+const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
+    2021222324252627282930313233343536373839\
+    4041424344454647484950515253545556575859\
+    6061626364656667686970717273747576777879\
+    8081828384858687888990919293949596979899";
+
+/// Write `x < 10^19` as exactly 19 digits (leading zeros) into `out`: three digits and two
+/// groups of eight, each group split into pairs, so that the word divisions (products by
+/// constants) are independent of one another instead of one chain of 9 divisions by 100.
+fn fill_19(out: &mut [u8], x: u64) {
+    debug_assert!(out.len() == 19 && x < TEN19);
+    const E8: u64 = 100_000_000;
+    let top = (x / (E8 * E8)) as usize;
+    let rest = x % (E8 * E8);
+    out[0] = b'0' + (top / 100) as u8;
+    out[1..3].copy_from_slice(&PAIRS[top % 100 * 2..top % 100 * 2 + 2]);
+    fill_8(&mut out[3..11], (rest / E8) as u32);
+    fill_8(&mut out[11..19], (rest % E8) as u32);
+}
+
+/// Write `x < 10^8` as exactly 8 digits into `out`.
+fn fill_8(out: &mut [u8], x: u32) {
+    let (hi, lo) = (x / 10_000, x % 10_000);
+    for (i, p) in [hi / 100, hi % 100, lo / 100, lo % 100]
+        .into_iter()
+        .enumerate()
+    {
+        let p = p as usize * 2;
+        out[2 * i..2 * i + 2].copy_from_slice(&PAIRS[p..p + 2]);
+    }
+}
+
 /// Write the digits of `x` right-aligned into `buf`; returns the index of the first one.
 fn fill_digits(buf: &mut [u8; 20], mut x: u64) -> usize {
-    const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
-        2021222324252627282930313233343536373839\
-        4041424344454647484950515253545556575859\
-        6061626364656667686970717273747576777879\
-        8081828384858687888990919293949596979899";
     let mut i = buf.len();
     while x >= 100 {
         let p = (x % 100) as usize * 2;
