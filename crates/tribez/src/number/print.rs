@@ -69,11 +69,13 @@ const TEN19: u64 = 10_000_000_000_000_000_000;
 /// limb at a time, each step a division of a two-limb number by the normalised one-limb divisor
 /// through its precomputed reciprocal (Möller and Granlund, "Improved division by invariant
 /// integers", Algorithm 4: two products and no division instruction per limb, where num-bigint
-/// divides by `10^9` with two hardware divisions per limb). Numbers of 24 limbs or
-/// more are first split in two by one division by `10^(19·2^k)` (the largest such power not above
-/// the square root of the number, computed once per process), recursively, which makes the
-/// quadratic part run at the speed of num-bigint's long division. A number of
-/// [`super::MAX_DIGITS`] digits prints in tens of milliseconds.
+/// divides by `10^9` with two hardware divisions per limb); four passes run in one sweep over
+/// the limbs, so that their remainder chains overlap. Numbers of 48 limbs or more are first
+/// split in two by one division by `10^(19·2^k)` (the largest such power not above the square
+/// root of the number, computed once per process), recursively, which makes the quadratic part
+/// run at the speed of num-bigint's long division; below 48 limbs (measured on this project's
+/// bench `numbers`) the division chains are faster than num-bigint's division and its
+/// allocations. A number of [`super::MAX_DIGITS`] digits prints in tens of milliseconds.
 pub fn push_decimal(out: &mut String, x: &BigUint) {
     if x.bits() <= 64 * (SPLIT_LIMBS as u64 - 1) {
         let mut limbs = [0u64; SPLIT_LIMBS];
@@ -89,7 +91,7 @@ pub fn push_decimal(out: &mut String, x: &BigUint) {
 }
 
 /// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
-const SPLIT_LIMBS: usize = 24;
+const SPLIT_LIMBS: usize = 48;
 
 /// Division passes by `10^19` that [`push_chunks`] runs in one sweep over the limbs.
 const FUSED: usize = 4;

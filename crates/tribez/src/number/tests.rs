@@ -866,7 +866,7 @@ fn limbs_strategy() -> impl Strategy<Value = Vec<u64>> {
             Just(9_999_999_999_999_999_999u64),
             Just(10_000_000_000_000_000_000u64),
         ],
-        0..80,
+        0..120,
     )
 }
 
@@ -887,8 +887,9 @@ fn decimal_printing_at_the_edges() {
             assert_eq!(s, x.to_string());
         }
     }
-    // around every limb boundary, and the stack path's largest size (23 limbs) and the split
-    for bits in (0..=40u32).map(|k| 64 * k) {
+    // around every limb boundary, the stack path's largest size (47 limbs), the split, and
+    // the split's halves
+    for bits in (0..=100u32).map(|k| 64 * k) {
         let p = BigUint::one() << bits;
         for x in [p.clone(), &p - 1u32, &p + 1u32, &p * 3u32 - 1u32] {
             let mut s = String::new();
