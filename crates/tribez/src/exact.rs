@@ -368,7 +368,9 @@ mod tests {
     /// (`p | C(n;α)` or `p | a_k`) rather than from residues: 7 at `α = (6, 1, 0)`, where
     /// `C(7; 6, 1, 0) = 7`; 11 at `(2, 2, 3)` (`C = 210`); 13 at two points (read off residues).
     /// Points whose coordinates are multiples of 11 or 13, or zero, make those primes divide the
-    /// numerator; the results must still be in lowest terms and equal the reference.
+    /// numerator; the results must still be in lowest terms and equal the reference. The second
+    /// coordinate has lone primes of its own (17, 19; 11 at `(2, 2, 3)` too), so that a point's
+    /// gcds, shared by the coordinates, carry primes that are lone in one coordinate only.
     #[test]
     fn horner_kernel_lone_primes_against_the_reference() {
         let simplex = Simplex::new(2, 7);
@@ -383,8 +385,17 @@ mod tests {
                     [1, 3, 3] | [0, 0, 7] => 13,
                     _ => 1,
                 };
+                let den1: i64 = match alpha.as_slice() {
+                    [6, 1, 0] => 17,
+                    [2, 2, 3] => 11,
+                    [0, 7, 0] => 19 * 4,
+                    _ => 1,
+                };
                 let r = r as i64;
-                [r - 7, 3 * r + 1].map(|p| BigRational::new(BigInt::from(p), BigInt::from(den)))
+                [
+                    BigRational::new(BigInt::from(r - 7), BigInt::from(den)),
+                    BigRational::new(BigInt::from(3 * r + 1), BigInt::from(den1)),
+                ]
             })
             .collect();
         let net = ControlNet::new(simplex, 2, coords);
@@ -403,6 +414,9 @@ mod tests {
             [7, 0, 0],
             [77, 143, 1],
             [3, 5, 0],
+            [17, 19, 1],
+            [19 * 7, 0, 17],
+            [1, 17 * 11, 19 * 13],
         ] {
             let d: i64 = a.iter().sum();
             let lambda: Vec<BigRational> = a

@@ -385,6 +385,9 @@ fn digit_sum(mut x: u64, p: u64) -> u64 {
 struct Reducer {
     /// The primes read off residues of `N`, with their exponents in `L_c`, ascending.
     shared: Vec<(OddDivisor, u32)>,
+    /// The lone primes that divide `N` at every point (`p | C(n;α)`), with their exponents.
+    always: Vec<(OddDivisor, u32)>,
+    /// The other lone primes: decided per point from the coordinates.
     lone: Vec<Lone>,
     /// `(M, first prime, end prime, 2^{64·CHUNK} mod M)`: `M` the product of `shared[first..end]`, `< 2^64`.
     moduli: Vec<(u64, usize, usize, u64)>,
@@ -419,7 +422,9 @@ impl Reducer {
             *big = x as u64;
         }
         let inverses = moduli.iter().map(|&(m, ..)| inverse_odd(m)).collect();
+        let (always, lone): (Vec<Lone>, Vec<Lone>) = lone.into_iter().partition(|l| l.always);
         Reducer {
+            always: always.into_iter().map(|l| (l.p, l.e)).collect(),
             shared: shared
                 .into_iter()
                 .map(|(p, e)| (OddDivisor::new(p), e))
@@ -431,14 +436,15 @@ impl Reducer {
         }
     }
 
-    /// Divide `limbs` by `gcd(limbs, L_odd)` (`L_odd` the odd part of `L`, as limbs), pushing
-    /// the primes removed (with multiplicity) onto `removed`. `a` is the point: the lone primes
-    /// are decided from it; a candidate is divided out only after its residue confirms it.
+    /// Divide `limbs` by `gcd(limbs, L_odd)` (`L_odd` the odd part of `L`), pushing the primes
+    /// removed (with multiplicity) onto `removed`. `g[k]` is `gcd(a_k, P)` for the point `a`, `P`
+    /// a multiple of every lone prime's `p` (see [`lone_gcds`]): `p | a_k` exactly when
+    /// `p | g[k]`, which decides the lone primes; a candidate is divided out only after its
+    /// residue confirms it.
     fn strip_odd(
         &self,
         limbs: &mut Vec<u64>,
-        a: &[u64],
-        l_odd: &[u64],
+        g: &[u64],
         removed: &mut Vec<u64>,
         hits: &mut Vec<(OddDivisor, u32)>,
     ) {
@@ -446,34 +452,14 @@ impl Reducer {
             return;
         }
         hits.clear();
-        if !self.lone.is_empty() {
-            // g_k = gcd(a_k, L_odd) (0 when a_k = 0: every prime divides it)
-            let gcd = |x: u64| {
-                let odd = x >> x.trailing_zeros().min(63);
-                match x {
-                    0 => 0,
-                    _ if odd == 1 => 1,
-                    _ => gcd_u64(rem_hensel(l_odd, odd, inverse_odd(odd)), odd),
-                }
-            };
-            let mut small = [0u64; 4];
-            let large: Vec<u64>;
-            let g: &[u64] = if a.len() <= small.len() {
-                for (g, &x) in small.iter_mut().zip(a) {
-                    *g = gcd(x);
-                }
-                &small[..a.len()]
-            } else {
-                large = a.iter().map(|&x| gcd(x)).collect();
-                &large
-            };
+        hits.extend_from_slice(&self.always);
+        // With random points every g_k is 1 nearly always: then no lone prime divides N.
+        if !self.lone.is_empty() && g.iter().any(|&x| x != 1) {
             for l in &self.lone {
-                if l.always
-                    || l.support.iter().any(|&k| {
-                        let g = g[k as usize];
-                        g != 1 && l.p.divides(g)
-                    })
-                {
+                if l.support.iter().any(|&k| {
+                    let g = g[k as usize];
+                    g != 1 && l.p.divides(g)
+                }) {
                     hits.push((l.p, l.e));
                 }
             }
@@ -768,6 +754,8 @@ struct Scratch {
     bufs: Vec<Vec<u64>>,
     row_bufs: [Vec<u64>; 4],
     acc: Vec<u64>,
+    /// [`lone_gcds`] of the point.
+    lone: Vec<u64>,
     reduce: ReduceScratch,
 }
 
@@ -802,6 +790,24 @@ pub struct FastNet {
     /// `count(t, N)` for `t ≤ m`, `N ≤ n`: `counts[t * (n + 1) + N]`.
     counts: Vec<usize>,
     coords: Vec<Coordinate>,
+    /// The product of the distinct lone primes of every coordinate that are not always hit, as
+    /// limbs (empty when there are none): one `gcd(a_k, P)` per point serves every coordinate.
+    lone_product: Vec<u64>,
+}
+
+/// `g[k] = gcd(a_k, P)` for each coordinate of the point (`0` when `a_k = 0`, which every prime
+/// divides), `P` odd, as limbs: one Hensel remainder of `P` by the odd part of `a_k` (coprime
+/// to 2, so the remainder's factor `2^{−64·len}` changes no gcd) and a word gcd.
+fn lone_gcds(g: &mut Vec<u64>, a: &[u64], p: &[u64]) {
+    g.clear();
+    g.extend(a.iter().map(|&x| {
+        let odd = x >> x.trailing_zeros().min(63);
+        match x {
+            0 => 0,
+            _ if odd == 1 => 1,
+            _ => gcd_u64(rem_hensel(p, odd, inverse_odd(odd)), odd),
+        }
+    }));
 }
 
 fn to_limbs(x: &BigUint) -> Vec<u64> {
@@ -900,12 +906,25 @@ impl FastNet {
                     rows,
                 }
             })
+            .collect::<Vec<Coordinate>>();
+        let mut primes: Vec<u64> = coords
+            .iter()
+            .filter_map(|c| c.reducer.as_ref())
+            .flat_map(|r| r.lone.iter().map(|l| l.p.p))
             .collect();
+        primes.sort_unstable();
+        primes.dedup();
+        let lone_product = if primes.is_empty() {
+            Vec::new()
+        } else {
+            to_limbs(&primes.iter().fold(BigUint::one(), |acc, &p| acc * p))
+        };
         FastNet {
             m,
             n,
             counts,
             coords,
+            lone_product,
         }
     }
 
@@ -965,8 +984,13 @@ impl FastNet {
             bufs,
             row_bufs,
             acc,
+            lone,
             reduce: red,
         } = scratch;
+        if !self.lone_product.is_empty() {
+            lone_gcds(lone, a, &self.lone_product);
+        }
+        let g = lone.as_slice();
         // Powers a_1^j, j = 0..n (reusing the thread's buffers: no allocation per point).
         fill_powers(pw, n, &[a[1]]);
         if bufs.len() < self.m {
@@ -991,7 +1015,7 @@ impl FastNet {
                         _ => None,
                     };
                     if let Some(neg) = fixed {
-                        return reduce(c, neg, acc, a, &den, red);
+                        return reduce(c, neg, acc, g, &den, red);
                     }
                 }
                 if let Some(rows) = &c.rows {
@@ -1002,7 +1026,7 @@ impl FastNet {
                         sums_ready = true;
                     }
                     let neg = rows.evaluate(n, a, pw, sp, &block, row_bufs, acc);
-                    return reduce(c, neg, acc, a, &den, red);
+                    return reduce(c, neg, acc, g, &den, red);
                 }
                 self.horner(c, self.m, n, 0, a, pw, bufs);
                 let mut h = std::mem::take(&mut bufs[0]);
@@ -1016,7 +1040,7 @@ impl FastNet {
                     let v = BigInt::from(from_limbs(&h)) - BigInt::from(&c.shift * &*sp);
                     (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
                 };
-                reduce(c, neg, &mut limbs, a, &den, red)
+                reduce(c, neg, &mut limbs, g, &den, red)
             })
             .collect()
     }
@@ -1177,11 +1201,12 @@ fn div_exact_words(x: &mut Vec<u64>, factors: &[u64]) {
 /// prime, so `n` rounds remove `p^{min(v_p(N), n·v_p(D))}`); then the odd primes of `L_c` up to
 /// their exponents in `L_c` from what is left, which makes `p^{min(v_p(N), v_p(L_c D^n))}` in all.
 /// Remainders and exact quotients by odd words are Hensel divisions (no division instruction).
+/// `g` is the point's [`lone_gcds`] (empty when no coordinate has lone primes to decide).
 fn reduce(
     c: &Coordinate,
     neg: bool,
     limbs: &mut Vec<u64>,
-    a: &[u64],
+    g: &[u64],
     pt: &PointDenominator,
     scratch: &mut ReduceScratch,
 ) -> BigRational {
@@ -1221,7 +1246,7 @@ fn reduce(
     }
     // The odd primes of L_c.
     from_l.clear();
-    reducer.strip_odd(limbs, a, &c.odd_denominator, from_l, hits);
+    reducer.strip_odd(limbs, g, from_l, hits);
     if from_l.is_empty() && from_d.is_empty() {
         mul_into(den, &c.odd_denominator, &pt.odd_pow);
     } else {
