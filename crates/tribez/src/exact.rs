@@ -27,7 +27,7 @@
 //! }
 //! ```
 
-use num_bigint::BigInt;
+use num_bigint::{BigInt, BigUint};
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed};
@@ -130,29 +130,41 @@ impl ExactEvaluator {
             .enumerate()
             .map(|(c, f)| match f {
                 Some(f) => BigInt::from(f.product()),
-                None => net
-                    .points()
-                    .fold(BigInt::one(), |acc, p| kernel::lcm_big(&acc, p[c].denom())),
+                None => kernel::lcm_fold(&BigInt::one(), net.points().map(|p| p[c].denom())),
             })
             .collect();
-        let coords: Vec<BigInt> = net
-            .points()
-            .flat_map(|p| {
+        // z_α = c_α L_c and C(n;α) z_α, point by point on all cores (the serial part of a whole
+        // run at high degrees otherwise).
+        let alphas: Vec<&[u32]> = net.simplex().iter().collect();
+        let points: Vec<&[BigRational]> = net.points().collect();
+        let multinomials: Vec<BigUint> = alphas.par_iter().map(|a| multinomial(a)).collect();
+        let (coords, scaled): (Vec<Vec<BigInt>>, Vec<Vec<BigInt>>) = points
+            .par_iter()
+            .zip(&multinomials)
+            .map(|(p, mult)| {
+                let k = BigInt::from(mult.clone());
                 p.iter()
                     .zip(&denominators)
-                    .map(|(x, l)| x.numer() * kernel::div_exact(l, x.denom()))
+                    .map(|(x, l)| {
+                        let z = x.numer() * kernel::div_exact(l, x.denom());
+                        let s = &z * &k;
+                        (z, s)
+                    })
+                    .unzip()
             })
-            .collect();
-        let integer_net = ControlNet::new(net.simplex().clone(), dim, coords);
-        let scaled: Vec<BigInt> = integer_net
-            .entries()
-            .flat_map(|(alpha, p)| {
-                let k = BigInt::from(multinomial(alpha));
-                p.iter().map(move |z| z * &k).collect::<Vec<_>>()
-            })
-            .collect();
-        let scaled_net = ControlNet::new(net.simplex().clone(), dim, scaled);
-        let fast = kernel::FastNet::new(net, &scaled_net, &integer_net, &denominators, factored);
+            .unzip();
+        let integer_net =
+            ControlNet::new(net.simplex().clone(), dim, coords.into_iter().flatten().collect());
+        let scaled_net =
+            ControlNet::new(net.simplex().clone(), dim, scaled.into_iter().flatten().collect());
+        let fast = kernel::FastNet::new(
+            net,
+            &scaled_net,
+            &integer_net,
+            &multinomials,
+            &denominators,
+            factored,
+        );
         ExactEvaluator {
             integer_net,
             scaled_net,
@@ -323,6 +335,34 @@ mod tests {
                 prop_assert_eq!(kernel::lcm_big(&x, &y), x.lcm(&y));
                 prop_assert_eq!(kernel::div_exact(&(&x * &y), &y), x.clone());
             }
+        }
+
+        /// `lcm_fold` (on limbs while the operands are nonzero words) against num-integer's
+        /// lcm folded step by step, on sequences of words, multi-limb numbers and zeros.
+        #[test]
+        fn lcm_fold_agrees_with_num_integer(
+            start in proptest::collection::vec(any::<u64>(), 0..4),
+            xs in proptest::collection::vec(
+                (any::<u64>(), 0u32..64, 0u8..10, any::<u64>()), 0..12),
+        ) {
+            use num_integer::Integer;
+            use num_traits::Zero;
+            let big = |limbs: &[u64]| {
+                limbs.iter().fold(BigInt::zero(), |x, &l| (x << 64u32) + BigInt::from(l))
+            };
+            let start = big(&start);
+            let xs: Vec<BigInt> = xs
+                .iter()
+                .map(|&(w, t, kind, hi)| match kind {
+                    0 => BigInt::zero(),
+                    1 => big(&[hi, w]),
+                    // small words share factors often
+                    2..=5 => BigInt::from((w % 1000 + 1) << (t % 8)),
+                    _ => BigInt::from(((w >> t) | 1) << t),
+                })
+                .collect();
+            let expected = xs.iter().fold(start.clone(), |acc, x| acc.lcm(x));
+            prop_assert_eq!(kernel::lcm_fold(&start, xs.iter()), expected);
         }
     }
 

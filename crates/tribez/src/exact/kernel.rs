@@ -106,19 +106,40 @@ pub fn lcm_big(a: &BigInt, b: &BigInt) -> BigInt {
     };
     if let Some(w) = small.magnitude().to_u64() {
         let mut x = to_limbs(big.magnitude());
-        let t = w.trailing_zeros();
-        let o = w >> t;
-        let odd_gcd = if o > 1 {
-            gcd_u64(rem_hensel(&x, o, inverse_odd(o)), o)
-        } else {
-            1
-        };
-        let g = (1u64 << t.min(trailing_zeros(&x) as u32)) * odd_gcd;
-        mul_word(&mut x, w / g);
+        lcm_word(&mut x, w);
         return BigInt::from(from_limbs(&x));
     }
     let g = (big % small).gcd(small);
     (big / &g * small).abs()
+}
+
+/// `x ← lcm(x, w)` on limbs, for `x ≠ 0` and a word `w = 2^t o ≠ 0` (`o` odd): the gcd is
+/// `2^min(t, v₂(x)) · gcd(r, o)` with `r` the Hensel remainder of `x` by `o` (which has the same
+/// gcd with `o`), and the lcm one product by the word `w / gcd`.
+fn lcm_word(x: &mut Vec<u64>, w: u64) {
+    debug_assert!(w != 0 && x.last().is_some_and(|&l| l != 0));
+    let t = w.trailing_zeros();
+    let o = w >> t;
+    let odd_gcd = if o > 1 {
+        gcd_u64(rem_hensel(x, o, inverse_odd(o)), o)
+    } else {
+        1
+    };
+    let g = (1u64 << t.min(trailing_zeros(x) as u32)) * odd_gcd;
+    mul_word(x, w / g);
+}
+
+/// `lcm(start, x_1, x_2, …)` (all non-negative), folded on limbs while the `x_i` are nonzero words
+/// (denominators nearly always are): one conversion in and out instead of one per step.
+pub fn lcm_fold<'a>(start: &BigInt, xs: impl Iterator<Item = &'a BigInt>) -> BigInt {
+    let mut acc = to_limbs(start.magnitude());
+    for x in xs {
+        match x.magnitude().to_u64() {
+            Some(w) if w != 0 && !acc.is_empty() => lcm_word(&mut acc, w),
+            _ => acc = to_limbs(lcm_big(&BigInt::from(from_limbs(&acc)), x).magnitude()),
+        }
+    }
+    BigInt::from(from_limbs(&acc))
 }
 
 /// The primes below `2^16` (sieved once, when a number needs trial division beyond
@@ -566,9 +587,7 @@ impl Rows {
             let nn = n - k;
             let base = k * (2 * n + 3 - k) / 2;
             let vals: Vec<&BigRational> = (0..=nn).map(|j| &net.point(base + j)[c]).collect();
-            let l = vals
-                .iter()
-                .fold(BigInt::one(), |acc, x| lcm_big(&acc, x.denom()));
+            let l = lcm_fold(&BigInt::one(), vals.iter().map(|x| x.denom()));
             let z: Vec<BigInt> = vals
                 .iter()
                 .map(|x| x.numer() * div_exact(&l, x.denom()))
@@ -604,9 +623,7 @@ impl Rows {
         for k in (0..=n).rev() {
             // lcm(m_{k+1}, L_k) from the row's denominators (words: no big gcd)
             let base = k * (2 * n + 3 - k) / 2;
-            let m_k = (0..=n - k).fold(m_next.clone(), |acc, j| {
-                lcm_big(&acc, net.point(base + j)[c].denom())
-            });
+            let m_k = lcm_fold(&m_next, (0..=n - k).map(|j| net.point(base + j)[c].denom()));
             debug_assert_eq!(m_k, lcm_big(&m_next, &row_lcm[k]));
             e[k] = to_limbs((&m_k / &m_next).magnitude());
             f[k] = to_limbs(
@@ -827,11 +844,13 @@ fn from_limbs_with(x: &[u64], halves: &mut Vec<u32>) -> BigUint {
 }
 
 impl FastNet {
-    /// Prepare from the integer net `z` and its multinomial-scaled version `C(n;α) z_α`.
+    /// Prepare from the integer net `z` and its multinomial-scaled version `C(n;α) z_α`
+    /// (`multinomials[r]` is `C(n;α)` for the multi-index of rank `r`).
     pub fn new(
         net: &ControlNet<BigRational>,
         scaled: &ControlNet<BigInt>,
         integer: &ControlNet<BigInt>,
+        multinomials: &[BigUint],
         denominators: &[BigInt],
         factored: Vec<Option<Factors>>,
     ) -> Self {
@@ -862,12 +881,11 @@ impl FastNet {
                 };
                 let mut limbs = Vec::new();
                 let mut starts = vec![0];
-                for ((alpha, s), (_, z)) in scaled.entries().zip(integer.entries()) {
+                for ((s, z), mult) in scaled.points().zip(integer.points()).zip(multinomials) {
                     let v = if shift.is_zero() {
                         s[c].magnitude().clone()
                     } else {
                         // C(n;α) (z + K) = s + C(n;α) K.
-                        let mult = crate::simplex::multinomial(alpha);
                         debug_assert_eq!(&(BigInt::from(mult.clone()) * &z[c]), &s[c]);
                         (&s[c] + BigInt::from(mult * &shift)).magnitude().clone()
                     };
