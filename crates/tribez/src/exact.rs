@@ -153,10 +153,16 @@ impl ExactEvaluator {
                     .unzip()
             })
             .unzip();
-        let integer_net =
-            ControlNet::new(net.simplex().clone(), dim, coords.into_iter().flatten().collect());
-        let scaled_net =
-            ControlNet::new(net.simplex().clone(), dim, scaled.into_iter().flatten().collect());
+        let integer_net = ControlNet::new(
+            net.simplex().clone(),
+            dim,
+            coords.into_iter().flatten().collect(),
+        );
+        let scaled_net = ControlNet::new(
+            net.simplex().clone(),
+            dim,
+            scaled.into_iter().flatten().collect(),
+        );
         let fast = kernel::FastNet::new(
             net,
             &scaled_net,
