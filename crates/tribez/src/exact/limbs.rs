@@ -34,6 +34,8 @@ pub(super) fn add_mul(x: &mut Vec<u64>, s: &[u64], v: &[u64]) {
     if s.is_empty() || v.is_empty() {
         return;
     }
+    // the passes over the longer operand: fewer of them, each longer (less per-pass overhead)
+    let (s, v) = if s.len() >= v.len() { (s, v) } else { (v, s) };
     let need = x.len().max(s.len() + v.len()) + 1;
     x.resize(need, 0);
     let mut pairs = v.chunks_exact(2);
