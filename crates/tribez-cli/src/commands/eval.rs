@@ -343,6 +343,9 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     run_in_chunks(args, None)
 }
 
+/// The most a chunk's output is sized for in advance (it still grows past it as needed).
+const RESERVE_CAP: usize = 1 << 24;
+
 /// [`run`] with `chunk` points per task (by default many chunks per core, so that the cores
 /// share the work evenly to the end).
 fn run_in_chunks(args: &Args, chunk: Option<usize>) -> Result<Outcome, CliError> {
@@ -373,8 +376,11 @@ fn run_in_chunks(args: &Args, chunk: Option<usize>) -> Result<Outcome, CliError>
                 }
                 if i == 0 {
                     // The points of a batch render to about the same length: size the part
-                    // once (an eighth to spare) instead of growing it by copies.
-                    part.reserve((part.len() + part.len() / 8) * (count - 1));
+                    // once (an eighth to spare) instead of growing it by copies; at most
+                    // RESERVE_CAP, since a first point much longer than the others would
+                    // otherwise reserve the chunk's length times its own.
+                    let estimate = (part.len() + part.len() / 8).saturating_mul(count - 1);
+                    part.reserve(estimate.min(RESERVE_CAP));
                 }
             }
             Ok(part)
