@@ -163,11 +163,7 @@ pub(super) fn mul_word_add_mul(x: &mut Vec<u64>, w: u64, s: &[u64], v: &[u64]) {
 /// `out ← a · b`.
 pub(super) fn mul_into(out: &mut Vec<u64>, a: &[u64], b: &[u64]) {
     out.clear();
-    if a.len() >= b.len() {
-        add_mul(out, a, b);
-    } else {
-        add_mul(out, b, a);
-    }
+    add_mul(out, a, b);
 }
 
 /// Compare trimmed magnitudes.
