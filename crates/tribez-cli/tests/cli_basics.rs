@@ -363,6 +363,40 @@ fn barycentric_coordinates_that_do_not_sum_to_one() {
     bad_args(&["eval"], &["give at least one point"]);
 }
 
+/// A bad point is named by where it came from: its `--at`, or its file and its number there
+/// (counted over the file's points, from 1), also in a file long enough to be read on all cores.
+#[test]
+fn a_bad_point_is_named_by_its_origin() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("pts.csv");
+    let mut text = String::from("u,v,w\n# comment\n");
+    for i in 0..600 {
+        text.push_str(if i == 417 {
+            "1/2,1/2,1/3\n"
+        } else {
+            "1/4,1/4,1/2\n"
+        });
+    }
+    std::fs::write(&points, text).unwrap();
+    let p = points.display().to_string();
+    bad_args(
+        &["eval", "--at", "1/3,1/3,1/3", "--points", &p],
+        &[&format!("{p}: point 418:"), "sum to 4/3, not 1"],
+    );
+    bad_args(
+        &[
+            "eval",
+            "--at",
+            "1/3,1/3,1/3",
+            "--at",
+            "1,1,0",
+            "--points",
+            &p,
+        ],
+        &["--at 1,1,0:", "sum to 2, not 1"],
+    );
+}
+
 #[test]
 fn homogeneous_points_are_accepted_on_request() {
     // P(1,1,1) = sum of C(2;i) c_i: x = 2*1 + 2*1 = 4 (from 2uv + 2vw).

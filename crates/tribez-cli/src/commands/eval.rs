@@ -249,16 +249,40 @@ fn float_results(
         .collect())
 }
 
-/// The points of `--at` and `--points`, with a description each.
-fn raw_points(args: &Args, width: usize) -> Result<Vec<(String, Vec<BigRational>)>, CliError> {
+/// Where a raw point came from: the `k`-th `--at`, or point `i` of the `--points` file.
+/// Described only when an error names it (a description formatted for every point of a large
+/// file cost more than parsing it).
+#[derive(Clone, Copy, Debug)]
+enum Origin {
+    At(usize),
+    File(usize),
+}
+
+impl Origin {
+    fn describe(self, args: &Args) -> String {
+        match (self, &args.points) {
+            (Origin::At(k), _) => format!("--at {}", args.at[k]),
+            (Origin::File(i), Some(path)) => format!("{}: point {}", path.display(), i + 1),
+            (Origin::File(i), None) => format!("point {}", i + 1),
+        }
+    }
+}
+
+/// The points of `--at` and `--points`, each with its [`Origin`].
+fn raw_points(args: &Args, width: usize) -> Result<Vec<(Origin, Vec<BigRational>)>, CliError> {
     let mut raw = Vec::new();
-    for a in &args.at {
-        raw.push((format!("--at {a}"), parse_list(a, "--at")?));
+    for (k, a) in args.at.iter().enumerate() {
+        raw.push((Origin::At(k), parse_list(a, "--at")?));
     }
     if let Some(path) = &args.points {
-        for (i, p) in read_points(path, width)?.into_iter().enumerate() {
-            raw.push((format!("{}: point {}", path.display(), i + 1), p));
-        }
+        let points = read_points(path, width)?;
+        raw.reserve(points.len());
+        raw.extend(
+            points
+                .into_iter()
+                .enumerate()
+                .map(|(i, p)| (Origin::File(i), p)),
+        );
     }
     if raw.is_empty() {
         return Err(CliError::Usage(
@@ -363,8 +387,8 @@ fn run_in_chunks(args: &Args, chunk: Option<usize>) -> Result<Outcome, CliError>
         .map(|(k, points)| {
             let mut part = String::new();
             let count = points.len();
-            for (i, (what, p)) in points.into_iter().enumerate() {
-                let r = eval.point(&what, p)?;
+            for (i, (origin, p)) in points.into_iter().enumerate() {
+                let r = eval.point(origin, p)?;
                 match format {
                     TextOrJson::Json => {
                         if k > 0 || i > 0 {
@@ -408,7 +432,7 @@ struct EvalInput {
     patch: Patch,
     header: String,
     kind: Option<&'static str>,
-    raw: Vec<(String, Vec<BigRational>)>,
+    raw: Vec<(Origin, Vec<BigRational>)>,
 }
 
 impl EvalInput {
@@ -469,9 +493,9 @@ impl<'p> Evaluators<'p> {
         })
     }
 
-    /// The result at the raw point `p` (described by `what` in errors).
-    fn point(&self, what: &str, p: Vec<BigRational>) -> Result<PointResult, CliError> {
-        let fail = |e| CliError::core(what, e);
+    /// The result at the raw point `p` (from `origin`, which errors name).
+    fn point(&self, origin: Origin, p: Vec<BigRational>) -> Result<PointResult, CliError> {
+        let fail = |e| CliError::core(origin.describe(self.args), e);
         let (at, cartesian) = input_of(self.args, self.patch, p).map_err(fail)?;
         let point = self.exact.evaluate(&at).map_err(fail)?;
         let lambda = self.exact.coordinates(&at).map_err(fail)?;
@@ -498,7 +522,7 @@ fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
     let eval = Evaluators::new(args, &input.file, &input.patch)?;
     let results = raw
         .into_iter()
-        .map(|(what, p)| eval.point(&what, p))
+        .map(|(origin, p)| eval.point(origin, p))
         .collect::<Result<_, _>>()?;
     Ok(EvalReport {
         file: input.file,

@@ -9,6 +9,7 @@
 use std::path::Path;
 
 use num_rational::BigRational;
+use rayon::prelude::*;
 
 use super::text::read_text;
 use super::tree::Document;
@@ -61,13 +62,18 @@ pub fn points_from_document(
 }
 
 /// The points of CSV text (see the module documentation); every point has `width` coordinates.
+///
+/// From [`PARALLEL_ROWS`] rows on, the rows are parsed on all cores, block by block; the error
+/// reported is still that of the first bad line in the file (a block stops at its first bad
+/// line, so there is at most one error per block).
 pub fn parse_csv_points(
     text: &str,
     width: usize,
     file: &str,
 ) -> Result<Vec<Vec<BigRational>>, InputError> {
     let text = super::text::strip_bom(text);
-    let mut out = Vec::new();
+    // (line number, trimmed text) of every data row
+    let mut rows: Vec<(usize, &str)> = Vec::new();
     let mut first = true;
     for (i, line) in text.lines().enumerate() {
         let t = line.trim();
@@ -90,13 +96,31 @@ pub fn parse_csv_points(
             }
             continue;
         }
-        out.push(parse_csv_row(t, width, file, i + 1)?);
+        rows.push((i + 1, t));
     }
-    if out.is_empty() {
+    if rows.is_empty() {
         return Err(InputError::file(file, Problem::NoPoints));
+    }
+    let block = |rows: &[(usize, &str)]| {
+        rows.iter()
+            .map(|&(line, t)| parse_csv_row(t, width, file, line))
+            .collect::<Result<Vec<_>, _>>()
+    };
+    if rows.len() < PARALLEL_ROWS {
+        return block(&rows);
+    }
+    let size = (rows.len() / (8 * rayon::current_num_threads())).max(PARALLEL_ROWS / 4);
+    let blocks: Vec<_> = rows.par_chunks(size).map(block).collect();
+    let mut out = Vec::with_capacity(rows.len());
+    for b in blocks {
+        out.extend(b?);
     }
     Ok(out)
 }
+
+/// The number of CSV rows from which [`parse_csv_points`] parses on all cores (below it, the
+/// threads' start would cost more than they save).
+pub const PARALLEL_ROWS: usize = 256;
 
 /// One CSV row of exactly `width` numbers; errors name the line and column (field).
 pub fn parse_csv_row(
@@ -181,6 +205,50 @@ mod tests {
         // names after data are bad rows
         let e = parse_csv_points("0,0,1\nu,v,w\n", 3, "p.csv").unwrap_err();
         assert_eq!(e.line, Some(2));
+    }
+
+    /// A file long enough to be parsed on all cores, with comments and blank lines between the
+    /// rows: the same points, in order, as row by row; and of several bad lines, the first.
+    #[test]
+    fn long_files_parse_as_row_by_row_and_report_the_first_bad_line() {
+        let rows = 4 * PARALLEL_ROWS + 13;
+        let mut text = String::from("u,v,w\n");
+        let mut lines = Vec::new(); // (line number, row)
+        for r in 0..rows {
+            if r % 7 == 0 {
+                text.push_str("# a comment\n\n");
+            }
+            let (p, q) = (r % 97 + 1, r % 89 + 3);
+            let row = format!("{p}/{q},-{q}/{},0.25", p * 7 + 1);
+            lines.push((text.lines().count() + 1, row.clone()));
+            text.push_str(&row);
+            text.push('\n');
+        }
+        let all = parse_csv_points(&text, 3, "p.csv").unwrap();
+        let one_by_one: Vec<_> = lines
+            .iter()
+            .map(|(line, row)| parse_csv_row(row, 3, "p.csv", *line).unwrap())
+            .collect();
+        assert_eq!(all, one_by_one);
+        // three bad lines far apart (in different blocks): the error names the first
+        let bad: Vec<usize> = [rows - 5, rows / 2, rows / 3]
+            .iter()
+            .map(|&r| lines[r].0)
+            .collect();
+        let broken: String = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| {
+                if bad.contains(&(i + 1)) {
+                    "1,x,2\n".to_string()
+                } else {
+                    format!("{l}\n")
+                }
+            })
+            .collect();
+        let e = parse_csv_points(&broken, 3, "p.csv").unwrap_err();
+        assert_eq!(e.line, Some(lines[rows / 3].0), "{e}");
+        assert!(e.to_string().contains("field 2"), "{e}");
     }
 
     #[test]
