@@ -27,6 +27,8 @@
 //! }
 //! ```
 
+use std::sync::OnceLock;
+
 use num_bigint::{BigInt, BigUint};
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -107,14 +109,70 @@ pub fn common_denominator(xs: &[BigRational]) -> (Vec<BigInt>, BigInt) {
 /// A control net prepared once for many exact evaluations.
 #[derive(Clone, Debug)]
 pub struct ExactEvaluator {
-    /// `z_α` per coordinate: the control points times `L_c`.
-    integer_net: ControlNet<BigInt>,
-    /// `C(n;α) z_α`: the Bernstein form's integer coefficients.
-    scaled_net: ControlNet<BigInt>,
+    /// The control net as given (the integer nets are built from it when first needed).
+    net: ControlNet<BigRational>,
+    /// `z_α` and `C(n;α) z_α`, built on first use by the generic paths when the fast kernel did
+    /// not need them (a triangle at high degree needs neither: its row form is built from the
+    /// rational net directly).
+    nets: OnceLock<IntegerNets>,
     /// `L_c`, the least common denominator of coordinate `c`.
     denominators: Vec<BigInt>,
     /// The per-patch data of the fast Horner kernel.
     fast: kernel::FastNet,
+}
+
+/// The integer forms of a control net over its denominators `L_c`.
+#[derive(Clone, Debug)]
+struct IntegerNets {
+    /// `z_α` per coordinate: the control points times `L_c`.
+    integer: ControlNet<BigInt>,
+    /// `C(n;α) z_α`: the Bernstein form's integer coefficients.
+    scaled: ControlNet<BigInt>,
+    /// `C(n;α)` by rank.
+    multinomials: Vec<BigUint>,
+}
+
+impl IntegerNets {
+    /// `z_α = c_α L_c` and `C(n;α) z_α`, point by point on all cores (the serial part of a whole
+    /// run at high degrees otherwise).
+    fn new(net: &ControlNet<BigRational>, denominators: &[BigInt]) -> Self {
+        let dim = net.dim();
+        let alphas: Vec<&[u32]> = net.simplex().iter().collect();
+        let points: Vec<&[BigRational]> = net.points().collect();
+        let multinomials: Vec<BigUint> = alphas.par_iter().map(|a| multinomial(a)).collect();
+        let (coords, scaled): (Vec<Vec<BigInt>>, Vec<Vec<BigInt>>) = points
+            .par_iter()
+            .zip(&multinomials)
+            .map(|(p, mult)| {
+                let k = BigInt::from(mult.clone());
+                p.iter()
+                    .zip(denominators)
+                    .map(|(x, l)| {
+                        let z = x.numer() * kernel::div_exact(l, x.denom());
+                        let s = &z * &k;
+                        (z, s)
+                    })
+                    .unzip()
+            })
+            .unzip();
+        IntegerNets {
+            integer: ControlNet::new(
+                net.simplex().clone(),
+                dim,
+                coords.into_iter().flatten().collect(),
+            ),
+            scaled: ControlNet::new(
+                net.simplex().clone(),
+                dim,
+                scaled.into_iter().flatten().collect(),
+            ),
+            multinomials,
+        }
+    }
+
+    fn as_kernel_input(&self) -> kernel::IntegerNetsRef<'_> {
+        (&self.scaled, &self.integer, &self.multinomials)
+    }
 }
 
 impl ExactEvaluator {
@@ -133,50 +191,28 @@ impl ExactEvaluator {
                 None => kernel::lcm_fold(&BigInt::one(), net.points().map(|p| p[c].denom())),
             })
             .collect();
-        // z_α = c_α L_c and C(n;α) z_α, point by point on all cores (the serial part of a whole
-        // run at high degrees otherwise).
-        let alphas: Vec<&[u32]> = net.simplex().iter().collect();
-        let points: Vec<&[BigRational]> = net.points().collect();
-        let multinomials: Vec<BigUint> = alphas.par_iter().map(|a| multinomial(a)).collect();
-        let (coords, scaled): (Vec<Vec<BigInt>>, Vec<Vec<BigInt>>) = points
-            .par_iter()
-            .zip(&multinomials)
-            .map(|(p, mult)| {
-                let k = BigInt::from(mult.clone());
-                p.iter()
-                    .zip(&denominators)
-                    .map(|(x, l)| {
-                        let z = x.numer() * kernel::div_exact(l, x.denom());
-                        let s = &z * &k;
-                        (z, s)
-                    })
-                    .unzip()
-            })
-            .unzip();
-        let integer_net = ControlNet::new(
-            net.simplex().clone(),
-            dim,
-            coords.into_iter().flatten().collect(),
-        );
-        let scaled_net = ControlNet::new(
-            net.simplex().clone(),
-            dim,
-            scaled.into_iter().flatten().collect(),
-        );
+        let nets = OnceLock::new();
+        if kernel::FastNet::needs_integer_nets(net, &denominators) {
+            let _ = nets.set(IntegerNets::new(net, &denominators));
+        }
         let fast = kernel::FastNet::new(
             net,
-            &scaled_net,
-            &integer_net,
-            &multinomials,
+            nets.get().map(IntegerNets::as_kernel_input),
             &denominators,
             factored,
         );
         ExactEvaluator {
-            integer_net,
-            scaled_net,
+            net: net.clone(),
+            nets,
             denominators,
             fast,
         }
+    }
+
+    /// The integer nets, built now if the kernel did not need them.
+    fn nets(&self) -> &IntegerNets {
+        self.nets
+            .get_or_init(|| IntegerNets::new(&self.net, &self.denominators))
     }
 
     /// The homogeneous form `P(λ)` at a rational point (which need not sum to one), by the fast
@@ -195,10 +231,11 @@ impl ExactEvaluator {
     /// The homogeneous form `P(λ)` at a rational point (which need not sum to one).
     pub fn evaluate(&self, lambda: &[BigRational], algorithm: Algorithm) -> Vec<BigRational> {
         let (a, d) = common_denominator(lambda);
-        let n = self.integer_net.degree();
+        let n = self.net.degree();
+        let nets = self.nets();
         let numer = match algorithm {
-            Algorithm::Casteljau => casteljau::evaluate(&self.integer_net, &a),
-            Algorithm::Bernstein => monomial_sum(&self.scaled_net, &a),
+            Algorithm::Casteljau => casteljau::evaluate(&nets.integer, &a),
+            Algorithm::Bernstein => monomial_sum(&nets.scaled, &a),
         };
         let dn = num_traits::pow(d, n);
         numer
@@ -210,7 +247,7 @@ impl ExactEvaluator {
 
     /// The integer net `z_α` and its per-coordinate denominators `L_c`.
     pub fn integer_net(&self) -> (&ControlNet<BigInt>, &[BigInt]) {
-        (&self.integer_net, &self.denominators)
+        (&self.nets().integer, &self.denominators)
     }
 }
 
@@ -475,6 +512,50 @@ mod tests {
                 parts(&expected),
                 "at {a:?}"
             );
+        }
+    }
+
+    /// A triangle of degree 20 with 16-bit denominators has results far beyond four limbs:
+    /// its kernel is the row form alone and the integer nets are left unbuilt, until a generic
+    /// path asks for them; a quadratic, a curve and a tetrahedron build them at once. Every
+    /// path agrees with rational de Casteljau on the net as given.
+    #[test]
+    fn integer_nets_are_built_when_a_path_needs_them() {
+        let n = 20;
+        let count = crate::simplex::count(2, n);
+        let coords: Vec<BigRational> = (0..3 * count as u64)
+            .map(|i| rational((i * 7919 % 20011) as i64 - 10_000, i * 104_729 + 3, 0))
+            .collect();
+        let net = ControlNet::new(Simplex::new(2, n), 3, coords);
+        let eval = ExactEvaluator::new(&net);
+        assert!(eval.nets.get().is_none(), "degree 20: the row form alone");
+        let lambda: Vec<BigRational> = [(3, 11), (5, 13), (1, 1)]
+            .iter()
+            .map(|&(p, q)| BigRational::new(BigInt::from(p), BigInt::from(q)))
+            .collect();
+        let lambda = [
+            lambda[0].clone(),
+            lambda[1].clone(),
+            BigRational::one() - &lambda[0] - &lambda[1],
+        ];
+        let expected = evaluate_rational(&net, &lambda, Algorithm::Casteljau);
+        assert_eq!(eval.evaluate_fast(&lambda), expected);
+        assert!(eval.nets.get().is_none());
+        assert_eq!(eval.evaluate(&lambda, Algorithm::Bernstein), expected);
+        assert!(eval.nets.get().is_some(), "built by the generic path");
+        assert_eq!(eval.evaluate(&lambda, Algorithm::Casteljau), expected);
+        let (integer, denominators) = eval.integer_net();
+        assert_eq!(
+            BigRational::new(integer.point(0)[1].clone(), denominators[1].clone()),
+            net.point(0)[1]
+        );
+        for (m, n) in [(2, 2), (1, 5), (3, 3)] {
+            let count = crate::simplex::count(m, n);
+            let coords = (0..2 * count as u64)
+                .map(|i| rational(i as i64 - 4, i + 2, 0))
+                .collect();
+            let small = ExactEvaluator::new(&ControlNet::new(Simplex::new(m, n), 2, coords));
+            assert!(small.nets.get().is_some(), "m = {m}, n = {n}");
         }
     }
 

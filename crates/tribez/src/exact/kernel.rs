@@ -537,24 +537,83 @@ impl Reducer {
 /// One coordinate's per-patch data.
 #[derive(Clone, Debug)]
 struct Coordinate {
-    /// Limbs of `s_α`, `starts[r]..starts[r+1]` for rank `r`.
-    limbs: Vec<u64>,
-    starts: Vec<usize>,
-    /// `K_c` (zero when no `z_α` is negative).
-    shift: BigUint,
+    form: Form,
     /// `L_c`.
     denominator: BigUint,
     /// `L_c = 2^{e2} · odd`: the limbs of the odd part, and `e2`.
     odd_denominator: Vec<u64>,
     e2: u64,
     reducer: Option<Reducer>,
-    /// The row-scaled form, for triangles.
-    rows: Option<Rows>,
+}
+
+/// How a coordinate's numerator is computed.
+#[derive(Clone, Debug)]
+enum Form {
+    /// A triangle: the row form ([`Rows`]), and the global form as well when some point's result
+    /// may fit four limbs ([`horner_fixed`]); at high degrees it never does, and the global form,
+    /// whose numbers are `|L_c|`-sized, is not built.
+    Triangle { rows: Rows, small: Option<Global> },
+    /// Any other simplex: the nested Horner on the global form.
+    Simplex(Global),
+}
+
+/// The global form of a coordinate: `C(n;α)(z_α + K_c)` with one denominator `L_c` for all.
+#[derive(Clone, Debug)]
+struct Global {
+    /// Limbs of `C(n;α)(z_α + K_c)`, `starts[r]..starts[r+1]` for rank `r`.
+    limbs: Vec<u64>,
+    starts: Vec<usize>,
+    /// `K_c` (zero when no `z_α` is negative).
+    shift: BigUint,
     /// `max_α bits(|z_α|)`: with `σ = Σ_k a_k`, `|N| ≤ max|z_α| σ^n < 2^{z_bits + n·bits(σ)}`,
     /// which decides whether [`horner_fixed`] may run.
     z_bits: u64,
     /// `K_c` as limbs (for [`horner_fixed`]).
     shift_limbs: Vec<u64>,
+}
+
+/// The nets the global form is built from: `C(n;α) z_α` and `z_α` (one coordinate per column),
+/// and the multinomials `C(n;α)` by rank.
+pub type IntegerNetsRef<'a> = (
+    &'a ControlNet<BigInt>,
+    &'a ControlNet<BigInt>,
+    &'a [BigUint],
+);
+
+impl Global {
+    fn new((scaled, integer, multinomials): IntegerNetsRef<'_>, c: usize) -> Global {
+        let min = integer
+            .points()
+            .map(|p| &p[c])
+            .min()
+            .cloned()
+            .unwrap_or_default();
+        let shift = if min.is_negative() {
+            min.magnitude().clone()
+        } else {
+            BigUint::zero()
+        };
+        let mut limbs = Vec::new();
+        let mut starts = vec![0];
+        for ((s, z), mult) in scaled.points().zip(integer.points()).zip(multinomials) {
+            let v = if shift.is_zero() {
+                s[c].magnitude().clone()
+            } else {
+                // C(n;α) (z + K) = s + C(n;α) K.
+                debug_assert_eq!(&(BigInt::from(mult.clone()) * &z[c]), &s[c]);
+                (&s[c] + BigInt::from(mult * &shift)).magnitude().clone()
+            };
+            limbs.extend(to_limbs(&v));
+            starts.push(limbs.len());
+        }
+        Global {
+            limbs,
+            starts,
+            shift_limbs: to_limbs(&shift),
+            shift,
+            z_bits: integer.points().map(|p| p[c].bits()).max().unwrap_or(0),
+        }
+    }
 }
 
 /// A triangle with each row `k` (`α_2 = k`) brought to its own common denominator `L_k`:
@@ -756,7 +815,7 @@ impl Block {
     }
 }
 
-impl Coordinate {
+impl Global {
     #[inline]
     fn coef(&self, r: usize) -> &[u64] {
         &self.limbs[self.starts[r]..self.starts[r + 1]]
@@ -844,17 +903,35 @@ fn from_limbs_with(x: &[u64], halves: &mut Vec<u32>) -> BigUint {
 }
 
 impl FastNet {
-    /// Prepare from the integer net `z` and its multinomial-scaled version `C(n;α) z_α`
-    /// (`multinomials[r]` is `C(n;α)` for the multi-index of rank `r`).
+    /// Whether [`FastNet::new`] needs the [`IntegerNetsRef`] of `net` (whose least common
+    /// denominators are `denominators`): for every simplex but the triangle, and for a triangle
+    /// when some coordinate's `z_α` may be short enough for [`horner_fixed`] (`bits(z_α)` is
+    /// `bits(p) + bits(L_c) − bits(q)` for `p/q` give or take one; the estimate only decides
+    /// whether the fixed-width path is prepared, never whether it is sound).
+    pub fn needs_integer_nets(net: &ControlNet<BigRational>, denominators: &[BigInt]) -> bool {
+        let n = net.degree() as u64;
+        net.m() != 2
+            || denominators.iter().enumerate().any(|(c, l)| {
+                let bits = net
+                    .points()
+                    .map(|p| (p[c].numer().bits() + l.bits()).saturating_sub(p[c].denom().bits()))
+                    .max()
+                    .unwrap_or(0);
+                // the fixed path runs only when z_bits + n + 1 ≤ FIXED_BITS, and z_bits ≥ bits − 1
+                bits + n <= FIXED_BITS
+            })
+    }
+
+    /// Prepare `net`, whose least common denominators are `denominators` (factored when their
+    /// odd parts split into small primes); `nets` are its [`IntegerNetsRef`], given exactly when
+    /// [`FastNet::needs_integer_nets`] holds.
     pub fn new(
         net: &ControlNet<BigRational>,
-        scaled: &ControlNet<BigInt>,
-        integer: &ControlNet<BigInt>,
-        multinomials: &[BigUint],
+        nets: Option<IntegerNetsRef<'_>>,
         denominators: &[BigInt],
         factored: Vec<Option<Factors>>,
     ) -> Self {
-        let (m, n, dim) = (scaled.m(), scaled.degree(), scaled.dim());
+        let (m, n, dim) = (net.m(), net.degree(), net.dim());
         let mut counts = vec![0; (m + 1) * (n + 1)];
         for t in 0..=m {
             for nn in 0..=n {
@@ -868,38 +945,20 @@ impl FastNet {
             .into_par_iter()
             .enumerate()
             .map(|(c, f)| {
-                let min = integer
-                    .points()
-                    .map(|p| &p[c])
-                    .min()
-                    .cloned()
-                    .unwrap_or_default();
-                let shift = if min.is_negative() {
-                    min.magnitude().clone()
-                } else {
-                    BigUint::zero()
-                };
-                let mut limbs = Vec::new();
-                let mut starts = vec![0];
-                for ((s, z), mult) in scaled.points().zip(integer.points()).zip(multinomials) {
-                    let v = if shift.is_zero() {
-                        s[c].magnitude().clone()
+                let global = nets.map(|nets| Global::new(nets, c));
+                let form =
+                    if m == 2 {
+                        Form::Triangle {
+                            rows: Rows::new(n, net, c),
+                            small: global,
+                        }
                     } else {
-                        // C(n;α) (z + K) = s + C(n;α) K.
-                        debug_assert_eq!(&(BigInt::from(mult.clone()) * &z[c]), &s[c]);
-                        (&s[c] + BigInt::from(mult * &shift)).magnitude().clone()
+                        Form::Simplex(global.expect(
+                            "the integer nets are given for every simplex but the triangle",
+                        ))
                     };
-                    limbs.extend(to_limbs(&v));
-                    starts.push(limbs.len());
-                }
-                let rows = (m == 2).then(|| Rows::new(n, net, c));
-                let z_bits = integer.points().map(|p| p[c].bits()).max().unwrap_or(0);
                 Coordinate {
-                    limbs,
-                    starts,
-                    shift_limbs: to_limbs(&shift),
-                    shift,
-                    z_bits,
+                    form,
                     denominator: denominators[c].magnitude().clone(),
                     odd_denominator: to_limbs(
                         &(denominators[c].magnitude()
@@ -921,7 +980,6 @@ impl FastNet {
                             Reducer::new(f.odd.clone(), Vec::new())
                         }
                     }),
-                    rows,
                 }
             })
             .collect::<Vec<Coordinate>>();
@@ -956,7 +1014,7 @@ impl FastNet {
     #[allow(clippy::too_many_arguments)] // the recursion's state; a struct would only rename it
     fn horner(
         &self,
-        c: &Coordinate,
+        c: &Global,
         t: usize,
         nn: usize,
         base: usize,
@@ -1022,21 +1080,21 @@ impl FastNet {
         let sum_bits = u64::from(128 - sum.leading_zeros());
         self.coords
             .iter()
-            .map(|c| {
-                if self.m == 2 {
-                    // Small results: fixed-width two's complement, no lengths to track.
-                    let need = c.z_bits + n as u64 * sum_bits + 1;
-                    let fixed = match need {
-                        0..=128 => Some(horner_fixed::<2>(c, n, a, sum, acc)),
-                        129..=192 => Some(horner_fixed::<3>(c, n, a, sum, acc)),
-                        193..=256 => Some(horner_fixed::<4>(c, n, a, sum, acc)),
-                        _ => None,
-                    };
-                    if let Some(neg) = fixed {
-                        return reduce(c, neg, acc, g, &den, red);
+            .map(|c| match &c.form {
+                Form::Triangle { rows, small } => {
+                    if let Some(global) = small {
+                        // Small results: fixed-width two's complement, no lengths to track.
+                        let need = global.z_bits + n as u64 * sum_bits + 1;
+                        let fixed = match need {
+                            0..=128 => Some(horner_fixed::<2>(global, n, a, sum, acc)),
+                            129..=192 => Some(horner_fixed::<3>(global, n, a, sum, acc)),
+                            193..=FIXED_BITS => Some(horner_fixed::<4>(global, n, a, sum, acc)),
+                            _ => None,
+                        };
+                        if let Some(neg) = fixed {
+                            return reduce(c, neg, acc, g, &den, red);
+                        }
                     }
-                }
-                if let Some(rows) = &c.rows {
                     if !sums_ready {
                         let (sum, carry) = a[0].overflowing_add(a[1]);
                         let sum01 = [sum, u64::from(carry)];
@@ -1044,25 +1102,30 @@ impl FastNet {
                         sums_ready = true;
                     }
                     let neg = rows.evaluate(n, a, pw, sp, &block, row_bufs, acc);
-                    return reduce(c, neg, acc, g, &den, red);
+                    reduce(c, neg, acc, g, &den, red)
                 }
-                self.horner(c, self.m, n, 0, a, pw, bufs);
-                let mut h = std::mem::take(&mut bufs[0]);
-                trim(&mut h);
-                let (neg, mut limbs) = if c.shift.is_zero() {
-                    (false, h)
-                } else {
-                    let sp = sum_pow.get_or_insert_with(|| {
-                        a.iter().fold(BigUint::zero(), |s, &x| s + x).pow(n as u32)
-                    });
-                    let v = BigInt::from(from_limbs(&h)) - BigInt::from(&c.shift * &*sp);
-                    (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
-                };
-                reduce(c, neg, &mut limbs, g, &den, red)
+                Form::Simplex(global) => {
+                    self.horner(global, self.m, n, 0, a, pw, bufs);
+                    let mut h = std::mem::take(&mut bufs[0]);
+                    trim(&mut h);
+                    let (neg, mut limbs) = if global.shift.is_zero() {
+                        (false, h)
+                    } else {
+                        let sp = sum_pow.get_or_insert_with(|| {
+                            a.iter().fold(BigUint::zero(), |s, &x| s + x).pow(n as u32)
+                        });
+                        let v = BigInt::from(from_limbs(&h)) - BigInt::from(&global.shift * &*sp);
+                        (v.sign() == Sign::Minus, to_limbs(v.magnitude()))
+                    };
+                    reduce(c, neg, &mut limbs, g, &den, red)
+                }
             })
             .collect()
     }
 }
+
+/// The most bits a result of [`horner_fixed`] may need (four limbs).
+const FIXED_BITS: u64 = 256;
 
 /// `x ← x · w mod 2^{64W}`.
 #[inline(always)]
@@ -1096,7 +1159,7 @@ fn add_mul_fixed<const W: usize>(x: &mut [u64; W], s: &[u64], p: &[u64; W]) {
 /// `S ← S a_2 + T`): at the small degrees where the result fits four limbs it has no lengths,
 /// signs or allocations to track.
 fn horner_fixed<const W: usize>(
-    c: &Coordinate,
+    c: &Global,
     n: usize,
     a: &[u64],
     sum: u128,
