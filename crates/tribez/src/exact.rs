@@ -559,6 +559,40 @@ mod tests {
         }
     }
 
+    /// A prime of `L_c` found dividing the numerator by its residue is divided out without a
+    /// check, and its higher powers with one. By hand, the linear triangle with control values
+    /// `(1/9, 17/9, 1)` and `(1/9, 2/9, 4/9)`: at `(1/2, 1/2, 0)`, `(1/9 + 17/9)/2 = 1` (both
+    /// factors 3 of `L_c = 9` out) and `(1/9 + 2/9)/2 = 1/6` (one); at `(1/2, 0, 1/2)`,
+    /// `(1/9 + 1)/2 = 5/9` and `(1/9 + 4/9)/2 = 5/18` (none); at `(1/4, 3/4, 0)`,
+    /// `(1 + 51)/36 = 13/9` and `(1 + 6)/36 = 7/36`.
+    #[test]
+    fn shared_primes_and_their_powers_leave_the_numerator() {
+        let q = |s: &str| crate::number::parse_rational(s).unwrap();
+        let pts: Vec<Vec<BigRational>> = [["1/9", "1/9"], ["17/9", "2/9"], ["1", "4/9"]]
+            .iter()
+            .map(|p| p.iter().map(|s| q(s)).collect())
+            .collect();
+        let net = ControlNet::from_points(2, 1, &pts);
+        let eval = ExactEvaluator::new(&net);
+        for (at, expected) in [
+            (["1/2", "1/2", "0"], ["1", "1/6"]),
+            (["1/2", "0", "1/2"], ["5/9", "5/18"]),
+            (["1/4", "3/4", "0"], ["13/9", "7/36"]),
+        ] {
+            let lambda = at.map(q);
+            let got: Vec<String> = eval
+                .evaluate_fast(&lambda)
+                .iter()
+                .map(ToString::to_string)
+                .collect();
+            assert_eq!(got, expected, "{at:?}");
+            assert_eq!(
+                eval.evaluate_fast(&lambda),
+                evaluate_rational(&net, &lambda, Algorithm::Casteljau)
+            );
+        }
+    }
+
     #[test]
     fn horner_kernel_on_a_known_quadratic() {
         // The module doc example, plus the reduced-denominator case: at a corner the value is

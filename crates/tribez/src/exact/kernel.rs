@@ -461,17 +461,21 @@ impl Reducer {
     /// removed (with multiplicity) onto `removed`. `g[k]` is `gcd(a_k, P)` for the point `a`, `P`
     /// a multiple of every lone prime's `p` (see [`lone_gcds`]): `p | a_k` exactly when
     /// `p | g[k]`, which decides the lone primes; a candidate is divided out only after its
-    /// residue confirms it.
+    /// residue confirms it. A shared prime whose residue is zero divides `N`: its first power is
+    /// divided out unchecked, together with the others' in as few word divisions as their
+    /// product fills (`sure` holds them); only its higher powers are checked.
     fn strip_odd(
         &self,
         limbs: &mut Vec<u64>,
         g: &[u64],
         removed: &mut Vec<u64>,
         hits: &mut Vec<(OddDivisor, u32)>,
+        sure: &mut Vec<(OddDivisor, u32)>,
     ) {
         if limbs.is_empty() {
             return;
         }
+        sure.clear();
         hits.clear();
         hits.extend_from_slice(&self.always);
         // With random points every g_k is 1 nearly always: then no lone prime divides N.
@@ -516,11 +520,16 @@ impl Reducer {
             }
             for &(p, e) in &self.shared[first..end] {
                 if p.divides(r) {
-                    hits.push((p, e));
+                    sure.push((p, e));
                 }
             }
         }
-        for &(p, e) in hits.iter() {
+        // p | r exactly when p | N (r is N times a power of 2 modulo M, or N mod M)
+        let start = removed.len();
+        removed.extend(sure.iter().map(|(p, _)| p.p));
+        div_exact_words(limbs, &removed[start..]);
+        let more = sure.iter().map(|&(p, e)| (p, e - 1));
+        for (p, e) in more.chain(hits.iter().copied()) {
             for _ in 0..e {
                 // `rem_hensel` is in 0..=p, and 0 or p when p divides.
                 let c = rem_hensel(limbs, p.p, p.inv);
@@ -1304,6 +1313,7 @@ fn reduce(
         from_d,
         from_l,
         hits,
+        sure,
         l,
         dp,
         den,
@@ -1327,7 +1337,7 @@ fn reduce(
     }
     // The odd primes of L_c.
     from_l.clear();
-    reducer.strip_odd(limbs, g, from_l, hits);
+    reducer.strip_odd(limbs, g, from_l, hits, sure);
     if from_l.is_empty() && from_d.is_empty() {
         mul_into(den, &c.odd_denominator, &pt.odd_pow);
     } else {
@@ -1353,6 +1363,7 @@ struct ReduceScratch {
     from_d: Vec<u64>,
     from_l: Vec<u64>,
     hits: Vec<(OddDivisor, u32)>,
+    sure: Vec<(OddDivisor, u32)>,
     l: Vec<u64>,
     dp: Vec<u64>,
     den: Vec<u64>,
