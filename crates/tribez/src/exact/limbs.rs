@@ -31,21 +31,22 @@ pub(super) fn mul_word(x: &mut Vec<u64>, w: u64) {
 /// `addmul_2`: half the loads and stores of `x` of one pass per limb).
 #[inline]
 pub(super) fn add_mul(x: &mut Vec<u64>, s: &[u64], v: &[u64]) {
-    if s.is_empty() || v.is_empty() {
-        return;
-    }
     // the passes over the longer operand: fewer of them, each longer (less per-pass overhead)
     let (s, v) = if s.len() >= v.len() { (s, v) } else { (v, s) };
-    let need = x.len().max(s.len() + v.len()) + 1;
-    x.resize(need, 0);
-    let mut pairs = v.chunks_exact(2);
+    if v.is_empty() {
+        return;
+    }
+    let need = s.len() + v.len() + 1;
+    if x.len() < need {
+        x.resize(need, 0);
+    }
     let mut i = 0;
-    for pair in pairs.by_ref() {
-        addmul_2(&mut x[i..], s, pair[0], pair[1]);
+    while i + 1 < v.len() {
+        addmul_2(&mut x[i..], s, v[i], v[i + 1]);
         i += 2;
     }
-    if let &[last] = pairs.remainder() {
-        addmul_1(&mut x[i..], s, last);
+    if i < v.len() {
+        addmul_1(&mut x[i..], s, v[i]);
     }
     trim(x);
 }
