@@ -191,10 +191,11 @@ impl ExactEvaluator {
                 None => kernel::lcm_fold(&BigInt::one(), net.points().map(|p| p[c].denom())),
             })
             .collect();
-        let nets = OnceLock::new();
-        if kernel::FastNet::needs_integer_nets(net, &denominators) {
-            let _ = nets.set(IntegerNets::new(net, &denominators));
-        }
+        let nets = if kernel::FastNet::needs_integer_nets(net, &denominators) {
+            OnceLock::from(IntegerNets::new(net, &denominators))
+        } else {
+            OnceLock::new()
+        };
         let fast = kernel::FastNet::new(
             net,
             nets.get().map(IntegerNets::as_kernel_input),

@@ -36,10 +36,9 @@ pub(super) fn add_mul(x: &mut Vec<u64>, s: &[u64], v: &[u64]) {
     if v.is_empty() {
         return;
     }
-    let need = s.len() + v.len() + 1;
-    if x.len() < need {
-        x.resize(need, 0);
-    }
+    // room for the product and for a carry out of the top of x
+    let need = x.len().max(s.len() + v.len()) + 1;
+    x.resize(need, 0);
     let mut i = 0;
     while i + 1 < v.len() {
         addmul_2(&mut x[i..], s, v[i], v[i + 1]);
@@ -455,6 +454,27 @@ mod tests {
                 assert_ne!(out.last(), Some(&0), "trimmed");
             }
         }
+    }
+
+    /// A carry out of the top of an `x` longer than the product: `x = 2^{64·6} − 1` plus
+    /// `s·v = 1·1` needs a seventh limb.
+    #[test]
+    fn add_mul_carries_out_of_a_long_x() {
+        for (s, v) in [
+            (vec![1u64], vec![1u64]),
+            (vec![1, 0], vec![1]),
+            (vec![1], vec![1, 0]),
+        ] {
+            let mut x = vec![u64::MAX; 6];
+            add_mul(&mut x, &s, &v);
+            assert_eq!(x, [0, 0, 0, 0, 0, 0, 1], "{s:?} {v:?}");
+        }
+        let mut x = vec![u64::MAX; 5];
+        add_mul(&mut x, &[u64::MAX, u64::MAX], &[2]);
+        assert_eq!(
+            big(&x),
+            (BigUint::from(1u8) << 320u32) - 1u32 + ((BigUint::from(1u8) << 128u32) - 1u32) * 2u32
+        );
     }
 
     #[test]
