@@ -530,15 +530,12 @@ mod tests {
         let net = ControlNet::new(Simplex::new(2, n), 3, coords);
         let eval = ExactEvaluator::new(&net);
         assert!(eval.nets.get().is_none(), "degree 20: the row form alone");
-        let lambda: Vec<BigRational> = [(3, 11), (5, 13), (1, 1)]
-            .iter()
-            .map(|&(p, q)| BigRational::new(BigInt::from(p), BigInt::from(q)))
-            .collect();
-        let lambda = [
-            lambda[0].clone(),
-            lambda[1].clone(),
-            BigRational::one() - &lambda[0] - &lambda[1],
-        ];
+        let (u, v) = (
+            BigRational::new(BigInt::from(3), BigInt::from(11)),
+            BigRational::new(BigInt::from(5), BigInt::from(13)),
+        );
+        let w = BigRational::one() - &u - &v;
+        let lambda = [u, v, w];
         let expected = evaluate_rational(&net, &lambda, Algorithm::Casteljau);
         assert_eq!(eval.evaluate_fast(&lambda), expected);
         assert!(eval.nets.get().is_none());

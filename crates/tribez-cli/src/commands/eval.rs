@@ -275,10 +275,8 @@ fn raw_points(args: &Args, width: usize) -> Result<Vec<(Origin, Vec<BigRational>
         raw.push((Origin::At(k), parse_list(a, "--at")?));
     }
     if let Some(path) = &args.points {
-        let points = read_points(path, width)?;
-        raw.reserve(points.len());
         raw.extend(
-            points
+            read_points(path, width)?
                 .into_iter()
                 .enumerate()
                 .map(|(i, p)| (Origin::File(i), p)),
