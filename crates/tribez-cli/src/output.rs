@@ -11,6 +11,8 @@
 //!   drops them all, so it leaves no output file behind, whole or partial.
 //! * Standard output is written with [`write_stdout`]: a failed write (a full disk, `> /dev/full`)
 //!   is an error (exit status 2, one line); a closed pipe (`| head -1`) is not worth a message.
+//! * A report written while it is produced goes through [`stream`], to standard output or a
+//!   staged file, with the same rules.
 //!
 //! A file staged twice in one run (`-o r.xml --junit r.xml`) is refused: one of the two would be
 //! lost.
@@ -69,10 +71,77 @@ pub fn write_stdout_parts<T: AsRef<[u8]>>(parts: &[T]) -> Result<(), CliError> {
         .iter()
         .try_for_each(|part| out.write_all(part.as_ref()))
         .and_then(|()| out.flush());
+    stdout_written(written)
+}
+
+/// How a write to standard output ended, as the command line reports it.
+fn stdout_written(written: std::io::Result<()>) -> Result<(), CliError> {
     match written {
         Ok(()) => Ok(()),
         Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(()),
         Err(e) => Err(InputError::file("<standard output>", cannot_write(&e)).into()),
+    }
+}
+
+/// Where a report written while it is produced goes ([`stream`]): standard output or a staged
+/// file. It can be shared by threads (behind a lock). A failed write is kept and reported when
+/// the report ends; the writes after it are skipped.
+pub struct Sink<'a> {
+    out: &'a mut (dyn Write + Send),
+    failure: Option<std::io::Error>,
+}
+
+impl<'a> Sink<'a> {
+    /// A sink writing to `out`.
+    pub fn new(out: &'a mut (dyn Write + Send)) -> Self {
+        Sink { out, failure: None }
+    }
+
+    /// Write `bytes` (nothing once a write has failed).
+    pub fn write(&mut self, bytes: &[u8]) {
+        if self.failure.is_none()
+            && let Err(e) = self.out.write_all(bytes)
+        {
+            self.failure = Some(e);
+        }
+    }
+
+    /// Flush, and the first failure of all the writes.
+    fn finish(mut self) -> std::io::Result<()> {
+        match self.failure.take() {
+            Some(e) => Err(e),
+            None => self.out.flush(),
+        }
+    }
+}
+
+/// Write the report that `produce` writes into a [`Sink`] to standard output (`target` `None`),
+/// or stage it as `target` (see [`stage`]). An error of `produce` is the run's error: a staged
+/// file is then dropped; what `produce` wrote to standard output before it stays written, so
+/// `produce` writes only when nothing can fail any more.
+pub fn stream(
+    target: Option<&Path>,
+    produce: impl FnOnce(&mut Sink<'_>) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    match target {
+        None => {
+            let mut out = std::io::stdout();
+            let mut sink = Sink::new(&mut out);
+            produce(&mut sink)?;
+            stdout_written(sink.finish())
+        }
+        Some(path) => {
+            let staged = staging().create(path)?;
+            let file = path.display().to_string();
+            let mut out = staged.tmp.as_file();
+            let mut sink = Sink::new(&mut out);
+            produce(&mut sink)?;
+            sink.finish()
+                .and_then(|()| staged.tmp.as_file().sync_all())
+                .map_err(|e| CliError::check(&file, format!("cannot write: {e}")))?;
+            staging().files.push(staged);
+            Ok(())
+        }
     }
 }
 
@@ -104,6 +173,20 @@ impl Staging {
         path: &Path,
         parts: &[T],
     ) -> Result<(), CliError> {
+        let mut staged = self.create(path)?;
+        let written = parts
+            .iter()
+            .try_for_each(|part| staged.tmp.write_all(part.as_ref()))
+            .and_then(|()| staged.tmp.as_file().sync_all());
+        written.map_err(|e| {
+            CliError::check(path.display().to_string(), format!("cannot write: {e}"))
+        })?;
+        self.files.push(staged);
+        Ok(())
+    }
+
+    /// The checked target `path` and an empty temporary file beside it (not yet in the set).
+    fn create(&self, path: &Path) -> Result<Staged, CliError> {
         let file = path.display().to_string();
         let fail = |message: String| CliError::check(&file, message);
         let name = path
@@ -153,26 +236,20 @@ impl Staging {
             // a new file: 0666 less the umask, as any program creating a file gets
             builder.permissions(std::fs::Permissions::from_mode(0o666));
         }
-        let mut tmp = builder
+        let tmp = builder
             .tempfile_in(dir)
             .map_err(|e| fail(format!("cannot write: {e}")))?;
-        let written = (|| {
-            if let Some(permissions) = existing {
-                // keep the permissions of the file being replaced (exactly, not less the umask)
-                tmp.as_file().set_permissions(permissions)?;
-            }
-            for part in parts {
-                tmp.write_all(part.as_ref())?;
-            }
-            tmp.as_file().sync_all()
-        })();
-        written.map_err(|e| fail(format!("cannot write: {e}")))?;
-        self.files.push(Staged {
+        if let Some(permissions) = existing {
+            // keep the permissions of the file being replaced (exactly, not less the umask)
+            tmp.as_file()
+                .set_permissions(permissions)
+                .map_err(|e| fail(format!("cannot write: {e}")))?;
+        }
+        Ok(Staged {
             target: path.to_path_buf(),
             key,
             tmp,
-        });
-        Ok(())
+        })
     }
 
     /// Rename every staged file onto its target, in the order staged.
@@ -221,6 +298,19 @@ mod tests {
         assert_eq!(std::fs::read(&a).unwrap(), b"1");
         assert_eq!(std::fs::read(&b).unwrap(), b"2");
         assert_eq!(listing(dir.path()), ["a", "b"]);
+    }
+
+    #[test]
+    fn a_stream_that_fails_leaves_no_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("report.json");
+        let e = stream(Some(&target), |sink| {
+            sink.write(b"the first half");
+            Err(CliError::Usage("the second half failed".into()))
+        })
+        .unwrap_err();
+        assert!(e.to_string().contains("second half"), "{e}");
+        assert_eq!(listing(dir.path()), Vec::<String>::new());
     }
 
     #[test]

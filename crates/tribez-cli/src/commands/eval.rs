@@ -5,7 +5,9 @@
 //! One code path for every kind: the kind's capabilities ([`tribez::ExactEval`],
 //! [`tribez::FloatEval`]) do the kind-specific work.
 
+use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -13,8 +15,9 @@ use serde::{Serialize, Serializer};
 #[cfg(test)]
 use serde_json::Value as Json;
 
-use super::{CliError, Outcome, check_barycentric, parse_list};
+use super::{CliError, Outcome, OutputTarget, check_barycentric, parse_list};
 use crate::cli::{OutputArgs, TextOrJson};
+use crate::output::{self, Sink};
 #[cfg(test)]
 use crate::report::{Render, to_json};
 use tribez::capability::{FloatProgram, InputSpace, PointEvaluator};
@@ -357,20 +360,41 @@ fn header(patch: &Patch) -> (String, Option<&'static str>) {
     }
 }
 
-/// Run `tribez eval`: every point is evaluated and rendered on the core that evaluates it, a
-/// chunk of points per task, and the rendered chunks are written in order without being joined
-/// (the digits of large results are much of the work). Nothing is written unless every point
-/// succeeded; the first failing point in the order of the points is reported.
+/// Run `tribez eval`: the report goes to standard output or `-o FILE` as it is produced (see
+/// [`write_report`]).
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    run_in_chunks(args, None)
+    output::stream(args.out.output.as_deref(), |sink| {
+        write_report(args, None, sink)
+    })?;
+    Ok(Outcome {
+        output: Vec::new(),
+        success: true,
+    })
+}
+
+impl OutputTarget for Args {
+    /// The report is written by [`run`] as it is produced; nothing is left to write after it.
+    fn output(&self) -> Option<&PathBuf> {
+        None
+    }
 }
 
 /// The most a chunk's output is sized for in advance (it still grows past it as needed).
 const RESERVE_CAP: usize = 1 << 24;
 
-/// [`run`] with `chunk` points per task (by default many chunks per core, so that the cores
-/// share the work evenly to the end).
-fn run_in_chunks(args: &Args, chunk: Option<usize>) -> Result<Outcome, CliError> {
+/// Write the report of `tribez eval` into `sink`.
+///
+/// Every point is evaluated and rendered on the core that evaluates it, `chunk` points per task
+/// (by default many chunks per core, so that the cores share the work evenly to the end); the
+/// cores take the chunks in order, and each chunk is written as soon as the chunks before it
+/// are, its buffer then used again. The digits of large results are much of the work, and a
+/// report held whole until the end costs its size in fresh memory and a long write at the end.
+///
+/// Nothing is written unless every point succeeds: every point's input is checked first, and
+/// the chunks wait for the last point unless the kind's evaluation cannot fail at a checked
+/// input ([`PointEvaluator::total`]) and no float program runs (rounding an input can fail).
+/// The error reported is that of the first failing point in the order of the points.
+fn write_report(args: &Args, chunk: Option<usize>, sink: &mut Sink<'_>) -> Result<(), CliError> {
     let mut input = EvalInput::read(args)?;
     let raw = std::mem::take(&mut input.raw);
     let eval = Evaluators::new(args, &input.file, &input.patch)?;
@@ -378,49 +402,142 @@ fn run_in_chunks(args: &Args, chunk: Option<usize>) -> Result<Outcome, CliError>
     let chunk = chunk
         .unwrap_or(raw.len() / (16 * rayon::current_num_threads()))
         .clamp(1, 1024);
-    let parts: Vec<Result<String, CliError>> = raw
+    let checked: Vec<Result<Vec<Checked>, CliError>> = raw
         .into_par_iter()
+        .map(|(origin, p)| eval.input(origin, p))
         .chunks(chunk)
-        .enumerate()
-        .map(|(k, points)| {
-            let mut part = String::new();
-            let count = points.len();
-            for (i, (origin, p)) in points.into_iter().enumerate() {
-                let r = eval.point(origin, p)?;
-                match format {
-                    TextOrJson::Json => {
-                        if k > 0 || i > 0 {
-                            part.push(',');
-                        }
-                        push_json_point(&mut part, &r);
-                    }
-                    TextOrJson::Text => part += &point_text(&r),
-                }
-                if i == 0 {
-                    // The points of a batch render to about the same length: size the part
-                    // once (an eighth to spare) instead of growing it by copies; at most
-                    // RESERVE_CAP, since a first point much longer than the others would
-                    // otherwise reserve the chunk's length times its own.
-                    let estimate = (part.len() + part.len() / 8).saturating_mul(count - 1);
-                    part.reserve(estimate.min(RESERVE_CAP));
-                }
-            }
-            Ok(part)
-        })
+        .map(|points| points.into_iter().collect())
         .collect();
-    let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let chunks = checked.into_iter().collect::<Result<Vec<_>, _>>()?;
     let (open, close) = match format {
-        TextOrJson::Json => json_envelope(&input.file, input.kind, parts.is_empty()),
+        TextOrJson::Json => json_envelope(&input.file, input.kind, chunks.is_empty()),
         TextOrJson::Text => (format!("{}: {}\n", input.file, input.header), String::new()),
     };
-    let mut output = Vec::with_capacity(parts.len() + 2);
-    output.push(open);
-    output.extend(parts);
-    output.push(close);
-    Ok(Outcome {
-        output,
-        success: true,
-    })
+    let early = eval.exact.total() && eval.programs.is_empty();
+    if early {
+        sink.write(open.as_bytes());
+    }
+    let writer = Mutex::new(Writer {
+        sink,
+        early,
+        next: 0,
+        ready: BTreeMap::new(),
+        spare: Vec::new(),
+        failed: None,
+    });
+    let claims = Mutex::new(chunks.into_iter().enumerate());
+    rayon::broadcast(|_| {
+        loop {
+            let claimed = lock(&claims).next();
+            let Some((k, points)) = claimed else { break };
+            let mut part = {
+                let mut w = lock(&writer);
+                if w.failed.as_ref().is_some_and(|(j, _)| *j < k) {
+                    break;
+                }
+                w.spare.pop().unwrap_or_default()
+            };
+            part.clear();
+            match render_chunk(&eval, format, k, points, &mut part) {
+                Ok(()) => lock(&writer).put(k, part),
+                Err(e) => lock(&writer).fail(k, e),
+            }
+        }
+    });
+    let mut w = writer.into_inner().unwrap_or_else(PoisonError::into_inner);
+    if let Some((_, e)) = w.failed {
+        debug_assert!(!early, "a total evaluation failed after the report began");
+        return Err(e);
+    }
+    if !early {
+        w.sink.write(open.as_bytes());
+        w.drain();
+    }
+    debug_assert!(w.ready.is_empty());
+    w.sink.write(close.as_bytes());
+    Ok(())
+}
+
+/// A point whose input is checked: where it came from, and the kind's input.
+type Checked = (Origin, Input);
+
+/// Evaluate and render chunk `k` of the points into `part` (empty); the error of its first
+/// failing point.
+fn render_chunk(
+    eval: &Evaluators<'_>,
+    format: TextOrJson,
+    k: usize,
+    points: Vec<Checked>,
+    part: &mut String,
+) -> Result<(), CliError> {
+    let count = points.len();
+    for (i, (origin, input)) in points.into_iter().enumerate() {
+        let r = eval.result(origin, input)?;
+        match format {
+            TextOrJson::Json => {
+                if k > 0 || i > 0 {
+                    part.push(',');
+                }
+                push_json_point(part, &r);
+            }
+            TextOrJson::Text => *part += &point_text(&r),
+        }
+        if i == 0 {
+            // The points of a batch render to about the same length: size the part once (an
+            // eighth to spare) instead of growing it by copies; at most RESERVE_CAP, since a
+            // first point much longer than the others would otherwise reserve the chunk's
+            // length times its own.
+            let estimate = (part.len() + part.len() / 8).saturating_mul(count - 1);
+            part.reserve(estimate.min(RESERVE_CAP));
+        }
+    }
+    Ok(())
+}
+
+/// The report's writer, shared by the threads that render its chunks.
+struct Writer<'s, 'a> {
+    sink: &'s mut Sink<'a>,
+    /// Whether a chunk is written as soon as the chunks before it are (else at the end).
+    early: bool,
+    /// The first chunk not yet written.
+    next: usize,
+    /// Rendered chunks waiting for the chunks before them.
+    ready: BTreeMap<usize, String>,
+    /// Buffers of written chunks, to render the next ones into.
+    spare: Vec<String>,
+    /// The earliest failing chunk so far, and its error.
+    failed: Option<(usize, CliError)>,
+}
+
+impl Writer<'_, '_> {
+    /// Chunk `k` is rendered.
+    fn put(&mut self, k: usize, part: String) {
+        self.ready.insert(k, part);
+        if self.early {
+            self.drain();
+        }
+    }
+
+    /// Chunk `k` failed with `e` (kept if no earlier chunk failed).
+    fn fail(&mut self, k: usize, e: CliError) {
+        if self.failed.as_ref().is_none_or(|(j, _)| k < *j) {
+            self.failed = Some((k, e));
+        }
+    }
+
+    /// Write the chunks that are ready in order from `next`.
+    fn drain(&mut self) {
+        while let Some(part) = self.ready.remove(&self.next) {
+            self.sink.write(part.as_bytes());
+            self.next += 1;
+            self.spare.push(part);
+        }
+    }
+}
+
+/// `m`'s guard, also after a thread holding it panicked (the panic is reported anyway).
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
 /// What `tribez eval` reads: the patch, the points (with a description each, for errors), and
@@ -491,10 +608,16 @@ impl<'p> Evaluators<'p> {
         })
     }
 
-    /// The result at the raw point `p` (from `origin`, which errors name).
-    fn point(&self, origin: Origin, p: Vec<BigRational>) -> Result<PointResult, CliError> {
+    /// The raw point `p` (from `origin`, which errors name) as the kind's input, checked.
+    fn input(&self, origin: Origin, p: Vec<BigRational>) -> Result<Checked, CliError> {
+        input_of(self.args, self.patch, p)
+            .map(|input| (origin, input))
+            .map_err(|e| CliError::core(origin.describe(self.args), e))
+    }
+
+    /// The result at the checked input `(at, cartesian)` of the point from `origin`.
+    fn result(&self, origin: Origin, (at, cartesian): Input) -> Result<PointResult, CliError> {
         let fail = |e| CliError::core(origin.describe(self.args), e);
-        let (at, cartesian) = input_of(self.args, self.patch, p).map_err(fail)?;
         let point = self.exact.evaluate(&at).map_err(fail)?;
         let lambda = self.exact.coordinates(&at).map_err(fail)?;
         let mut floats = Vec::new();
@@ -520,7 +643,10 @@ fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
     let eval = Evaluators::new(args, &input.file, &input.patch)?;
     let results = raw
         .into_iter()
-        .map(|(origin, p)| eval.point(origin, p))
+        .map(|(origin, p)| {
+            let (origin, input) = eval.input(origin, p)?;
+            eval.result(origin, input)
+        })
         .collect::<Result<_, _>>()?;
     Ok(EvalReport {
         file: input.file,
@@ -750,15 +876,82 @@ mod tests {
                 ..*a
             };
             let name = a.patch.display();
-            assert_eq!(run(a).unwrap().output.concat(), generic, "{name}");
-            assert_eq!(run(&text_args).unwrap().output.concat(), report.text());
+            assert_eq!(written(a, None).unwrap(), generic, "{name}");
+            assert_eq!(written(&text_args, None).unwrap(), report.text());
             for chunk in 1..=3 {
-                let json = run_in_chunks(a, Some(chunk)).unwrap().output.concat();
+                let json = written(a, Some(chunk)).unwrap();
                 assert_eq!(json, generic, "{name} by {chunk}");
-                let text = run_in_chunks(&text_args, Some(chunk)).unwrap();
-                assert_eq!(text.output.concat(), report.text(), "{name} by {chunk}");
+                let text = written(&text_args, Some(chunk)).unwrap();
+                assert_eq!(text, report.text(), "{name} by {chunk}");
             }
         }
+    }
+
+    /// What [`write_report`] writes with `chunk` points per task, or its error and whatever it
+    /// wrote before failing (which must be nothing).
+    fn written(a: &Args, chunk: Option<usize>) -> Result<String, (String, Vec<u8>)> {
+        let mut bytes = Vec::new();
+        let mut sink = Sink::new(&mut bytes);
+        let result = write_report(a, chunk, &mut sink);
+        drop(sink);
+        match result {
+            Ok(()) => Ok(String::from_utf8(bytes).unwrap()),
+            Err(e) => Err((e.to_string(), bytes)),
+        }
+    }
+
+    /// A failing point in a late chunk leaves the report unwritten, and the error is the first
+    /// failing point's: a point off its simplex, found by the check of every input (a kind
+    /// whose evaluation cannot fail, which writes chunks as soon as they are ready), and a
+    /// point where a rational patch's weight vanishes, found only by evaluating it (its chunks
+    /// wait for the last one).
+    #[test]
+    fn a_failing_late_point_leaves_the_report_unwritten() {
+        let bad_input = args(
+            "finn_day30.toml",
+            &[
+                "1/2,1/3,1/6",
+                "0,0,1",
+                "1/3,1/3,1/3",
+                "1/2,1/2,1/2",
+                "1,1,1",
+                "0,1,0",
+            ],
+            false,
+            None,
+        );
+        let dir = tempfile::tempdir().unwrap();
+        // W(λ) = λ0² + 2·2·λ0λ1 + 4·λ1², zero at λ = (2, −1)
+        let conic = dir.path().join("conic.toml");
+        std::fs::write(
+            &conic,
+            "degree = 2\n[control_points]\n\"2,0\" = [1, 0]\n\"1,1\" = [1, 1]\n\"0,2\" = [0, 1]\n\
+             [weights]\n\"2,0\" = 1\n\"1,1\" = 2\n\"0,2\" = 4\n",
+        )
+        .unwrap();
+        let mut vanishing = args(
+            "finn_day30.toml",
+            &["1/2,1/2", "0,1", "3,-2", "2,-1", "4,-3", "1,0"],
+            false,
+            None,
+        );
+        vanishing.patch = conic;
+        for (a, named) in [(&bad_input, "--at 1/2,1/2,1/2"), (&vanishing, "--at 2,-1")] {
+            assert!(written(a, None).is_err());
+            for chunk in 1..=4 {
+                let (e, bytes) = written(a, Some(chunk)).unwrap_err();
+                assert!(e.starts_with(named), "{e}");
+                assert!(
+                    bytes.is_empty(),
+                    "by {chunk}: {}",
+                    String::from_utf8_lossy(&bytes)
+                );
+            }
+        }
+        // without the failing point, the report is written whole
+        vanishing.at.remove(3);
+        let report = written(&vanishing, Some(1)).unwrap();
+        assert_eq!(report.matches("\"point\"").count(), 5, "{report}");
     }
 
     proptest! {

@@ -176,7 +176,7 @@ impl Outcome {
 pub fn main(cli: Cli) -> i32 {
     let (result, out): (_, &dyn OutputTarget) = match &cli.command {
         Command::Reproduce(a) => (reproduce::run(a), &a.out),
-        Command::Eval(a) => (eval::run(a), &a.out),
+        Command::Eval(a) => (eval::run(a), a),
         Command::Symbolic(a) => (symbolic::run(a), &a.out),
         Command::Graph(a) => (graph::run(a), &a.out),
         Command::Check(a) if a.results.is_some() && a.mesh.is_some() => {

@@ -38,6 +38,10 @@ impl PointEvaluator for Exact {
         check_len(input, self.m + 1)?;
         Ok(self.evaluator.evaluate_fast(input))
     }
+
+    fn total(&self) -> bool {
+        true
+    }
 }
 
 impl ExactEval for BezierPatch {

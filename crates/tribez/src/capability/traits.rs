@@ -82,6 +82,15 @@ pub trait PointEvaluator: Send + Sync {
     fn coordinates(&self, _input: &[BigRational]) -> Result<Option<Vec<BigRational>>, CoreError> {
         Ok(None)
     }
+
+    /// `true` when [`evaluate`](Self::evaluate) and [`coordinates`](Self::coordinates) succeed
+    /// at every input of the kind's length (a polynomial kind); `false` (the default) when some
+    /// inputs of that length fail, as where a rational patch's weights sum to zero or outside an
+    /// S-patch's polygon. A caller may start writing a report before evaluating its last point
+    /// only when this is `true`.
+    fn total(&self) -> bool {
+        false
+    }
 }
 
 /// Capability: exact evaluation.
