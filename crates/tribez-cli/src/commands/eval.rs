@@ -484,11 +484,13 @@ fn render_chunk(
         }
         if i == 0 {
             // The points of a batch render to about the same length: size the part once (an
-            // eighth to spare) instead of growing it by copies; at most RESERVE_CAP, since a
-            // first point much longer than the others would otherwise reserve the chunk's
-            // length times its own.
-            let estimate = (part.len() + part.len() / 8).saturating_mul(count - 1);
-            part.reserve(estimate.min(RESERVE_CAP));
+            // eighth to spare) instead of growing it by copies, unless it has about that room
+            // already (a buffer used before); at most RESERVE_CAP, since a first point much
+            // longer than the others would otherwise reserve the chunk's length times its own.
+            let need = part.len().saturating_mul(count - 1).min(RESERVE_CAP);
+            if part.capacity() - part.len() < need {
+                part.reserve(need + need / 8);
+            }
         }
     }
     Ok(())

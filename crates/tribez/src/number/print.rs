@@ -77,21 +77,37 @@ const TEN19: u64 = 10_000_000_000_000_000_000;
 /// bench `numbers`) the division chains are faster than num-bigint's division and its
 /// allocations. A number of [`super::MAX_DIGITS`] digits prints in tens of milliseconds.
 pub fn push_decimal(out: &mut String, x: &BigUint) {
-    if x.bits() <= 64 * (SPLIT_LIMBS as u64 - 1) {
-        let mut limbs = [0u64; SPLIT_LIMBS];
-        let mut len = 0;
-        for (slot, limb) in limbs.iter_mut().zip(x.iter_u64_digits()) {
-            *slot = limb;
-            len += 1;
-        }
-        push_chunks(out, &mut limbs[..len], None);
+    let bits = x.bits();
+    if bits <= 64 * SMALL_LIMBS as u64 {
+        push_limbs::<SMALL_LIMBS, { SMALL_LIMBS + 2 + FUSED }, { 19 * (SMALL_LIMBS + 2) + 1 }>(
+            out, x,
+        );
+    } else if bits <= 64 * (SPLIT_LIMBS as u64 - 1) {
+        push_limbs::<SPLIT_LIMBS, { SPLIT_LIMBS + 2 + FUSED }, { 19 * (SPLIT_LIMBS + 2) + 1 }>(
+            out, x,
+        );
     } else {
         split_decimal(out, x, None);
     }
 }
 
+/// The digits of `x`, which has at most `L` limbs, with the buffers of [`push_chunks`] sized
+/// for `L` limbs (`D` and `T`): short numbers, the most common, then zero only short buffers.
+fn push_limbs<const L: usize, const D: usize, const T: usize>(out: &mut String, x: &BigUint) {
+    let mut limbs = [0u64; L];
+    let mut len = 0;
+    for (slot, limb) in limbs.iter_mut().zip(x.iter_u64_digits()) {
+        *slot = limb;
+        len += 1;
+    }
+    push_chunks::<D, T>(out, &mut limbs[..len], None);
+}
+
 /// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
 const SPLIT_LIMBS: usize = 48;
+
+/// Up to this many limbs, [`push_decimal`] works in buffers sized for it.
+const SMALL_LIMBS: usize = 8;
 
 /// Division passes by `10^19` that [`push_chunks`] runs in one sweep over the limbs.
 const FUSED: usize = 2;
@@ -113,7 +129,11 @@ fn split_decimal(out: &mut String, x: &BigUint, width: Option<usize>) {
     let mut limbs = x.to_u64_digits();
     let len = limbs.len();
     if len < SPLIT_LIMBS {
-        push_chunks(out, &mut limbs, width.map(|w| w / 19));
+        push_chunks::<{ SPLIT_LIMBS + 2 + FUSED }, { 19 * (SPLIT_LIMBS + 2) + 1 }>(
+            out,
+            &mut limbs,
+            width.map(|w| w / 19),
+        );
         return;
     }
     // the largest k with 10^(19·2^k) of at most half the limbs of x (19·2^k digits each side)
@@ -127,20 +147,26 @@ fn split_decimal(out: &mut String, x: &BigUint, width: Option<usize>) {
     split_decimal(out, &lo, Some(low_digits));
 }
 
-/// The digits of the little-endian limbs `limbs` (fewer than [`SPLIT_LIMBS`]; they are used up);
-/// with `chunks`, exactly `19·chunks` digits (leading zeros), else no leading zero. Nothing is
-/// allocated: the base-`10^19` digits are kept on the stack.
-fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
-    debug_assert!(limbs.len() < SPLIT_LIMBS);
+/// The digits of the little-endian limbs `limbs` (at most `D − 2 − FUSED` of them, and fewer
+/// than [`SPLIT_LIMBS`]; they are used up); with `chunks`, exactly `19·chunks` digits (leading
+/// zeros), else no leading zero. Nothing is allocated: the base-`10^19` digits (`D` words) and
+/// their text (`T = 19·(D − FUSED) + 1` bytes) are kept on the stack.
+fn push_chunks<const D: usize, const T: usize>(
+    out: &mut String,
+    limbs: &mut [u64],
+    chunks: Option<usize>,
+) {
+    const { assert!(D > 2 + FUSED && T == 19 * (D - FUSED) + 1) };
+    debug_assert!(limbs.len() < SPLIT_LIMBS && limbs.len() + 2 + FUSED <= D);
     let mut len = limbs.len();
     while len > 0 && limbs[len - 1] == 0 {
         len -= 1;
     }
     // v = floor((2^128 − 1) / d) − 2^64 for the normalised d = 10^19
     let v = (u128::MAX / u128::from(TEN19) - (1u128 << 64)) as u64;
-    // each limb gives at most 64/log2(10^19) < 1.02 chunks: SPLIT_LIMBS + 2 is enough
+    // each limb gives at most 64/log2(10^19) < 1.02 chunks: len + 2 is enough (len ≤ 48)
     // (FUSED − 1 more: the last fused pass may produce leading zero chunks, trimmed below)
-    let mut digits = [0u64; SPLIT_LIMBS + 2 + FUSED];
+    let mut digits = [0u64; D];
     let mut count = 0;
     while len > 1 {
         if len > 2 {
@@ -184,7 +210,7 @@ fn push_chunks(out: &mut String, limbs: &mut [u64], chunks: Option<usize>) {
     }
     // all the chunks' digits into one buffer, checked as text once (a check per 19-digit chunk
     // cost more than the digits themselves)
-    let mut text = [b'0'; 19 * (SPLIT_LIMBS + 2) + 1];
+    let mut text = [b'0'; T];
     let mut end = 0;
     let mut buf = [b'0'; 20];
     match chunks {
