@@ -82,6 +82,10 @@ pub fn push_decimal(out: &mut String, x: &BigUint) {
         push_limbs::<SMALL_LIMBS, { SMALL_LIMBS + 2 + FUSED }, { 19 * (SMALL_LIMBS + 2) + 1 }>(
             out, x,
         );
+    } else if bits <= 64 * MEDIUM_LIMBS as u64 {
+        push_limbs::<MEDIUM_LIMBS, { MEDIUM_LIMBS + 2 + FUSED }, { 19 * (MEDIUM_LIMBS + 2) + 1 }>(
+            out, x,
+        );
     } else if bits <= 64 * (SPLIT_LIMBS as u64 - 1) {
         push_limbs::<SPLIT_LIMBS, { SPLIT_LIMBS + 2 + FUSED }, { 19 * (SPLIT_LIMBS + 2) + 1 }>(
             out, x,
@@ -106,8 +110,10 @@ fn push_limbs<const L: usize, const D: usize, const T: usize>(out: &mut String, 
 /// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
 const SPLIT_LIMBS: usize = 48;
 
-/// Up to this many limbs, [`push_decimal`] works in buffers sized for it.
+/// Up to this many limbs (and then up to [`MEDIUM_LIMBS`]), [`push_decimal`] works in buffers
+/// sized for it.
 const SMALL_LIMBS: usize = 8;
+const MEDIUM_LIMBS: usize = 20;
 
 /// Division passes by `10^19` that [`push_chunks`] runs in one sweep over the limbs.
 const FUSED: usize = 2;

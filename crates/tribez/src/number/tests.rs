@@ -887,7 +887,7 @@ fn decimal_printing_at_the_edges() {
             assert_eq!(s, x.to_string());
         }
     }
-    // around every limb boundary, the stack paths' largest sizes (8 and 47 limbs), the split, and
+    // around every limb boundary, the stack paths' largest sizes (8, 20 and 47 limbs), the split, and
     // the split's halves
     for bits in (0..=100u32).map(|k| 64 * k) {
         let p = BigUint::one() << bits;
