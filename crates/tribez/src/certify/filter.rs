@@ -163,6 +163,7 @@ impl Thresholds {
 
     /// An upper bound on the error of `y` in ULPs of the claim's precision (at the smallest
     /// `|P|` the enclosure allows).
+    #[inline]
     pub fn ulps_upper(&self, y: f64, e: &Enclosure) -> f64 {
         if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
             return f64::INFINITY;
@@ -186,6 +187,7 @@ impl Thresholds {
 
     /// A lower bound on the error of `y` in ULPs of the claim's precision (at the largest `|P|`
     /// the enclosure allows, so with the largest ulp); 0 when the enclosure is not finite.
+    #[inline]
     pub fn ulps_lower(&self, y: f64, e: &Enclosure) -> f64 {
         if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
             return 0.0;
@@ -205,6 +207,7 @@ impl Thresholds {
 
     /// Decide one claimed coordinate `y` (finite) against the enclosure `e`; `s` is
     /// `Σ|λ_k|` (for the underflow allowance of `bound`).
+    #[inline]
     pub fn decide(&self, y: f64, e: &Enclosure, s: f64) -> Decision {
         if !(e.value.is_finite() && e.mu.is_finite() && e.s_hi.is_finite()) {
             return Decision::Undecided;
