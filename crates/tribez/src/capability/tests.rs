@@ -159,3 +159,19 @@ fn bad_edges_and_split_points_of_the_wrong_length_are_errors() {
     assert!(c.pieces(&huge).is_err());
     assert!(c.pieces(&Split::At(&v(&["1/2", "1/2"]))).is_err());
 }
+
+/// Only the polynomial kinds promise an evaluation that cannot fail at an input of the right
+/// length (so that `tribez eval` may write their reports while it evaluates): a rational patch
+/// fails where its weights sum to zero.
+#[test]
+fn only_the_polynomial_kinds_are_total() {
+    for (p, total) in [(hill(), true), (rational_hill(), false)] {
+        let patch = crate::Patch::from(p);
+        assert_eq!(patch.exact().exact_evaluator().total(), total);
+    }
+    let AnyPatch::Functional(b) = hill() else {
+        unreachable!()
+    };
+    let patch = crate::Patch::from(AnyPatch::Bezier(b));
+    assert!(patch.exact().exact_evaluator().total());
+}
