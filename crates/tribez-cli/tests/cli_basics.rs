@@ -397,6 +397,24 @@ fn a_bad_point_is_named_by_its_origin() {
     );
 }
 
+/// A points file of more than a million points is refused (exit 2, one line naming the file,
+/// the line of the point too many and the limit) before any number is read, and nothing is
+/// written.
+#[test]
+fn a_points_file_beyond_the_limit_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("many.csv");
+    std::fs::write(&points, "0,0,1\n".repeat(1_000_001)).unwrap();
+    let p = points.display().to_string();
+    bad_args(
+        &["eval", "--points", &p],
+        &[
+            &format!("{p}:1000001:"),
+            "more than 1000000 rows (the limit of a points file)",
+        ],
+    );
+}
+
 #[test]
 fn homogeneous_points_are_accepted_on_request() {
     // P(1,1,1) = sum of C(2;i) c_i: x = 2*1 + 2*1 = 4 (from 2uv + 2vw).

@@ -4,7 +4,8 @@
 //! A CSV file may start with one header line of column names (`u,v,w`, as other tools write
 //! it): the first line that is neither blank nor a comment is a header when every field is a
 //! name (see [`csv_header`]); it must then have one name per column. A UTF-8 byte-order mark is
-//! ignored. Both kinds are read whole (at most [`super::text::MAX_FILE_BYTES`]).
+//! ignored. Both kinds are read whole (at most [`super::text::MAX_FILE_BYTES`]) and hold at most
+//! [`MAX_POINTS`] points, counted before any point's numbers are read.
 
 use std::path::Path;
 
@@ -15,6 +16,18 @@ use super::text::read_text;
 use super::tree::Document;
 use super::{InputError, Problem};
 use crate::number::parse_rational;
+
+/// The most points a points file may hold (each point's exact numbers take about a hundred
+/// bytes and more; a file of short rows at the size limit would otherwise take gigabytes).
+pub const MAX_POINTS: usize = 1_000_000;
+
+/// The error for a points file with more than [`MAX_POINTS`] points.
+fn too_many() -> Problem {
+    Problem::TooManyRows {
+        limit: MAX_POINTS,
+        what: "a points file",
+    }
+}
 
 /// Read the points of a `.csv` or `.json` file; every point must have `width` coordinates.
 pub fn read_points(path: &Path, width: usize) -> Result<Vec<Vec<BigRational>>, InputError> {
@@ -38,6 +51,9 @@ pub fn points_from_document(
     width: usize,
 ) -> Result<Vec<Vec<BigRational>>, InputError> {
     let rows = doc.array(&doc.root, "")?;
+    if let Some(row) = rows.get(MAX_POINTS) {
+        return Err(doc.error(row, &format!("[{MAX_POINTS}]"), too_many()));
+    }
     let mut out = Vec::with_capacity(rows.len());
     for (i, row) in rows.iter().enumerate() {
         let key = format!("[{i}]");
@@ -95,6 +111,9 @@ pub fn parse_csv_points(
                 ));
             }
             continue;
+        }
+        if rows.len() == MAX_POINTS {
+            return Err(InputError::at(file, Some(i + 1), None, too_many()));
         }
         rows.push((i + 1, t));
     }
@@ -249,6 +268,39 @@ mod tests {
         let e = parse_csv_points(&broken, 3, "p.csv").unwrap_err();
         assert_eq!(e.line, Some(lines[rows / 3].0), "{e}");
         assert!(e.to_string().contains("field 2"), "{e}");
+    }
+
+    /// A file of one point more than [`MAX_POINTS`] is refused before any number is read,
+    /// naming the line (CSV, after a header and a comment) or the array element (JSON) of the
+    /// point too many; a file of exactly `MAX_POINTS` points is read.
+    #[test]
+    fn more_than_max_points_are_refused() {
+        let mut csv = String::from("u,v,w\n# comment\n");
+        csv.push_str(&"0,0,1\n".repeat(MAX_POINTS));
+        assert_eq!(
+            parse_csv_points(&csv, 3, "p.csv").unwrap().len(),
+            MAX_POINTS
+        );
+        csv.push_str("1,x,0\n"); // never parsed: the count stops first
+        let e = parse_csv_points(&csv, 3, "p.csv").unwrap_err();
+        assert_eq!(e.line, Some(MAX_POINTS + 3));
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "p.csv:{}: more than 1000000 rows (the limit of a points file)",
+                MAX_POINTS + 3
+            )
+        );
+        let mut json = String::from("[");
+        json.push_str(&"[0,0,1],\n".repeat(MAX_POINTS));
+        json.push_str("[1,\"x\",0]]");
+        let doc = Document::parse_json("p.json", &json).unwrap();
+        let e = points_from_document(&doc, 3).unwrap_err();
+        assert_eq!(e.line, Some(MAX_POINTS + 1));
+        assert!(
+            e.to_string().contains("[1000000]") && e.to_string().contains("limit"),
+            "{e}"
+        );
     }
 
     #[test]
