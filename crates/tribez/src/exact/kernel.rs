@@ -209,6 +209,11 @@ fn factor_odd(mut r: u64) -> Option<Vec<(u64, u32)>> {
         }
         divide(&mut r, p);
     }
+    // every prime below 257 has been tried: a cofactor below 257² is 1 or a prime, and a 16-bit
+    // denominator never needs the sieve
+    if !done && r < 257 * 257 {
+        done = true;
+    }
     if !done {
         for &p in &small_primes()[PRIMES_BELOW_256.len()..] {
             let p = u64::from(p);
