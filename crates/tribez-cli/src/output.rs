@@ -132,14 +132,11 @@ pub fn stream(
         }
         Some(path) => {
             let staged = staging().create(path)?;
-            let file = path.display().to_string();
             let mut out = staged.tmp.as_file();
             let mut sink = Sink::new(&mut out);
             produce(&mut sink)?;
-            sink.finish()
-                .and_then(|()| staged.tmp.as_file().sync_all())
-                .map_err(|e| CliError::check(&file, format!("cannot write: {e}")))?;
-            staging().files.push(staged);
+            let written = sink.finish();
+            staging().files.push(staged.synced(written)?);
             Ok(())
         }
     }
@@ -166,6 +163,22 @@ struct Staged {
     tmp: NamedTempFile,
 }
 
+impl Staged {
+    /// The staged file once its content is on disk: `written` is how writing it ended; a failed
+    /// write or sync is an error naming the target (the temporary file is then dropped).
+    fn synced(self, written: std::io::Result<()>) -> Result<Self, CliError> {
+        written
+            .and_then(|()| self.tmp.as_file().sync_all())
+            .map_err(|e| {
+                CliError::check(
+                    self.target.display().to_string(),
+                    format!("cannot write: {e}"),
+                )
+            })?;
+        Ok(self)
+    }
+}
+
 impl Staging {
     /// See [`stage`].
     pub(crate) fn stage<T: AsRef<[u8]>>(
@@ -176,12 +189,8 @@ impl Staging {
         let mut staged = self.create(path)?;
         let written = parts
             .iter()
-            .try_for_each(|part| staged.tmp.write_all(part.as_ref()))
-            .and_then(|()| staged.tmp.as_file().sync_all());
-        written.map_err(|e| {
-            CliError::check(path.display().to_string(), format!("cannot write: {e}"))
-        })?;
-        self.files.push(staged);
+            .try_for_each(|part| staged.tmp.write_all(part.as_ref()));
+        self.files.push(staged.synced(written)?);
         Ok(())
     }
 
