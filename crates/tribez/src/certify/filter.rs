@@ -1705,6 +1705,53 @@ mod tests {
         }
     }
 
+    /// Runs the lean kernel of `net` (if it has one) both ways at every point of `pts` and
+    /// asserts the same guard verdict and, where the guards hold, the same bits in every apex
+    /// quantity; returns how many points were compared.
+    fn fma_equals_dekker(name: &str, net: &ControlNet<f64>, pts: &[Vec<f64>]) -> usize {
+        let f = Filter::new(net);
+        let Some(lean) = &f.lean else { return 0 };
+        let (mut a, mut b) = (
+            kernel::LeanScratch::default(),
+            kernel::LeanScratch::default(),
+        );
+        for lam in pts {
+            let (ok, x) = lean.run(lam, &mut a);
+            let (ok_d, y) = lean.run_dekker(lam, &mut b);
+            assert_eq!(ok, ok_d, "{name}: guards at {lam:?}");
+            let bits = |q: &[f64]| q.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(x.value), bits(y.value), "{name}: values at {lam:?}");
+            assert_eq!(bits(x.s), bits(y.s), "{name}: condition at {lam:?}");
+            if ok {
+                assert_eq!(bits(x.corr), bits(y.corr), "{name}: corrections at {lam:?}");
+                assert_eq!(bits(x.nu), bits(y.nu), "{name}: bounds at {lam:?}");
+            }
+        }
+        pts.len()
+    }
+
+    /// The compensated kernel with FMA (where the processor has AVX2 and FMA) computes the
+    /// Dekker kernel's numbers bit for bit on the stress cases, guards included.
+    #[test]
+    fn the_fma_kernel_equals_the_dekker_kernel_on_the_stress_cases() {
+        let mut compared = 0;
+        for (name, net, pts) in stress_cases() {
+            compared += fma_equals_dekker(name, &net, &pts);
+        }
+        assert!(compared > 300, "{compared}");
+        #[cfg(target_arch = "x86_64")]
+        {
+            let fma = std::arch::is_x86_feature_detected!("avx2")
+                && std::arch::is_x86_feature_detected!("fma");
+            let (name, net, _) = stress_cases().swap_remove(0);
+            let f = Filter::new(&net);
+            assert_eq!(f.lean.as_ref().unwrap().uses_fma(), fma, "{name}");
+            if !fma {
+                eprintln!("this processor lacks AVX2 or FMA: both kernels are Dekker's here");
+            }
+        }
+    }
+
     /// A float `mantissa · 2^exponent` with a random sign, or 0.
     fn scaled() -> impl proptest::strategy::Strategy<Value = f64> {
         use proptest::prelude::*;
@@ -1756,6 +1803,30 @@ mod tests {
                     }
                 }
             }
+        }
+
+        /// The FMA kernel equals the Dekker kernel bit for bit on random nets of mixed
+        /// magnitudes (some beyond the guards) at random points of any sign and magnitude.
+        #[test]
+        fn the_fma_kernel_equals_the_dekker_kernel_on_random_nets(
+            m in 1usize..=3,
+            n in 1usize..=7,
+            dim in 1usize..=4,
+            values in proptest::collection::vec(scaled(), 140),
+            wild in proptest::collection::vec((-1.0f64..1.0, -320i32..320), 4),
+            lam in proptest::collection::vec(proptest::collection::vec(-3.0f64..3.0, 4), 8),
+        ) {
+            let simplex = Simplex::new(m, n);
+            let coords: Vec<f64> = (0..simplex.len() * dim)
+                .map(|i| match (i % 17, wild.get(i % 5)) {
+                    (0, Some(&(x, e))) => x * 2f64.powi(e),
+                    _ => values[i % values.len()],
+                })
+                .collect();
+            let net = ControlNet::new(simplex, dim, coords);
+            let mut pts: Vec<Vec<f64>> = lam.iter().map(|l| l[..=m].to_vec()).collect();
+            pts.push(wild.iter().take(m + 1).map(|&(x, e)| x * 2f64.powi(e)).collect());
+            proptest::prop_assert_eq!(fma_equals_dekker("random", &net, &pts), pts.len());
         }
 
         /// Coordinates whose control values are all zero are exactly 0 at every point: the
