@@ -83,6 +83,7 @@ pub(crate) fn parse_limited(
                 None,
                 Problem::TooManyRows {
                     limit,
+                    unit: "rows",
                     what: "a fit's data",
                 },
             ));

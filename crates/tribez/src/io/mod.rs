@@ -189,11 +189,14 @@ pub enum Problem {
     /// A points file without a point.
     #[error("no points")]
     NoPoints,
-    /// More rows than a file of this kind may hold (checked before the row is stored).
-    #[error("more than {limit} rows (the limit of {what})")]
+    /// More rows (or array entries) than a file of this kind may hold (checked before the row
+    /// is stored).
+    #[error("more than {limit} {unit} (the limit of {what})")]
     TooManyRows {
         /// The limit.
         limit: usize,
+        /// What is counted: `"rows"` of a CSV file, `"points"` of a JSON array.
+        unit: &'static str,
         /// What has the limit (`"a fit's data"`).
         what: &'static str,
     },
