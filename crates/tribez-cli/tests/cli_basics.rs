@@ -189,8 +189,9 @@ fn output_file_is_written_whole() {
     assert!(std::fs::read_to_string(&out).unwrap().contains("\"point\""));
 }
 
-/// Run `eval` on a patch text and expect exit 2 with one stderr line containing each fragment.
-fn bad_patch(name: &str, text: &str, fragments: &[&str]) {
+/// Run `eval` on a bad patch file: exit 2, one line naming the file and holding every fragment,
+/// no output; returns that line.
+fn bad_patch(name: &str, text: &str, fragments: &[&str]) -> String {
     let dir = tempfile::tempdir().unwrap();
     let p = write(dir.path(), name, text);
     let out_file = dir.path().join("out.json");
@@ -215,6 +216,7 @@ fn bad_patch(name: &str, text: &str, fragments: &[&str]) {
     for f in fragments {
         assert!(err.contains(f), "expected `{f}` in: {err}");
     }
+    err
 }
 
 #[test]
@@ -259,6 +261,38 @@ fn index_of_wrong_length_or_sum() {
         &FINN.replace("\"0,0,2\"", "\"0,x,2\""),
         &["multi-index of non-negative integers"],
     );
+}
+
+/// A key of one part (as textbooks write `b_200`) or of too many parts is refused naming the key
+/// and the form wanted; a key of digits that sum to the degree gets its comma form spelled out.
+#[test]
+fn multi_index_without_commas_or_with_too_many_parts() {
+    let compact = FINN
+        .replace("\"2,0,0\"", "\"200\"")
+        .replace("\"1,1,0\"", "\"110\"");
+    bad_patch(
+        "p.toml",
+        &compact,
+        &[
+            "p.toml:4:",
+            "control_points.\"200\"",
+            "a multi-index needs 2 to 17 parts separated by commas; write \"2,0,0\"",
+        ],
+    );
+    // digits that do not sum to the degree: no guess
+    let e = bad_patch(
+        "p.toml",
+        &FINN.replace("\"2,0,0\"", "\"201\""),
+        &["separated by commas"],
+    );
+    assert!(!e.contains("write"), "{e}");
+    let long = format!("\"{}\"", vec!["0"; 18].join(","));
+    let e = bad_patch(
+        "p.toml",
+        &FINN.replace("\"2,0,0\"", &long),
+        &["a multi-index needs 2 to 17 parts separated by commas"],
+    );
+    assert!(!e.contains("write"), "{e}");
 }
 
 #[test]

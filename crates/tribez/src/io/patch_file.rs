@@ -202,10 +202,13 @@ pub enum PatchFileProblem {
     )]
     NotAMultiIndex,
     /// A multi-index with too few or too many parts.
-    #[error("a multi-index needs 2 to {max_parts} parts")]
+    #[error("a multi-index needs 2 to {max_parts} parts separated by commas{}", .comma_form.as_ref().map(|k| format!("; write \"{k}\"")).unwrap_or_default())]
     MultiIndexLength {
         /// `MAX_SIMPLEX_DIMENSION + 1`.
         max_parts: usize,
+        /// The key with a comma between its digits, when it is written without commas as in
+        /// the textbooks (`"200"` for `"2,0,0"`) and its digits sum to the degree.
+        comma_form: Option<String>,
     },
     /// More control points than allowed.
     #[error(
@@ -461,6 +464,21 @@ fn weights(
     Ok(out)
 }
 
+/// `key` with commas between its digits (`"200"` → `"2,0,0"`), when it is 2 to
+/// `MAX_SIMPLEX_DIMENSION + 1` decimal digits that sum to `degree`: the way textbooks write
+/// multi-indices of low degree.
+fn comma_form(key: &str, degree: usize) -> Option<String> {
+    let digits = key.as_bytes();
+    let sum: usize = digits
+        .iter()
+        .map(|d| usize::from(d.wrapping_sub(b'0')))
+        .sum();
+    let ok = (2..=MAX_SIMPLEX_DIMENSION + 1).contains(&digits.len())
+        && digits.iter().all(u8::is_ascii_digit)
+        && sum == degree;
+    ok.then(|| key.chars().map(String::from).collect::<Vec<_>>().join(","))
+}
+
 fn control_points(
     doc: &Document,
     node: &Node,
@@ -490,6 +508,7 @@ fn control_points(
             &format!("{key}.\"{first_key}\""),
             PatchFileProblem::MultiIndexLength {
                 max_parts: MAX_SIMPLEX_DIMENSION + 1,
+                comma_form: comma_form(first_key.trim(), degree),
             },
         ));
     }
