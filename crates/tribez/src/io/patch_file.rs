@@ -469,14 +469,13 @@ fn weights(
 /// multi-indices of low degree.
 fn comma_form(key: &str, degree: usize) -> Option<String> {
     let digits = key.as_bytes();
-    let sum: usize = digits
-        .iter()
-        .map(|d| usize::from(d.wrapping_sub(b'0')))
-        .sum();
-    let ok = (2..=MAX_SIMPLEX_DIMENSION + 1).contains(&digits.len())
-        && digits.iter().all(u8::is_ascii_digit)
-        && sum == degree;
-    ok.then(|| key.chars().map(String::from).collect::<Vec<_>>().join(","))
+    if !(2..=MAX_SIMPLEX_DIMENSION + 1).contains(&digits.len())
+        || !digits.iter().all(u8::is_ascii_digit)
+    {
+        return None;
+    }
+    let sum: usize = digits.iter().map(|d| usize::from(d - b'0')).sum();
+    (sum == degree).then(|| key.chars().map(String::from).collect::<Vec<_>>().join(","))
 }
 
 fn control_points(
