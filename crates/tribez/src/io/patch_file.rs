@@ -202,7 +202,7 @@ pub enum PatchFileProblem {
     )]
     NotAMultiIndex,
     /// A multi-index with too few or too many parts.
-    #[error("a multi-index needs 2 to {max_parts} parts separated by commas{}", .comma_form.as_ref().map(|k| format!("; write \"{k}\"")).unwrap_or_default())]
+    #[error("a multi-index needs 2 to {max_parts} parts separated by commas{}", comma_hint(.comma_form))]
     MultiIndexLength {
         /// `MAX_SIMPLEX_DIMENSION + 1`.
         max_parts: usize,
@@ -462,6 +462,14 @@ fn weights(
         return Err(doc.error(node, key, PatchFileProblem::AllWeightsZero));
     }
     Ok(out)
+}
+
+/// `; write "2,0,0"` after the message of a key written without commas, else nothing.
+fn comma_hint(comma_form: &Option<String>) -> String {
+    comma_form
+        .as_ref()
+        .map(|k| format!("; write \"{k}\""))
+        .unwrap_or_default()
 }
 
 /// `key` with commas between its digits (`"200"` → `"2,0,0"`), when it is 2 to
