@@ -70,6 +70,46 @@ fn in_memory_rows_are_judged_with_hand_derived_figures() {
     assert!(!rows[2].passed && rows[2].ulps_seen.is_infinite());
 }
 
+/// Errors computed exactly are counted in their true bucket, also a hair above a bucket's
+/// bound. The linear functional patch with control values 1, 1, 1 is `P(λ) = λ_0 + λ_1 + λ_2`
+/// (any sum: the homogeneous form). At λ = (1, 2^-53, 2^-200), P = 1 + 2^-53 + 2^-200 lies just
+/// above the midpoint of 1 and its successor (ulp 2^-52), so the claim 1 is off by
+/// 1/2 + 2^-148 ulp: not correctly rounded, and in the bucket "(1/2, 1]" (rounding the exact
+/// error to nearest, 0.5, would put it in "(0, 1/2]"). At (1, 2^-53, 0), P is the midpoint
+/// itself, a tie that 1 wins (even): 1/2 ulp, correctly rounded. At (1, 2^-54, 2^-200) the
+/// error is 1/4 + 2^-148 ulp.
+#[test]
+fn exact_errors_a_hair_above_a_bucket_bound_are_counted_above_it() {
+    use tribez::hazmat::patch::{BezierPatch, ControlNet};
+    use tribez::hazmat::simplex::Simplex;
+    let one = tribez::Rational::from_integer(1.into());
+    let patch = BezierPatch::new(ControlNet::new(Simplex::new(2, 1), 1, vec![one; 3]));
+    let options = BatchOptions {
+        tolerance: Tolerance::parse("correctly_rounded").unwrap(),
+        precision: Some(Precision::F64),
+        row_detail: true,
+        ..BatchOptions::default()
+    };
+    let c = BatchChecker::new(patch, &options).unwrap();
+    let (p53, p54, p200) = (2f64.powi(-53), 2f64.powi(-54), 2f64.powi(-200));
+    let points = [1.0, p53, p200, 1.0, p53, 0.0, 1.0, p54, p200];
+    let r = c
+        .check_rows(&points, &[1.0; 3], 0, "<memory>", "sum")
+        .unwrap()
+        .0;
+    assert_eq!((r.checked, r.passed, r.failed), (3, 2, 1));
+    assert_eq!(r.histogram.counts, [0, 2, 1, 0, 0, 0, 0, 0]);
+    let rows = r.rows.as_ref().unwrap();
+    assert!(!rows[0].passed && !rows[0].correctly_rounded);
+    // the least float not below 1/2 + 2^-148
+    assert_eq!(rows[0].ulps_seen, 0.5f64.next_up());
+    assert!(rows[1].passed && rows[1].correctly_rounded);
+    assert_eq!(rows[1].ulps_seen, 0.5);
+    assert!(rows[2].passed && rows[2].ulps_seen > 0.25 && rows[2].ulps_seen <= 0.25f64.next_up());
+    // rows are numbered from the offset given (0)
+    assert_eq!(r.worst.as_ref().unwrap().line, 0);
+}
+
 #[test]
 fn in_memory_shapes_are_checked() {
     let c = checker("ulps=1", false);

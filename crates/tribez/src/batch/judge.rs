@@ -1,7 +1,6 @@
 //! Judging one row: the float filter first, exact arithmetic when it cannot decide.
 
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 
 use super::parse::Num;
 use super::report::FailedCoord;
@@ -196,11 +195,11 @@ impl Prepared {
                 .accepts(&yq, &exact[c], &leaf)
                 .unwrap_or(false);
             let meas = Measures::new(&yq, &exact[c], self.precision.or(Some(Precision::F64)));
+            // rounded up, so that the histogram puts the row in its true bucket
             let u = meas
                 .ulps
                 .as_ref()
-                .and_then(ToPrimitive::to_f64)
-                .unwrap_or(f64::INFINITY);
+                .map_or(f64::INFINITY, crate::number::round_up_f64);
             worst = worst.max(u);
             if !ok {
                 pass = false;
@@ -385,7 +384,7 @@ impl Prepared {
                         Some(Precision::F32) => crate::number::ulps_error_f32(&yq, q),
                         _ => crate::number::ulps_error_f64(&yq, q),
                     };
-                    u.to_f64().unwrap_or(f64::INFINITY)
+                    crate::number::round_up_f64(&u)
                 }
             })
             .fold(0.0, f64::max)

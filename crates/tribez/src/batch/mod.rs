@@ -23,7 +23,6 @@ use std::io::{BufReader, Read};
 use std::path::Path;
 
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 use rayon::prelude::*;
 
 mod histogram;
@@ -564,7 +563,7 @@ impl<'p> Accumulator<'p> {
                         c.intended
                             .as_ref()
                             .and_then(|m| m.ulps.as_ref())
-                            .and_then(ToPrimitive::to_f64)
+                            .map(crate::number::round_up_f64)
                     })
                     .collect::<Option<Vec<f64>>>()
                     .filter(|_| finite)

@@ -6,7 +6,6 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 use serde::Serialize;
 use serde_json::Value as Json;
 
@@ -207,11 +206,11 @@ impl ClaimsReport {
             .flat_map(|j| {
                 j.floats.iter().enumerate().map(move |(k, f)| {
                     (
+                        // rounded up: the histogram's buckets are then exact
                         f.seen
                             .ulps
                             .as_ref()
-                            .and_then(ToPrimitive::to_f64)
-                            .unwrap_or(f64::INFINITY),
+                            .map_or(f64::INFINITY, crate::number::round_up_f64),
                         j,
                         k,
                     )

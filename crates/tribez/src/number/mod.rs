@@ -47,7 +47,9 @@ pub use print::{
     display_f32, display_f64, display_float, format_points, format_rational, format_tuple, hex_f32,
     hex_f64, hex_float, push_decimal, push_rational, to_decimal_string,
 };
-pub use round::{is_faithful, is_faithful_f32, is_faithful_f64, round_f32, round_f64, round_to};
+pub use round::{
+    is_faithful, is_faithful_f32, is_faithful_f64, round_f32, round_f64, round_to, round_up_f64,
+};
 pub use ulp::{
     floor_log2, steps, steps_f32, steps_f64, ulp, ulp_f32, ulp_f64, ulps_error, ulps_error_f32,
     ulps_error_f64,

@@ -319,6 +319,33 @@ pub fn round_f64(q: &BigRational) -> f64 {
     round_to(q)
 }
 
+/// The least `f64` not below `q` (`+∞` above `f64::MAX`, `f64::MIN` below it), so that for
+/// every float `t` the comparison `q ≤ t` holds exactly when `round_up_f64(q) ≤ t`: an exact
+/// figure rounded this way lands on the right side of every float threshold (the histogram
+/// buckets of errors in ULPs, whose bounds 1/2, 1, 2, … are floats), which rounding to nearest
+/// does not promise (1/2 + 2^-148 rounds to 1/2).
+///
+/// ```
+/// use tribez::hazmat::number::{parse_rational, round_up_f64};
+/// let r = |s| round_up_f64(&parse_rational(s).unwrap());
+/// assert_eq!(r("0.5"), 0.5);
+/// assert_eq!(r("0x1.0000000000000000000000000000000001p-1"), 0.5f64.next_up()); // 1/2 + 2^-137
+/// assert_eq!(r("1/3"), (1.0f64 / 3.0).next_up()); // 1/3 rounds down to nearest
+/// assert_eq!(r("1/10"), 0.1); // the nearest, 0.1000000000000000055511151231257827…, is above
+/// assert_eq!(r("0x1p-2000"), 5e-324); // above 0: the least subnormal
+/// assert_eq!(r("0"), 0.0);
+/// ```
+pub fn round_up_f64(q: &BigRational) -> f64 {
+    let x = round_f64(q);
+    match super::exact_f64(x) {
+        Some(v) if v < *q => x.next_up(),
+        Some(_) => x,
+        // ±∞: beyond the largest float on that side
+        None if x > 0.0 => x,
+        None => f64::MIN,
+    }
+}
+
 /// The `f32` nearest to `q`, ties to even, rounded once from the exact value
 /// (never through `f64`, which could round twice): 24-bit significand, e ≥ −126,
 /// subnormals multiples of 2^−149, overflow (from 2^128 − 2^103 up) to ±inf.

@@ -590,6 +590,22 @@ proptest! {
         prop_assert_eq!(display_f32(x).parse::<f32>().unwrap(), x);
     }
 
+    /// `round_up_f64(q)` is the least float not below `q`: not below it, and its predecessor
+    /// below it (checked on exact values; ±∞ and `f64::MIN` at the ends).
+    #[test]
+    fn round_up_is_the_least_float_not_below(q in any_rational()) {
+        let x = round_up_f64(&q);
+        match exact_f64(x) {
+            Some(v) => {
+                prop_assert!(v >= q, "{x:e} below {q}");
+                if x != f64::MIN {
+                    prop_assert!(exact_f64(x.next_down()).unwrap() < q, "{x:e} not the least");
+                }
+            }
+            None => prop_assert!(x == f64::INFINITY && q > exact_f64(f64::MAX).unwrap()),
+        }
+    }
+
     #[test]
     fn decimal_agrees_with_std_f64(s in decimal_text(-345..330)) {
         let expected: f64 = s.parse().unwrap();
