@@ -200,21 +200,16 @@ fn factor_odd(mut r: u64) -> Option<Vec<(u64, u32)>> {
             out.push((p, e));
         }
     };
-    let mut done = false;
     for &p in &PRIMES_BELOW_256[1..] {
         let p = u64::from(p);
         if p * p > r {
-            done = true;
             break;
         }
         divide(&mut r, p);
     }
-    // every prime below 257 has been tried: a cofactor below 257² is 1 or a prime, and a 16-bit
-    // denominator never needs the sieve
-    if !done && r < 257 * 257 {
-        done = true;
-    }
-    if !done {
+    // every prime below 257 that could divide r has been tried: a cofactor below 257² is 1 or a
+    // prime (so a 16-bit denominator never needs the sieve)
+    if r >= 257 * 257 {
         for &p in &small_primes()[PRIMES_BELOW_256.len()..] {
             let p = u64::from(p);
             if p * p > r {

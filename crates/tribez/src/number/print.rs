@@ -79,17 +79,13 @@ const TEN19: u64 = 10_000_000_000_000_000_000;
 pub fn push_decimal(out: &mut String, x: &BigUint) {
     let bits = x.bits();
     if bits <= 64 * SMALL_LIMBS as u64 {
-        push_limbs::<SMALL_LIMBS, { SMALL_LIMBS + 2 + FUSED }, { 19 * (SMALL_LIMBS + 2) + 1 }>(
-            out, x,
-        );
+        push_limbs::<SMALL_LIMBS, { digits_for(SMALL_LIMBS) }, { text_for(SMALL_LIMBS) }>(out, x);
     } else if bits <= 64 * MEDIUM_LIMBS as u64 {
-        push_limbs::<MEDIUM_LIMBS, { MEDIUM_LIMBS + 2 + FUSED }, { 19 * (MEDIUM_LIMBS + 2) + 1 }>(
+        push_limbs::<MEDIUM_LIMBS, { digits_for(MEDIUM_LIMBS) }, { text_for(MEDIUM_LIMBS) }>(
             out, x,
         );
     } else if bits <= 64 * (SPLIT_LIMBS as u64 - 1) {
-        push_limbs::<SPLIT_LIMBS, { SPLIT_LIMBS + 2 + FUSED }, { 19 * (SPLIT_LIMBS + 2) + 1 }>(
-            out, x,
-        );
+        push_limbs::<SPLIT_LIMBS, { digits_for(SPLIT_LIMBS) }, { text_for(SPLIT_LIMBS) }>(out, x);
     } else {
         split_decimal(out, x, None);
     }
@@ -105,6 +101,16 @@ fn push_limbs<const L: usize, const D: usize, const T: usize>(out: &mut String, 
         len += 1;
     }
     push_chunks::<D, T>(out, &mut limbs[..len], None);
+}
+
+/// The base-`10^19` digits [`push_chunks`] may produce from `limbs` limbs (its `D`).
+const fn digits_for(limbs: usize) -> usize {
+    limbs + 2 + FUSED
+}
+
+/// The bytes of text [`push_chunks`] may write from `limbs` limbs (its `T`).
+const fn text_for(limbs: usize) -> usize {
+    19 * (limbs + 2) + 1
 }
 
 /// From this many limbs on, [`push_decimal`] splits the number by a power of `10^19`.
@@ -135,7 +141,7 @@ fn split_decimal(out: &mut String, x: &BigUint, width: Option<usize>) {
     let mut limbs = x.to_u64_digits();
     let len = limbs.len();
     if len < SPLIT_LIMBS {
-        push_chunks::<{ SPLIT_LIMBS + 2 + FUSED }, { 19 * (SPLIT_LIMBS + 2) + 1 }>(
+        push_chunks::<{ digits_for(SPLIT_LIMBS) }, { text_for(SPLIT_LIMBS) }>(
             out,
             &mut limbs,
             width.map(|w| w / 19),
@@ -162,7 +168,7 @@ fn push_chunks<const D: usize, const T: usize>(
     limbs: &mut [u64],
     chunks: Option<usize>,
 ) {
-    const { assert!(D > 2 + FUSED && T == 19 * (D - FUSED) + 1) };
+    const { assert!(D > 2 + FUSED && T == text_for(D - 2 - FUSED)) };
     debug_assert!(limbs.len() < SPLIT_LIMBS && limbs.len() + 2 + FUSED <= D);
     let mut len = limbs.len();
     while len > 0 && limbs[len - 1] == 0 {
