@@ -245,6 +245,17 @@ fn duplicated_key_in_json() {
 }
 
 #[test]
+fn a_toml_document_with_too_many_values_is_refused_before_it_is_parsed() {
+    // 4,000,001 one-byte numbers after the header: over the TOML bound by its separators alone
+    let ones = vec!["1"; 4_000_001].join(",");
+    let toml = format!("degree = 1\nnoise = [{ones}]\n");
+    let err = bad_patch("p.toml", &toml, &["p.toml:2:", "more than 4000000 values"]);
+    assert!(err.contains("write a larger input as JSON"), "{err}");
+    // (JSON's cap, 20,000,000 values counted as they are read, is tested on the library's
+    // parser with a small cap: the whole-size case takes some 1.5 GB before it is refused)
+}
+
+#[test]
 fn index_of_wrong_length_or_sum() {
     bad_patch(
         "p.toml",

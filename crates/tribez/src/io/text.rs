@@ -166,19 +166,23 @@ pub fn not_utf8(file: &str, bytes: &[u8], at: usize) -> InputError {
 /// The start of every line of a text, to locate byte offsets in `O(log lines)`.
 #[derive(Clone, Debug)]
 pub struct LineIndex {
-    /// Byte offset of the start of each line; `starts[0] == 0`.
-    starts: Vec<usize>,
+    /// Byte offset of the start of each line; `starts[0] == 0`. Offsets are `u32` (texts read
+    /// whole are at most [`MAX_FILE_BYTES`]), so that a text of line feeds only takes four bytes
+    /// of index per byte, not eight.
+    starts: Vec<u32>,
 }
 
 impl LineIndex {
-    /// Index the lines of `text` (one pass).
+    /// Index the lines of `text` (one pass). Lines that start beyond `u32::MAX` bytes, which a
+    /// text of at most [`MAX_FILE_BYTES`] never has, are not indexed (offsets there read as the
+    /// last line indexed).
     pub fn new(text: &[u8]) -> Self {
         let mut starts = vec![0];
         starts.extend(
             text.iter()
                 .enumerate()
                 .filter(|&(_, &b)| b == b'\n')
-                .map(|(i, _)| i + 1),
+                .map_while(|(i, _)| u32::try_from(i + 1).ok()),
         );
         LineIndex { starts }
     }
@@ -186,14 +190,14 @@ impl LineIndex {
     /// The 1-based line of byte `offset`.
     pub fn line(&self, offset: usize) -> usize {
         // the number of line starts at or before `offset`
-        self.starts.partition_point(|&s| s <= offset)
+        self.starts.partition_point(|&s| s as usize <= offset)
     }
 
     /// The 1-based (line, column) of byte `offset` of `text` (the text indexed); the column
     /// counts bytes from the line's start.
     pub fn line_col(&self, offset: usize) -> (usize, usize) {
         let line = self.line(offset);
-        (line, offset - self.starts[line - 1] + 1)
+        (line, offset - self.starts[line - 1] as usize + 1)
     }
 }
 

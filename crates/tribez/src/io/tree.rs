@@ -9,7 +9,7 @@ use std::path::Path;
 
 use num_rational::BigRational;
 
-use super::text::{LineIndex, read_text, strip_bom};
+use super::text::{LineIndex, MAX_FILE_BYTES, read_text, strip_bom};
 use super::{InputError, JsonSyntax, Problem};
 use crate::number::parse_rational;
 
@@ -93,11 +93,27 @@ impl Document {
 
     /// Parse TOML text (a leading byte-order mark is ignored). Linear in the text's length.
     pub fn parse_toml(file: &str, text: &str) -> Result<Self, InputError> {
+        Document::parse_toml_capped(file, text, MAX_TOML_VALUES)
+    }
+
+    /// [`Document::parse_toml`] with at most `max_values` values (as bounded by
+    /// [`toml_values_exceed`]).
+    fn parse_toml_capped(file: &str, text: &str, max_values: usize) -> Result<Self, InputError> {
         let text = strip_bom(text);
         if text.trim().is_empty() {
             return Err(InputError::file(file, Problem::EmptyFile));
         }
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(too_large(file));
+        }
         let lines = LineIndex::new(text.as_bytes());
+        if let Some(at) = toml_values_exceed(text.as_bytes(), max_values) {
+            let problem = Problem::TooManyValues {
+                limit: max_values,
+                format: "TOML",
+            };
+            return Err(InputError::at(file, Some(lines.line(at)), None, problem));
+        }
         let doc = toml_edit::Document::parse(text).map_err(|e| {
             let (line, column) = e.span().map(|s| lines.line_col(s.start)).unzip();
             let msg = e.message().trim().to_string();
@@ -112,15 +128,26 @@ impl Document {
 
     /// Parse JSON text (a leading byte-order mark is ignored). Linear in the text's length.
     pub fn parse_json(file: &str, text: &str) -> Result<Self, InputError> {
+        Document::parse_json_capped(file, text, MAX_JSON_VALUES)
+    }
+
+    /// [`Document::parse_json`] with at most `max_values` values.
+    fn parse_json_capped(file: &str, text: &str, max_values: usize) -> Result<Self, InputError> {
         let text = strip_bom(text);
         if text.trim().is_empty() {
             return Err(InputError::file(file, Problem::EmptyFile));
+        }
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(too_large(file));
         }
         let mut p = JsonParser {
             text: text.as_bytes(),
             pos: 0,
             file,
-            lines: LineIndex::new(text.as_bytes()),
+            line: 1,
+            line_start: 0,
+            values: 0,
+            max_values,
         };
         p.skip_ws();
         let root = p.value(0)?;
@@ -133,6 +160,41 @@ impl Document {
             root,
         })
     }
+}
+
+/// The most values (numbers, strings, booleans, arrays, tables) a JSON document may hold, counted
+/// as they are read: room for the largest points file (1,000,000 points of up to 17 coordinates,
+/// 18,000,001 values) and mesh, and a bound of about 2 GB on the tree whatever the file holds
+/// (without it, a 256 MiB file of `[1,1,…]` took 9.5 GB before any file kind's own cap could
+/// refuse it).
+pub const MAX_JSON_VALUES: usize = 20_000_000;
+
+/// The most values a TOML document may hold, bounded before the text is parsed by counting the
+/// bytes that can introduce one (every value or table but the root follows a `,`, `=`, `[` or
+/// `.` of its own; strings and comments only over-count): twice the count of the largest patch
+/// file allowed, and a bound of about 1 GB on the parser's tree (some 270 bytes a value, so a
+/// 256 MiB file of `a = [1,1,…]` would take 34 GB). Larger inputs belong in JSON.
+pub const MAX_TOML_VALUES: usize = 4_000_000;
+
+/// The offset of the byte at which `text` holds more than `limit` bytes that can introduce a
+/// TOML value (`,` `=` `[` `.`, counting the root as one), if it does.
+fn toml_values_exceed(text: &[u8], limit: usize) -> Option<usize> {
+    let mut count = 1usize;
+    text.iter().position(|&b| {
+        count += usize::from(matches!(b, b',' | b'=' | b'[' | b'.'));
+        count > limit
+    })
+}
+
+/// The error of a text longer than a file read whole may be (texts handed to the parsers
+/// directly are held to the same limit as files).
+fn too_large(file: &str) -> InputError {
+    InputError::file(
+        file,
+        Problem::FileTooLarge {
+            limit_mib: MAX_FILE_BYTES >> 20,
+        },
+    )
 }
 
 /// 1-based (line, column) of a byte offset (the column counts bytes). Linear in `offset`: to
@@ -243,26 +305,43 @@ struct JsonParser<'a> {
     text: &'a [u8],
     pos: usize,
     file: &'a str,
-    lines: LineIndex,
+    /// The 1-based line of `pos`, and the offset where that line starts (kept as the text is
+    /// read: no index of every line is built).
+    line: usize,
+    line_start: usize,
+    /// Values read so far, and their cap ([`MAX_JSON_VALUES`]; smaller under test).
+    values: usize,
+    max_values: usize,
 }
 
 const MAX_DEPTH: usize = 128;
 
 impl JsonParser<'_> {
-    fn line(&self) -> usize {
-        self.lines.line(self.pos)
+    fn err(&self, syntax: JsonSyntax) -> InputError {
+        let column = self.pos - self.line_start + 1;
+        InputError::at(
+            self.file,
+            Some(self.line),
+            Some(column),
+            Problem::Json(syntax),
+        )
     }
 
-    fn err(&self, syntax: JsonSyntax) -> InputError {
-        let (line, col) = self.lines.line_col(self.pos);
-        InputError::at(self.file, Some(line), Some(col), Problem::Json(syntax))
+    /// Step over the byte at `pos`, counting a line feed.
+    fn advance(&mut self, b: u8) {
+        self.pos += 1;
+        if b == b'\n' {
+            self.line += 1;
+            self.line_start = self.pos;
+        }
     }
 
     fn skip_ws(&mut self) {
-        while self.pos < self.text.len()
-            && matches!(self.text[self.pos], b' ' | b'\t' | b'\n' | b'\r')
-        {
-            self.pos += 1;
+        while let Some(&b) = self.text.get(self.pos) {
+            if !matches!(b, b' ' | b'\t' | b'\n' | b'\r') {
+                break;
+            }
+            self.advance(b);
         }
     }
 
@@ -281,19 +360,28 @@ impl JsonParser<'_> {
             return Err(self.err(JsonSyntax::TooDeep));
         }
         self.skip_ws();
-        let line = self.line();
+        self.values += 1;
+        if self.values > self.max_values {
+            let problem = Problem::TooManyValues {
+                limit: self.max_values,
+                format: "JSON",
+            };
+            return Err(InputError::at(self.file, Some(self.line), None, problem));
+        }
+        let line = self.line;
         let value = match self.text.get(self.pos) {
             None => return Err(self.err(JsonSyntax::UnexpectedEnd)),
             Some(b'{') => {
                 self.pos += 1;
                 let mut entries: Vec<(String, Node)> = Vec::new();
-                // Where each key starts, to point at a duplicate; duplicates are looked for
-                // once the object is read, by hashing borrowed keys (no copy of every key).
-                let mut key_starts: Vec<usize> = Vec::new();
+                // Where each key starts (offset, line, line start), to point at a duplicate;
+                // duplicates are looked for once the object is read, by hashing borrowed keys
+                // (no copy of every key).
+                let mut key_starts: Vec<(usize, usize, usize)> = Vec::new();
                 if !self.eat(b'}') {
                     loop {
                         self.skip_ws();
-                        key_starts.push(self.pos);
+                        key_starts.push((self.pos, self.line, self.line_start));
                         let key = self.string()?;
                         if !self.eat(b':') {
                             return Err(self.err(JsonSyntax::Expected("':' after a key")));
@@ -310,7 +398,7 @@ impl JsonParser<'_> {
                     }
                 }
                 if let Some(dup) = first_duplicate(&entries) {
-                    self.pos = key_starts[dup];
+                    (self.pos, self.line, self.line_start) = key_starts[dup];
                     let key = entries.swap_remove(dup).0;
                     return Err(self.err(JsonSyntax::DuplicateKey { key }));
                 }
@@ -409,7 +497,7 @@ impl JsonParser<'_> {
                 }
                 Some(&b) => {
                     out.push(b);
-                    self.pos += 1;
+                    self.advance(b);
                 }
             }
         }
@@ -577,6 +665,78 @@ mod tests {
         );
         assert_eq!(d.rational(&t[0].1, "a").unwrap().to_string(), "1/10");
         assert_eq!(t[1].1.line, 3);
+    }
+
+    #[test]
+    fn json_values_are_capped_as_they_are_read() {
+        // 7 values: the table; the array and its two numbers; the string; the array and `true`
+        let text = "{\"a\": [1, 2],\n \"b\": \"x\",\n \"c\": [true]}";
+        assert!(Document::parse_json_capped("x.json", text, 7).is_ok());
+        let e = Document::parse_json_capped("x.json", text, 6).unwrap_err();
+        assert_eq!(e.line, Some(3), "the seventh value, `true`, is on line 3");
+        assert_eq!(
+            *e.problem,
+            Problem::TooManyValues {
+                limit: 6,
+                format: "JSON"
+            }
+        );
+        assert_eq!(
+            e.to_string(),
+            "x.json:3: more than 6 values (the limit of a JSON file)"
+        );
+        // the largest points file allowed fits: 1,000,000 points of 17 coordinates, the root
+        // array and one array per point
+        let largest_points = 1 + crate::io::points::MAX_POINTS * (1 + 17);
+        assert!(largest_points <= MAX_JSON_VALUES);
+    }
+
+    #[test]
+    fn toml_values_are_bounded_before_parsing() {
+        // Every value but the root follows a ',', '=', '[' or '.': a file at the bound parses,
+        // one more is refused on the line where the bound is passed (before parsing: the
+        // second text is not valid TOML)
+        let at_bound = "a = [1, 2, 3]\nb = 4\n"; // the root, '=', '[', ',', ',', '='
+        assert!(Document::parse_toml_capped("x.toml", at_bound, 6).is_ok());
+        assert!(Document::parse_toml_capped("x.toml", at_bound, 5).is_err());
+        let e = Document::parse_toml_capped("x.toml", "a = [1, 2]\nb = [3,,,\n", 6).unwrap_err();
+        assert_eq!(e.line, Some(2));
+        assert_eq!(
+            e.to_string(),
+            "x.toml:2: more than 6 values (the limit of a TOML file, counting every ',', '=', \
+             '[' and '.' as one; write a larger input as JSON)"
+        );
+        let over = format!(
+            "a = 1\nb = [{}]\n",
+            vec!["1"; MAX_TOML_VALUES - 2].join(",")
+        );
+        let e = Document::parse_toml("x.toml", &over).unwrap_err();
+        assert_eq!(e.line, Some(2));
+        assert_eq!(
+            *e.problem,
+            Problem::TooManyValues {
+                limit: MAX_TOML_VALUES,
+                format: "TOML"
+            }
+        );
+        // dotted keys and headers make tables: each is introduced by a '.' or a '['
+        let text = "a.b.c = 1\n[d.e]\nf = [[1], {g = 2}]\n[[h]]\n";
+        let doc = Document::parse_toml("x.toml", text).unwrap();
+        assert!(count_nodes(&doc.root) <= 1 + text.matches([',', '=', '[', '.']).count());
+        // the largest patch file allowed (246,905 control points of a 3-simplex, as the `read`
+        // benchmark writes it) fits twice over
+        let line = "\"112,0,0,0\" = [\"785/3\", \"-0.0\", \"112e-3\"]\n";
+        let per_point = line.matches([',', '=', '[', '.']).count();
+        assert_eq!(per_point, 8);
+        assert!(2 * 246_905 * per_point < MAX_TOML_VALUES);
+    }
+
+    fn count_nodes(node: &Node) -> usize {
+        1 + match &node.value {
+            Value::Array(items) => items.iter().map(count_nodes).sum(),
+            Value::Table(entries) => entries.iter().map(|(_, n)| count_nodes(n)).sum(),
+            _ => 0,
+        }
     }
 
     #[test]
