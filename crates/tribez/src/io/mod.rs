@@ -122,7 +122,7 @@ pub enum Problem {
     /// A file with nothing in it.
     #[error("the file is empty")]
     EmptyFile,
-    /// TOML syntax. The message is the `toml_edit` parser's own: tribez does not re-word a
+    /// TOML syntax. The message is the `toml` parser's own: tribez does not re-word a
     /// third-party parser's diagnosis.
     #[error("invalid TOML: {message}")]
     Toml {

@@ -3,7 +3,8 @@
 //!
 //! JSON is read by a small parser of our own, because the usual readers turn numbers into
 //! f64 and silently keep the last of two duplicated keys; both would be wrong here. TOML is read
-//! with `toml_edit`, whose spans give the exact number text and the line.
+//! with the `toml` crate's borrowed document (`DeTable`), whose spans give the exact number text
+//! and the line.
 
 use std::path::Path;
 
@@ -114,12 +115,12 @@ impl Document {
             };
             return Err(InputError::at(file, Some(lines.line(at)), None, problem));
         }
-        let doc = toml_edit::Document::parse(text).map_err(|e| {
+        let doc = toml::de::DeTable::parse(text).map_err(|e| {
             let (line, column) = e.span().map(|s| lines.line_col(s.start)).unzip();
             let msg = e.message().trim().to_string();
             InputError::at(file, line, column, Problem::Toml { message: msg })
         })?;
-        let root = Toml { text, lines }.table(doc.as_table(), 1);
+        let root = Toml { text, lines }.table(doc.get_ref(), 1);
         Ok(Document {
             file: file.into(),
             root,
@@ -172,8 +173,9 @@ pub const MAX_JSON_VALUES: usize = 20_000_000;
 /// The most values a TOML document may hold, bounded before the text is parsed by counting the
 /// bytes that can introduce one (every value or table but the root follows a `,`, `=`, `[` or
 /// `.` of its own; strings and comments only over-count): twice the count of the largest patch
-/// file allowed, and a bound of about 1 GB on the parser's tree (some 270 bytes a value, so a
-/// 256 MiB file of `a = [1,1,…]` would take 34 GB). Larger inputs belong in JSON.
+/// file allowed, and a bound of about 0.8 GB on the memory parsing takes (some 190 bytes a value
+/// for the parser's tree and tribez's, so a 256 MiB file of `a = [1,1,…]` would take 25 GB).
+/// Larger inputs belong in JSON.
 pub const MAX_TOML_VALUES: usize = 4_000_000;
 
 /// The offset of the byte at which `text` holds more than `limit` bytes that can introduce a
@@ -210,24 +212,10 @@ struct Toml<'a> {
 }
 
 impl Toml<'_> {
-    fn span_line(&self, span: Option<std::ops::Range<usize>>, fallback: usize) -> usize {
-        span.map_or(fallback, |s| self.lines.line(s.start))
-    }
-
-    fn table(&self, table: &toml_edit::Table, line: usize) -> Node {
-        let line = self.span_line(table.span(), line);
+    fn table(&self, table: &toml::de::DeTable<'_>, line: usize) -> Node {
         let entries = table
             .iter()
-            .map(|(k, item)| {
-                // The key's line is only a fallback for an item without a span of its own;
-                // looking the key up costs a hash per entry, so only when needed.
-                let key_line = if item_has_span(item) {
-                    line
-                } else {
-                    self.span_line(table.key(k).and_then(|key| key.span()), line)
-                };
-                (k.to_string(), self.item(item, key_line))
-            })
+            .map(|(k, v)| (k.get_ref().to_string(), self.value(v, line)))
             .collect();
         Node {
             value: Value::Table(entries),
@@ -235,51 +223,23 @@ impl Toml<'_> {
         }
     }
 
-    fn item(&self, item: &toml_edit::Item, line: usize) -> Node {
-        match item {
-            toml_edit::Item::None => Node {
-                value: Value::Null,
-                line,
-            },
-            toml_edit::Item::Value(v) => self.value(v, line),
-            toml_edit::Item::Table(t) => self.table(t, line),
-            toml_edit::Item::ArrayOfTables(a) => {
-                let items = a.iter().map(|t| self.table(t, line)).collect();
-                Node {
-                    value: Value::Array(items),
-                    line,
-                }
-            }
-        }
-    }
-
-    fn value(&self, v: &toml_edit::Value, line: usize) -> Node {
-        use toml_edit::Value as V;
-        let line = self.span_line(v.span(), line);
-        let raw = || {
-            v.span()
-                .and_then(|s| self.text.get(s))
-                .map(|t| t.trim().to_string())
-                .unwrap_or_else(|| v.to_string().trim().to_string())
+    /// A value's node; `line` stands for a span the parser did not record (none does today).
+    fn value(&self, v: &toml::Spanned<toml::de::DeValue<'_>>, line: usize) -> Node {
+        use toml::de::DeValue as V;
+        let span = v.span();
+        let line = if span.is_empty() && span.start == 0 {
+            line
+        } else {
+            self.lines.line(span.start)
         };
-        let value = match v {
-            V::String(s) => Value::String(s.value().clone()),
+        let raw = || self.text.get(span).unwrap_or_default().trim();
+        let value = match v.get_ref() {
+            V::String(s) => Value::String(s.to_string()),
             V::Integer(_) | V::Float(_) => Value::Number(raw().replace('_', "")),
-            V::Boolean(b) => Value::Bool(*b.value()),
-            V::Datetime(_) => Value::String(raw()),
+            V::Boolean(b) => Value::Bool(*b),
+            V::Datetime(_) => Value::String(raw().to_string()),
             V::Array(a) => Value::Array(a.iter().map(|x| self.value(x, line)).collect()),
-            V::InlineTable(t) => Value::Table(
-                t.iter()
-                    .map(|(k, x)| {
-                        let key_line = if x.span().is_some() {
-                            line
-                        } else {
-                            self.span_line(t.key(k).and_then(|key| key.span()), line)
-                        };
-                        (k.to_string(), self.value(x, key_line))
-                    })
-                    .collect(),
-            ),
+            V::Table(t) => return self.table(t, line),
         };
         Node { value, line }
     }
@@ -289,16 +249,6 @@ impl Toml<'_> {
 fn first_duplicate(entries: &[(String, Node)]) -> Option<usize> {
     let mut seen = std::collections::HashSet::with_capacity(entries.len());
     entries.iter().position(|(k, _)| !seen.insert(k.as_str()))
-}
-
-/// Whether a TOML item carries its own span (then its line comes from it).
-fn item_has_span(item: &toml_edit::Item) -> bool {
-    match item {
-        toml_edit::Item::None => false,
-        toml_edit::Item::Value(v) => v.span().is_some(),
-        toml_edit::Item::Table(t) => t.span().is_some(),
-        toml_edit::Item::ArrayOfTables(a) => a.span().is_some(),
-    }
 }
 
 struct JsonParser<'a> {
