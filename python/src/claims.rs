@@ -21,7 +21,7 @@ pub const MAX_RANDOM_POINTS: usize = 1_000_000;
 /// A report as the library renders it: its JSON, its text and whether it succeeded.
 #[pyclass(module = "tribez._native", frozen)]
 pub struct NativeDocument {
-    /// `"claims"` or `"certify"`.
+    /// `"claims"`, `"certify"` or `"inverse"`.
     #[pyo3(get)]
     kind: &'static str,
     /// The JSON report (the command line's `--format json`).
@@ -35,6 +35,18 @@ pub struct NativeDocument {
     success: bool,
 }
 
+impl NativeDocument {
+    /// A report of `kind` from its JSON and text.
+    pub(crate) fn new(kind: &'static str, json: String, text: String, success: bool) -> Self {
+        NativeDocument {
+            kind,
+            json,
+            text,
+            success,
+        }
+    }
+}
+
 #[pymethods]
 impl NativeDocument {
     /// Rebuild from its parts (pickling).
@@ -43,6 +55,7 @@ impl NativeDocument {
         let kind = match kind {
             "claims" => "claims",
             "certify" => "certify",
+            "inverse" => "inverse",
             other => {
                 return Err(pyo3::exceptions::PyValueError::new_err(format!(
                     "unknown report kind `{other}`"
@@ -58,7 +71,7 @@ impl NativeDocument {
     }
 }
 
-fn json_of(py: Python<'_>, value: impl serde::Serialize) -> PyResult<String> {
+pub(crate) fn json_of(py: Python<'_>, value: impl serde::Serialize) -> PyResult<String> {
     // byte-identical to the command line's `--format json` (pretty, a final newline)
     serde_json::to_string_pretty(&value)
         .map(|j| j + "\n")

@@ -17,6 +17,7 @@ use pyo3::sync::PyOnceLock;
 use pyo3::types::PyType;
 
 mod claims;
+mod inverse;
 mod patch;
 mod report;
 
@@ -92,6 +93,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<claims::NativeDocument>()?;
     m.add_function(wrap_pyfunction!(claims::check_claims, m)?)?;
     m.add_function(wrap_pyfunction!(claims::certify, m)?)?;
+    m.add_function(wrap_pyfunction!(inverse::check_inverse, m)?)?;
+    m.add("MAX_INVERSE_ROWS", inverse::MAX_INVERSE_ROWS)?;
     m.add("MAX_RANDOM_POINTS", claims::MAX_RANDOM_POINTS)?;
     m.add_function(wrap_pyfunction!(report::check_rows, m)?)?;
     m.add_function(wrap_pyfunction!(patch::parse_number, m)?)?;

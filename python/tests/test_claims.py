@@ -67,6 +67,12 @@ def test_check_claims_is_the_command_lines_report(monkeypatch):
     assert json.loads(out.stdout) == json.loads(report.to_json())
 
 
+def test_the_python_guide_states_this_repositorys_claim_counts():
+    claims, errata = count_claims(claim_files())
+    text = (ROOT / "docs" / "python.md").read_text()
+    assert f"# ({claims}, {claims - errata}, {errata}, 0) in this repository" in text
+
+
 def test_worked_example_claims():
     report = tribez.check_claims(FIXTURES / "finn_day30.claims.toml")
     claims, errata = count_claims([FIXTURES / "finn_day30.claims.toml"])

@@ -29,15 +29,18 @@ import numpy as np
 from . import _native
 from ._convert import float_rows, matrix_texts, number_text
 from ._errors import CertificationError, InputError, InternalError, TribezError
-from ._report import CertifyReport, ClaimsReport, Report
+from ._report import CertifyReport, ClaimsReport, InverseReport, Report
 
 __all__ = [
     "Patch",
     "Report",
     "ClaimsReport",
     "CertifyReport",
+    "InverseReport",
     "check",
     "check_claims",
+    "check_locate",
+    "check_ray",
     "certify",
     "threads",
     "TribezError",
@@ -53,6 +56,7 @@ MAX_DEGREE: int = _native.MAX_DEGREE
 MAX_CONTROL_POINTS: int = _native.MAX_CONTROL_POINTS
 MAX_SIMPLEX_DIMENSION: int = _native.MAX_SIMPLEX_DIMENSION
 MAX_RANDOM_POINTS: int = _native.MAX_RANDOM_POINTS
+MAX_INVERSE_ROWS: int = _native.MAX_INVERSE_ROWS
 
 
 def parse_number(x) -> Fraction:
@@ -422,3 +426,90 @@ def certify(patch: Patch, points=None, random: Optional[int] = None, seed: Optio
     # the report names the patch as the command line does: by its file, when it came from one
     label = patch._path or (f"<{patch.name}>" if patch.name else "<patch>")
     return CertifyReport(_native.certify(patch._native, rows, random, seed, precision, algorithm, label))
+
+
+def _inverse_rows(queries, claimed, qwhere: str, cwhere: str, qwidth: int, twidth: int,
+                  most: Optional[int]) -> list:
+    """The rows of an inverse batch as number texts: the query, then the claimed tuples."""
+    qs = matrix_texts(queries, qwhere)
+    if not qs:
+        raise InputError(f"{qwhere}: no rows")
+    if qs and len(qs[0]) != qwidth:
+        raise InputError(f"{qwhere}: rows of {len(qs[0])} numbers, expected {qwidth}")
+    if isinstance(claimed, np.ndarray) and claimed.ndim >= 1:
+        claimed = list(claimed)
+    if not isinstance(claimed, (list, tuple)):
+        raise InputError(f"{cwhere}: expected a list with one entry per row, got {type(claimed).__name__}")
+    if len(claimed) != len(qs):
+        raise InputError(f"{len(qs)} rows of {qwhere} but {len(claimed)} entries of {cwhere}")
+    rows = []
+    for i, (q, c) in enumerate(zip(qs, claimed)):
+        where = f"{cwhere}[{i}]"
+        if c is None or (isinstance(c, (list, tuple, np.ndarray)) and len(c) == 0):
+            rows.append(q + ["none"])
+            continue
+        tuples = matrix_texts(c, where, allow_vector=True)
+        if tuples and len(tuples[0]) != twidth:
+            raise InputError(f"{where}: tuples of {len(tuples[0])} numbers, expected {twidth}")
+        if most is not None and len(tuples) > most:
+            raise InputError(f"{where}: {len(tuples)} tuples, expected at most {most}")
+        rows.append(q + [x for t in tuples for x in t])
+    return rows
+
+
+def _check_inverse(kind: str, patch: Patch, rows: list, tolerance: str, precision) -> "InverseReport":
+    if not isinstance(tolerance, str):
+        raise InputError(f"tolerance: expected a str such as \"exact\" or \"ulps=16\", got {tolerance!r}")
+    if precision is not None:
+        precision = _precision_name(precision)
+    label = patch._path or (f"<{patch.name}>" if patch.name else "<patch>")
+    return InverseReport(_native.check_inverse(patch._native, kind, rows, tolerance, precision, label))
+
+
+def check_locate(patch: Patch, points, claimed, tolerance: str = "exact",
+                 precision: Optional[str] = None) -> "InverseReport":
+    """Judge another implementation's answers to *locate*: the parameters ``(s, t)`` at which a
+    planar triangle patch (Bézier or rational) passes through a point.
+
+    ``points``: one row ``(x, y)`` per query (a numpy array or nested lists). ``claimed``: one
+    entry per query, the parameter pairs the code found there: a pair ``(s, t)``, several pairs
+    (a list of pairs or a ``(k, 2)`` array), or ``None`` (or an empty list) for none. Every
+    ``(s, t)`` of the closed triangle ``s, t >= 0``, ``s + t <= 1`` that maps to the point is an
+    exact solution; each claimed pair is paired with the nearest exact one within
+    ``2**-20 * max(1, |value|)`` and judged with ``tolerance`` (``"exact"``, ``"ulps=N"``,
+    ``"abs=E"``, ``"rel=E"``, ``"correctly_rounded"``, ``"faithful"``); an exact solution left
+    unpaired is *missed*, a claimed pair left unpaired is *extra*.
+
+    Numbers are as in :meth:`Patch.from_nodes`: a float is the value it is, a string is read
+    exactly (``"0.1"`` is 1/10). With ``precision`` (``"f64"`` or ``"f32"``) every number denotes
+    the float of that precision nearest it, the patch is rounded likewise, and the exact answer is
+    that of the query and patch as the code saw them.
+
+    Returns an :class:`InverseReport`, the report of ``tribez check --patch P --locate-results
+    FILE`` on the same rows (row ``i`` is line ``i + 1`` there).
+    """
+    if not isinstance(patch, Patch):
+        raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
+    rows = _inverse_rows(points, claimed, "points", "claimed", 2, 2, None)
+    return _check_inverse("locate", patch, rows, tolerance, precision)
+
+
+def check_ray(patch: Patch, rays, hits, tolerance: str = "exact",
+              precision: Optional[str] = None) -> "InverseReport":
+    """Judge another implementation's first hits of rays on a triangle patch in R^3 (Bézier or
+    rational, or a functional patch as its graph).
+
+    ``rays``: one row ``(ox, oy, oz, dx, dy, dz)`` per ray (origin, then direction). ``hits``:
+    one entry per ray, the claimed first hit ``(tau, s, t)`` (the point ``o + tau * d`` at the
+    parameters ``(s, t)``), or ``None`` for a ray that misses. The exact answer is the hit with
+    the smallest ``tau >= 0`` over the closed triangle, a grazing touch included; a later hit
+    claimed as the first fails (it is extra, and the first is missed). ``tolerance`` and
+    ``precision`` as in :func:`check_locate`.
+
+    Returns an :class:`InverseReport`, the report of ``tribez check --patch P --ray-results
+    FILE`` on the same rows (row ``i`` is line ``i + 1`` there).
+    """
+    if not isinstance(patch, Patch):
+        raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
+    rows = _inverse_rows(rays, hits, "rays", "hits", 6, 3, 1)
+    return _check_inverse("ray", patch, rows, tolerance, precision)

@@ -17,6 +17,7 @@ MAX_DEGREE: int
 MAX_CONTROL_POINTS: int
 MAX_SIMPLEX_DIMENSION: int
 MAX_RANDOM_POINTS: int
+MAX_INVERSE_ROWS: int
 
 # A number: an int, a float (its exact value), a Fraction, or a string in tribez's syntax.
 Number = Union[int, float, Fraction, str, np.integer, np.floating]
@@ -117,7 +118,43 @@ class CertifyReport(Report):
     @property
     def fell_back(self) -> None: ...  # type: ignore[override]
 
+class InverseReport(Report):
+    @property
+    def kind(self) -> Literal["locate", "ray"]: ...
+    @property
+    def checked(self) -> int: ...
+    @property
+    def missed(self) -> int: ...
+    @property
+    def extra(self) -> int: ...
+    @property
+    def out_of_tolerance(self) -> int: ...
+    @property
+    def infinite(self) -> int: ...
+    @property
+    def not_finite(self) -> int: ...
+    @property
+    def failures(self) -> list[dict[str, Any]]: ...
+    @property
+    def fell_back(self) -> None: ...  # type: ignore[override]
+    @property
+    def worst(self) -> None: ...  # type: ignore[override]
+
 def check_claims(path: PathLike) -> ClaimsReport: ...
+def check_locate(
+    patch: Patch,
+    points: Rows,
+    claimed: Sequence[Optional[Rows]],
+    tolerance: str = ...,
+    precision: Optional[PrecisionName] = ...,
+) -> InverseReport: ...
+def check_ray(
+    patch: Patch,
+    rays: Rows,
+    hits: Sequence[Optional[Sequence[Number]]],
+    tolerance: str = ...,
+    precision: Optional[PrecisionName] = ...,
+) -> InverseReport: ...
 def certify(
     patch: Patch,
     points: Optional[Rows] = ...,

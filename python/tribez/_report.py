@@ -206,7 +206,8 @@ def _document_from_parts(kind, json_text, text, success):
     from . import _native
 
     native = _native.NativeDocument.from_parts(kind, json_text, text, success)
-    return (ClaimsReport if kind == "claims" else CertifyReport)(native)
+    cls = {"claims": ClaimsReport, "certify": CertifyReport, "inverse": InverseReport}[kind]
+    return cls(native)
 
 
 def _ulps(measure) -> Optional[float]:
@@ -412,3 +413,118 @@ class CertifyReport(_DocumentReport):
     def __repr__(self) -> str:
         return (f"<tribez.CertifyReport points={self.points} results={len(self._data['results'])} "
                 f"within_bound={self.passed} max_ulps={self.max_ulps}>")
+
+
+class InverseReport(_DocumentReport):
+    """The report of a batch of inverse answers (:func:`tribez.check_locate`,
+    :func:`tribez.check_ray`): what ``tribez check --patch P --locate-results FILE`` (or
+    ``--ray-results``) prints (``str(report)``) and exports (``report.to_json()``), a
+    :class:`Report`.
+
+    ``kind`` (``"locate"`` or ``"ray"``), ``checked``, ``passed`` and ``failed`` (rows),
+    ``missed`` (exact solutions no claimed tuple was paired with), ``extra`` (claimed tuples
+    paired with no exact solution), ``out_of_tolerance`` (paired coordinates beyond the
+    tolerance), ``infinite`` (queries with infinitely many solutions), ``not_finite`` (rows with
+    a number that is not finite), ``failures`` (the first 100 failed rows in full, each with its
+    ``row`` index), ``tolerance``, ``precision``.
+    """
+
+    __slots__ = ()
+
+    def _count(self, key: str) -> int:
+        return int(self._data[key])
+
+    @property
+    def kind(self) -> str:
+        """``"locate"`` or ``"ray"``."""
+        return self._data["kind"]
+
+    @property
+    def checked(self) -> int:
+        """Rows judged."""
+        return self._count("checked")
+
+    @property
+    def passed(self) -> int:
+        """Rows whose claim holds."""
+        return self._count("passed")
+
+    @property
+    def failed(self) -> int:
+        """Rows whose claim fails."""
+        return self._count("failed")
+
+    @property
+    def missed(self) -> int:
+        """Exact solutions no claimed tuple was paired with (over all rows)."""
+        return self._count("missed")
+
+    @property
+    def extra(self) -> int:
+        """Claimed tuples paired with no exact solution."""
+        return self._count("extra")
+
+    @property
+    def out_of_tolerance(self) -> int:
+        """Paired coordinates that break the tolerance."""
+        return self._count("out_of_tolerance")
+
+    @property
+    def infinite(self) -> int:
+        """Rows whose query has infinitely many solutions."""
+        return self._count("infinite")
+
+    @property
+    def not_finite(self) -> int:
+        """Rows with a number that is not finite."""
+        return self._count("not_finite")
+
+    @property
+    def tolerance(self) -> str:
+        return self._data["tolerance"]
+
+    @property
+    def precision(self) -> Optional[str]:
+        return self._data["precision"]
+
+    @property
+    def failures(self) -> list:
+        """The first failed rows (at most 100), in row order: dicts with ``row`` (the row's
+        index), ``query`` and ``claimed`` (number texts as handed over), ``exact`` (the exact
+        solutions) and ``mismatches`` (``kind``, ``path``, ``reason``, …)."""
+        out = []
+        for f in self._data["failures"]:
+            f = json.loads(json.dumps(f))
+            f["row"] = f.pop("line") - 1
+            out.append(f)
+        return out
+
+    @property
+    def max_ulps(self) -> Optional[float]:
+        """The largest error in ULPs of a failed coordinate listed (None when none has one)."""
+        errs = [_ulps(m.get("measures")) for f in self._data["failures"] for m in f["mismatches"]]
+        errs = [e for e in errs if e is not None]
+        return max(errs, default=None)
+
+    @property
+    def worst(self) -> None:
+        """None: an inverse batch lists its failures (:attr:`failures`), not a worst row."""
+        return None
+
+    @property
+    def rows(self) -> dict:
+        """Per listed failure numpy arrays: ``row`` (int64), ``missed``, ``extra``,
+        ``out_of_tolerance`` (int64 counts of its mismatches of each kind)."""
+        fs = self._data["failures"]
+        count = lambda kind: np.array([sum(1 for m in f["mismatches"] if m["kind"] == kind) for f in fs],
+                                      dtype=np.int64)
+        return {
+            "row": np.array([f["line"] - 1 for f in fs], dtype=np.int64),
+            "missed": count("missed"),
+            "extra": count("extra"),
+            "out_of_tolerance": count("coordinate"),
+        }
+
+    def __repr__(self) -> str:
+        return (f"<tribez.InverseReport kind={self.kind} checked={self.checked} "
+                f"passed={self.passed} failed={self.failed}>")
