@@ -24,9 +24,10 @@ pub const MAX_INVERSE_ROWS: usize = 1_000_000;
 /// Judge `rows` (each the query's number texts, then the claimed tuples' texts one after another,
 /// or `none` when nothing is claimed) about `patch`: `kind` `"locate"` or `"ray"`, `tolerance`
 /// as the command line's `--tolerance`, `precision` `"f64"`, `"f32"` or None (exact numbers);
-/// `label` names the patch in the report.
+/// `anywhere`: locate over the whole plane; `label` names the patch in the report.
 #[pyfunction]
-#[pyo3(signature = (patch, kind, rows, tolerance, precision, label))]
+#[pyo3(signature = (patch, kind, rows, tolerance, precision, anywhere, label))]
+#[allow(clippy::too_many_arguments)]
 pub fn check_inverse(
     py: Python<'_>,
     patch: &NativePatch,
@@ -34,6 +35,7 @@ pub fn check_inverse(
     rows: Vec<Vec<String>>,
     tolerance: &str,
     precision: Option<&str>,
+    anywhere: bool,
     label: String,
 ) -> PyResult<NativeDocument> {
     guard(py, || {
@@ -70,6 +72,7 @@ pub fn check_inverse(
             kind,
             tolerance,
             precision,
+            anywhere,
         };
         let patch = Patch::from(patch.patch.clone());
         let checker =

@@ -139,3 +139,17 @@ def test_the_peer_fixture_matches_the_command_line():
     assert [f["line"] - 2 for f in cli["failures"]] == [f["line"] for f in mine["failures"]]
     strip = lambda fs: [{k: v for k, v in f.items() if k != "line"} for f in fs]
     assert strip(cli["failures"]) == strip(mine["failures"])
+
+
+def test_locate_anywhere_takes_the_whole_plane(identity):
+    # the identity's parameters of (2, 2) and (-1/2, 1/4) lie outside the triangle
+    points = [[2, 2], [2, 2], [F(-1, 2), F(1, 4)]]
+    claimed = [None, (2, 2), (F(-1, 2), F(1, 4))]
+    r = tribez.check_locate(identity, points, claimed)
+    assert (r.anywhere, r.passed, r.failed, r.extra) == (False, 1, 2, 2)
+    r = tribez.check_locate(identity, points, claimed, anywhere=True)
+    assert (r.anywhere, r.passed, r.failed, r.missed) == (True, 2, 1, 1)
+    assert [f["row"] for f in r.failures] == [0]
+    assert "parameters anywhere in the plane" in str(r)
+    with pytest.raises(tribez.InputError, match="anywhere: expected a bool"):
+        tribez.check_locate(identity, points, claimed, anywhere="yes")

@@ -457,25 +457,28 @@ def _inverse_rows(queries, claimed, qwhere: str, cwhere: str, qwidth: int, twidt
     return rows
 
 
-def _check_inverse(kind: str, patch: Patch, rows: list, tolerance: str, precision) -> "InverseReport":
+def _check_inverse(kind: str, patch: Patch, rows: list, tolerance: str, precision,
+                   anywhere: bool = False) -> "InverseReport":
     if not isinstance(tolerance, str):
         raise InputError(f"tolerance: expected a str such as \"exact\" or \"ulps=16\", got {tolerance!r}")
     if precision is not None:
         precision = _precision_name(precision)
     label = patch._path or (f"<{patch.name}>" if patch.name else "<patch>")
-    return InverseReport(_native.check_inverse(patch._native, kind, rows, tolerance, precision, label))
+    return InverseReport(_native.check_inverse(patch._native, kind, rows, tolerance, precision,
+                                               bool(anywhere), label))
 
 
 def check_locate(patch: Patch, points, claimed, tolerance: str = "exact",
-                 precision: Optional[str] = None) -> "InverseReport":
+                 precision: Optional[str] = None, anywhere: bool = False) -> "InverseReport":
     """Judge another implementation's answers to *locate*: the parameters ``(s, t)`` at which a
     planar triangle patch (Bézier or rational) passes through a point.
 
     ``points``: one row ``(x, y)`` per query (a numpy array or nested lists). ``claimed``: one
     entry per query, the parameter pairs the code found there: a pair ``(s, t)``, several pairs
     (a list of pairs or a ``(k, 2)`` array), or ``None`` (or an empty list) for none. Every
-    ``(s, t)`` of the closed triangle ``s, t >= 0``, ``s + t <= 1`` that maps to the point is an
-    exact solution; each claimed pair is paired with the nearest exact one within
+    ``(s, t)`` of the closed triangle ``s, t >= 0``, ``s + t <= 1`` (of the whole plane with
+    ``anywhere=True``, for code that extrapolates) that maps to the point is an exact solution;
+    each claimed pair is paired with the nearest exact one within
     ``2**-20 * max(1, |value|)`` and judged with ``tolerance`` (``"exact"``, ``"ulps=N"``,
     ``"abs=E"``, ``"rel=E"``, ``"correctly_rounded"``, ``"faithful"``); an exact solution left
     unpaired is *missed*, a claimed pair left unpaired is *extra*.
@@ -490,8 +493,10 @@ def check_locate(patch: Patch, points, claimed, tolerance: str = "exact",
     """
     if not isinstance(patch, Patch):
         raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
+    if not isinstance(anywhere, (bool, np.bool_)):
+        raise InputError(f"anywhere: expected a bool, got {anywhere!r}")
     rows = _inverse_rows(points, claimed, "points", "claimed", 2, 2, None)
-    return _check_inverse("locate", patch, rows, tolerance, precision)
+    return _check_inverse("locate", patch, rows, tolerance, precision, anywhere)
 
 
 def check_ray(patch: Patch, rays, hits, tolerance: str = "exact",

@@ -122,6 +122,8 @@ class InverseReport(Report):
     @property
     def kind(self) -> Literal["locate", "ray"]: ...
     @property
+    def anywhere(self) -> bool: ...
+    @property
     def checked(self) -> int: ...
     @property
     def missed(self) -> int: ...
@@ -147,6 +149,7 @@ def check_locate(
     claimed: Sequence[Optional[Rows]],
     tolerance: str = ...,
     precision: Optional[PrecisionName] = ...,
+    anywhere: bool = ...,
 ) -> InverseReport: ...
 def check_ray(
     patch: Patch,

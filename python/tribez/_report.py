@@ -440,6 +440,11 @@ class InverseReport(_DocumentReport):
         return self._data["kind"]
 
     @property
+    def anywhere(self) -> bool:
+        """Locate rows judged over the whole plane (``check_locate(..., anywhere=True)``)."""
+        return bool(self._data["anywhere"])
+
+    @property
     def checked(self) -> int:
         """Rows judged."""
         return self._count("checked")

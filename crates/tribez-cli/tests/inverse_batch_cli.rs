@@ -276,3 +276,56 @@ fn bad_rows_and_arguments_exit_2_naming_file_and_line() {
         &["--patch needs"],
     );
 }
+
+#[test]
+fn anywhere_judges_locate_rows_over_the_whole_plane() {
+    // The linear triangle with nodes (0, 0), (1, 0), (0, 1) is the identity on the whole plane:
+    // (x, y) has the parameters (s, t) = (x, y), inside the closed triangle or not (hand-derived).
+    let dir = tempfile::tempdir().unwrap();
+    let patch = write(
+        dir.path(),
+        "identity.toml",
+        "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0]\n\"0,1,0\" = [1, 0]\n\"0,0,1\" = [0, 1]\n",
+    );
+    let rows = write(
+        dir.path(),
+        "r.csv",
+        "2,2,none\n2,2,2,2\n-1/2,1/4,-1/2,1/4\n1/4,1/2,1/4,1/2\n",
+    );
+    let (patch, rows) = (patch.to_str().unwrap(), rows.to_str().unwrap());
+    let args = ["check", "--patch", patch, "--locate-results", rows];
+    // in the closed triangle: rows 2 and 3 claim parameters outside it, which are extra
+    let j = json(&args, 1);
+    assert_eq!(failed_lines(&j), vec![2, 3]);
+    assert_eq!(
+        (j["extra"].as_u64(), j["anywhere"].as_bool()),
+        (Some(2), Some(false))
+    );
+    // anywhere: they hold, and row 1's "none" misses (2, 2)
+    let j = json(&[&args[..], &["--anywhere"]].concat(), 1);
+    assert_eq!(failed_lines(&j), vec![1]);
+    assert_eq!(
+        (j["missed"].as_u64(), j["anywhere"].as_bool()),
+        (Some(1), Some(true))
+    );
+    let out = tribez().args(args).arg("--anywhere").output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("parameters anywhere in the plane"), "{text}");
+    // only locate rows take it
+    let ray_rows = write(dir.path(), "ray.csv", "0,0,1,0,0,-1,none\n");
+    fails(
+        tribez().args([
+            "check",
+            "--patch",
+            &fx("inverse/dome.toml"),
+            "--ray-results",
+            ray_rows.to_str().unwrap(),
+            "--anywhere",
+        ]),
+        &["cannot be used with '--anywhere'"],
+    );
+    fails(
+        tribez().args(["check", &fx("finn_day30.claims.toml"), "--anywhere"]),
+        &["--locate-results"],
+    );
+}

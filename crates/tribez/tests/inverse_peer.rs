@@ -63,6 +63,7 @@ fn the_locate_batch_fails_exactly_the_rows_sympy_found_wrong() {
         kind: InverseKind::Locate,
         tolerance: Tolerance::parse("ulps=16").unwrap(),
         precision: Some(Precision::F64),
+        anywhere: false,
     };
     let checker = InverseBatchChecker::new(patch, "triangle.toml", &options).unwrap();
     let report = checker

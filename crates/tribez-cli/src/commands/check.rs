@@ -43,6 +43,15 @@ pub struct Args {
         conflicts_with_all = ["results", "mesh", "fit"]
     )]
     pub ray_results: Option<PathBuf>,
+    /// With --locate-results: the exact answer is every parameter point of the whole plane that
+    /// maps to the point (as `tribez locate --anywhere`), not only those of the closed triangle;
+    /// for code that extrapolates.
+    #[arg(
+        long,
+        requires = "locate_results",
+        conflicts_with_all = ["results", "mesh", "fit", "ray_results"]
+    )]
+    pub anywhere: bool,
     /// A mesh file: with --results, the results are lookups `x, y, value` in it (each row judged
     /// in the triangle containing its point as seen); with --fit, it is a fit computed in
     /// floating point by other code, judged against the exact least-squares fit.

@@ -40,6 +40,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         kind,
         tolerance: base.tolerance,
         precision: base.precision,
+        anywhere: args.anywhere,
     };
     let name = patch_path.display().to_string();
     let patch = Patch::from(read_any_patch(patch_path)?);

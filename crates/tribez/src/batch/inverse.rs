@@ -117,6 +117,11 @@ pub struct InverseBatchOptions {
     pub tolerance: Tolerance,
     /// Each number denotes the nearest float of this precision; `None`: numbers are exact.
     pub precision: Option<Precision>,
+    /// Locate: the exact answer is every parameter point of the whole plane that maps to the
+    /// point (`tribez locate --anywhere`), not only those of the closed triangle. Code that
+    /// extrapolates (Newton's method left to run outside the triangle) is judged with it.
+    /// Refused for ray rows.
+    pub anywhere: bool,
 }
 
 /// A row as read: where it is, its query and its claimed tuples (numbers and their texts).
@@ -180,6 +185,8 @@ pub struct InverseBatchReport {
     /// The precision of the numbers (`None`: exact numbers).
     #[serde(serialize_with = "precision_name")]
     pub precision: Option<Precision>,
+    /// Locate over the whole plane ([`InverseBatchOptions::anywhere`]).
+    pub anywhere: bool,
     /// Rows checked.
     pub checked: u64,
     /// Rows whose claim holds.
@@ -207,11 +214,16 @@ impl InverseBatchReport {
     /// solution shown exactly: its polynomial, isolating interval and decimal value).
     pub fn text(&self) -> String {
         let mut out = format!(
-            "{}: {} {} rows checked against {} (tolerance {}, {})\n",
+            "{}: {} {} rows checked against {}{} (tolerance {}, {})\n",
             self.results,
             self.checked,
             self.kind.name(),
             self.patch,
+            if self.anywhere {
+                ", parameters anywhere in the plane"
+            } else {
+                ""
+            },
             self.tolerance,
             self.precision.map_or("exact numbers".to_string(), |p| format!(
                 "each number the nearest {}; the exact answer is that of the query and patch as the code saw them",
@@ -305,6 +317,9 @@ impl InverseBatchChecker {
         if tolerance.needs_precision() && options.precision.is_none() {
             return Err(BatchError::ToleranceNeedsPrecision { tolerance });
         }
+        if options.anywhere && options.kind == InverseKind::Ray {
+            return Err(BatchError::AnywhereForRays);
+        }
         let patch = match options.precision {
             Some(p) => Patch::from(seen::any_patch(
                 &seen::FileBlame(patch_name),
@@ -356,6 +371,7 @@ impl InverseBatchChecker {
             kind: o.kind,
             tolerance: o.tolerance.clone(),
             precision: o.precision,
+            anywhere: o.anywhere,
             checked: 0,
             passed: 0,
             failed: 0,
@@ -488,7 +504,7 @@ impl InverseBatchChecker {
             InverseKind::Locate => InverseQuery::Locate {
                 patch: std::borrow::Cow::Borrowed(&self.patch),
                 point: [q[0].clone(), q[1].clone()],
-                anywhere: false,
+                anywhere: o.anywhere,
             },
             InverseKind::Ray => {
                 let direction = [q[3].clone(), q[4].clone(), q[5].clone()];
@@ -679,6 +695,23 @@ pub(crate) fn fuzz_inverse_rows(data: &[u8]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn anywhere_is_for_locate_rows_only() {
+        let flat = Patch::from_toml(
+            "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0, 0]\n\"0,1,0\" = [1, 0, 0]\n\"0,0,1\" = [0, 1, 0]\n",
+        )
+        .unwrap();
+        let options = |kind, anywhere| InverseBatchOptions {
+            kind,
+            tolerance: Tolerance::parse("exact").unwrap(),
+            precision: None,
+            anywhere,
+        };
+        let refused = InverseBatchChecker::new(flat.clone(), "p", &options(InverseKind::Ray, true));
+        assert!(matches!(refused, Err(BatchError::AnywhereForRays)));
+        assert!(InverseBatchChecker::new(flat, "p", &options(InverseKind::Ray, false)).is_ok());
+    }
 
     fn row(kind: InverseKind, text: &str) -> Result<Option<InverseRow>, InputError> {
         parse_inverse_row(kind, Format::Csv, text, 7, 1, None, "r.csv")

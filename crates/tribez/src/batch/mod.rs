@@ -136,6 +136,11 @@ pub enum BatchError {
         /// The tolerance.
         tolerance: Tolerance,
     },
+    /// `anywhere` asked of ray rows (a ray's first hit is over the closed triangle).
+    #[error(
+        "anywhere (parameters in the whole plane) applies to locate rows, not to ray rows (a ray's first hit is over the closed triangle)"
+    )]
+    AnywhereForRays,
     /// An inverse batch about a patch its problem does not take.
     #[error("{patch}: {error}")]
     InversePatch {
