@@ -153,3 +153,14 @@ def test_locate_anywhere_takes_the_whole_plane(identity):
     assert "parameters anywhere in the plane" in str(r)
     with pytest.raises(tribez.InputError, match="anywhere: expected a bool"):
         tribez.check_locate(identity, points, claimed, anywhere="yes")
+
+
+def test_rows_are_counted_before_they_are_converted(identity):
+    class Huge(list):
+        """A list that says it holds more rows than a call takes (nothing is converted)."""
+
+        def __len__(self):
+            return tribez.MAX_INVERSE_ROWS + 1
+
+    with pytest.raises(tribez.InputError, match=f"more than the {tribez.MAX_INVERSE_ROWS}"):
+        tribez.check_locate(identity, Huge(), [])

@@ -431,6 +431,13 @@ def certify(patch: Patch, points=None, random: Optional[int] = None, seed: Optio
 def _inverse_rows(queries, claimed, qwhere: str, cwhere: str, qwidth: int, twidth: int,
                   most: Optional[int]) -> list:
     """The rows of an inverse batch as number texts: the query, then the claimed tuples."""
+    try:
+        count = len(queries)
+    except TypeError:
+        count = 0  # not a sequence: matrix_texts says so
+    if count > MAX_INVERSE_ROWS:
+        raise InputError(f"{qwhere}: {count} rows, more than the {MAX_INVERSE_ROWS} one call judges "
+                         "(split them, or write a results file for tribez check)")
     qs = matrix_texts(queries, qwhere)
     if not qs:
         raise InputError(f"{qwhere}: no rows")
