@@ -12,8 +12,9 @@ results against those exact values.
 
 The main entry points: :class:`Patch` (from files, text or ``bezier``-style node arrays; exact
 and float evaluation), :func:`check` (judge many float results at once, from numpy arrays),
-:class:`Report` (its verdict, the command line's report) and
-:func:`tribez.testing.assert_certified` (for pytest). Bad input raises :class:`InputError`,
+:class:`Report` (its verdict, the command line's report),
+:func:`tribez.testing.assert_certified` (for pytest), :func:`check_locate` and :func:`check_ray`
+(another implementation's answers to the inverse problems). Bad input raises :class:`InputError`,
 a ``ValueError`` whose message is the one line the command line prints.
 """
 
@@ -441,7 +442,7 @@ def _inverse_rows(queries, claimed, qwhere: str, cwhere: str, qwidth: int, twidt
     qs = matrix_texts(queries, qwhere)
     if not qs:
         raise InputError(f"{qwhere}: no rows")
-    if qs and len(qs[0]) != qwidth:
+    if len(qs[0]) != qwidth:
         raise InputError(f"{qwhere}: rows of {len(qs[0])} numbers, expected {qwidth}")
     if isinstance(claimed, np.ndarray) and claimed.ndim >= 1:
         claimed = list(claimed)
