@@ -329,3 +329,27 @@ fn anywhere_judges_locate_rows_over_the_whole_plane() {
         &["--locate-results"],
     );
 }
+
+#[test]
+fn a_missing_or_directory_results_file_is_named_plainly() {
+    let dir = tempfile::tempdir().unwrap();
+    let quad = fx("inverse/quad_triangle.toml");
+    let missing = dir.path().join("nosuch.csv");
+    for (flag, patch) in [("--locate-results", &quad), ("--results", &quad)] {
+        let err = fails(
+            tribez().args(["check", "--patch", patch, flag, missing.to_str().unwrap()]),
+            &["nosuch.csv: cannot read: No such file or directory"],
+        );
+        assert!(!err.contains("os error"), "{err}");
+        fails(
+            tribez().args([
+                "check",
+                "--patch",
+                patch,
+                flag,
+                dir.path().to_str().unwrap(),
+            ]),
+            &["a directory, not a regular file"],
+        );
+    }
+}

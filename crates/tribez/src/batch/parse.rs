@@ -222,6 +222,14 @@ pub(crate) fn open_results(
     path: &std::path::Path,
 ) -> Result<(String, Format, std::fs::File), InputError> {
     let file = path.display().to_string();
+    // a results file is streamed, so a FIFO (`/dev/stdin`, a shell's `<(…)`) is welcome; a
+    // directory opens on some systems and fails at its first read: refuse it by name
+    if std::fs::metadata(path).is_ok_and(|m| m.is_dir()) {
+        let problem = Problem::NotRegularFile {
+            kind: Some("a directory"),
+        };
+        return Err(InputError::file(&file, problem));
+    }
     let format = Format::of(path, &file)?;
     let reader = std::fs::File::open(path).map_err(|e| InputError::file(&file, cannot_read(&e)))?;
     Ok((file, format, reader))
@@ -725,7 +733,7 @@ fn located(file: &str, line: usize, col: usize, problem: RowsProblem) -> InputEr
 /// The operating system's reason a file cannot be read.
 pub(super) fn cannot_read(e: &std::io::Error) -> Problem {
     Problem::CannotRead {
-        reason: e.to_string(),
+        reason: crate::io::text::plain_io_error(e),
     }
 }
 
