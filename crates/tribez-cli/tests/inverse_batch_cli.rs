@@ -353,3 +353,27 @@ fn a_missing_or_directory_results_file_is_named_plainly() {
         );
     }
 }
+
+#[test]
+fn rows_can_come_from_a_pipe() {
+    // the identity triangle: (x, y) has (s, t) = (x, y) (hand-derived)
+    let dir = tempfile::tempdir().unwrap();
+    let patch = write(
+        dir.path(),
+        "identity.toml",
+        "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0]\n\"0,1,0\" = [1, 0]\n\"0,0,1\" = [0, 1]\n",
+    );
+    let out = tribez()
+        .args(["check", "--patch", patch.to_str().unwrap()])
+        .args(["--locate-results", "/dev/stdin", "--format", "json"])
+        .write_stdin("1/4,1/2,1/4,1/2\n1/3,1/3,none\n")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        (j["checked"].as_u64(), j["missed"].as_u64()),
+        (Some(2), Some(1))
+    );
+    assert_eq!(failed_lines(&j), vec![2]);
+}
