@@ -26,6 +26,16 @@ fn json(args: &[&str], code: i32) -> serde_json::Value {
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
+/// The linear triangle with nodes (0, 0), (1, 0), (0, 1), written to `dir`: the identity on the
+/// whole plane, so (x, y) has the parameters (s, t) = (x, y) and no others.
+fn identity_triangle(dir: &std::path::Path) -> std::path::PathBuf {
+    write(
+        dir,
+        "identity.toml",
+        "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0]\n\"0,1,0\" = [1, 0]\n\"0,0,1\" = [0, 1]\n",
+    )
+}
+
 fn failed_lines(j: &serde_json::Value) -> Vec<u64> {
     j["failures"]
         .as_array()
@@ -282,11 +292,7 @@ fn anywhere_judges_locate_rows_over_the_whole_plane() {
     // The linear triangle with nodes (0, 0), (1, 0), (0, 1) is the identity on the whole plane:
     // (x, y) has the parameters (s, t) = (x, y), inside the closed triangle or not (hand-derived).
     let dir = tempfile::tempdir().unwrap();
-    let patch = write(
-        dir.path(),
-        "identity.toml",
-        "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0]\n\"0,1,0\" = [1, 0]\n\"0,0,1\" = [0, 1]\n",
-    );
+    let patch = identity_triangle(dir.path());
     let rows = write(
         dir.path(),
         "r.csv",
@@ -358,11 +364,7 @@ fn a_missing_or_directory_results_file_is_named_plainly() {
 fn rows_can_come_from_a_pipe() {
     // the identity triangle: (x, y) has (s, t) = (x, y) (hand-derived)
     let dir = tempfile::tempdir().unwrap();
-    let patch = write(
-        dir.path(),
-        "identity.toml",
-        "degree = 1\n[control_points]\n\"1,0,0\" = [0, 0]\n\"0,1,0\" = [1, 0]\n\"0,0,1\" = [0, 1]\n",
-    );
+    let patch = identity_triangle(dir.path());
     let out = tribez()
         .args(["check", "--patch", patch.to_str().unwrap()])
         .args(["--locate-results", "/dev/stdin", "--format", "json"])
