@@ -107,14 +107,16 @@ impl Document {
         if text.len() as u64 > MAX_FILE_BYTES {
             return Err(too_large(file));
         }
-        let lines = LineIndex::new(text.as_bytes());
         if let Some(at) = toml_values_exceed(text.as_bytes(), max_values) {
             let problem = Problem::TooManyValues {
                 limit: max_values,
                 format: "TOML",
             };
-            return Err(InputError::at(file, Some(lines.line(at)), None, problem));
+            // the line of one offset: counted, not indexed (the index is for a text that parses)
+            let line = 1 + memchr::memchr_iter(b'\n', &text.as_bytes()[..at]).count();
+            return Err(InputError::at(file, Some(line), None, problem));
         }
+        let lines = LineIndex::new(text.as_bytes());
         let doc = toml::de::DeTable::parse(text).map_err(|e| {
             let (line, column) = e.span().map(|s| lines.line_col(s.start)).unzip();
             let msg = e.message().trim().to_string();
