@@ -371,3 +371,31 @@ fn results_that_never_end_a_line_or_are_not_utf8() {
         &["bad.csv:2:5: the file is not UTF-8 text (invalid byte 0xff)"],
     );
 }
+
+#[test]
+fn a_bad_point_is_reported_before_a_patch_the_float_program_refuses() {
+    // The points are read while the evaluators are prepared; the bad point still comes first,
+    // as when the points were read before the evaluators.
+    let d = tempfile::tempdir().unwrap();
+    let toml = write(
+        d.path(),
+        "big.toml",
+        "degree = 1\n[control_points]\n\"1,0,0\" = [\"1e39\", \"0\"]\n\"0,1,0\" = [\"0\", \"0\"]\n\"0,0,1\" = [\"0\", \"0\"]\n",
+    );
+    let pts = write(d.path(), "pts.csv", "1/3,1/3,1/3\n1/2,x,1/2\n");
+    fails(
+        tribez()
+            .args(["eval", "--float", "f32", "--points"])
+            .arg(&pts)
+            .arg(&toml),
+        &["pts.csv:2:5: field 2: `x`: not a number"],
+    );
+    let good = write(d.path(), "good.csv", "1/3,1/3,1/3\n");
+    fails(
+        tribez()
+            .args(["eval", "--float", "f32", "--points"])
+            .arg(&good)
+            .arg(&toml),
+        &["big.toml: f32: a control point overflows f32"],
+    );
+}

@@ -271,8 +271,11 @@ impl Origin {
     }
 }
 
+/// The raw points of a run, each with where it came from.
+type RawPoints = Vec<(Origin, Vec<BigRational>)>;
+
 /// The points of `--at` and `--points`, each with its [`Origin`].
-fn raw_points(args: &Args, width: usize) -> Result<Vec<(Origin, Vec<BigRational>)>, CliError> {
+fn raw_points(args: &Args, width: usize) -> Result<RawPoints, CliError> {
     let mut raw = Vec::new();
     for (k, a) in args.at.iter().enumerate() {
         raw.push((Origin::At(k), parse_list(a, "--at")?));
@@ -395,9 +398,8 @@ const RESERVE_CAP: usize = 1 << 24;
 /// input ([`PointEvaluator::total`]) and no float program runs (rounding an input can fail).
 /// The error reported is that of the first failing point in the order of the points.
 fn write_report(args: &Args, chunk: Option<usize>, sink: &mut Sink<'_>) -> Result<(), CliError> {
-    let mut input = EvalInput::read(args)?;
-    let raw = std::mem::take(&mut input.raw);
-    let eval = Evaluators::new(args, &input.file, &input.patch)?;
+    let input = EvalInput::read(args)?;
+    let (eval, raw) = input.evaluators_and_points(args)?;
     let format = args.out.format;
     let chunk = chunk
         .unwrap_or(raw.len() / (16 * rayon::current_num_threads()))
@@ -542,14 +544,14 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
     m.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
-/// What `tribez eval` reads: the patch, the points (with a description each, for errors), and
-/// the report's first line and `kind`.
+/// What `tribez eval` reads first: the patch, the number of coordinates of its points, and the
+/// report's first line and `kind`.
 struct EvalInput {
     file: String,
     patch: Patch,
+    width: usize,
     header: String,
     kind: Option<&'static str>,
-    raw: Vec<(Origin, Vec<BigRational>)>,
 }
 
 impl EvalInput {
@@ -568,15 +570,30 @@ impl EvalInput {
             InputSpace::Barycentric { m } if args.cartesian => m,
             InputSpace::Barycentric { m } => m + 1,
         };
-        let raw = raw_points(args, width)?;
         let (header, kind) = header(&patch);
         Ok(EvalInput {
             file,
             patch,
+            width,
             header,
             kind,
-            raw,
         })
+    }
+
+    /// The patch's evaluators and the points (with a description each, for errors): the points
+    /// are read and parsed while the exact evaluator is prepared (both on all cores), which at
+    /// high degree takes about as long. A bad point is reported before an evaluator's error, as
+    /// if the points were read first.
+    fn evaluators_and_points<'p>(
+        &'p self,
+        args: &'p Args,
+    ) -> Result<(Evaluators<'p>, RawPoints), CliError> {
+        let (eval, raw) = rayon::join(
+            || Evaluators::new(args, &self.file, &self.patch),
+            || raw_points(args, self.width),
+        );
+        let raw = raw?;
+        Ok((eval?, raw))
     }
 }
 
@@ -640,9 +657,8 @@ impl<'p> Evaluators<'p> {
 /// The report of `tribez eval` as one tree, point by point in order (the reference of the tests).
 #[cfg(test)]
 fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
-    let mut input = EvalInput::read(args)?;
-    let raw = std::mem::take(&mut input.raw);
-    let eval = Evaluators::new(args, &input.file, &input.patch)?;
+    let input = EvalInput::read(args)?;
+    let (eval, raw) = input.evaluators_and_points(args)?;
     let results = raw
         .into_iter()
         .map(|(origin, p)| {
@@ -650,6 +666,7 @@ fn evaluate(args: &Args) -> Result<EvalReport, CliError> {
             eval.result(origin, input)
         })
         .collect::<Result<_, _>>()?;
+    drop(eval);
     Ok(EvalReport {
         file: input.file,
         kind: input.kind,
