@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 use crate::report::Format;
 
-/// Output options of a command whose result is text or JSON.
+// Output options of a command whose result is text or JSON (a plain comment: see `Command`).
 #[derive(Debug, Clone, clap::Args)]
 pub struct OutputArgs {
     /// Output format.
@@ -21,7 +21,8 @@ pub struct OutputArgs {
     pub output: Option<PathBuf>,
 }
 
-/// Output options of a command whose result is also a formula or a matrix (LaTeX).
+// Output options of a command whose result is also a formula or a matrix (LaTeX); a plain
+// comment, see `Command`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct LatexOutputArgs {
     /// Output format.

@@ -105,3 +105,35 @@ fn every_example_of_every_help_text_runs() {
     }
     assert!(ran >= 15, "{ran} examples");
 }
+
+/// The description of each subcommand in `tribez --help` is the first line of its own
+/// `--help` and `-h` (the subcommands' arguments are deferred; a doc comment on an arguments
+/// struct would otherwise replace the description there).
+#[test]
+fn every_help_starts_with_its_listed_description() {
+    let help = stdout_of(&["--help"]);
+    let listed: Vec<(String, String)> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| {
+            let l = l.trim_start();
+            let (name, about) = l.split_once(' ')?;
+            (name != "help").then(|| (name.to_string(), about.trim().to_string()))
+        })
+        .collect();
+    assert!(listed.len() >= 20, "{help}");
+    for (name, about) in &listed {
+        for flag in ["--help", "-h"] {
+            let own = stdout_of(&[name, flag]);
+            let first = own.lines().next().unwrap_or("");
+            // the long help keeps the final period the listing drops
+            assert_eq!(
+                first.trim_end_matches('.'),
+                about.trim_end_matches('.'),
+                "tribez {name} {flag}"
+            );
+        }
+    }
+}

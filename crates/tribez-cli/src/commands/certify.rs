@@ -15,7 +15,7 @@ use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::hazmat::io::points::read_points;
 use tribez::{CertifyOptions, CertifyPoints, CertifyReport, Patch};
 
-/// Arguments of `tribez certify`.
+// Arguments of `tribez certify` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file.

@@ -10,7 +10,7 @@ use crate::cli::{AlgorithmChoice, OutputArgs};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::claims::{self, ClaimsOptions, ClaimsReport};
 
-/// Arguments of `tribez check`.
+// Arguments of `tribez check` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 #[command(group(clap::ArgGroup::new("mesh_input").args(["results", "fit"]).multiple(false)))]
 pub struct Args {

@@ -12,7 +12,7 @@ use tribez::Patch;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez derivative`.
+// Arguments of `tribez derivative` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).

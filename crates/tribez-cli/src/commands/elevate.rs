@@ -7,7 +7,7 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez elevate`.
+// Arguments of `tribez elevate` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).

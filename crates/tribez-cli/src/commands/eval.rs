@@ -29,7 +29,7 @@ use tribez::hazmat::io::points::read_points;
 use tribez::hazmat::number::{push_rational, to_decimal_string};
 use tribez::{Patch, PatchKind};
 
-/// Arguments of `tribez eval`.
+// Arguments of `tribez eval` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).

@@ -16,7 +16,7 @@ use tribez::fit::{
 };
 use tribez::mesh::{MAX_MESH_DEGREE, Mesh, MeshLines, read_mesh};
 
-/// Arguments of `tribez fit`.
+// Arguments of `tribez fit` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The data: CSV rows `x,y,value` in the exact number syntax of patch files (a header line,

@@ -9,7 +9,7 @@ use crate::cli::OutputArgs;
 use tribez::Patch;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez graph`.
+// Arguments of `tribez graph` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// A functional patch file (`kind = "functional"`).

@@ -11,7 +11,7 @@ use crate::cli::OutputArgs;
 use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::{HalvingOrder, Split};
 
-/// Arguments of `tribez halve`.
+// Arguments of `tribez halve` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).

@@ -12,7 +12,7 @@ use tribez::Patch;
 use tribez::algebraic::{Curve, CurveIntersections, intersect_curves, point_text};
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez intersect`.
+// Arguments of `tribez intersect` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The first curve (a patch file with m = 1 and points in the plane; Bézier or rational).

@@ -13,7 +13,7 @@ use tribez::Rational;
 use tribez::algebraic::{Expr, Locations, RayHits, RealAlgebraic, locate, ray_hits};
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez locate`.
+// Arguments of `tribez locate` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct LocateArgs {
     /// The patch file: a triangle patch (m = 2) with points in the plane (d = 2), Bézier or rational.
@@ -28,7 +28,7 @@ pub struct LocateArgs {
     pub out: OutputArgs,
 }
 
-/// Arguments of `tribez ray`.
+// Arguments of `tribez ray` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct RayArgs {
     /// The patch file: a triangle patch in ℝ³ (Bézier or rational), or a functional patch (its graph).

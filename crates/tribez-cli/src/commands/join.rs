@@ -13,7 +13,7 @@ use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::io::patch_file::{index_key, read_patch};
 use tribez::hazmat::join::{Join, Violation, analyse, c1_neighbour};
 
-/// Arguments of `tribez join`.
+// Arguments of `tribez join` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The first patch (A).

@@ -25,7 +25,7 @@ pub enum Kind {
     Subpatch,
 }
 
-/// Arguments of `tribez matrix`.
+// Arguments of `tribez matrix` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// halve or subpatch.

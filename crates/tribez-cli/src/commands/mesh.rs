@@ -14,7 +14,7 @@ use tribez::hazmat::float::Float;
 use tribez::hazmat::io::points::read_points;
 use tribez::mesh::{Located, Mesh, MeshLines, read_mesh};
 
-/// Arguments of `tribez mesh`.
+// Arguments of `tribez mesh` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// What to do with the mesh.
@@ -22,7 +22,7 @@ pub struct Args {
     pub command: MeshCommand,
 }
 
-/// The subcommands of `tribez mesh`.
+// The subcommands of `tribez mesh` (a plain comment: see `Command`).
 #[derive(Debug, clap::Subcommand)]
 pub enum MeshCommand {
     /// Validate a mesh file: a conforming triangulation (counter-clockwise, no degenerate or duplicate triangles, no overlaps, no T-junctions) with every ordinate present; each problem located.
@@ -54,7 +54,7 @@ pub struct PatchArgs {
     pub out: OutputArgs,
 }
 
-/// Arguments of `tribez lookup`.
+// Arguments of `tribez lookup` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct LookupArgs {
     /// The mesh file (.toml or .json).

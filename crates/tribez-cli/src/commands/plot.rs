@@ -9,7 +9,7 @@ use crate::picture::project::{DEFAULT_VIEW, View};
 use tribez::Patch;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez plot`.
+// Arguments of `tribez plot` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (any kind: Bézier, rational, functional, S-patch).

@@ -16,7 +16,7 @@ mod embedded {
     include!(concat!(env!("OUT_DIR"), "/fixtures.rs"));
 }
 
-/// Arguments of `tribez reproduce`.
+// Arguments of `tribez reproduce` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Directory of claim files (`*.claims.toml`, `*.claims.json`); default: the fixtures built into tribez (the repository's `fixtures/`).

@@ -18,7 +18,7 @@ use crate::report::Render;
 use tribez::Split;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez subdivide`.
+// Arguments of `tribez subdivide` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 #[command(group(clap::ArgGroup::new("mode").required(true).args(["at", "midpoints"])))]
 pub struct Args {

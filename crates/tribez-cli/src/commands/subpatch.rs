@@ -9,7 +9,7 @@ use crate::cli::OutputArgs;
 use tribez::hazmat::error::CoreError;
 use tribez::hazmat::io::patch_file::read_any_patch;
 
-/// Arguments of `tribez subpatch`.
+// Arguments of `tribez subpatch` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).

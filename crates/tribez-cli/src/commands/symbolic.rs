@@ -16,7 +16,7 @@ use tribez::Patch;
 use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::hazmat::symbolic::Polynomial;
 
-/// Arguments of `tribez symbolic`.
+// Arguments of `tribez symbolic` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).

@@ -14,7 +14,7 @@ use tribez::hazmat::derivative::TangentFrame;
 use tribez::hazmat::io::patch_file::{index_key, read_any_patch};
 use tribez::hazmat::symbolic::cartesian_names;
 
-/// Arguments of `tribez tangent`.
+// Arguments of `tribez tangent` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The patch file (.toml or .json).
