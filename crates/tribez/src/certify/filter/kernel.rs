@@ -415,14 +415,16 @@ fn run_body<const M1: usize, const L: usize, const FMA: bool>(
     }
     // later steps, in place
     for row in rest.chunks_exact(M1 + 1) {
-        let kids: [[[f64; L]; 6]; M1] = std::array::from_fn(|k| nodes[row[k + 1] as usize]);
         let mut acc = [0f64; L];
         let mut corr = [0f64; L];
         let mut partial = [0f64; L];
         let mut carried = [0f64; L];
         let mut cond = [0f64; L];
         for k in 0..M1 {
-            let kid = &kids[k];
+            // read in place: every child is read before the parent is written (a copy of the
+            // children, 6·L words each, compiled to a memcpy per node under whole-program
+            // optimisation)
+            let kid = &nodes[row[k + 1] as usize];
             for c in 0..L {
                 let p = lam[k] * kid[V][c];
                 let pi = if FMA {
@@ -516,13 +518,13 @@ fn run_plain<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: 
         }
     }
     for row in rest.chunks_exact(M1 + 1) {
-        let kids: [[[f64; L]; 3]; M1] = std::array::from_fn(|k| nodes[row[k + 1] as usize]);
         let mut acc = [0f64; L];
         let mut rounding = [0f64; L];
         let mut carried = [0f64; L];
         let mut cond = [0f64; L];
         for k in 0..M1 {
-            let kid = &kids[k];
+            // read in place, as in `run_body`
+            let kid = &nodes[row[k + 1] as usize];
             for c in 0..L {
                 let p = lam[k] * kid[0][c];
                 if k == 0 {
