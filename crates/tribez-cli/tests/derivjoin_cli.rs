@@ -354,6 +354,24 @@ fn join_errors() {
         "--edge 1,4",
     );
     fails_with(&["join", &a], "give two patches");
+    // the options of --make-c1 are refused when a pair is checked (they would do nothing)
+    let b = fixture("joins/quad_b_c1.toml");
+    fails_with(
+        &["join", &a, &b, "--domain", "5,-3"],
+        "the argument '[B]' cannot be used with '--domain <X,Y>'",
+    );
+    fails_with(
+        &["join", &a, &b, "--edge", "1,3"],
+        "the argument '[B]' cannot be used with '--edge <I,J>'",
+    );
+    fails_with(
+        &["join", &a, "--domain", "5,-3"],
+        "the following required arguments were not provided: --make-c1",
+    );
+    fails_with(
+        &["join", &a, "--edge", "1,3"],
+        "the following required arguments were not provided: --domain <X,Y> --make-c1",
+    );
 }
 
 #[test]

@@ -24,14 +24,22 @@ pub struct Args {
     #[arg(long = "make-c1", requires = "domain", conflicts_with = "b")]
     pub make_c1: bool,
     /// With --make-c1: the new vertex X,Y of B's domain (B's domain is [a_I, a_J, (X,Y)]).
-    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "X,Y",
+        allow_hyphen_values = true,
+        requires = "make_c1",
+        conflicts_with = "b"
+    )]
     pub domain: Option<String>,
     /// With --make-c1: the common edge, as A's corners I,J (numbered 1 to 3); default 1,2.
     #[arg(
         long,
         value_name = "I,J",
         default_value = "1,2",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        requires = "make_c1",
+        conflicts_with = "b"
     )]
     pub edge: String,
     #[command(flatten)]
