@@ -96,19 +96,23 @@ pub enum Problem {
         /// The limit, in MiB.
         limit_mib: u64,
     },
-    /// A TOML or JSON document with more values than a document of its format may hold
-    /// ([`tree::MAX_JSON_VALUES`], [`tree::MAX_TOML_VALUES`]): refused before its tree is built
-    /// (TOML) or as it grows (JSON), so that the memory a document takes is bounded. The line is
-    /// where the limit is passed.
+    /// A TOML document with more values than [`tree::MAX_TOML_VALUES`], refused before it is
+    /// parsed (by a count that takes every `,`, `=`, `[` and `.` for a value), so that the memory
+    /// its tree takes is bounded. The line is where the limit is passed.
     #[error(
-        "more than {limit} values (the limit of a {format} file{})",
-        if *format == "TOML" { ", counting every ',', '=', '[' and '.' as one; write a larger input as JSON" } else { "" }
+        "more than {limit} values (the limit of a TOML file, counting every ',', '=', '[' and '.' \
+         as one; write a larger input as JSON)"
     )]
-    TooManyValues {
+    TooManyTomlValues {
         /// The limit.
         limit: usize,
-        /// `"TOML"` or `"JSON"`.
-        format: &'static str,
+    },
+    /// A JSON document with more values than [`tree::MAX_JSON_VALUES`], refused as its tree
+    /// grows. The line is where the limit is passed.
+    #[error("more than {limit} values (the limit of a JSON file)")]
+    TooManyJsonValues {
+        /// The limit.
+        limit: usize,
     },
     /// A byte that is not UTF-8 (the location is the error's line and column).
     #[error("the file is not UTF-8 text (invalid byte 0x{byte:02x})")]

@@ -108,10 +108,7 @@ impl Document {
             return Err(too_large(file));
         }
         if let Some(at) = toml_values_exceed(text.as_bytes(), max_values) {
-            let problem = Problem::TooManyValues {
-                limit: max_values,
-                format: "TOML",
-            };
+            let problem = Problem::TooManyTomlValues { limit: max_values };
             // the line of one offset: counted, not indexed (the index is for a text that parses)
             let line = 1 + memchr::memchr_iter(b'\n', &text.as_bytes()[..at]).count();
             return Err(InputError::at(file, Some(line), None, problem));
@@ -314,9 +311,8 @@ impl JsonParser<'_> {
         self.skip_ws();
         self.values += 1;
         if self.values > self.max_values {
-            let problem = Problem::TooManyValues {
+            let problem = Problem::TooManyJsonValues {
                 limit: self.max_values,
-                format: "JSON",
             };
             return Err(InputError::at(self.file, Some(self.line), None, problem));
         }
@@ -626,13 +622,7 @@ mod tests {
         assert!(Document::parse_json_capped("x.json", text, 7).is_ok());
         let e = Document::parse_json_capped("x.json", text, 6).unwrap_err();
         assert_eq!(e.line, Some(3), "the seventh value, `true`, is on line 3");
-        assert_eq!(
-            *e.problem,
-            Problem::TooManyValues {
-                limit: 6,
-                format: "JSON"
-            }
-        );
+        assert_eq!(*e.problem, Problem::TooManyJsonValues { limit: 6 });
         assert_eq!(
             e.to_string(),
             "x.json:3: more than 6 values (the limit of a JSON file)"
@@ -666,9 +656,8 @@ mod tests {
         assert_eq!(e.line, Some(2));
         assert_eq!(
             *e.problem,
-            Problem::TooManyValues {
-                limit: MAX_TOML_VALUES,
-                format: "TOML"
+            Problem::TooManyTomlValues {
+                limit: MAX_TOML_VALUES
             }
         );
         // dotted keys and headers make tables: each is introduced by a '.' or a '['
