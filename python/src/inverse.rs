@@ -10,12 +10,10 @@ use pyo3::prelude::*;
 
 use tribez::Patch;
 use tribez::batch::{Format, InverseBatchChecker, InverseBatchOptions, InverseKind};
-use tribez::hazmat::certify::measures::Tolerance;
-use tribez::hazmat::float::Precision;
 
 use crate::claims::{NativeDocument, json_of};
 use crate::patch::NativePatch;
-use crate::{guard, input_error};
+use crate::{guard, input_error, precision_arg, tolerance_arg};
 
 /// The most rows one call judges (a results file is streamed; rows handed over from Python are
 /// held in memory, twice: as Python strings and as the text judged).
@@ -61,12 +59,8 @@ pub fn check_inverse(
                 ),
             ));
         }
-        let tolerance =
-            Tolerance::parse(tolerance).map_err(|e| input_error(py, format!("tolerance: {e}")))?;
-        let precision = precision
-            .map(|p| p.parse::<Precision>())
-            .transpose()
-            .map_err(|e| input_error(py, format!("precision: {e}")))?;
+        let tolerance = tolerance_arg(py, tolerance)?;
+        let precision = precision.map(|p| precision_arg(py, p)).transpose()?;
         let text = results_text(&rows).map_err(|e| input_error(py, e))?;
         let options = InverseBatchOptions {
             kind,

@@ -15,6 +15,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::PyType;
+use tribez::{Precision, Tolerance};
 
 mod claims;
 mod inverse;
@@ -39,6 +40,17 @@ fn raise(py: Python<'_>, class: &'static str, message: String) -> PyErr {
 /// `tribez.InputError(message)`.
 pub(crate) fn input_error(py: Python<'_>, message: impl std::fmt::Display) -> PyErr {
     raise(py, "InputError", message.to_string())
+}
+
+/// The `tolerance` argument of a native call, read as the command line's `--tolerance`.
+pub(crate) fn tolerance_arg(py: Python<'_>, text: &str) -> PyResult<Tolerance> {
+    Tolerance::parse(text).map_err(|e| input_error(py, format!("tolerance: {e}")))
+}
+
+/// The `precision` argument of a native call: `"f64"` or `"f32"`.
+pub(crate) fn precision_arg(py: Python<'_>, text: &str) -> PyResult<Precision> {
+    text.parse()
+        .map_err(|e| input_error(py, format!("precision: {e}")))
 }
 
 /// Run `f`, turning a panic into `tribez.InternalError` (never a `PanicException`).

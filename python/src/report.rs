@@ -23,7 +23,7 @@ use tribez::hazmat::number::{exact_f64, parse_rational, ulps_error_f32, ulps_err
 use tribez::hazmat::patch::{BezierPatch, ControlNet};
 
 use crate::patch::{NativePatch, f64s};
-use crate::{guard, input_error};
+use crate::{guard, input_error, precision_arg, tolerance_arg};
 
 /// Judge in-memory rows with the library's batch engine (the GIL released meanwhile).
 #[pyfunction]
@@ -54,11 +54,8 @@ pub fn check_rows(
                 ));
             }
         };
-        let tolerance =
-            Tolerance::parse(tolerance).map_err(|e| input_error(py, format!("tolerance: {e}")))?;
-        let precision: Precision = precision
-            .parse()
-            .map_err(|e| input_error(py, format!("precision: {e}")))?;
+        let tolerance = tolerance_arg(py, tolerance)?;
+        let precision = precision_arg(py, precision)?;
         let algorithm = match algorithm {
             "bernstein" => Algorithm::Bernstein,
             _ => Algorithm::Casteljau,
