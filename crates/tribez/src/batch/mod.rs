@@ -37,7 +37,7 @@ pub use inverse::{
     InverseBatchChecker, InverseBatchOptions, InverseBatchReport, InverseFailedRow, InverseKind,
 };
 pub use parse::Format;
-pub(crate) use parse::fuzz_rows;
+pub(crate) use parse::{fuzz_rows, open_results};
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 
 use crate::certify::measures::Tolerance;

@@ -4,8 +4,7 @@
 //! within a chunk the rows are routed in parallel, then each checker judges its rows in
 //! parallel, and the reports are merged ([`BatchReport::merge`], rows keep their numbers).
 
-use std::io::BufReader;
-use std::path::Path;
+use std::io::{BufReader, Read};
 
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -39,23 +38,36 @@ impl BatchChecker {
     }
 }
 
-/// Check a results file whose rows have `width` inputs and `dim` claimed numbers, each row
-/// judged by `checker(route(inputs as seen))`. `checker(k)` may build checker `k` on first use.
-/// `template` gives the report's tolerance, precision, file and patch names (for the rows that
-/// fail to route, and for merging).
-#[allow(clippy::too_many_arguments)]
-pub fn check_file_routed<'c>(
-    path: &Path,
-    width: usize,
-    dim: usize,
-    precision: Option<Precision>,
-    template: BatchReport,
-    route: &(dyn Fn(&[Option<BigRational>]) -> Route + Sync),
-    checker: &(dyn Fn(usize) -> Result<&'c BatchChecker, BatchError> + Sync),
+/// How the rows of a routed batch are read and judged: each row has `width` inputs and `dim`
+/// claimed numbers and is judged by `checker(route(inputs as seen))`; `checker(k)` may build
+/// checker `k` on first use. `template` gives the report's tolerance, precision, file and patch
+/// names (for the rows that fail to route, and for merging).
+pub struct Routing<'a, 'c> {
+    pub width: usize,
+    pub dim: usize,
+    pub precision: Option<Precision>,
+    pub template: BatchReport,
+    pub route: &'a (dyn Fn(&[Option<BigRational>]) -> Route + Sync),
+    pub checker: &'a (dyn Fn(usize) -> Result<&'c BatchChecker, BatchError> + Sync),
+}
+
+/// Check the rows read from `reader` in `format` (`file` names it in errors) as `routing` says.
+pub fn check_routed<R: Read + Send>(
+    reader: R,
+    format: Format,
+    file: &str,
+    routing: Routing<'_, '_>,
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<BatchReport, BatchError> {
-    let (file, format, reader) = super::parse::open_results(path)?;
-    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, &file)
+    let Routing {
+        width,
+        dim,
+        precision,
+        template,
+        route,
+        checker,
+    } = routing;
+    let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file)
         .expect_columns(width + dim);
     let mut total = template.clone();
     let mut chunk = Chunk::default();
@@ -66,7 +78,7 @@ pub fn check_file_routed<'c>(
             .par_iter()
             .map(|&(no, col, text)| -> Result<Option<Route>, InputError> {
                 let Some((inputs, _)) =
-                    parse_row(format, text, no, col, width, dim, precision, &file)?
+                    parse_row(format, text, no, col, width, dim, precision, file)?
                 else {
                     return Ok(None);
                 };
@@ -106,7 +118,7 @@ pub fn check_file_routed<'c>(
         }
         total.merge(&failed)?;
         for (k, rows) in groups {
-            let part = checker(k)?.judge_texts(&rows, format, &file, &template.patch)?;
+            let part = checker(k)?.judge_texts(&rows, format, file, &template.patch)?;
             total.merge(&part)?;
         }
         progress(total.checked, total.failed);
@@ -115,7 +127,7 @@ pub fn check_file_routed<'c>(
         }
     }
     if total.checked == 0 {
-        return Err(InputError::file(&file, crate::io::RowsProblem::NoResultRows).into());
+        return Err(InputError::file(file, crate::io::RowsProblem::NoResultRows).into());
     }
     Ok(total)
 }

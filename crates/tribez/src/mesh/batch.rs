@@ -6,6 +6,7 @@
 //! the error at the intended point is measured with the same triangle's polynomial. A point
 //! outside the mesh is a failed row.
 
+use std::io::Read;
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -13,8 +14,9 @@ use num_rational::BigRational;
 
 use super::Mesh;
 use crate::any_patch::AnyPatch;
-use crate::batch::routed::{Route, check_file_routed};
-use crate::batch::{BatchChecker, BatchError, BatchOptions, BatchReport, UlpHistogram};
+use crate::batch::open_results;
+use crate::batch::routed::{Route, Routing, check_routed};
+use crate::batch::{BatchChecker, BatchError, BatchOptions, BatchReport, Format, UlpHistogram};
 
 /// Judges batches of lookups in one mesh (one batch checker per triangle, built on first use).
 pub struct MeshBatchChecker {
@@ -75,9 +77,24 @@ impl MeshBatchChecker {
         mesh_name: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<BatchReport, BatchError> {
+        let (file, format, reader) = open_results(path)?;
+        self.check_reader(reader, format, &file, mesh_name, progress)
+    }
+
+    /// Check the rows `x, y, value` read from `reader` in `format` (another implementation's
+    /// lookups handed over from memory or a pipe); `file` names them in errors and the report,
+    /// `mesh_name` the mesh.
+    pub fn check_reader<R: Read + Send>(
+        &self,
+        reader: R,
+        format: Format,
+        file: &str,
+        mesh_name: &str,
+        progress: &mut dyn FnMut(u64, u64),
+    ) -> Result<BatchReport, BatchError> {
         let n = self.mesh.degree();
         let template = BatchReport {
-            file: path.display().to_string(),
+            file: file.into(),
             patch: mesh_name.into(),
             tolerance: self.options.tolerance.for_patch(2, n),
             precision: self.options.precision,
@@ -104,15 +121,14 @@ impl MeshBatchChecker {
             }
         };
         let checker = |t: usize| self.checker(t);
-        check_file_routed(
-            path,
-            2,
-            1,
-            self.options.precision,
+        let routing = Routing {
+            width: 2,
+            dim: 1,
+            precision: self.options.precision,
             template,
-            &route,
-            &checker,
-            progress,
-        )
+            route: &route,
+            checker: &checker,
+        };
+        check_routed(reader, format, file, routing, progress)
     }
 }

@@ -295,3 +295,49 @@ fn check_finds_each_geometric_problem() {
         }]
     );
 }
+
+#[test]
+fn lookups_from_a_reader_are_judged_as_from_a_file() {
+    // f = x + 2y on the linear square: ordinates 0, 1, 3, 2 at (0,0), (1,0), (1,1), (0,1).
+    let m = square(1)
+        .with_ordinates(vec![q("0"), q("1"), q("3"), q("2")])
+        .unwrap();
+    let checker =
+        MeshBatchChecker::new(m, &crate::batch::BatchOptions::default()).expect("a valid mesh");
+    // rows: f(1/2, 1/4) = 1 (right, triangle 0), f(1/4, 1/2) = 5/4 (right, triangle 1),
+    // f(1/2, 1/2) = 3/2 claimed 2 (line 4), and (2, 2) outside the mesh (line 5)
+    let text = "x,y,value\n1/2,1/4,1\n1/4,1/2,5/4\n1/2,1/2,2\n2,2,6\n";
+    let from_reader = checker
+        .check_reader(
+            std::io::Cursor::new(text),
+            crate::batch::Format::Csv,
+            "lookups",
+            "square",
+            &mut |_, _| {},
+        )
+        .unwrap();
+    assert_eq!(
+        (from_reader.checked, from_reader.passed, from_reader.failed),
+        (4, 2, 2)
+    );
+    let mut lines: Vec<usize> = from_reader.failures.iter().map(|f| f.line).collect();
+    lines.sort();
+    assert_eq!(lines, [4, 5]);
+    let outside = from_reader.failures.iter().find(|f| f.line == 5).unwrap();
+    assert_eq!(outside.reason, "the point (2, 2) is outside the mesh");
+    assert_eq!(
+        (from_reader.file.as_str(), from_reader.patch.as_str()),
+        ("lookups", "square")
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lookups.csv");
+    std::fs::write(&path, text).unwrap();
+    let from_file = checker.check_file(&path, "square", &mut |_, _| {}).unwrap();
+    assert_eq!(
+        (from_file.checked, from_file.passed, from_file.failed),
+        (4, 2, 2)
+    );
+    let mut file_lines: Vec<usize> = from_file.failures.iter().map(|f| f.line).collect();
+    file_lines.sort();
+    assert_eq!(file_lines, lines);
+}
