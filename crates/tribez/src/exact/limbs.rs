@@ -1,6 +1,8 @@
 //! Unsigned multi-limb arithmetic for the exact Horner kernel: little-endian `u64` limbs,
 //! in place, no allocation in the hot loop (GMP's `mul_1` / `addmul_1` in safe Rust).
 
+pub(super) use crate::number::gcd_u64;
+
 /// Remove leading zero limbs.
 #[inline]
 pub(super) fn trim(x: &mut Vec<u64>) {
@@ -347,26 +349,6 @@ pub(super) fn trailing_zeros(x: &[u64]) -> u64 {
         }
     }
     tz
-}
-
-/// `gcd(a, b)` of machine words (Stein's binary algorithm: shifts and subtractions, no
-/// division instruction).
-pub(super) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
-    if a == 0 || b == 0 {
-        return a | b;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
 }
 
 /// An odd word divisor with the constants of the divisibility test by multiplication

@@ -95,21 +95,25 @@ fn combine(u: &BigUint, a: i128, v: &BigUint, b: i128) -> Option<BigUint> {
     }
 }
 
-/// Binary gcd of machine words.
-pub(super) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+/// `gcd(a, b)` of machine words (Stein's binary algorithm: shifts and subtractions, no
+/// division instruction); the one word gcd of the crate (the parser's reduction, the exact
+/// kernel's reductions).
+pub(crate) fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
     if a == 0 || b == 0 {
         return a | b;
     }
     let shift = (a | b).trailing_zeros();
     a >>= a.trailing_zeros();
-    while b != 0 {
+    loop {
         b >>= b.trailing_zeros();
         if a > b {
             std::mem::swap(&mut a, &mut b);
         }
         b -= a;
+        if b == 0 {
+            return a << shift;
+        }
     }
-    a << shift
 }
 
 fn ratio_raw(n: BigInt, d: BigInt) -> BigRational {

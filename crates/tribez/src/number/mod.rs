@@ -35,7 +35,7 @@ pub use num_rational::BigRational;
 
 pub use arith::gcd;
 pub(crate) use arith::{
-    add as q_add, div as q_div, mul as q_mul, pow as q_pow, ratio, sub as q_sub,
+    add as q_add, div as q_div, gcd_u64, mul as q_mul, pow as q_pow, ratio, sub as q_sub,
 };
 pub use exact::{exact_f32, exact_f64, exact_value, pow2};
 pub use format::BinaryFloat;

@@ -930,6 +930,17 @@ fn general(neg: bool, p: &str, q: &str) -> BigRational {
 
 proptest! {
     #[test]
+    fn word_gcd_equals_euclid(x in any::<u64>(), y in any::<u64>(), shift in 0u32..64) {
+        for (x, y) in [(x, y), (x >> shift, y), (x << shift, y << (shift / 2))] {
+            let (mut a, mut b) = (x, y);
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            prop_assert_eq!(gcd_u64(x, y), a);
+        }
+    }
+
+    #[test]
     fn push_decimal_equals_num_bigint(limbs in limbs_strategy()) {
         let mut x = BigUint::zero();
         for w in &limbs {
