@@ -161,11 +161,9 @@ pub fn dot(a: &IntVec, b: &IntVec) -> BigRational {
 pub mod dense {
     use super::*;
 
-    /// The rank of a dense rational matrix.
-    pub fn rank(m: &[Vec<BigRational>]) -> usize {
-        let cols = m.first().map_or(0, Vec::len);
-        let rows: Vec<SparseRow> = m
-            .iter()
+    /// The rows of a dense matrix as sparse rows (the non-zero entries with their columns).
+    fn sparse_rows(m: &[Vec<BigRational>]) -> Vec<SparseRow> {
+        m.iter()
             .map(|r| {
                 r.iter()
                     .enumerate()
@@ -173,8 +171,13 @@ pub mod dense {
                     .map(|(c, v)| (c, v.clone()))
                     .collect()
             })
-            .collect();
-        rref(&rows, cols).pivots.len()
+            .collect()
+    }
+
+    /// The rank of a dense rational matrix.
+    pub fn rank(m: &[Vec<BigRational>]) -> usize {
+        let cols = m.first().map_or(0, Vec::len);
+        rref(&sparse_rows(m), cols).pivots.len()
     }
 
     /// `A B`.
@@ -244,16 +247,7 @@ pub mod dense {
     /// `A⁺ = Gᵀ (G Gᵀ)⁻¹ (Fᵀ F)⁻¹ Fᵀ`.
     pub fn pseudoinverse(a: &[Vec<BigRational>]) -> Vec<Vec<BigRational>> {
         let cols = a.first().map_or(0, Vec::len);
-        let rows: Vec<SparseRow> = a
-            .iter()
-            .map(|r| {
-                r.iter()
-                    .enumerate()
-                    .filter(|(_, v)| !v.is_zero())
-                    .map(|(c, v)| (c, v.clone()))
-                    .collect()
-            })
-            .collect();
+        let rows = sparse_rows(a);
         // Column pivots: the rref of the rows gives the row space G; F are the columns of A at
         // the pivots of the standard (first non-zero) echelon form, which `rref` does not use,
         // so take G = rref rows (any basis of the row space) and F = A Gᵀ (G Gᵀ)⁻¹.
