@@ -277,24 +277,32 @@ fn check_reader<R: Read + Send>(
 }
 
 /// The numbers of an in-memory row: with a precision each value is rounded to it (an `f32`
-/// batch takes the nearest `f32`); the value as intended is the `f64` given.
+/// batch takes the nearest `f32`); the value as intended is the `f64` given. For an `f64` batch
+/// that is the float itself, whose exact value [`Accumulator::intended`] takes from it when a
+/// report needs it (most rows never do: no big rational is built per number).
 fn memory_num(x: f64, precision: Option<Precision>) -> Num {
     if !x.is_finite() {
         return Num::NotFinite(format!("`{x}`"));
     }
-    let float = match precision {
+    match precision {
+        Some(Precision::F64) => Num::Value {
+            float: x,
+            text_exact: None,
+        },
         Some(Precision::F32) => {
             let y = x as f32;
             if !y.is_finite() {
                 return Num::NotFinite(format!("`{x}` overflows f32"));
             }
-            f64::from(y)
+            Num::Value {
+                float: f64::from(y),
+                text_exact: crate::number::exact_f64(x),
+            }
         }
-        _ => x,
-    };
-    Num::Value {
-        float,
-        text_exact: crate::number::exact_f64(x),
+        None => Num::Value {
+            float: x,
+            text_exact: crate::number::exact_f64(x),
+        },
     }
 }
 
@@ -528,14 +536,20 @@ impl<'p> Accumulator<'p> {
                     .map(|(x, s)| x.text_value(s))
                     .collect()
             }
-            _ => inputs
+            // memory rows: the exact value of the `f64` given, which is the float itself in an
+            // `f64` batch (`memory_num`); text rows always have a format
+            (Source::Memory, _) | (Source::Text(..), None) => inputs
                 .iter()
                 .map(|x| match x {
                     Num::Value {
                         text_exact: Some(q),
                         ..
                     } => Some(q.clone()),
-                    _ => None,
+                    Num::Value {
+                        float,
+                        text_exact: None,
+                    } => crate::number::exact_f64(*float),
+                    Num::NotFinite(_) => None,
                 })
                 .collect(),
         }
