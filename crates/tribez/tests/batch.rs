@@ -353,11 +353,11 @@ fn an_identically_zero_coordinate_never_falls_back() {
 /// at 300 float points the claimed values are the correctly rounded exact values (the generic
 /// exact path: exact barycentric coordinates by Cramer's rule, rational de Casteljau), so every
 /// row meets `ulps=1/2` and `ulps=64`; moved by a relative 2^-30 on one coordinate (about 2^22
-/// ulps), every row fails `ulps=64`. For h = 2 the filter decides most rows at `ulps=64` (260 of
-/// 300 when written; the others, near cancellation, fall back)
-/// (the conversion's rounding costs a few ulps of the condition number); `ulps=1/2` is too tight
-/// for any Cartesian enclosure and falls back, with the same verdicts. For the thin h = 2^-20
-/// (barycentric coordinates known in floats to about 2^20 ε) the verdicts are the same.
+/// ulps), every row fails `ulps=64`. For h = 2 the filter decides nearly every row, even at
+/// `ulps=1/2`: it evaluates at the double-double barycentric coordinates, whose enclosure is as
+/// tight as a barycentric row's, and every row's figure lands in its true bucket (`0` or
+/// `(0, 1/2]`: correctly rounded claims). For the thin h = 2^-20 (barycentric coordinates known
+/// in floats to about 2^20 ε) the verdicts are the same.
 #[test]
 fn cartesian_rows_are_decided_by_the_filter_and_agree_with_the_exact_path() {
     use tribez::Rational;
@@ -411,10 +411,28 @@ fn cartesian_rows_are_decided_by_the_filter_and_agree_with_the_exact_path() {
         };
         let r = check("ulps=1/2", &good);
         assert_eq!((r.checked, r.passed), (300, 300), "h={h}");
+        if h == 2.0 {
+            assert!(
+                r.fell_back <= 3,
+                "fell back {} (0 when written)",
+                r.fell_back
+            );
+            let counts = r.histogram.counts;
+            assert_eq!(counts[0] + counts[1], 300, "h={h}: {counts:?}");
+            assert!(
+                r.max_ulps.is_some_and(|u| u <= 0.5),
+                "h={h}: {:?}",
+                r.max_ulps
+            );
+        }
         let r = check("ulps=64", &good);
         assert_eq!((r.checked, r.passed), (300, 300), "h={h}");
         if h == 2.0 {
-            assert!(r.fell_back <= 60, "fell back {}", r.fell_back);
+            assert!(
+                r.fell_back <= 3,
+                "fell back {} (0 when written)",
+                r.fell_back
+            );
         }
         let r = check("ulps=64", &bad);
         assert_eq!((r.checked, r.failed), (300, 300), "h={h}");

@@ -6,7 +6,7 @@ use super::parse::Num;
 use super::report::FailedCoord;
 use super::{BatchError, BatchOptions};
 use crate::certify::bound::{a_priori, condition};
-use crate::certify::filter::cartesian::CartesianMap;
+use crate::certify::filter::cartesian::{CartesianMap, CartesianPoint};
 use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch, Thresholds};
 use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
 use crate::exact::{Algorithm, ExactEvaluator};
@@ -291,10 +291,11 @@ impl Prepared {
     /// decided gets the compensated enclosure (the errors, to a small fraction of an ulp,
     /// instead of the looseness of the plain bounds); a row whose enclosure still straddles a
     /// histogram boundary (an error that may be exactly 0, or exactly 1/2 ulp as at a rounding
-    /// midpoint) is computed exactly, so every row lands in its true bucket. Cartesian rows keep
-    /// the widened enclosure's ends (upper bounds, like every filter-decided row's figures);
-    /// settling straddling rows exactly would cost the exact arithmetic the filter saved for
-    /// most rows (their enclosures are a few ulps wide).
+    /// midpoint) is computed exactly, so every row lands in its true bucket. So are Cartesian
+    /// rows decided at their double-double barycentric coordinates (as tight); a Cartesian row
+    /// only the widened stage decided keeps its enclosure's ends (upper bounds, like every
+    /// filter-decided row's figures): its enclosure is a few ulps wide, and settling it would
+    /// cost the exact arithmetic the filter saved.
     pub(super) fn filtered(&self, line: usize, scratch: &mut RowScratch) -> Option<RowOutcome> {
         let (filter, th) = self.filter.as_ref()?;
         let RowScratch {
@@ -302,8 +303,7 @@ impl Prepared {
             enc,
             lambda,
             ys,
-            bary,
-            radius,
+            point,
         } = scratch;
         enc.resize(filter.dim(), Enclosure::default());
         let RowJudgement {
@@ -314,8 +314,8 @@ impl Prepared {
         } = match &self.cartesian_map {
             None => filter.judge_tight(th, lambda, ys, sc, enc),
             Some(map) => {
-                if map.barycentric(lambda, bary, radius) {
-                    filter.judge_tight_uncertain(th, bary, radius, ys, sc, enc)
+                if map.barycentric(lambda, point) {
+                    filter.judge_cartesian(th, point, ys, sc, enc)
                 } else {
                     RowJudgement {
                         decision: Decision::Undecided,
@@ -332,7 +332,8 @@ impl Prepared {
             Decision::Undecided => return None,
         };
         let mut settled_exactly = false;
-        if ulps.is_finite() && self.cartesian_map.is_none() {
+        if ulps.is_finite() && (self.cartesian_map.is_none() || tight) {
+            // (a Cartesian row gets here tight only: its inputs are not barycentric)
             if !tight {
                 let (lo, hi) = filter.ulps_bounds(th, lambda, ys, sc, enc);
                 ulps_lower = ulps_lower.max(lo);
@@ -401,8 +402,7 @@ pub(super) struct RowScratch {
     pub(super) lambda: Vec<f64>,
     /// The row's claimed coordinates as floats.
     pub(super) ys: Vec<f64>,
-    bary: Vec<f64>,
-    radius: Vec<f64>,
+    point: CartesianPoint,
 }
 
 impl RowScratch {

@@ -423,6 +423,9 @@ pub struct Filter {
     stencils: Vec<Vec<usize>>,
     mu_inflate: f64,
     mu_absolute: f64,
+    /// The same for the lean kernel at a double-double point (more roundings per path).
+    mu_inflate_dd: f64,
+    mu_absolute_dd: f64,
     s_rel: f64,
     /// `γ_{(m+1)n}` for f64, rounded up.
     gamma: f64,
@@ -430,6 +433,8 @@ pub struct Filter {
     lean: Option<kernel::Lean>,
     /// The largest control coordinate in magnitude (the scale of `abs=E` tolerances).
     scale: f64,
+    /// Per coordinate, the largest control value in magnitude.
+    largest: Vec<f64>,
     /// Per coordinate: every control value is zero, so the coordinate is exactly 0 everywhere
     /// ([`Enclosure::EXACT_ZERO`]).
     zero: Vec<bool>,
@@ -468,6 +473,8 @@ impl Filter {
             stencils,
             mu_inflate: 1.0 + 4.0 * k * EPS,
             mu_absolute: nodes * (4 * m + 8) as f64 * TINY,
+            mu_inflate_dd: 1.0 + 4.0 * ((6 * m + 10) * n.max(1)) as f64 * EPS,
+            mu_absolute_dd: nodes * (6 * m + 14) as f64 * TINY,
             s_rel: 4.0 * ((m + 1) * n.max(1)) as f64 * EPS,
             gamma: {
                 // γ_{(m+1)n} in f64, rounded up generously
@@ -480,6 +487,15 @@ impl Filter {
             },
             lean: kernel::Lean::new(m, n, dim, net.coords()),
             scale: net.coords().iter().fold(0.0, |a: f64, x| a.max(x.abs())),
+            largest: (0..dim)
+                .map(|c| {
+                    net.coords()
+                        .iter()
+                        .skip(c)
+                        .step_by(dim)
+                        .fold(0.0, |a: f64, x| a.max(x.abs()))
+                })
+                .collect(),
             zero: (0..dim)
                 .map(|c| net.coords().iter().skip(c).step_by(dim).all(|x| *x == 0.0))
                 .collect(),
@@ -570,7 +586,11 @@ impl Filter {
     /// `Σ_{j≤n} (Σ|λ_k|)^j` (for the absolute allowances carried to the apex) and
     /// `Σ_{j<n} (Σ|λ_k|)^j` (for the a-priori bound's underflow term).
     fn geometric(&self, lambda: &[f64]) -> (f64, f64) {
-        let sum_abs: f64 = lambda.iter().map(|x| x.abs()).sum();
+        self.geometric_sum(lambda.iter().map(|x| x.abs()).sum())
+    }
+
+    /// [`Filter::geometric`] of a given `Σ|λ_k|`.
+    fn geometric_sum(&self, sum_abs: f64) -> (f64, f64) {
         let mut below = 0.0;
         let mut power = 1.0;
         for _ in 0..self.n {
@@ -653,6 +673,18 @@ fn widen(enc: &mut [Enclosure], wide: &[Enclosure]) {
         };
         e.s_hi = w.s_hi;
     }
+}
+
+/// An upper bound of `(s + t)^n − s^n` for `s, t ≥ 0` (`n ≥ 1`): `n t (s + t)^{n−1}` by the mean
+/// value theorem, with `s + t` raised to 1 when smaller (so that no power underflows) and
+/// inflated for the `n + 2` roundings; infinite on overflow.
+fn growth(n: usize, s: f64, t: f64) -> f64 {
+    let q = ((s + t) * (1.0 + 2.0 * EPS)).max(1.0);
+    let mut power = 1.0;
+    for _ in 1..n {
+        power *= q;
+    }
+    (n as f64 * t) * power * (1.0 + 4.0 * (n + 2) as f64 * EPS) + 4.0 * TINY
 }
 
 /// The row's conclusion from one set of enclosures.
@@ -765,6 +797,85 @@ impl Filter {
         self.judge_in_order(th, lambda, claimed, scratch, enc, true)
     }
 
+    /// Judge a Cartesian row, its barycentric coordinates computed in floats
+    /// ([`cartesian::CartesianMap`]): first at the double-double point `λ̂ + lo` by the lean
+    /// kernel, whose enclosure is as tight as at a barycentric row (`O(ε²)`), widened only for
+    /// the tiny radii `fine` ([`Filter::judge_double_double`]); when that leaves the row
+    /// undecided, or there is no lean kernel, the widened stages at `λ̂`
+    /// ([`Filter::judge_tight_uncertain`]). `tight` in the result: decided by the first.
+    pub fn judge_cartesian(
+        &self,
+        th: &Thresholds,
+        point: &cartesian::CartesianPoint,
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        if let Some(lean) = &self.lean {
+            let r = self.judge_double_double(lean, th, point, claimed, scratch, enc);
+            if r.decision != Decision::Undecided {
+                return r;
+            }
+        }
+        self.judge_tight_uncertain(th, &point.hi, &point.radius, claimed, scratch, enc)
+    }
+
+    /// The compensated enclosures at the exact `λ` with `|λ_k − hi_k − lo_k| ≤ fine_k`
+    /// (docs/theory.md §14.5): the lean kernel at `hi + lo` ([`kernel::Lean::run_dd`]) encloses
+    /// `P(hi + lo)`; `P` moves by at most `S(|hi + lo| + fine) − S(|hi + lo|)` from there, and
+    /// with `S(μ) = Σ_α |c_α| B_α(μ) ≤ max|c| (Σ_k μ_k)^n` term by term,
+    /// `S(w + t) − S(w) ≤ max|c| ((Σw + Σt)^n − (Σw)^n) ≤ max|c| n Σt (Σw + Σt)^{n−1}` for
+    /// `w, t ≥ 0` ([`growth`]), with `Σw ≤ σ = Σ(|hi_k| + |lo_k|)`. That is `O(ε²)` here. The
+    /// condition number at `λ` is within the same kind of bound of the kernel's `S(|hi|)`, with
+    /// `t = |lo| + fine`.
+    fn judge_double_double(
+        &self,
+        lean: &kernel::Lean,
+        th: &Thresholds,
+        p: &cartesian::CartesianPoint,
+        claimed: &[f64],
+        scratch: &mut Scratch,
+        enc: &mut [Enclosure],
+    ) -> RowJudgement {
+        let (m, n) = (self.m, self.n);
+        // sums of m + 1 non-negative terms, rounded up
+        let up = 1.0 + 4.0 * (m + 2) as f64 * EPS;
+        let sum = |f: &dyn Fn(usize) -> f64| (0..=m).map(f).sum::<f64>() * up;
+        let sigma_hi = sum(&|k| p.hi[k].abs());
+        let sigma = sum(&|k| p.hi[k].abs() + p.lo[k].abs());
+        let near = growth(n, sigma, sum(&|k| p.fine[k]));
+        let far = growth(n, sigma_hi, sum(&|k| p.lo[k].abs() + p.fine[k]));
+        // the kernel's weights per step are Σ(|hi_k| + |lo_k|)
+        let absolute = self.mu_absolute_dd * self.geometric_sum(sigma).0 * (1.0 + R);
+        let (ok, apex) = lean.run_dd(&p.hi, &p.lo, &mut scratch.lean);
+        kernel::enclosures(
+            ok && absolute.is_finite() && near.is_finite() && far.is_finite(),
+            &apex,
+            self.mu_inflate_dd,
+            absolute,
+            self.s_rel,
+            enc,
+        );
+        for (e, top) in enc.iter_mut().zip(&self.largest) {
+            let (moved, moved_s) = (
+                top * near * (1.0 + 2.0 * EPS),
+                top * far * (1.0 + 2.0 * EPS),
+            );
+            e.mu = (e.mu + moved) * (1.0 + 2.0 * EPS);
+            let lo = e.s_lo - moved_s;
+            e.s_lo = if lo > 0.0 {
+                lo * (1.0 - 2.0 * EPS)
+            } else {
+                0.0
+            };
+            e.s_hi = (e.s_hi + moved_s) * (1.0 + 2.0 * EPS);
+        }
+        self.mark_zeros(&p.hi, enc);
+        let mut r = conclude(th, claimed, enc, sigma + sum(&|k| p.fine[k]));
+        r.tight = enc.iter().all(|e| e.mu.is_finite());
+        r
+    }
+
     /// [`Filter::judge_tight`] at the exact point `λ` known only as `λ̂ = lambda` with radii
     /// `|λ_k − λ̂_k| ≤ radius[k]` (a Cartesian input converted in floats,
     /// [`cartesian::CartesianMap`]): every enclosure is widened by `S(|λ̂| + d) − S(|λ̂|)`
@@ -827,9 +938,21 @@ impl Filter {
     /// `A = Σ_k a_k A_k`, `Δ = Σ_k (a_k + d_k) Δ_k + Σ_k d_k A_k`, from `A = |c|`, `Δ = 0`. Every
     /// term is non-negative, so with `K = (4m + 4)n` roundings per path the computed values are
     /// within a factor `1 + γ_K` of the exact ones; we inflate by `1 + 4Kε` and add an absolute
-    /// `2^-1074` per operation, scaled by `Σ_{j≤n} (Σ_k (a_k + d_k))^j`, for underflow.
+    /// `2^-1074` per operation, scaled by `Σ_{j≤n} (Σ_k (a_k + d_k))^j`, for underflow. The
+    /// lean kernel runs the pass where one is compiled (`m ≤ 3`, `dim ≤ 4`).
     fn widening(&self, a: &[f64], d: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
-        let (m, dim, n) = (self.m, self.dim, self.n);
+        match &self.lean {
+            Some(lean) => {
+                let (s_at_a, delta) = lean.run_widen(a, d, &mut scratch.lean);
+                self.finish_widening(a, d, s_at_a, delta, out);
+            }
+            None => self.widening_generic(a, d, scratch, out),
+        }
+    }
+
+    /// [`Filter::widening`] for any m and dim (the lean kernel computes the same numbers).
+    fn widening_generic(&self, a: &[f64], d: &[f64], scratch: &mut Scratch, out: &mut [Enclosure]) {
+        let (m, dim) = (self.m, self.dim);
         let Scratch { v, mu, v2, mu2, .. } = scratch;
         v.clear();
         v.extend(self.coords.iter().map(|x| x.abs()));
@@ -854,6 +977,20 @@ impl Filter {
             std::mem::swap(v, v2);
             std::mem::swap(mu, mu2);
         }
+        self.finish_widening(a, d, &v[..dim], &mu[..dim], out);
+    }
+
+    /// The enclosures of [`Filter::widening`] from the apex's `S(a)` and `Δ` (per coordinate),
+    /// inflated for their roundings.
+    fn finish_widening(
+        &self,
+        a: &[f64],
+        d: &[f64],
+        s_at_a: &[f64],
+        delta: &[f64],
+        out: &mut [Enclosure],
+    ) {
+        let (m, dim, n) = (self.m, self.dim, self.n);
         let k = ((4 * m + 4) * n.max(1)) as f64;
         let inflate = 1.0 + 4.0 * k * EPS;
         let sum: f64 =
@@ -867,8 +1004,8 @@ impl Filter {
         let nodes = crate::simplex::count(m, n) as f64 * (n as f64 + 1.0);
         let absolute = nodes * (6 * m + 8) as f64 * TINY * geometric * (1.0 + R);
         for c in 0..dim {
-            let delta = mu[c] * inflate + absolute;
-            let s_at_a = v[c] * inflate + absolute;
+            let delta = delta[c] * inflate + absolute;
+            let s_at_a = s_at_a[c] * inflate + absolute;
             let zero = self.zero[c];
             out[c] = Enclosure {
                 value: 0.0,
@@ -1543,6 +1680,42 @@ mod tests {
     }
 
     #[test]
+    fn the_lean_widening_computes_the_generic_numbers_on_the_stress_cases() {
+        let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+        let mut lean_nets = 0;
+        for (name, net, pts) in stress_cases() {
+            let f = Filter::new(&net);
+            lean_nets += usize::from(f.has_lean_kernel());
+            let dim = net.dim();
+            let mut sc = Scratch::default();
+            let (mut lean, mut generic) = (
+                vec![Enclosure::default(); dim],
+                vec![Enclosure::default(); dim],
+            );
+            for lam in &pts {
+                let a: Vec<f64> = lam.iter().map(|x| x.abs()).collect();
+                // radii: none, a few ulps, subnormal, large, and uneven across coordinates
+                for scale in [0.0, 4.0 * EPS, 1e-310, 1e-3] {
+                    let d: Vec<f64> = a
+                        .iter()
+                        .enumerate()
+                        .map(|(k, x)| (x + 1.0) * scale * (k + 1) as f64)
+                        .collect();
+                    f.widening(&a, &d, &mut sc, &mut lean);
+                    f.widening_generic(&a, &d, &mut sc, &mut generic);
+                    for (x, y) in lean.iter().zip(&generic) {
+                        assert!(
+                            same(x.mu, y.mu) && same(x.s_hi, y.s_hi) && same(x.s_lo, y.s_lo),
+                            "{name}: lean {x:?} generic {y:?} at {lam:?}, radii {d:?}"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(lean_nets > 0, "no stress case has a lean kernel");
+    }
+
+    #[test]
     fn row_judgements_agree_with_the_exact_judgement_on_the_stress_cases() {
         use crate::certify::measures::{Leaf, Tolerance};
         let tols = [
@@ -1726,8 +1899,92 @@ mod tests {
                 assert_eq!(bits(x.corr), bits(y.corr), "{name}: corrections at {lam:?}");
                 assert_eq!(bits(x.nu), bits(y.nu), "{name}: bounds at {lam:?}");
             }
+            // and at a double-double point
+            let lo = low_parts(lam);
+            let (ok, x) = lean.run_dd(lam, &lo, &mut a);
+            let (ok_d, y) = lean.run_dd_dekker(lam, &lo, &mut b);
+            assert_eq!(ok, ok_d, "{name}: guards at {lam:?} + {lo:?}");
+            assert_eq!(
+                bits(x.value),
+                bits(y.value),
+                "{name}: values at {lam:?} + {lo:?}"
+            );
+            if ok {
+                assert_eq!(bits(x.corr), bits(y.corr), "{name}: corrections at {lam:?}");
+                assert_eq!(bits(x.nu), bits(y.nu), "{name}: bounds at {lam:?} + {lo:?}");
+            }
         }
         pts.len()
+    }
+
+    /// Low parts for a point: `λ_k·2^-54` times a factor in `[−1, 1)` that varies with `k` (0
+    /// for some coordinates), as the Cartesian map's double-double results have.
+    fn low_parts(lam: &[f64]) -> Vec<f64> {
+        lam.iter()
+            .enumerate()
+            .map(|(k, x)| x * 2f64.powi(-54) * [0.0, 0.75, -1.0, -0.3][k % 4])
+            .collect()
+    }
+
+    /// At a double-double point `λ = hi + lo` (the Cartesian rows' first stage), the enclosures
+    /// contain the exact value and condition number at `hi + lo` (computed exactly), on every
+    /// stress case; and they are tight: the error bound is below a thousandth of an ulp of
+    /// the condition number wherever the guards let the kernel run.
+    #[test]
+    fn double_double_enclosures_hold_on_the_stress_cases() {
+        let mut tight = 0;
+        for (name, net, pts) in stress_cases() {
+            let f = Filter::new(&net);
+            let Some(lean) = &f.lean else { continue };
+            let exact_net = net.map(|x| exact_f64(*x).unwrap());
+            let exact = ExactEvaluator::new(&exact_net);
+            let mut sc = Scratch::default();
+            let mut enc = vec![Enclosure::default(); net.dim()];
+            let th = Thresholds::new(
+                &Tolerance::parse("ulps=1").unwrap(),
+                Precision::F64,
+                Algorithm::Casteljau,
+                net.m(),
+                net.degree(),
+            );
+            for lam in &pts {
+                let lo = low_parts(lam);
+                let point = cartesian::CartesianPoint {
+                    hi: lam.clone(),
+                    radius: vec![f64::INFINITY; lam.len()],
+                    fine: vec![TINY; lam.len()],
+                    lo: lo.clone(),
+                };
+                let l: Vec<BigRational> = lam
+                    .iter()
+                    .zip(&lo)
+                    .map(|(h, x)| exact_f64(*h).unwrap() + exact_f64(*x).unwrap())
+                    .collect();
+                let p = exact.evaluate(&l, Algorithm::Casteljau);
+                let s = crate::certify::bound::condition(&exact_net, &l);
+                let claimed: Vec<f64> = p.iter().map(round_f64).collect();
+                f.judge_double_double(lean, &th, &point, &claimed, &mut sc, &mut enc);
+                for (c, e) in enc.iter().enumerate() {
+                    if !(e.value.is_finite() && e.corr.is_finite() && e.mu.is_finite()) {
+                        continue;
+                    }
+                    let err =
+                        (exact_f64(e.value).unwrap() + exact_f64(e.corr).unwrap() - &p[c]).abs();
+                    assert!(
+                        err <= exact_f64(e.mu).unwrap(),
+                        "{name}: misses P at {lam:?} + {lo:?}, coordinate {c}"
+                    );
+                    assert!(
+                        exact_f64(e.s_lo).unwrap() <= s[c] && s[c] <= exact_f64(e.s_hi).unwrap(),
+                        "{name}: condition number at {lam:?} + {lo:?}, coordinate {c}"
+                    );
+                    if e.mu <= 1e-3 * EPS * e.s_hi {
+                        tight += 1;
+                    }
+                }
+            }
+        }
+        assert!(tight > 100, "only {tight} tight enclosures");
     }
 
     /// The compensated kernel with FMA (where the processor has AVX2 and FMA) computes the
@@ -1938,9 +2195,11 @@ mod tests {
 
         /// Cartesian rows (docs/theory.md §14.5): on random domain simplices, many of them
         /// nearly degenerate (a vertex within 2^-40·t of the opposite face, far away, or huge),
-        /// the float conversion's radii contain the exact barycentric coordinates, the widened
-        /// enclosures contain the exact value and condition number at them, and every decision
-        /// of the filter agrees with the exact judgement (the generic exact path).
+        /// the float conversion's radii contain the exact barycentric coordinates (around `λ̂` and
+        /// around the double-double `λ̂ + lo`), the enclosures of both the widened stage alone and
+        /// the double-double one first contain the exact value and condition number at them,
+        /// and every decision of the filter agrees with the exact judgement (the generic exact
+        /// path).
         #[test]
         fn cartesian_rows_are_enclosed_and_judged_soundly(
             m in 1usize..=3,
@@ -1954,7 +2213,7 @@ mod tests {
         ) {
             use crate::certify::measures::{Leaf, Tolerance};
             use crate::domain::Domain;
-            use cartesian::CartesianMap;
+            use cartesian::{CartesianMap, CartesianPoint};
             // the vertices: random, then (squash) the last one pushed towards the opposite face,
             // or scaled up
             let mut v: Vec<Vec<f64>> = (0..=m).map(|k| verts[k * m..(k + 1) * m].to_vec()).collect();
@@ -1983,11 +2242,14 @@ mod tests {
             let x: Vec<f64> = (0..m).map(|j| (0..=m).map(|k| w[k] * v[k][j]).sum()).collect();
             let xq: Vec<BigRational> = x.iter().map(|c| exact_f64(*c).unwrap()).collect();
             let lam = domain.barycentric(&xq).unwrap();
-            let (mut lh, mut d) = (Vec::new(), Vec::new());
-            proptest::prop_assert!(map.barycentric(&x, &mut lh, &mut d));
+            let mut point = CartesianPoint::default();
+            proptest::prop_assert!(map.barycentric(&x, &mut point));
+            let (lh, d) = (point.hi.clone(), point.radius.clone());
             for k in 0..=m {
                 let err = (exact_f64(lh[k]).unwrap() - &lam[k]).abs();
                 proptest::prop_assert!(err <= exact_f64(d[k]).unwrap(), "k={} {} > {}", k, err, d[k]);
+                let fine = (exact_f64(lh[k]).unwrap() + exact_f64(point.lo[k]).unwrap() - &lam[k]).abs();
+                proptest::prop_assert!(fine <= exact_f64(point.fine[k]).unwrap(), "k={} {} > {}", k, fine, point.fine[k]);
             }
             let simplex = Simplex::new(m, n);
             let coords: Vec<f64> = (0..simplex.len() * dim).map(|i| values[i % values.len()]).collect();
@@ -2008,6 +2270,14 @@ mod tests {
             }
             let mut sc = Scratch::default();
             let mut enc = vec![Enclosure::default(); dim];
+            // the lean widening pass computes the generic code's numbers
+            let outer: Vec<f64> = lh.iter().map(|x| x.abs()).collect();
+            let (mut wl, mut wg) = (vec![Enclosure::default(); dim], vec![Enclosure::default(); dim]);
+            f.widening(&outer, &d, &mut sc, &mut wl);
+            f.widening_generic(&outer, &d, &mut sc, &mut wg);
+            for (x, y) in wl.iter().zip(&wg) {
+                proptest::prop_assert!(x.mu.to_bits() == y.mu.to_bits() && x.s_hi.to_bits() == y.s_hi.to_bits(), "{:?} {:?}", x, y);
+            }
             for t in ["exact", "ulps=1", "ulps=4", "ulps=64", "abs=1e-12", "rel=1e-12", "correctly_rounded", "faithful", "cond", "cond=2", "bound"] {
                 let tol = Tolerance::parse(t).unwrap().for_patch(m, n);
                 let p = Precision::F64;
@@ -2020,7 +2290,12 @@ mod tests {
                     };
                     tol.accepts(&exact_f64(ys[c]).unwrap(), &pe[c], &leaf).unwrap()
                 });
-                let r = f.judge_tight_uncertain(&th, &lh, &d, &ys, &mut sc, &mut enc);
+                for dd in [false, true] {
+                let r = if dd {
+                    f.judge_cartesian(&th, &point, &ys, &mut sc, &mut enc)
+                } else {
+                    f.judge_tight_uncertain(&th, &lh, &d, &ys, &mut sc, &mut enc)
+                };
                 // the deciding enclosures hold at the exact point
                 for c in 0..dim {
                     let e = &enc[c];
@@ -2041,6 +2316,7 @@ mod tests {
                     let e_max = (0..dim).map(|c| crate::number::ulps_error_f64(&exact_f64(ys[c]).unwrap(), &pe[c])).max().unwrap();
                     proptest::prop_assert!(e_max <= BigRational::from_float(r.ulps).unwrap());
                     proptest::prop_assert!(BigRational::from_float(r.ulps_lower).unwrap() <= e_max);
+                }
                 }
             }
         }

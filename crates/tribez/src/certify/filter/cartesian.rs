@@ -23,6 +23,11 @@
 //! non-negative). `S` is exactly the filter's condition number, so one more plain pass at
 //! `|λ̂| + d` (rounded up) bounds the widening; it also bounds the condition number at the exact
 //! `λ` from above (`S` is increasing in each `|λ_k|`), and `S(|λ̂|) − w` from below.
+//!
+//! That widening is about `n Σd S`, a few ulps. So the filter first evaluates at the
+//! double-double `λ̂ + lo` (TwoSum gives `s + ê = λ̂ + lo` exactly, and the remaining radius
+//! `fine` drops the `ε|λ̂|` term: it is of order `ε²`), where the widening is negligible
+//! ([`CartesianPoint`]; `Filter::judge_cartesian`).
 
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -30,6 +35,22 @@ use num_traits::Zero;
 use super::{EPS, TINY};
 use crate::domain::Domain;
 use crate::number::round_f64;
+
+/// The barycentric coordinates of one Cartesian float point, as the filter takes them: `λ̂`
+/// with `|λ_k − λ̂_k| ≤ radius_k`, and the double-double `λ̂ + lo` with
+/// `|λ_k − λ̂_k − lo_k| ≤ fine_k` (where the products of the map are exact, `fine` is of order
+/// `ε²`; elsewhere `lo = 0` and `fine = radius`).
+#[derive(Clone, Debug, Default)]
+pub struct CartesianPoint {
+    /// `λ̂` (`m + 1` entries).
+    pub hi: Vec<f64>,
+    /// The radii around `λ̂`.
+    pub radius: Vec<f64>,
+    /// The low parts.
+    pub lo: Vec<f64>,
+    /// The radii around `λ̂ + lo`.
+    pub fine: Vec<f64>,
+}
 
 /// The barycentric map of a domain simplex in f64, with rigorous radii.
 #[derive(Clone, Debug)]
@@ -81,13 +102,21 @@ impl CartesianMap {
             .then_some(CartesianMap { m, rows })
     }
 
-    /// `λ̂` and the radii `d` (each `m + 1` long) of the Cartesian point `x` (`m` floats);
+    /// The barycentric coordinates of the Cartesian point `x` (`m` floats) into `out`;
     /// `false` when something is not finite (the row is then undecided).
-    pub fn barycentric(&self, x: &[f64], lambda: &mut Vec<f64>, radius: &mut Vec<f64>) -> bool {
+    pub fn barycentric(&self, x: &[f64], out: &mut CartesianPoint) -> bool {
         let m = self.m;
         debug_assert_eq!(x.len(), m);
+        let CartesianPoint {
+            hi: lambda,
+            radius,
+            lo,
+            fine,
+        } = out;
         lambda.clear();
         radius.clear();
+        lo.clear();
+        fine.clear();
         let sum_x: f64 = x.iter().map(|v| v.abs()).sum();
         let absolute = 4.0 * ((m + 3) as f64 + sum_x) * TINY;
         let guarded = x.iter().all(|v| safe(*v));
@@ -112,17 +141,16 @@ impl CartesianMap {
             e += sigma + lo0;
             e_abs += sigma.abs() + lo0.abs() + e.abs();
             t += hi0.abs();
-            let (value, d) = if exact_products {
+            let (value, d, low, d_fine) = if exact_products {
                 // λ = s + (the exact sum of e's terms) + Σ_j r_j x_j + r_0 with |r| ≤ ε|M − hi|
                 // ≤ ε²|hi|(1 + ε) the low parts' own rounding (η if subnormal): ê errs by at
                 // most ε per rounding of its ≤ 4(m+1) partial results, each at most e_abs; the
-                // final l = fl(s + ê) by ε|l|. Doubled for the roundings of d itself.
-                let l = s + e;
-                let d = EPS * l.abs()
-                    + (4 * m + 4) as f64 * EPS * e_abs
-                    + 2.0 * EPS * EPS * t
-                    + absolute;
-                (l, 2.0 * d)
+                // final l = fl(s + ê) by ε|l|, and TwoSum gives the exact s + ê = l + low.
+                // Doubled for the roundings of d itself.
+                let (l, low) = super::two_sum(s, e);
+                let fine = (4 * m + 4) as f64 * EPS * e_abs + 2.0 * EPS * EPS * t + absolute;
+                let d = EPS * l.abs() + fine;
+                (l, 2.0 * d, low, 2.0 * fine)
             } else {
                 // products near underflow or overflow: the plain dot product of the high parts,
                 // |λ − λ̂| ≤ (γ_{m+1} + ε/(1−ε)) T + η's (module documentation), doubled
@@ -134,11 +162,16 @@ impl CartesianMap {
                 }
                 acc += hi0;
                 t += hi0.abs();
-                (acc, 2.0 * (m + 2) as f64 * EPS * t + absolute)
+                let d = 2.0 * (m + 2) as f64 * EPS * t + absolute;
+                (acc, d, 0.0, d)
             };
             lambda.push(value);
             radius.push(d);
+            lo.push(low);
+            fine.push(d_fine);
         }
-        lambda.iter().chain(radius.iter()).all(|v| v.is_finite())
+        [&*lambda, &*radius, &*lo, &*fine]
+            .iter()
+            .all(|v| v.iter().all(|x| x.is_finite()))
     }
 }

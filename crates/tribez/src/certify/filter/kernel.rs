@@ -29,6 +29,13 @@
 //! `tribez check --results` at n = 3 spends about 40% less time in this kernel with FMA
 //! (docs/performance.md).
 //!
+//! **Double-double points** (Cartesian rows, docs/theory.md §14.5): the kernels built with `DD`
+//! evaluate at `λ + lo` for a low part `lo` (about `ε|λ|`). A node's exact value is
+//! `Σ_k (λ_k + lo_k)(V_k + Ê_k + e_k)` with `|e_k| ≤ ν_k`; the products `lo_k V_k`, rounded, join
+//! the correction like `λ_k Ê_k` (their roundings enter `ν` the same way), and the terms left out,
+//! `lo_k Ê_k` and `lo_k e_k`, add `|lo_k| (|Ê_k| + ν_k)` to `ν`, with one more underflow
+//! allowance per child. Without `DD` the low parts are not read and the code is the kernel above.
+//!
 //! **Layout.** A node holds `L` lanes (`L = 2` for `dim ≤ 2`, `4` for `dim ≤ 4`, padded with
 //! zeros, which stay zeros) of six quantities (value, its split hi/lo, correction, ν, condition),
 //! so every operation is a fixed-width loop the compiler turns into SIMD, and a child costs one
@@ -86,10 +93,13 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// One monomorphised kernel.
-type KernelFn = fn(&Lean, &[f64], &mut Vec<f64>) -> bool;
+/// One monomorphised compensated kernel: the net at `λ` (or at `λ + λ_lo`, the second slice, in
+/// the kernels built with `DD`).
+type KernelFn = fn(&Lean, &[f64], &[f64], &mut Vec<f64>) -> bool;
 /// One monomorphised plain kernel.
 type PlainFn = fn(&Lean, &[f64], &mut Vec<f64>);
+/// One monomorphised widening kernel.
+type WidenFn = fn(&Lean, &[f64], &[f64], &mut Vec<f64>);
 
 /// Quantities of a node in the buffer.
 const V: usize = 0;
@@ -118,13 +128,24 @@ pub(super) struct Lean {
     control: Vec<f64>,
     /// Every control coordinate is 0 or in `[2^-500, 2^500]`.
     control_ok: bool,
+    kernels: Kernels,
+}
+
+/// The monomorphised kernels of one `(m, lanes)`.
+#[derive(Clone, Copy, Debug)]
+struct Kernels {
     /// The compensated kernel run by [`Lean::run`] (with FMA where the processor has it).
-    kernel: KernelFn,
-    /// The compensated kernel with Dekker's TwoProduct (the reference the fast one equals;
+    fast: KernelFn,
+    /// The same at a double-double point ([`Lean::run_dd`]).
+    fast_dd: KernelFn,
+    /// The compensated kernels with Dekker's TwoProduct (the references the fast ones equal;
     /// read by the tests).
     #[cfg_attr(not(test), allow(dead_code))]
     dekker: KernelFn,
+    #[cfg_attr(not(test), allow(dead_code))]
+    dekker_dd: KernelFn,
     plain: PlainFn,
+    widen: WidenFn,
 }
 
 /// Buffers of the lean kernel (one node per control point: six groups of `lanes` numbers).
@@ -132,6 +153,7 @@ pub(super) struct Lean {
 pub(super) struct LeanScratch {
     buf: Vec<f64>,
     plain: Vec<f64>,
+    widen: Vec<f64>,
 }
 
 /// The apex of one lean run, per coordinate (`lanes` entries; the first `dim` count).
@@ -144,24 +166,37 @@ pub(super) struct Apex<'a> {
 
 /// The kernel of this processor: [`run_fma`] where it has AVX2 and FMA, [`run`] otherwise.
 #[cfg(target_arch = "x86_64")]
-fn fast<const M1: usize, const L: usize>() -> KernelFn {
+fn fast<const M1: usize, const L: usize, const DD: bool>() -> KernelFn {
     if fma_detected() {
-        run_fma::<M1, L>
+        run_fma::<M1, L, DD>
     } else {
-        run::<M1, L>
+        run::<M1, L, DD>
     }
 }
 #[cfg(not(target_arch = "x86_64"))]
-fn fast<const M1: usize, const L: usize>() -> KernelFn {
-    run::<M1, L>
+fn fast<const M1: usize, const L: usize, const DD: bool>() -> KernelFn {
+    run::<M1, L, DD>
+}
+
+impl Kernels {
+    fn of<const M1: usize, const L: usize>() -> Kernels {
+        Kernels {
+            fast: fast::<M1, L, false>(),
+            fast_dd: fast::<M1, L, true>(),
+            dekker: run::<M1, L, false>,
+            dekker_dd: run::<M1, L, true>,
+            plain: run_plain::<M1, L>,
+            widen: run_widen::<M1, L>,
+        }
+    }
 }
 
 macro_rules! pick {
     ($m1:expr; $($a:literal),*; $lanes:expr) => {
         match ($m1, $lanes) {
             $(
-                ($a, 2) => Some((fast::<$a, 2>(), run::<$a, 2> as KernelFn, run_plain::<$a, 2> as PlainFn)),
-                ($a, 4) => Some((fast::<$a, 4>(), run::<$a, 4> as KernelFn, run_plain::<$a, 4> as PlainFn)),
+                ($a, 2) => Some(Kernels::of::<$a, 2>()),
+                ($a, 4) => Some(Kernels::of::<$a, 4>()),
             )*
             _ => None,
         }
@@ -181,7 +216,7 @@ impl Lean {
         if n == 0 {
             return None;
         }
-        let (kernel, dekker, plain) = pick!(m + 1; 2, 3, 4; lanes)?;
+        let kernels = pick!(m + 1; 2, 3, 4; lanes)?;
         let nodes = Simplex::new(m, n).len();
         // slot[r] of the nodes of the current degree q (the children), by rank
         let mut slot: Vec<usize> = (0..nodes).collect();
@@ -233,16 +268,14 @@ impl Lean {
             apex: slot[0],
             control,
             control_ok: coords.iter().all(|&x| in_range(x, VALUE_MIN, VALUE_MAX)),
-            kernel,
-            dekker,
-            plain,
+            kernels,
         })
     }
 
     /// Run the plain kernel at `lambda`: the apex's value, running bound μ (in `nu`) and
     /// condition number; `corr` is empty.
     pub(super) fn run_plain<'a>(&self, lambda: &[f64], sc: &'a mut LeanScratch) -> Apex<'a> {
-        (self.plain)(self, lambda, &mut sc.plain);
+        (self.kernels.plain)(self, lambda, &mut sc.plain);
         let l = self.lanes;
         let base = self.apex * 3 * l;
         let q = |k: usize| &sc.plain[base + k * l..base + k * l + self.dim];
@@ -254,10 +287,40 @@ impl Lean {
         }
     }
 
+    /// The widening pass of a Cartesian row ([`run_widen`]) at `a = |λ̂|` with radii `d`: per
+    /// coordinate (`dim` entries) `S(a)` and the bound on `S(a + d) − S(a)`, before the
+    /// allowances for their own roundings.
+    pub(super) fn run_widen<'a>(
+        &self,
+        a: &[f64],
+        d: &[f64],
+        sc: &'a mut LeanScratch,
+    ) -> (&'a [f64], &'a [f64]) {
+        (self.kernels.widen)(self, a, d, &mut sc.widen);
+        let l = self.lanes;
+        let base = self.apex * 2 * l;
+        (
+            &sc.widen[base..base + self.dim],
+            &sc.widen[base + l..base + l + self.dim],
+        )
+    }
+
     /// Run the kernel at `lambda` (`m + 1` floats); false when a guard tripped (the apex is then
     /// meaningless).
     pub(super) fn run<'a>(&self, lambda: &[f64], sc: &'a mut LeanScratch) -> (bool, Apex<'a>) {
-        self.run_with(self.kernel, lambda, sc)
+        self.run_with(self.kernels.fast, lambda, &[], sc)
+    }
+
+    /// [`Lean::run`] at the double-double point `λ = hi + lo` (`|lo_k|` at most about `ε|hi_k|`):
+    /// the products `lo_k V_k` join the corrections and `ν` grows by `|lo_k| (|Ê_k| + ν_k)` for
+    /// the terms left out (module documentation).
+    pub(super) fn run_dd<'a>(
+        &self,
+        hi: &[f64],
+        lo: &[f64],
+        sc: &'a mut LeanScratch,
+    ) -> (bool, Apex<'a>) {
+        self.run_with(self.kernels.fast_dd, hi, lo, sc)
     }
 
     /// [`Lean::run`] with Dekker's TwoProduct whatever the processor has (the reference that
@@ -268,22 +331,34 @@ impl Lean {
         lambda: &[f64],
         sc: &'a mut LeanScratch,
     ) -> (bool, Apex<'a>) {
-        self.run_with(self.dekker, lambda, sc)
+        self.run_with(self.kernels.dekker, lambda, &[], sc)
+    }
+
+    /// [`Lean::run_dd`] with Dekker's TwoProduct (the reference of the FMA kernel).
+    #[cfg(test)]
+    pub(super) fn run_dd_dekker<'a>(
+        &self,
+        hi: &[f64],
+        lo: &[f64],
+        sc: &'a mut LeanScratch,
+    ) -> (bool, Apex<'a>) {
+        self.run_with(self.kernels.dekker_dd, hi, lo, sc)
     }
 
     /// Whether [`Lean::run`] is the FMA kernel (false where the processor lacks AVX2 or FMA).
     #[cfg(test)]
     pub(super) fn uses_fma(&self) -> bool {
-        !std::ptr::fn_addr_eq(self.kernel, self.dekker)
+        !std::ptr::fn_addr_eq(self.kernels.fast, self.kernels.dekker)
     }
 
     fn run_with<'a>(
         &self,
         kernel: KernelFn,
         lambda: &[f64],
+        lo: &[f64],
         sc: &'a mut LeanScratch,
     ) -> (bool, Apex<'a>) {
-        let ok = kernel(self, lambda, &mut sc.buf);
+        let ok = kernel(self, lambda, lo, &mut sc.buf);
         let l = self.lanes;
         let base = self.apex * 6 * l;
         let q = |k: usize| &sc.buf[base + k * l..base + k * l + self.dim];
@@ -299,9 +374,15 @@ impl Lean {
     }
 }
 
-/// The kernel for `M1 = m + 1` barycentric coordinates and `L` lanes, TwoProduct by Dekker.
-fn run<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: &mut Vec<f64>) -> bool {
-    run_body::<M1, L, false>(lean, lambda, buf)
+/// The kernel for `M1 = m + 1` barycentric coordinates and `L` lanes, TwoProduct by Dekker (at
+/// `λ + lo` with `DD`).
+fn run<const M1: usize, const L: usize, const DD: bool>(
+    lean: &Lean,
+    lambda: &[f64],
+    lo: &[f64],
+    buf: &mut Vec<f64>,
+) -> bool {
+    run_body::<M1, L, false, DD>(lean, lambda, lo, buf)
 }
 
 /// [`run`] compiled for AVX2 and FMA where the processor has them (checked at run time on every
@@ -310,17 +391,18 @@ fn run<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: &mut V
 /// both exact), so the two compute the same numbers (a test compares them bit for bit); node
 /// values need no split.
 #[cfg(target_arch = "x86_64")]
-fn run_fma<const M1: usize, const L: usize>(
+fn run_fma<const M1: usize, const L: usize, const DD: bool>(
     lean: &Lean,
     lambda: &[f64],
+    lo: &[f64],
     buf: &mut Vec<f64>,
 ) -> bool {
     if fma_detected() {
         // SAFETY: the processor has the features `run_fma_unchecked` is compiled for (just
         // detected), which is the one requirement of calling it.
-        unsafe { run_fma_unchecked::<M1, L>(lean, lambda, buf) }
+        unsafe { run_fma_unchecked::<M1, L, DD>(lean, lambda, lo, buf) }
     } else {
-        run::<M1, L>(lean, lambda, buf)
+        run::<M1, L, DD>(lean, lambda, lo, buf)
     }
 }
 
@@ -333,20 +415,23 @@ fn fma_detected() -> bool {
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn run_fma_unchecked<const M1: usize, const L: usize>(
+fn run_fma_unchecked<const M1: usize, const L: usize, const DD: bool>(
     lean: &Lean,
     lambda: &[f64],
+    lo: &[f64],
     buf: &mut Vec<f64>,
 ) -> bool {
-    run_body::<M1, L, true>(lean, lambda, buf)
+    run_body::<M1, L, true, DD>(lean, lambda, lo, buf)
 }
 
 /// The compensated kernel; `FMA` picks how TwoProduct's error is computed (`true` only inside a
-/// function compiled with the `fma` target feature, where `mul_add` is one instruction).
+/// function compiled with the `fma` target feature, where `mul_add` is one instruction); `DD`
+/// evaluates at `λ + lo` (`lo` is not read without it).
 #[inline(always)]
-fn run_body<const M1: usize, const L: usize, const FMA: bool>(
+fn run_body<const M1: usize, const L: usize, const FMA: bool, const DD: bool>(
     lean: &Lean,
     lambda: &[f64],
+    lo: &[f64],
     buf: &mut Vec<f64>,
 ) -> bool {
     let len = lean.nodes * 6 * L;
@@ -359,6 +444,11 @@ fn run_body<const M1: usize, const L: usize, const FMA: bool>(
     let la: [f64; M1] = lam.map(f64::abs);
     let lh: [f64; M1] = lam.map(|x| split(x).0);
     let ll: [f64; M1] = std::array::from_fn(|k| lam[k] - lh[k]);
+    // the low parts of a double-double point, and their magnitudes
+    let low: [f64; M1] = std::array::from_fn(|k| if DD { lo[k] } else { 0.0 });
+    let low_abs: [f64; M1] = low.map(f64::abs);
+    // underflow allowance per node: one product per child may underflow (two with `DD`)
+    let tiny = if DD { 2.0 } else { 1.0 } * M1 as f64 * TINY;
     let mut ok = lean.control_ok;
     for x in lam {
         ok &= in_range(x, LAMBDA_MIN, LAMBDA_MAX);
@@ -395,6 +485,12 @@ fn run_body<const M1: usize, const L: usize, const FMA: bool>(
                     corr[c] += sigma;
                     partial[c] += corr[c].abs();
                 }
+                if DD {
+                    // lo_k V_k, rounded, into the correction (the children have Ê = ν = 0)
+                    let t = low[k] * kid[V][c];
+                    corr[c] += t;
+                    partial[c] += t.abs() + corr[c].abs();
+                }
             }
         }
         let out = &mut nodes[row[0] as usize];
@@ -409,7 +505,11 @@ fn run_body<const M1: usize, const L: usize, const FMA: bool>(
             vmin[c] = vmin[c].min(if a == 0.0 { f64::INFINITY } else { a });
             out[V][c] = acc[c];
             out[E][c] = corr[c];
-            out[NU][c] = EPS * partial[c];
+            out[NU][c] = if DD {
+                EPS * partial[c] + tiny
+            } else {
+                EPS * partial[c]
+            };
             out[S][c] = cond[c];
         }
     }
@@ -449,6 +549,14 @@ fn run_body<const M1: usize, const L: usize, const FMA: bool>(
                     corr[c] += t;
                     partial[c] += t.abs() + corr[c].abs();
                 }
+                if DD {
+                    // lo_k V_k, rounded, into the correction; lo_k Ê_k and lo_k times the
+                    // child's own error are left out: |lo_k| (|Ê_k| + ν_k) into ν
+                    let t = low[k] * kid[V][c];
+                    corr[c] += t;
+                    partial[c] += t.abs() + corr[c].abs();
+                    carried[c] += low_abs[k] * (kid[E][c].abs() + kid[NU][c]);
+                }
             }
         }
         let out = &mut nodes[row[0] as usize];
@@ -463,7 +571,7 @@ fn run_body<const M1: usize, const L: usize, const FMA: bool>(
             vmin[c] = vmin[c].min(if a == 0.0 { f64::INFINITY } else { a });
             out[V][c] = acc[c];
             out[E][c] = corr[c];
-            out[NU][c] = carried[c] + EPS * partial[c] + M1 as f64 * TINY;
+            out[NU][c] = carried[c] + EPS * partial[c] + tiny;
             out[S][c] = cond[c];
         }
     }
@@ -546,6 +654,55 @@ fn run_plain<const M1: usize, const L: usize>(lean: &Lean, lambda: &[f64], buf: 
             out[1][c] = carried[c] + EPS * rounding[c] + M1 as f64 * TINY;
             out[2][c] = cond[c];
         }
+    }
+}
+
+/// The widening pass of a Cartesian row ([`super::Filter`]'s `widening`) for `M1 = m + 1`
+/// coordinates and `L` lanes, in place like [`run`]: de Casteljau on `|c|` at `a + d`, each node
+/// split into its part `A = Σ_k a_k A_k` at `a` and the rest `Δ = Σ_k ((a_k + d_k) Δ_k + d_k A_k)`,
+/// from `A = |c|`, `Δ = 0` on the control points, with the same operations in the same order as
+/// the generic code (so the same numbers).
+fn run_widen<const M1: usize, const L: usize>(
+    lean: &Lean,
+    a: &[f64],
+    d: &[f64],
+    buf: &mut Vec<f64>,
+) {
+    let len = lean.nodes * 2 * L;
+    if buf.len() != len {
+        buf.resize(len, 0.0);
+    }
+    let nodes: &mut [[[f64; L]; 2]] = buf.as_chunks_mut::<L>().0.as_chunks_mut::<2>().0;
+    let control: &[[[f64; L]; 4]] = lean.control.as_chunks::<L>().0.as_chunks::<4>().0;
+    let a: [f64; M1] = std::array::from_fn(|k| a[k]);
+    let d: [f64; M1] = std::array::from_fn(|k| d[k]);
+    let ad: [f64; M1] = std::array::from_fn(|k| a[k] + d[k]);
+    let (first, rest) = lean.stencil.split_at(lean.first * (M1 + 1));
+    for row in first.chunks_exact(M1 + 1) {
+        let mut acc = [0f64; L];
+        let mut delta = [0f64; L];
+        for k in 0..M1 {
+            let kid = &control[row[k + 1] as usize];
+            for c in 0..L {
+                acc[c] += a[k] * kid[ABS][c];
+                // the control points' Δ is 0 (kept as a product, as the generic code has it)
+                delta[c] += ad[k] * 0.0 + d[k] * kid[ABS][c];
+            }
+        }
+        nodes[row[0] as usize] = [acc, delta];
+    }
+    for row in rest.chunks_exact(M1 + 1) {
+        let mut acc = [0f64; L];
+        let mut delta = [0f64; L];
+        for k in 0..M1 {
+            // read in place, as in `run_body`
+            let kid = &nodes[row[k + 1] as usize];
+            for c in 0..L {
+                acc[c] += a[k] * kid[0][c];
+                delta[c] += ad[k] * kid[1][c] + d[k] * kid[0][c];
+            }
+        }
+        nodes[row[0] as usize] = [acc, delta];
     }
 }
 
