@@ -676,15 +676,16 @@ fn widen(enc: &mut [Enclosure], wide: &[Enclosure]) {
 }
 
 /// An upper bound of `(s + t)^n − s^n` for `s, t ≥ 0` (`n ≥ 1`): `n t (s + t)^{n−1}` by the mean
-/// value theorem, with `s + t` raised to 1 when smaller (so that no power underflows) and
-/// inflated for the `n + 2` roundings; infinite on overflow.
+/// value theorem, with `s + t` raised to 1 when smaller and `n t` to the least normal float (so
+/// that nothing is subnormal and every rounding is relative), inflated for the `n + 3` roundings;
+/// infinite on overflow.
 fn growth(n: usize, s: f64, t: f64) -> f64 {
     let q = ((s + t) * (1.0 + 2.0 * EPS)).max(1.0);
     let mut power = 1.0;
     for _ in 1..n {
         power *= q;
     }
-    (n as f64 * t) * power * (1.0 + 4.0 * (n + 2) as f64 * EPS) + 4.0 * TINY
+    (n as f64 * t).max(f64::MIN_POSITIVE) * power * (1.0 + 4.0 * (n + 2) as f64 * EPS)
 }
 
 /// The row's conclusion from one set of enclosures.
@@ -857,10 +858,9 @@ impl Filter {
             enc,
         );
         for (e, top) in enc.iter_mut().zip(&self.largest) {
-            let (moved, moved_s) = (
-                top * near * (1.0 + 2.0 * EPS),
-                top * far * (1.0 + 2.0 * EPS),
-            );
+            // (+η: the products may be subnormal)
+            let moved = top * near * (1.0 + 2.0 * EPS) + TINY;
+            let moved_s = top * far * (1.0 + 2.0 * EPS) + TINY;
             e.mu = (e.mu + moved) * (1.0 + 2.0 * EPS);
             let lo = e.s_lo - moved_s;
             e.s_lo = if lo > 0.0 {
