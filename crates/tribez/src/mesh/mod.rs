@@ -455,6 +455,8 @@ fn ordinate_total(v: usize, e: usize, t: usize, n: usize) -> Option<usize> {
 }
 
 #[cfg(test)]
+mod check_tests;
+#[cfg(test)]
 mod file_tests;
 #[cfg(test)]
 mod tests;
