@@ -498,3 +498,48 @@ fn too_many_t_junctions_are_cut_as_the_reference_cuts_them() {
         }
     );
 }
+
+#[test]
+fn a_triangle_over_a_grid_is_checked_against_every_cell() {
+    // The 8 × 8 lattice of squares of side 1/4 cut along the diagonals (i, j)–(i+1, j+1), plus
+    // triangle 128 = (0,0), (2,0), (2,2) over its lower right half. With 129 triangles the
+    // grid has 12 × 12 cells; triangle 128 covers all of them (it is tested everywhere) and so
+    // does its diagonal edge (whose candidates come from the scan in x). It overlaps the
+    // triangles below the diagonal: both of each square right of it (2 · 28) and the lower one
+    // of each square on it (8): 64. Its edges pass through 7 lattice vertices each: 21
+    // T-junctions, listed by x, then y.
+    let side = 9;
+    let at = |i: usize, j: usize| j * side + i;
+    let vertices: Vec<[BigRational; 2]> = (0..side * side)
+        .map(|v| {
+            let c = |k: usize| BigRational::new((k as i64).into(), 4.into());
+            [c(v % side), c(v / side)]
+        })
+        .collect();
+    let mut triangles = Vec::new();
+    for j in 0..side - 1 {
+        for i in 0..side - 1 {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            triangles.extend([[a, b, c], [a, c, d]]);
+        }
+    }
+    triangles.push([at(0, 0), at(8, 0), at(8, 8)]);
+    let m = Mesh::new(vertices, triangles, 1).unwrap();
+    let got = geometry(&m);
+    assert_eq!(got, reference(&m));
+    let overlaps = got
+        .iter()
+        .filter(|e| matches!(e, MeshError::Overlap { second: 128, .. }))
+        .count();
+    assert_eq!((got.len(), overlaps), (64 + 21, 64));
+    // the bottom edge 0–8 first: its vertices (1/4, 0), (2/4, 0), ... by x
+    assert_eq!(
+        got[64],
+        MeshError::TJunction {
+            vertex: 1,
+            a: 0,
+            b: 8,
+            triangle: 128
+        }
+    );
+}
