@@ -72,11 +72,14 @@ pub(crate) struct Grid {
     cells: Vec<Vec<u32>>,
     /// Triangles covering too many cells, or everything if the box is not finite: always tested.
     everywhere: Vec<u32>,
+    /// Each triangle's cells `[cx0, cx1, cy0, cy1]` (inclusive; the cells of its rounded box,
+    /// also for those in `everywhere`).
+    ranges: Vec<[u16; 4]>,
 }
 
 /// A triangle covering more cells than this is tested for every point instead.
-const MAX_CELLS_PER_TRIANGLE: usize = 64;
-/// The grid has at most `MAX_SIDE²` cells.
+pub(crate) const MAX_CELLS_PER_TRIANGLE: usize = 64;
+/// The grid has at most `MAX_SIDE²` cells (a side fits in `u16`).
 const MAX_SIDE: usize = 1024;
 
 impl Grid {
@@ -85,6 +88,11 @@ impl Grid {
             .iter()
             .map(|v| [round_f64(&v[0]), round_f64(&v[1])])
             .collect();
+        Grid::from_floats(&fv, triangles)
+    }
+
+    /// The grid from the vertices rounded to nearest (`fv[v] = [fl(x_v), fl(y_v)]`).
+    pub(crate) fn from_floats(fv: &[[f64; 2]], triangles: &[[usize; 3]]) -> Grid {
         let bbox = |t: &[usize; 3]| {
             let xs = t.map(|i| fv[i][0]);
             let ys = t.map(|i| fv[i][1]);
@@ -110,7 +118,6 @@ impl Grid {
         }
         let side = ((triangles.len() as f64).sqrt().ceil() as usize).clamp(1, MAX_SIDE);
         let (sx, sy) = (side as f64 / (x1 - x0), side as f64 / (y1 - y0));
-        let all: Vec<u32> = (0..triangles.len() as u32).collect();
         if !(sx.is_finite() && sy.is_finite() && x0.is_finite() && y0.is_finite()) || side == 1 {
             return Grid {
                 x0: 0.0,
@@ -119,7 +126,8 @@ impl Grid {
                 sy: 0.0,
                 side: 1,
                 cells: vec![Vec::new()],
-                everywhere: all,
+                everywhere: by_xmin(fv, triangles).map(|i| i as u32).collect(),
+                ranges: vec![[0; 4]; triangles.len()],
             };
         }
         let mut grid = Grid {
@@ -130,17 +138,13 @@ impl Grid {
             side,
             cells: vec![Vec::new(); side * side],
             everywhere: Vec::new(),
+            ranges: vec![[0; 4]; triangles.len()],
         };
-        for (i, t) in triangles.iter().enumerate() {
-            let (a, b, c, d) = bbox(t);
-            let (cx0, cx1) = (
-                grid.cell(a, grid.x0, grid.sx),
-                grid.cell(b, grid.x0, grid.sx),
-            );
-            let (cy0, cy1) = (
-                grid.cell(c, grid.y0, grid.sy),
-                grid.cell(d, grid.y0, grid.sy),
-            );
+        for i in by_xmin(fv, triangles) {
+            let (a, b, c, d) = bbox(&triangles[i]);
+            let r = grid.box_cells(a, b, c, d);
+            grid.ranges[i] = r.map(|c| c as u16);
+            let [cx0, cx1, cy0, cy1] = r;
             if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > MAX_CELLS_PER_TRIANGLE {
                 grid.everywhere.push(i as u32);
                 continue;
@@ -164,19 +168,70 @@ impl Grid {
         }
     }
 
+    /// Cells per row (and per column); 1 when every triangle is in `everywhere`.
+    pub(crate) fn side(&self) -> usize {
+        self.side
+    }
+
+    /// The cell `cy·side + cx` of the point `(x, y)` (rounded to `f64`).
+    pub(crate) fn point_cell(&self, x: f64, y: f64) -> usize {
+        self.cell(y, self.y0, self.sy) * self.side + self.cell(x, self.x0, self.sx)
+    }
+
+    /// The cells `[cx0, cx1, cy0, cy1]` (inclusive) of the box `[xmin, xmax] × [ymin, ymax]`
+    /// (rounded to `f64`): every point of the box is in one of them.
+    pub(crate) fn box_cells(&self, xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> [usize; 4] {
+        [
+            self.cell(xmin, self.x0, self.sx),
+            self.cell(xmax, self.x0, self.sx),
+            self.cell(ymin, self.y0, self.sy),
+            self.cell(ymax, self.y0, self.sy),
+        ]
+    }
+
+    /// Triangle `t`'s cells `[cx0, cx1, cy0, cy1]`, and whether it is listed in them (`false`:
+    /// it is in `everywhere`).
+    pub(crate) fn triangle_cells(&self, t: usize) -> ([usize; 4], bool) {
+        let r = self.ranges[t].map(usize::from);
+        let listed =
+            self.side > 1 && (r[1] - r[0] + 1) * (r[3] - r[2] + 1) <= MAX_CELLS_PER_TRIANGLE;
+        (r, listed)
+    }
+
+    /// The triangles listed in cell `c` (`cy·side + cx`), by increasing rounded `x_min`.
+    pub(crate) fn cell_triangles(&self, c: usize) -> &[u32] {
+        &self.cells[c]
+    }
+
+    /// The triangles tested for every point, by increasing rounded `x_min`.
+    pub(crate) fn everywhere(&self) -> &[u32] {
+        &self.everywhere
+    }
+
     /// The triangles to test for the point `(x, y)` (rounded to `f64`).
     pub(crate) fn candidates(&self, x: f64, y: f64) -> impl Iterator<Item = usize> + '_ {
         let cell = if self.side == 1 {
             &self.cells[0]
         } else {
-            let cx = self.cell(x, self.x0, self.sx);
-            let cy = self.cell(y, self.y0, self.sy);
-            &self.cells[cy * self.side + cx]
+            &self.cells[self.point_cell(x, y)]
         };
         cell.iter()
             .chain(self.everywhere.iter())
             .map(|&i| i as usize)
     }
+}
+
+/// The triangles by increasing rounded `x_min` (the minimum of the rounded `x` of their
+/// vertices), then number: the order of every list of the grid.
+fn by_xmin(fv: &[[f64; 2]], triangles: &[[usize; 3]]) -> impl Iterator<Item = usize> {
+    let xmin = |t: &[usize; 3]| t.iter().map(|&v| fv[v][0]).fold(f64::INFINITY, f64::min);
+    let mut keyed: Vec<(f64, usize)> = triangles
+        .iter()
+        .enumerate()
+        .map(|(i, t)| (xmin(t), i))
+        .collect();
+    keyed.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    keyed.into_iter().map(|(_, i)| i)
 }
 
 /// Whether every `λ` is `≥ 0`, from the numerators alone (the denominator is positive).
