@@ -120,6 +120,12 @@ impl Mesh {
             by(0).then_with(|| by(1)).then(a.cmp(&b))
         });
         let order: Vec<usize> = by_point.into_iter().map(|(_, v)| v).collect();
+        // The rank of each vertex's x among the distinct x of the vertices (from `order`).
+        let mut x_rank = vec![0u32; self.vertices.len()];
+        for w in order.windows(2) {
+            let step = pts.cmp(w[0], w[1], 0) != Ordering::Equal;
+            x_rank[w[1]] = x_rank[w[0]] + u32::from(step);
+        }
         for w in order.windows(2) {
             if pts.same_point(w[0], w[1]) {
                 out.push(MeshError::DuplicateVertex {
@@ -139,7 +145,7 @@ impl Mesh {
         let grid = self
             .grid
             .get_or_init(|| Grid::from_floats(&pts.near, &self.triangles));
-        self.check_overlaps(&pts, grid, &ccw, out);
+        self.check_overlaps(&pts, &x_rank, grid, &ccw, out);
         if out.len() >= MAX_PROBLEMS {
             return;
         }
@@ -152,9 +158,11 @@ impl Mesh {
     /// this way are kept (then sorted). The later ones are found in the grid: those listed in
     /// its cells (each pair in the first cell the two share) and those in `everywhere`,
     /// from where their rounded `x_min` reaches the triangle's to where it passes its `x_max`.
+    /// Exact `x` are compared by `x_rank`, each vertex's rank among the distinct `x`.
     fn check_overlaps(
         &self,
         pts: &Points,
+        x_rank: &[u32],
         grid: &Grid,
         ccw: &[Option<[usize; 3]>],
         out: &mut Vec<MeshError>,
@@ -165,9 +173,13 @@ impl Mesh {
             .iter()
             .map(|tri| {
                 let ext = |k: usize, want: Ordering| {
+                    let cmp = |v: usize, e: usize| match k {
+                        0 => x_rank[v].cmp(&x_rank[e]),
+                        _ => pts.cmp(v, e, 1),
+                    };
                     tri[1..]
                         .iter()
-                        .fold(tri[0], |e, &v| if pts.cmp(v, e, k) == want { v } else { e })
+                        .fold(tri[0], |e, &v| if cmp(v, e) == want { v } else { e })
                 };
                 [
                     ext(0, Ordering::Less),
@@ -190,20 +202,11 @@ impl Mesh {
                 ]
             })
             .collect();
-        let mut sweep: Vec<(f64, usize)> = (0..self.triangles.len())
+        let mut sweep: Vec<(u32, usize)> = (0..self.triangles.len())
             .filter(|&t| ccw[t].is_some())
-            .map(|t| (fbox[t][0], t))
+            .map(|t| (x_rank[boxes[t][0]], t))
             .collect();
-        sweep.sort_unstable_by(|&(x, t), &(y, u)| {
-            let by_x = if x < y {
-                Ordering::Less
-            } else if x > y {
-                Ordering::Greater
-            } else {
-                pts.cmp(boxes[t][0], boxes[u][0], 0)
-            };
-            by_x.then(t.cmp(&u))
-        });
+        sweep.sort_unstable();
         const NONE: u32 = u32::MAX;
         let mut rank = vec![NONE; self.triangles.len()];
         for (r, &(_, t)) in sweep.iter().enumerate() {
@@ -235,7 +238,7 @@ impl Mesh {
                             continue;
                         }
                     }
-                    if overlap(pts, &boxes, &fbox, ccw, t, u) {
+                    if overlap(pts, x_rank, &boxes, &fbox, ccw, t, u) {
                         hits.push((rank[u], u));
                     }
                 }
@@ -379,6 +382,7 @@ impl Mesh {
 /// exact `x_min` is not above `u`'s: their open boxes meet, and neither is separated.
 fn overlap(
     pts: &Points,
+    x_rank: &[u32],
     boxes: &[[usize; 4]],
     fbox: &[[f64; 4]],
     ccw: &[Option<[usize; 3]>],
@@ -386,12 +390,12 @@ fn overlap(
     u: usize,
 ) -> bool {
     let (bt, bu, ft, fu) = (boxes[t], boxes[u], fbox[t], fbox[u]);
-    // boxes[s][i] < boxes[r][j] exactly (coordinate k), the floats first
-    let less = |s: [usize; 4], fs: [f64; 4], i: usize, r: [usize; 4], fr: [f64; 4], j: usize| {
-        fs[i] < fr[j] || (!(fs[i] > fr[j]) && pts.exact[s[i]][i / 2] < pts.exact[r[j]][j / 2])
+    // y_min of one below y_max of the other, exactly, the floats first
+    let below = |s: [usize; 4], fs: [f64; 4], r: [usize; 4], fr: [f64; 4]| {
+        fs[2] < fr[3] || (!(fs[2] > fr[3]) && pts.exact[s[2]][1] < pts.exact[r[3]][1])
     };
     // x_min(t) ≤ x_min(u) < x_max(u) already
-    if !(less(bu, fu, 0, bt, ft, 1) && less(bu, fu, 2, bt, ft, 3) && less(bt, ft, 2, bu, fu, 3)) {
+    if !(x_rank[bu[0]] < x_rank[bt[1]] && below(bu, fu, bt, ft) && below(bt, ft, bu, fu)) {
         return false;
     }
     let (Some(a), Some(b)) = (ccw[t], ccw[u]) else {
