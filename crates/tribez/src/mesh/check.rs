@@ -391,8 +391,12 @@ fn overlap(
 ) -> bool {
     let (bt, bu, ft, fu) = (boxes[t], boxes[u], fbox[t], fbox[u]);
     // y_min of one below y_max of the other, exactly, the floats first
-    let below = |s: [usize; 4], fs: [f64; 4], r: [usize; 4], fr: [f64; 4]| {
-        fs[2] < fr[3] || (!(fs[2] > fr[3]) && pts.exact[s[2]][1] < pts.exact[r[3]][1])
+    let below = |s: [usize; 4], fs: [f64; 4], r: [usize; 4], fr: [f64; 4]| match fs[2]
+        .partial_cmp(&fr[3])
+    {
+        Some(Ordering::Less) => true,
+        Some(Ordering::Greater) => false,
+        _ => pts.exact[s[2]][1] < pts.exact[r[3]][1],
     };
     // x_min(t) ≤ x_min(u) < x_max(u) already
     if !(x_rank[bu[0]] < x_rank[bt[1]] && below(bu, fu, bt, ft) && below(bt, ft, bu, fu)) {
