@@ -801,7 +801,7 @@ impl Filter {
     /// Judge a Cartesian row, its barycentric coordinates computed in floats
     /// ([`cartesian::CartesianMap`]): first at the double-double point `λ̂ + lo` by the lean
     /// kernel, whose enclosure is as tight as at a barycentric row (`O(ε²)`), widened only for
-    /// the tiny radii `fine` ([`Filter::judge_double_double`]); when that leaves the row
+    /// the tiny radii `fine` (`Filter::judge_double_double`); when that leaves the row
     /// undecided, or there is no lean kernel, the widened stages at `λ̂`
     /// ([`Filter::judge_tight_uncertain`]). `tight` in the result: decided by the first.
     pub fn judge_cartesian(
