@@ -102,8 +102,10 @@ pub struct Judgement {
 
 impl std::fmt::Display for Judgement {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let d = |x: &BigRational| crate::number::to_decimal_string(x, 4);
-        let o = |x: &Option<BigRational>| x.as_ref().map_or("n/a".to_string(), d);
+        let o = |x: &Option<BigRational>| {
+            x.as_ref()
+                .map_or("n/a".to_string(), crate::number::ulps_decimal)
+        };
         writeln!(
             f,
             "{} under {} ({} {}, input as seen {})",

@@ -26,7 +26,7 @@ use tribez::hazmat::exact::word_point;
 use tribez::hazmat::float::Precision;
 use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::hazmat::io::points::read_points;
-use tribez::hazmat::number::{push_rational, to_decimal_string};
+use tribez::hazmat::number::{push_rational, ulps_decimal};
 use tribez::{Patch, PatchKind};
 
 // Arguments of `tribez eval` (a plain comment: see `Command`).
@@ -766,7 +766,7 @@ fn tuple(xs: &[BigRational]) -> String {
 }
 
 fn ulps_text(q: &Option<BigRational>) -> String {
-    q.as_ref().map_or("n/a".into(), |x| to_decimal_string(x, 4))
+    q.as_ref().map_or("n/a".into(), ulps_decimal)
 }
 
 /// One point's lines of the text report.

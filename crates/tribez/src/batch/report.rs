@@ -376,7 +376,7 @@ impl BatchReport {
         {
             out += &format!(
                 "\nworst row (the largest error, computed exactly): line {line}, {} ulp\n",
-                to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4)
+                crate::number::ulps_decimal(&BigRational::from_float(*u).unwrap_or_default())
             );
             for c in coords {
                 out += &format!("  [{}] {}\n", c.index, coord_text(c));

@@ -392,10 +392,9 @@ impl Measures {
 
     /// One line for people: `0.5 ulp, abs 1.1e-17, rel 5.5e-17, correctly rounded`.
     pub fn text(&self) -> String {
-        let d = |x: &BigRational| crate::number::to_decimal_string(x, 4);
         let mut parts = Vec::new();
         if let Some(u) = &self.ulps {
-            parts.push(format!("{} ulp", d(u)));
+            parts.push(format!("{} ulp", crate::number::ulps_decimal(u)));
         }
         parts.push(format!("abs {}", sci(&self.abs)));
         if let Some(r) = &self.rel {

@@ -356,7 +356,7 @@ impl ClaimsReport {
             if let Some((u, j, k)) = errors.iter().max_by(|a, b| a.0.total_cmp(&b.0)) {
                 out += &format!(
                     "  worst: {} ulp at {} / {}[{k}]\n",
-                    to_decimal_string(&BigRational::from_float(*u).unwrap_or_default(), 4),
+                    crate::number::ulps_decimal(&BigRational::from_float(*u).unwrap_or_default()),
                     j.file,
                     j.id
                 );

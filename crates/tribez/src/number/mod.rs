@@ -45,7 +45,7 @@ pub use parse::{
 };
 pub use print::{
     display_f32, display_f64, display_float, format_points, format_rational, format_tuple, hex_f32,
-    hex_f64, hex_float, push_decimal, push_rational, to_decimal_string,
+    hex_f64, hex_float, push_decimal, push_rational, to_decimal_string, ulps_decimal,
 };
 pub use round::{
     is_faithful, is_faithful_f32, is_faithful_f64, round_f32, round_f64, round_to, round_up_f64,

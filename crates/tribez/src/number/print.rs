@@ -358,6 +358,43 @@ fn fill_digits(buf: &mut [u8; 20], mut x: u64) -> usize {
 /// assert_eq!(d("f64:1.2345e-20", 5), "1.2345e-20");
 /// ```
 pub fn to_decimal_string(q: &BigRational, digits: usize) -> String {
+    decimal_text(q, digits)
+}
+
+/// A ULP figure for people: [`to_decimal_string`] to 4 significant digits, or to more (up to
+/// 17) while those would show a multiple of 1/2 up to 1024 that the figure is not. Such values
+/// are where verdicts turn (a rounding midpoint at 1/2, 1 ulp, the histogram's bucket bounds,
+/// `ulps=N` tolerances), so an error just below half an ulp is not shown as `0.5`.
+///
+/// ```
+/// use tribez::hazmat::number::{parse_rational, ulps_decimal};
+/// let u = |s| ulps_decimal(&parse_rational(s).unwrap());
+/// assert_eq!(u("1/2"), "0.5");
+/// assert_eq!(u("0.49999926609526346"), "0.499999");
+/// assert_eq!(u("1.00004"), "1.00004");
+/// assert_eq!(u("0.123456"), "0.1235");
+/// assert_eq!(u("3.99995"), "3.99995");
+/// assert_eq!(u("2103.8"), "2104"); // beyond 1024: 4 digits
+/// assert_eq!(u("0.4999999999999999999999"), "0.5"); // beyond 17 digits: the nearest text
+/// ```
+pub fn ulps_decimal(q: &BigRational) -> String {
+    let mut text = decimal_text(q, 4);
+    for digits in 5..=17 {
+        let shown = match super::parse_rational(&text) {
+            Ok(x) => x,
+            Err(_) => break,
+        };
+        let doubled = &shown * BigRational::from_integer(2.into());
+        let near = num_traits::Signed::abs(&shown) <= BigRational::from_integer(1024.into());
+        if !near || !doubled.is_integer() || &shown == q {
+            break;
+        }
+        text = decimal_text(q, digits);
+    }
+    text
+}
+
+fn decimal_text(q: &BigRational, digits: usize) -> String {
     let (n, d) = (q.numer(), q.denom());
     if d.is_zero() {
         return "nan".to_owned();
