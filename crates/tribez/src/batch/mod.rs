@@ -536,20 +536,19 @@ impl<'p> Accumulator<'p> {
                     .map(|(x, s)| x.text_value(s))
                     .collect()
             }
-            // memory rows: the exact value of the `f64` given, which is the float itself in an
-            // `f64` batch (`memory_num`); text rows always have a format
-            (Source::Memory, _) | (Source::Text(..), None) => inputs
+            _ => inputs
                 .iter()
                 .map(|x| match x {
                     Num::Value {
                         text_exact: Some(q),
                         ..
                     } => Some(q.clone()),
+                    // a memory row of an `f64` batch: the `f64` given is the float (`memory_num`)
                     Num::Value {
                         float,
                         text_exact: None,
-                    } => crate::number::exact_f64(*float),
-                    Num::NotFinite(_) => None,
+                    } if matches!(source, Source::Memory) => crate::number::exact_f64(*float),
+                    _ => None,
                 })
                 .collect(),
         }

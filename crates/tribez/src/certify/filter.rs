@@ -844,7 +844,8 @@ impl Filter {
         let sum = |f: &dyn Fn(usize) -> f64| (0..=m).map(f).sum::<f64>() * up;
         let sigma_hi = sum(&|k| p.hi[k].abs());
         let sigma = sum(&|k| p.hi[k].abs() + p.lo[k].abs());
-        let near = growth(n, sigma, sum(&|k| p.fine[k]));
+        let tau = sum(&|k| p.fine[k]);
+        let near = growth(n, sigma, tau);
         let far = growth(n, sigma_hi, sum(&|k| p.lo[k].abs() + p.fine[k]));
         // the kernel's weights per step are Σ(|hi_k| + |lo_k|)
         let absolute = self.mu_absolute_dd * self.geometric_sum(sigma).0 * (1.0 + R);
@@ -871,7 +872,7 @@ impl Filter {
             e.s_hi = (e.s_hi + moved_s) * (1.0 + 2.0 * EPS);
         }
         self.mark_zeros(&p.hi, enc);
-        let mut r = conclude(th, claimed, enc, sigma + sum(&|k| p.fine[k]));
+        let mut r = conclude(th, claimed, enc, sigma + tau);
         r.tight = enc.iter().all(|e| e.mu.is_finite());
         r
     }
