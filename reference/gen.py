@@ -1,0 +1,721 @@
+"""Random cases from a seed: patch files, claim files and `check --results` batches, each with the
+answer and the verdict the reference computes for it (docs/guide.md §3, §6, §7, §8).
+
+Every generated claim carries `expected`: {"verdict": "passed"|"FAILED", "exact": [...] or None,
+"kind": a short category used by the expected-failures list}.
+"""
+
+import random
+from fractions import Fraction as F
+
+import bezier as bz
+import floats
+from verdict import judge, casteljau_bound, bernstein_bound, faithful_pair
+
+PRECS = ["f64", "f32"]
+
+# Domains whose vertices are floats in both precisions, so that "the Cartesian point rounded,
+# then converted exactly" is the only rounding a Cartesian input sees. The first one is the
+# domain of issue 35 §1, where most points have barycentric coordinates that are not floats.
+DOMAINS2 = [
+    [[0, 0], [3, 0], [0, 3]],
+    [[1, 2], [7, 3], [2, 8]],  # Floater's triangle, theory §2
+    [[0, 0], [5, 0], [0, 7]],
+    [[-1, 0], [2, -1], [1, 3]],
+    [[0, 0], [1, 0], [0, 1]],
+]
+DOMAINS1 = [[[0], [3]], [[-1], [6]], [[2], [-5]]]
+DOMAINS3 = [[[0, 0, 0], [3, 0, 0], [0, 3, 0], [0, 0, 3]], [[1, 0, 0], [0, 5, 0], [0, 0, 7], [1, 1, 1]]]
+# strictly convex, counter-clockwise, integer vertices (S-patches, theory §12)
+POLYGONS = [
+    [[0, 0], [4, 0], [5, 3], [2, 5], [-1, 3]],
+    [[0, 0], [3, 0], [3, 3], [0, 3]],
+    [[0, 0], [5, 1], [1, 4]],
+    [[1, 0], [1, 1], [0, 1], [-1, 0], [-1, -1], [0, -1]],
+]
+
+
+class Gen:
+    def __init__(self, rng):
+        self.r = rng
+        self.good = False  # when set, every claimed value is the exact or correctly rounded one
+
+    def new_claim(self):
+        """Start a claim: about 40% of claims claim only correct values (exact or correctly
+        rounded), the rest mix correct, nearly correct and wrong values."""
+        self.good = self.r.random() < 0.4
+
+    # --- numbers -------------------------------------------------------------------------
+    def num_text(self, big=False):
+        """A random number text and its exact value: integers, p/q, short decimals, exponents."""
+        r = self.r
+        c = r.random()
+        if c < 0.3:
+            t = str(r.randint(-9, 9))
+        elif c < 0.6:
+            t = "%d/%d" % (r.randint(-20, 20), r.choice([2, 3, 4, 5, 6, 7, 9, 10, 11, 12]))
+        elif c < 0.85:
+            t = "%s%d.%s" % (r.choice(["", "-"]), r.randint(0, 5), "".join(r.choice("0123456789") for _ in range(r.randint(1, 4))))
+        elif c < 0.95:
+            t = "%s%de-%d" % (r.choice(["", "-"]), r.randint(1, 99), r.randint(1, 3))
+        else:
+            x = F(r.randint(-2**20, 2**20), 2 ** r.randint(0, 20))
+            t = floats.hex_text(x, "f64") if x != 0 else "0"
+        return t, floats.parse(t)
+
+    def float_text(self, x, prec):
+        styles = ["hex", "exact", "frac"] + (["short"] * 4 if prec == "f64" else [])
+        return floats.float_text(x, prec, self.r.choice(styles))
+
+    # --- patches -------------------------------------------------------------------------
+    def patch(self, kind=None, m=None, d=None):
+        """A random patch: (reference dict, file dict). kind: bezier, rational, spatch."""
+        r = self.r
+        kind = kind or r.choice(["bezier"] * 6 + ["rational"] * 2 + ["spatch"])
+        f = {}
+        if kind == "spatch":
+            poly = r.choice(POLYGONS)
+            n = r.randint(1, 2)
+            m = len(poly) - 1
+            f["polygon"] = [[str(x) for x in v] for v in poly]
+        else:
+            m = m if m is not None else r.choice([1, 2, 2, 2, 2, 3])
+            n = r.randint(1, 4 if m < 3 else 3)
+            if kind == "rational":
+                n = min(n, 3)
+        d = d if d is not None else r.choice([1, 2, 3])
+        pts, texts = {}, {}
+        for alpha in bz.indices(n, m):
+            vals = [self.num_text() for _ in range(d)]
+            texts[alpha] = [t for t, _ in vals]
+            pts[alpha] = [v for _, v in vals]
+        f["degree"] = n
+        f["control_points"] = {bz.key_text(a): texts[a] for a in bz.indices(n, m)}
+        P = {"n": n, "m": m, "d": d, "kind": kind, "points": pts, "texts": texts, "weights": None, "domain": None, "polygon": None}
+        if kind == "rational":
+            wt = {}
+            for alpha in bz.indices(n, m):
+                t = r.choice(["1", "2", "3", "1/2", "3/2", "0.3", "5/3", "7"])
+                wt[alpha] = floats.parse(t)
+                f.setdefault("weights", {})[bz.key_text(alpha)] = t
+            P["weights"] = wt
+        if kind == "spatch":
+            P["polygon"] = [[F(x) for x in v] for v in poly]
+        elif r.random() < 0.6:
+            dom = r.choice({1: DOMAINS1, 2: DOMAINS2, 3: DOMAINS3}[m])
+            if r.random() < 0.3:  # vertices in another order
+                dom = dom[:]
+                r.shuffle(dom)
+            P["domain"] = [[F(x) for x in v] for v in dom]
+            f["domain"] = [[str(x) for x in v] for v in dom]
+        return P, f
+
+    def rounded(self, P, prec):
+        """The patch as float code saw it: control points (for a rational patch the homogeneous
+        net (w c, w)) rounded once to prec (guide §5 eval --float, §7)."""
+        Q = dict(P)
+        if P["weights"] is None:
+            Q["points"] = {a: [floats.rn(x, prec) for x in v] for a, v in P["points"].items()}
+        else:
+            # keep the rounded homogeneous net as the net; evaluate() takes weights*points
+            Q["weights"] = {a: floats.rn(w, prec) for a, w in P["weights"].items()}
+            Q["points"] = {a: [floats.rn(P["weights"][a] * x, prec) / Q["weights"][a] for x in v] for a, v in P["points"].items()}
+        return Q
+
+    # --- points --------------------------------------------------------------------------
+    def bary_exact(self, m, inside=True):
+        """Random rational barycentric coordinates summing to 1."""
+        r = self.r
+        while True:
+            den = r.choice([2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 30, 100])
+            parts = [r.randint(0 if inside else -den // 2, den) for _ in range(m)]
+            last = den - sum(parts)
+            if inside and last < 0:
+                continue
+            return [F(p, den) for p in parts] + [F(last, den)]
+
+    def dec_text(self, x, digits):
+        """x written as a decimal with `digits` significant digits (rounded half even by str)."""
+        return "%.*g" % (digits, float(x)) if x != 0 else "0"
+
+    def point_text(self, x, prec):
+        """A text for an input coordinate x: exact (p/q), a short decimal, or 17 digits."""
+        c = self.r.random()
+        if prec is None or c < 0.3:
+            return floats.frac_text(x)
+        if c < 0.6:
+            return self.dec_text(x, self.r.choice([1, 2, 3]))
+        return self.dec_text(x, 17 if prec == "f64" else 9)
+
+    def cart_point(self, P):
+        """A Cartesian point (exact) inside the domain / polygon."""
+        if P["polygon"] is not None:
+            poly = P["polygon"]
+            while True:
+                ws = [F(self.r.randint(1, 9)) for _ in poly]
+                s = sum(ws)
+                p = [sum(w * v[i] for w, v in zip(ws, poly)) / s for i in range(2)]
+                if bz.inside_polygon(poly, p):
+                    return p
+        dom = bz.domain_of(P)
+        lam = self.bary_exact(P["m"], inside=P["weights"] is not None or self.r.random() < 0.8)
+        if self.r.random() < 0.3:  # a simple point: small integers or halves
+            lam = self.bary_exact(P["m"])
+        return [sum(l * v[i] for l, v in zip(lam, dom)) for i in range(P["m"])]
+
+    # --- claimed values ------------------------------------------------------------------
+    def claimed_float(self, q, prec):
+        """A claimed float near q: correctly rounded, the other neighbour, k steps off, or wrong."""
+        r = self.r
+        c = 0 if self.good else r.random()
+        rq = floats.rn(q, prec)
+        if c < 0.35:
+            y = rq
+        elif c < 0.5:
+            y = floats.step(rq, 1 if rq < q else -1, prec) if rq != q else floats.step(rq, r.choice([-1, 1]), prec)
+        elif c < 0.8:
+            y = floats.step(rq, r.choice([-3, -2, -1, 1, 2, 3]), prec)
+        elif c < 0.9:
+            y = floats.step(rq, r.choice([-1, 1]) * r.randint(4, 300), prec)
+        else:
+            y = floats.rn(q + F(r.randint(-100, 100), r.choice([7, 100, 1000])), prec)
+        if r.random() < 0.15:  # written as a longer decimal or as p/q, rounded by the reader
+            t = floats.frac_text(q) if r.random() < 0.5 else self.dec_text(y, 17 if prec == "f64" else 9)
+            return t, floats.rn(floats.parse(t), prec)
+        return self.float_text(y, prec), y
+
+    def claimed_exact(self, q):
+        r = self.r
+        c = 0 if self.good else r.random()
+        if c < 0.5:
+            y = q
+        elif c < 0.7:
+            y = q + F(r.choice([-1, 1]), r.choice([10**6, 10**12, 3 * 10**9, 2**40]))
+        elif c < 0.85:
+            t = self.dec_text(q, r.choice([6, 12, 17]))
+            return t, floats.parse(t)
+        else:
+            y = q + F(r.randint(-50, 50), r.choice([1, 7, 100]))
+        return floats.frac_text(y), y
+
+    def tolerance(self, prec, ys, qs, conds=None, bound=None, kinds=None):
+        """A tolerance text: a random kind, with a parameter that is either typical or exactly at
+        (or just inside) the largest error of the claimed values, so both sides of a boundary are
+        exercised."""
+        r = self.r
+        if kinds is None:
+            kinds = ["exact", "abs", "rel"] + (["ulps", "correctly_rounded", "faithful"] * 2 if prec else [])
+            if prec and conds is not None:
+                kinds += ["cond", "condK", "condK"]
+            if prec and bound is not None:
+                kinds += ["bound", "bound"]
+        kind = r.choice(kinds)
+        errs = [abs(y - q) for y, q in zip(ys, qs)]
+        at_edge = r.random() < 0.5
+        shrink = F(1) if r.random() < 0.5 else F(2**30 - 1, 2**30)
+
+        def edge(vals, typical):
+            vals = [v for v in vals if v is not None]
+            if at_edge and vals and max(vals) > 0:
+                return floats.frac_text(max(vals) * shrink)
+            return typical
+
+        if kind in ("exact", "correctly_rounded", "faithful", "bound", "cond"):
+            return kind
+        if kind == "abs":
+            return "abs=" + edge(errs, r.choice(["1e-15", "1e-6", "1/1000", "0", "1e-300"]))
+        if kind == "rel":
+            return "rel=" + edge([e / abs(q) if q != 0 else None for e, q in zip(errs, qs)], r.choice(["1e-16", "1e-7", "2e-16", "0"]))
+        if kind == "ulps":
+            return "ulps=" + edge([e / floats.ulp(q, prec) for e, q in zip(errs, qs)], r.choice(["0", "1/2", "1", "2", "3", "16", "0.75"]))
+        if kind == "condK":
+            eps = floats.EPS[prec]
+            return "cond=" + edge([e / (eps * c) if c else None for e, c in zip(errs, conds)], r.choice(["0", "1", "3", "9", "1/2"]))
+        raise AssertionError(kind)
+
+    # --- eval claims ---------------------------------------------------------------------
+    def eval_claim(self, P, cid):
+        r = self.r
+        prec = r.choice([None, "f64", "f64", "f32"])
+        self.new_claim()
+        claim = {"id": cid, "op": "eval", "source": "reference"}
+        spatch = P["polygon"] is not None
+        use_cart = spatch or r.random() < 0.5
+        info = {"op": "eval", "input": "cartesian" if use_cart else "at", "precision": prec, "patch_kind": P["kind"]}
+        if use_cart:
+            p = self.cart_point(P)
+            texts = [self.point_text(x, prec) for x in p]
+            claim["cartesian"] = texts
+            seen_p = [floats.parse(t) for t in texts]
+            if prec:
+                seen_p = [floats.rn(x, prec) for x in seen_p]
+        else:
+            lam = self.bary_exact(P["m"], inside=P["weights"] is not None or r.random() < 0.8)
+            texts = [self.point_text(x, prec) for x in lam]
+            vals = [floats.parse(t) for t in texts]
+            if prec is None and sum(vals) != 1:
+                texts = [floats.frac_text(x) for x in lam]
+                vals = lam
+            claim["at"] = texts
+            seen_lam = [floats.rn(x, prec) for x in vals] if prec else vals
+        Q = self.rounded(P, prec) if prec else P
+        if spatch:
+            if prec and not bz.inside_polygon(P["polygon"], seen_p):
+                return None
+            seen_lam = bz.wachspress(P["polygon"], seen_p)
+        elif use_cart:
+            seen_lam = bz.barycentric(bz.domain_of(P), seen_p)
+        info["lam_floats"] = all(floats.is_float(x, prec) for x in seen_lam) if prec else None
+        qs = bz.evaluate(Q, seen_lam)
+        conds, bound = None, None
+        algorithm = None
+        if prec and not spatch:
+            al = [abs(x) for x in seen_lam]
+            if P["weights"] is None:
+                conds = [sum(abs(Q["points"][a][i]) * bz.bernstein(a, al) for a in bz.indices(P["n"], P["m"])) for i in range(P["d"])]
+                algorithm = r.choice([None, "casteljau", "bernstein"])
+                if algorithm == "bernstein":
+                    N = len(bz.indices(P["n"], P["m"]))
+                    bound = [bernstein_bound(c, P["m"], P["n"], N, prec) for c in conds]
+                else:
+                    bound = [casteljau_bound(c, P["m"], P["n"], sum(al), prec) for c in conds]
+            else:
+                # rational: homogeneous net (w c, w) as seen; theory §14.1
+                hn = {a: [Q["weights"][a] * x for x in Q["points"][a]] for a in Q["points"]}
+                SW = sum(abs(Q["weights"][a]) * bz.bernstein(a, al) for a in hn)
+                D = sum(Q["weights"][a] * bz.bernstein(a, seen_lam) for a in hn)
+                K = (P["m"] + 1) * P["n"]
+                eps = floats.EPS[prec]
+                g = K * eps / (1 - K * eps)
+                conds, bound = [], []
+                for i in range(P["d"]):
+                    SX = sum(abs(hn[a][i]) * bz.bernstein(a, al) for a in hn)
+                    conds.append((SX + abs(qs[i]) * SW) / abs(D))
+                    eN, eD = g * SX, g * SW
+                    if abs(D) <= eD:
+                        bound = None
+                        break
+                    E1 = (eN + abs(qs[i]) * eD) / (abs(D) - eD)
+                    bound.append(E1 + eps * (abs(qs[i]) + E1) + floats.ETA[prec])
+        ys, ytexts = [], []
+        for q in qs:
+            t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+            ytexts.append(t)
+            ys.append(y)
+        if bound is not None:
+            # a bound is per coordinate; for the edge parameter use the bound itself
+            pass
+        tol = self.tolerance(prec, ys, qs, conds=conds, bound=bound)
+        if tol == "bound" and algorithm:
+            claim["algorithm"] = algorithm
+        if prec:
+            claim["precision"] = prec
+        if tol != "exact" or r.random() < 0.5:
+            claim["tolerance"] = tol
+        claim["expect"] = ytexts
+        K_default = (P["m"] + 1) * P["n"]
+        ok = all(judge(y, q, tol, prec, cond=conds[i] if conds else None, bound=bound[i] if bound else None, K_default=K_default) for i, (y, q) in enumerate(zip(ys, qs)))
+        info["tolerance"] = tol.split("=")[0]
+        return claim, {"verdict": "passed" if ok else "FAILED", "exact": [floats.frac_text(q) for q in qs], "info": info}
+
+
+# --- the other claim operations (exact values; guide §6) ------------------------------------
+
+def rational_derivative(P, lam, dirs):
+    """D_S p by Leibniz's rule on X = p W (theory §10): D_S p = (D_S X - Σ_{T ⊊ S} D_T p D_{S∖T} W)/W,
+    over subsets in increasing size; D_T of the nets by the blossom (theory §4, §7)."""
+    n, m = P["n"], P["m"]
+    hn = bz.homogeneous_net(P)
+    r = len(dirs)
+
+    def dnet(T):  # D_T of the homogeneous polynomial (X, W), |T| <= n, else 0
+        k = len(T)
+        if k > n:
+            return [F(0)] * (P["d"] + 1)
+        from math import factorial
+        v = bz.blossom_net(hn, n, m, [dirs[i] for i in T] + [lam] * (n - k))
+        f = factorial(n) // factorial(n - k)
+        return [f * x for x in v]
+
+    from itertools import combinations
+    W = dnet(())[-1]
+    memo = {}
+    for size in range(r + 1):
+        for S in combinations(range(r), size):
+            XS = dnet(S)[:-1]
+            acc = list(XS)
+            for tsize in range(size):
+                for T in combinations(S, tsize):
+                    rest = tuple(i for i in S if i not in T)
+                    dw = dnet(rest)[-1]
+                    acc = [a - memo[T][i] * dw for i, a in enumerate(acc)]
+            memo[S] = [a / W for a in acc]
+    return memo[tuple(range(r))]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+class OpsGen(Gen):
+    """Claims of the operations other than eval, judged with exact, abs= or rel= tolerances on
+    exact inputs (a precision is given only where every input is a float already)."""
+
+    def numbers_claim(self, claim, qs, info, prec=None):
+        """Claimed values for a flat list of exact numbers qs, a tolerance, and the verdict."""
+        ys, texts = [], []
+        for q in qs:
+            t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+            ys.append(y)
+            texts.append(t)
+        tol = self.tolerance(prec, ys, qs)
+        if prec:
+            claim["precision"] = prec
+        if tol != "exact" or self.r.random() < 0.5:
+            claim["tolerance"] = tol
+        ok = all(judge(y, q, tol, prec) for y, q in zip(ys, qs))
+        info["tolerance"] = tol.split("=")[0]
+        return texts, ok
+
+    def shape(self, texts, lengths):
+        out, i = [], 0
+        for L in lengths:
+            out.append(texts[i:i + L])
+            i += L
+        return out
+
+    def op_claim(self, P, cid, op):
+        r = self.r
+        n, m, d = P["n"], P["m"], P["d"]
+        self.new_claim()
+        claim = {"id": cid, "op": op, "source": "reference"}
+        info = {"op": op, "patch_kind": P["kind"], "precision": None}
+        rational = P["weights"] is not None
+        if op == "blossom":
+            args = [self.bary_exact(m, inside=r.random() < 0.7) for _ in range(n)]
+            claim["args"] = [[floats.frac_text(x) for x in a] for a in args]
+            qs = bz.blossom(P, args)
+            texts, ok = self.numbers_claim(claim, qs, info)
+            claim["expect"] = texts
+        elif op == "subpatch":
+            while True:
+                verts = [self.bary_exact(m, inside=r.random() < 0.8) for _ in range(m + 1)]
+                if bz.det([[F(1)] + v[1:] for v in verts]) != 0:
+                    break
+            claim["vertices"] = [[floats.frac_text(x) for x in v] for v in verts]
+            net = bz.subpatch(P, verts)
+            keys = bz.indices(n, m)
+            texts, ok = self.numbers_claim(claim, [x for a in keys for x in net[a]], info)
+            claim["expect"] = {bz.key_text(a): t for a, t in zip(keys, self.shape(texts, [d] * len(keys)))}
+            qs = [x for a in keys for x in net[a]]
+        elif op == "elevate":
+            by = r.randint(1, 2)
+            claim["by"] = by
+            net = bz.elevate(P, by)
+            keys = bz.indices(n + by, m)
+            qs = [x for a in keys for x in net[a]]
+            texts, ok = self.numbers_claim(claim, qs, info)
+            claim["expect"] = {bz.key_text(a): t for a, t in zip(keys, self.shape(texts, [d] * len(keys)))}
+        elif op == "derivative":
+            k = r.randint(1, min(n, 3) if not rational else 2)
+            dom = bz.domain_of(P)
+            if r.random() < 0.5:
+                lam = self.bary_exact(m, inside=True)
+                claim["at"] = [floats.frac_text(x) for x in lam]
+            else:
+                lam = self.bary_exact(m, inside=True)
+                p = [sum(l * v[i] for l, v in zip(lam, dom)) for i in range(m)]
+                claim["cartesian"] = [floats.frac_text(x) for x in p]
+            dirs = []
+            for _ in range(k):
+                if r.random() < 0.5:
+                    a, b = self.bary_exact(m, False), self.bary_exact(m, False)
+                    dv = [x - y for x, y in zip(a, b)]
+                    claim.setdefault("dirs", []).append([floats.frac_text(x) for x in dv])
+                else:
+                    vec = [F(r.randint(-5, 5), r.choice([1, 2, 3])) for _ in range(m)]
+                    dv = bz.directional(dom, vec)
+                    claim.setdefault("vectors", []).append([floats.frac_text(x) for x in vec])
+                dirs.append(dv)
+            # derivatives along directions commute, so dirs and vectors may come in any order
+            qs = rational_derivative(P, lam, dirs) if rational else bz.derivative(P, lam, dirs)
+            texts, ok = self.numbers_claim(claim, qs, info)
+            claim["expect"] = texts
+        elif op == "edge_curve":
+            i, j = r.sample(range(1, m + 2), 2)
+            claim["from"], claim["to"] = i, j
+            pts = bz.edge_curve(P, i, j)
+            qs = [x for p in pts for x in p]
+            texts, ok = self.numbers_claim(claim, qs, info)
+            claim["expect"] = self.shape(texts, [d] * len(pts))
+        elif op == "tangent":
+            lam = self.bary_exact(m, inside=True)
+            claim["at"] = [floats.frac_text(x) for x in lam]
+            dom = bz.domain_of(P)
+            ex = bz.directional(dom, [1, 0])
+            ey = bz.directional(dom, [0, 1])
+            der = (lambda ds: rational_derivative(P, lam, ds)) if rational else (lambda ds: bz.derivative(P, lam, ds))
+            part = r.choice(["point", "normal"])
+            claim["part"] = part
+            qs = bz.evaluate(P, lam) if part == "point" else cross(der([ex]), der([ey]))
+            texts, ok = self.numbers_claim(claim, qs, info)
+            claim["expect"] = texts
+        else:
+            raise AssertionError(op)
+        return claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
+    def free_claim(self, cid, op):
+        """`barycentric` and `direction`: claims with their own domain (no patch needed)."""
+        r = self.r
+        m = r.choice([1, 2, 2, 3])
+        dom = r.choice({1: DOMAINS1, 2: DOMAINS2, 3: DOMAINS3}[m])
+        self.new_claim()
+        claim = {"id": cid, "op": op, "source": "reference", "domain": [[str(x) for x in v] for v in dom]}
+        info = {"op": op, "patch_kind": None, "precision": None}
+        vec = [F(r.randint(-20, 20), r.choice([1, 2, 3, 7])) for _ in range(m)]
+        if op == "barycentric":
+            claim["point"] = [floats.frac_text(x) for x in vec]
+            qs = bz.barycentric([[F(x) for x in v] for v in dom], vec)
+        else:
+            claim["vector"] = [floats.frac_text(x) for x in vec]
+            qs = bz.directional([[F(x) for x in v] for v in dom], vec)
+        texts, ok = self.numbers_claim(claim, qs, info)
+        claim["expect"] = texts
+        return claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
+
+# --- inverse problems with rational answers (guide §5 intersect/locate/ray, §6) -------------
+
+def ipoint(r, d, lo=-8, hi=8):
+    return [F(r.randint(lo, hi)) for _ in range(d)]
+
+
+def linear_file(pts, keys):
+    return {"degree": 1, "control_points": {k: [floats.frac_text(x) for x in p] for k, p in zip(keys, pts)}}
+
+
+class InverseGen(Gen):
+    """intersect of two segments, locate on a linear triangle, ray on a flat triangle in R^3: cases
+    whose exact answers are rational (Cramer's rule), with integer data so that a precision rounds
+    nothing but the claimed values. Claims list parameter tuples (or a bare count)."""
+
+    def tuples_claim(self, claim, sols, info, prec, dim):
+        r = self.r
+        self.new_claim()
+        if prec:
+            claim["precision"] = prec
+        info["precision"] = prec
+        mode = r.random()
+        if mode < 0.1:
+            claim["expect"] = len(sols) + (r.choice([-1, 1]) if r.random() < 0.4 else 0)
+            claim["expect"] = max(claim["expect"], 0)
+            ok = claim["expect"] == len(sols)
+            info["tolerance"] = "count"
+            return ok
+        tuples = [list(s) for s in sols]
+        if r.random() < 0.15 and tuples:
+            tuples = []  # a missed solution
+        elif r.random() < 0.1:
+            tuples = tuples + [[F(r.randint(0, 8), 8) for _ in range(dim)]]  # an extra tuple
+        qs_all, ys_all, texts_all = [], [], []
+        for tup in tuples:
+            texts, ys = [], []
+            for q in tup:
+                t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+                texts.append(t)
+                ys.append(y)
+            texts_all.append(texts)
+            ys_all.append(ys)
+            qs_all.append(tup)
+        flat_y = [y for ys in ys_all for y in ys]
+        flat_q = [q for qs in qs_all for q in qs]
+        kinds = ["exact", "abs", "rel"] + (["ulps", "correctly_rounded", "faithful"] if prec else [])
+        tol = self.tolerance(prec, flat_y, flat_q, kinds=kinds) if flat_y else r.choice(["exact", "abs=1e-9"])
+        if tol != "exact" or r.random() < 0.5:
+            claim["tolerance"] = tol
+        info["tolerance"] = tol.split("=")[0]
+        claim["expect"] = texts_all
+        # pairing (guide §6): a tuple pairs with the exact solution nearest it when every
+        # coordinate is within 2^-20 max(1, |value|); with at most one exact solution, the claim
+        # holds when it lists exactly one tuple per solution, paired, each coordinate in tolerance
+        if len(ys_all) != len(sols):
+            return False
+        for ys, s in zip(ys_all, sols):
+            if any(abs(y - q) > F(1, 2**20) * max(1, abs(q)) for y, q in zip(ys, s)):
+                return False
+            if not all(judge(y, q, tol, prec) for y, q in zip(ys, s)):
+                return False
+        return True
+
+    def intersect_case(self, cid):
+        r = self.r
+        while True:
+            P0, P1, Q0, Q1 = (ipoint(r, 2) for _ in range(4))
+            a = [P1[i] - P0[i] for i in range(2)]
+            b = [Q1[i] - Q0[i] for i in range(2)]
+            D = -a[0] * b[1] + a[1] * b[0]
+            if D != 0:
+                break
+        c = [Q0[i] - P0[i] for i in range(2)]
+        s = (-c[0] * b[1] + c[1] * b[0]) / D
+        t = (a[0] * c[1] - a[1] * c[0]) / D
+        sols = [(s, t)] if 0 <= s <= 1 and 0 <= t <= 1 else []
+        files = {"a": linear_file([P0, P1], ["1,0", "0,1"]), "b": linear_file([Q0, Q1], ["1,0", "0,1"])}
+        claim = {"id": cid, "op": "intersect", "source": "reference", "patches": ["a", "b"]}
+        info = {"op": "intersect", "patch_kind": "segment"}
+        ok = self.tuples_claim(claim, sols, info, r.choice([None, "f64", "f32"]), 2)
+        return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
+    def locate_case(self, cid):
+        r = self.r
+        while True:
+            A, B, C = (ipoint(r, 2) for _ in range(3))
+            if bz.det([[1, 1, 1], [A[0], B[0], C[0]], [A[1], B[1], C[1]]]) != 0:
+                break
+        prec = r.choice([None, "f64", "f32"])
+        lam = self.bary_exact(2, inside=r.random() < 0.7)
+        pt = [sum(l * v[i] for l, v in zip(lam, [A, B, C])) for i in range(2)]
+        texts = [self.point_text(x, prec) for x in pt]
+        seen = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in texts]
+        lam = bz.barycentric([A, B, C], seen)  # the query as the code saw it
+        claim = {"id": cid, "op": "locate", "source": "reference", "point": texts}
+        anywhere = r.random() < 0.2
+        if anywhere:
+            claim["anywhere"] = True
+        sols = [(lam[1], lam[2])] if anywhere or min(lam) >= 0 else []
+        files = {"tri": linear_file([A, B, C], ["1,0,0", "0,1,0", "0,0,1"])}
+        info = {"op": "locate", "patch_kind": "linear"}
+        ok = self.tuples_claim(claim, sols, info, prec, 2)
+        return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
+    def ray_case(self, cid):
+        r = self.r
+        while True:
+            A, B, C = (ipoint(r, 3) for _ in range(3))
+            d = ipoint(r, 3, -3, 3)
+            e1 = [B[i] - A[i] for i in range(3)]
+            e2 = [C[i] - A[i] for i in range(3)]
+            M = [[e1[i], e2[i], -d[i]] for i in range(3)]
+            D = bz.det(M)
+            if D != 0:
+                break
+        lam = self.bary_exact(2, inside=r.random() < 0.7)
+        tau0 = F(r.randint(-2, 6), r.choice([1, 2, 4]))
+        target = [sum(l * v[i] for l, v in zip(lam, [A, B, C])) for i in range(3)]
+        o = [target[i] - tau0 * d[i] for i in range(3)]
+        prec = r.choice([None, "f64", "f32"])
+        texts = [self.point_text(x, prec) for x in o]
+        o = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in texts]
+        # solve o + tau d = A + s (B - A) + t (C - A) for the query as the code saw it
+        rhs = [o[i] - A[i] for i in range(3)]
+        sol = bz.cramer_3(M, rhs)
+        tau, s_, t_ = sol[2], sol[0], sol[1]
+        sols = [(tau, s_, t_)] if tau >= 0 and s_ >= 0 and t_ >= 0 and s_ + t_ <= 1 else []
+        claim = {"id": cid, "op": "ray", "source": "reference", "origin": texts, "direction": [floats.frac_text(x) for x in d]}
+        files = {"tri3": linear_file([A, B, C], ["1,0,0", "0,1,0", "0,0,1"])}
+        info = {"op": "ray", "patch_kind": "linear"}
+        ok = self.tuples_claim(claim, sols, info, prec, 3)
+        return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
+
+# --- `check --patch P --results FILE` batches (guide §8) ------------------------------------
+
+class BatchGen(Gen):
+    """A batch of results of another implementation, one row per point: barycentric (m+1) or
+    Cartesian (m, `--cartesian`) coordinates, then the d claimed values. Returns the file text,
+    the options, and the expected verdict of every row."""
+
+    def batch(self, nrows):
+        r = self.r
+        P, pf = self.patch(kind="bezier")
+        prec = r.choice([None, "f64", "f64", "f32"])
+        cart = r.random() < 0.5
+        fmt = r.choice(["csv", "csv", "jsonl", "json"])
+        Q = self.rounded(P, prec) if prec else P
+        dom = bz.domain_of(P)
+        rows = []
+        for _ in range(nrows):
+            self.new_claim()
+            if cart:
+                p = self.cart_point(P)
+                texts = [self.point_text(x, prec) for x in p]
+                seen = [floats.parse(t) for t in texts]
+                if prec:
+                    seen = [floats.rn(x, prec) for x in seen]
+                lam = bz.barycentric(dom, seen)
+            else:
+                lam0 = self.bary_exact(P["m"], inside=r.random() < 0.8)
+                texts = [self.point_text(x, prec) for x in lam0]
+                lam = [floats.parse(t) for t in texts]
+                if prec:
+                    lam = [floats.rn(x, prec) for x in lam]
+                elif sum(lam) != 1:
+                    texts = [floats.frac_text(x) for x in lam0]
+                    lam = lam0
+            qs = bz.evaluate(Q, lam)
+            al = [abs(x) for x in lam]
+            conds = [sum(abs(Q["points"][a][i]) * bz.bernstein(a, al) for a in bz.indices(P["n"], P["m"])) for i in range(P["d"])]
+            ys, yt = [], []
+            for q in qs:
+                t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+                ys.append(y)
+                yt.append(t)
+            bad = r.random() < 0.02  # a nan or an empty field fails the row (guide §8)
+            if bad:
+                yt[r.randrange(len(yt))] = r.choice(["nan", "inf", ""])
+            rows.append({"texts": texts + yt, "ys": ys, "qs": qs, "conds": conds, "lam": lam, "bad": bad})
+        kinds = ["exact", "abs", "rel"] + (["ulps", "correctly_rounded", "faithful", "cond", "condK", "bound"] if prec else [])
+        pick = r.choice(rows)
+        tol = self.tolerance(prec, pick["ys"], pick["qs"], conds=pick["conds"], kinds=kinds)
+        algorithm = r.choice(["casteljau", "bernstein"]) if tol == "bound" else None
+        N = len(bz.indices(P["n"], P["m"]))
+        K_default = (P["m"] + 1) * P["n"]
+        for row in rows:
+            if row["bad"]:
+                row["ok"] = False
+                continue
+            if tol == "bound":
+                if algorithm == "bernstein":
+                    bounds = [bernstein_bound(c, P["m"], P["n"], N, prec) for c in row["conds"]]
+                else:
+                    bounds = [casteljau_bound(c, P["m"], P["n"], sum(abs(x) for x in row["lam"]), prec) for c in row["conds"]]
+            else:
+                bounds = [None] * len(row["qs"])
+            row["ok"] = all(judge(y, q, tol, prec, cond=c, bound=b, K_default=K_default) for y, q, c, b in zip(row["ys"], row["qs"], row["conds"], bounds))
+        opts = []
+        if prec:
+            opts += ["--precision", prec]
+        if tol != "exact" or r.random() < 0.5:
+            opts += ["--tolerance", tol]
+        if algorithm:
+            opts += ["--algorithm", algorithm]
+        if cart:
+            opts += ["--cartesian"]
+        # the file; each row's line number
+        lines, row_lines = [], []
+        if fmt == "csv":
+            if r.random() < 0.3:
+                lines.append("# rows written by the reference")
+            for row in rows:
+                lines.append(",".join(row["texts"]))
+                row_lines.append(len(lines))
+            text = "\n".join(lines) + "\n"
+        elif fmt == "jsonl":
+            import json
+            for row in rows:
+                lines.append(json.dumps(row["texts"]))
+                row_lines.append(len(lines))
+            text = "\n".join(lines) + "\n"
+        else:
+            import json
+            text = "[\n" + ",\n".join("  " + json.dumps(row["texts"]) for row in rows) + "\n]\n"
+            row_lines = [i + 2 for i in range(len(rows))]
+        expected = {
+            "passed": sum(1 for row in rows if row["ok"]),
+            "failed": sum(1 for row in rows if not row["ok"]),
+            "failed_lines": [ln for ln, row in zip(row_lines, rows) if not row["ok"]],
+            "exit": 0 if all(row["ok"] for row in rows) else 1,
+            "info": {"op": "batch", "format": fmt, "cartesian": cart, "precision": prec, "tolerance": tol.split("=")[0],
+                     "lam_floats": all(floats.is_float(x, prec) for row in rows for x in row["lam"]) if prec else None},
+        }
+        return pf, text, "." + fmt, opts, expected
