@@ -31,10 +31,16 @@ def key_text(alpha):
     return ",".join(str(a) for a in alpha)
 
 
+_MULTI = {}
+
+
 def multinomial(alpha):
+    if alpha in _MULTI:
+        return _MULTI[alpha]
     r = factorial(sum(alpha))
     for a in alpha:
         r //= factorial(a)
+    _MULTI[alpha] = r
     return r
 
 

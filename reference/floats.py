@@ -36,26 +36,28 @@ def ulp(q, prec):
 
 
 def rn(q, prec):
-    """The float of precision `prec` nearest the rational q, ties to even, as a Fraction.
-    Raises OverflowError when it rounds to infinity."""
+    """The float of precision `prec` nearest the rational q, ties to even, as a Fraction
+    (theory §14.4, with integers only). Raises OverflowError when it rounds to infinity."""
     q = Fraction(q)
     if q == 0:
         return Fraction(0)
     p, emin, emax = FORMATS[prec]
-    sign = -1 if q < 0 else 1
-    a = abs(q)
-    e = max(floor_log2(a), emin)
-    scaled = a / Fraction(2) ** (e - p + 1)  # in [2^(p-1), 2^p), or below for subnormals
-    m = scaled.numerator // scaled.denominator
-    r = scaled - m
-    if r > Fraction(1, 2) or (r == Fraction(1, 2) and m % 2 == 1):
+    a, b = abs(q.numerator), q.denominator
+    e = max(floor_log2(Fraction(a, b)), emin)
+    # scaled = a / b / 2^(e-p+1) = num / den, split into m + r with 0 <= r < 1
+    shift = e - p + 1
+    num, den = (a, b << shift) if shift >= 0 else (a << -shift, b)
+    m, rem = divmod(num, den)
+    if 2 * rem > den or (2 * rem == den and m % 2 == 1):
         m += 1
     if m == 2**p:
         m = 2 ** (p - 1)
         e += 1
+        shift += 1
     if e > emax:
         raise OverflowError("rounds to infinity")
-    return sign * m * Fraction(2) ** (e - p + 1)
+    v = Fraction(m << shift) if shift >= 0 else Fraction(m, 1 << -shift)
+    return v if q > 0 else -v
 
 
 def is_float(q, prec):

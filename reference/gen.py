@@ -316,7 +316,8 @@ class Gen:
         K_default = (P["m"] + 1) * P["n"]
         ok = all(judge(y, q, tol, prec, cond=conds[i] if conds else None, bound=bound[i] if bound else None, K_default=K_default) for i, (y, q) in enumerate(zip(ys, qs)))
         info["tolerance"] = tol.split("=")[0]
-        return claim, {"verdict": "passed" if ok else "FAILED", "exact": [floats.frac_text(q) for q in qs], "info": info}
+        return claim, {"verdict": "passed" if ok else "FAILED", "exact": [floats.frac_text(q) for q in qs],
+                       "claimed": [floats.frac_text(y) for y in ys], "info": info}
 
 
 # --- the other claim operations (exact values; guide §6) ------------------------------------

@@ -133,7 +133,50 @@ def run_claims(tribez, workdir):
 
 def load_xfail():
     with open(os.path.join(HERE, "expected_failures.json")) as f:
-        return json.load(f)["expected_failures"]
+        return json.load(f)
+
+
+def run_regressions(tribez):
+    """Every case of reference/regressions/: a directory with one claim file (case.claims.*) and
+    expected.json {"issue", "claims": {id: {"verdict", "exact"}}}, or a batch (command.json
+    {"args": [...]} and expected.json {"exit", "passed", "failed"}). Returns [(name, reasons)]."""
+    out = []
+    rdir = os.path.join(HERE, "regressions")
+    for name in sorted(os.listdir(rdir)):
+        d = os.path.join(rdir, name)
+        if not os.path.isdir(d):
+            continue
+        with open(os.path.join(d, "expected.json")) as f:
+            exp = json.load(f)
+        reasons = []
+        if os.path.exists(os.path.join(d, "command.json")):
+            with open(os.path.join(d, "command.json")) as f:
+                args = json.load(f)["args"]
+            p = subprocess.run([tribez] + args + ["--format", "json"], cwd=d, capture_output=True, text=True)
+            if p.returncode != exp["exit"]:
+                reasons.append("exit status: tribez %d, expected %d" % (p.returncode, exp["exit"]))
+            if p.returncode in (0, 1):
+                s = json.loads(p.stdout)["summary"]
+                if (s.get("passed"), s.get("failed")) != (exp["passed"], exp["failed"]):
+                    reasons.append("counts: tribez %s/%s, expected %d/%d" % (s.get("passed"), s.get("failed"), exp["passed"], exp["failed"]))
+        else:
+            case = [fn for fn in os.listdir(d) if ".claims." in fn][0]
+            p = subprocess.run([tribez, "check", case, "--format", "json"], cwd=d, capture_output=True, text=True)
+            if p.returncode == 2:
+                reasons.append("tribez exited 2: " + p.stderr.strip())
+            else:
+                got = {c["id"]: c for c in json.loads(p.stdout)["claims"]}
+                for cid, e in exp["claims"].items():
+                    g = got.get(cid)
+                    if g is None:
+                        reasons.append("%s: no verdict" % cid)
+                        continue
+                    if g["verdict"] != e["verdict"]:
+                        reasons.append("%s: verdict: tribez %s, expected %s" % (cid, g["verdict"], e["verdict"]))
+                    if e.get("exact") is not None and g.get("exact") != e["exact"]:
+                        reasons.append("%s: exact value: tribez %s, expected %s" % (cid, g.get("exact"), e["exact"]))
+        out.append((name, reasons))
+    return out
 
 
 def xfail_reason(info, xfails):
@@ -153,6 +196,8 @@ def compare_claim(case, got):
         out.append("verdict: tribez %s, reference %s" % (got["verdict"], exp["verdict"]))
     if exp.get("exact") is not None and got.get("exact") != exp["exact"]:
         out.append("exact value: tribez %s, reference %s" % (got.get("exact"), exp["exact"]))
+    if exp.get("claimed") is not None and got.get("claimed") != exp["claimed"]:
+        out.append("claimed value as read: tribez %s, reference %s" % (got.get("claimed"), exp["claimed"]))
     return out
 
 
@@ -185,7 +230,8 @@ def main():
     try:
         claims, batches = generate(seed, a.claims, workdir)
         t1 = time.time()
-        xfails = load_xfail()
+        xf = load_xfail()
+        xfails = xf["expected_failures"]
         agreed = disagreed = xfailed = 0
         problems = []
 
@@ -223,8 +269,10 @@ def main():
                 fn = doc["patch"] if "patch" in doc else doc["patches"][pname]
                 files[fn] = c["patches"][pname]
             info = dict(c["expected"]["info"])
-            disagree("%s-%s" % (c["file"].split(".")[0], c["id"]), reasons, files,
-                     {"verdict": c["expected"]["verdict"], "exact": c["expected"]["exact"], "tribez": g and g["verdict"]}, info)
+            expected = {"issue": None, "found_by": "reference/run.py --seed %d" % seed, "category": info,
+                        "claims": {c["id"]: {"verdict": c["expected"]["verdict"], "exact": c["expected"]["exact"]}},
+                        "tribez_said": g and {"verdict": g["verdict"], "exact": g.get("exact")}}
+            disagree("%s-%s" % (c["file"].split(".")[0], c["id"]), reasons, files, expected, info)
         if got and rc != expected_rc:
             disagreed += 1
             problems.append("DISAGREEMENT exit status of `tribez check` on the claim files: %d, reference %d" % (rc, expected_rc))
@@ -254,6 +302,16 @@ def main():
                 disagree(os.path.basename(b["dir"]), reasons, files, exp, exp["info"])
             else:
                 agreed += b["n"]
+        regs = run_regressions(a.tribez)
+        for name, reasons in regs:
+            if not reasons:
+                agreed += 1
+            elif name in xf.get("regressions", {}):
+                xfailed += 1
+                problems.append("expected failure (%s) regression %s: %s" % (xf["regressions"][name], name, "; ".join(reasons)))
+            else:
+                disagreed += 1
+                problems.append("DISAGREEMENT regression %s: %s" % (name, "; ".join(reasons)))
         t2 = time.time()
         for line in problems:
             print(line)
@@ -262,7 +320,7 @@ def main():
             ops[c["expected"]["info"]["op"]] = ops.get(c["expected"]["info"]["op"], 0) + 1
         npass = sum(1 for c in claims if c["expected"]["verdict"] == "passed")
         print("covered: " + ", ".join("%s %d" % kv for kv in sorted(ops.items())) + ", batch rows %d in %d batches" % (nrows, len(batches)))
-        print("reference verdicts: %d claims passed, %d failed; batches: %d rows" % (npass, len(claims) - npass, nrows))
+        print("reference verdicts: %d claims passed, %d failed; batches: %d rows; %d regression cases" % (npass, len(claims) - npass, nrows, len(regs)))
         print("%d agreed, %d disagreed, %d expected failures (seed %d; generated in %.1f s, checked in %.1f s)" % (agreed, disagreed, xfailed, seed, t1 - t0, t2 - t1))
         if a.keep:
             print("generated files kept in " + workdir)
