@@ -417,6 +417,34 @@ class OpsGen(Gen):
             qs = [x for a in keys for x in net[a]]
             texts, ok = self.numbers_claim(claim, qs, info)
             claim["expect"] = {bz.key_text(a): t for a, t in zip(keys, self.shape(texts, [d] * len(keys)))}
+        elif op in ("halve", "subdivide"):
+            # pieces as subpatches (guide §5 halve/subdivide, theory §5): halve edge I,J gives the
+            # parent with corner J replaced by the midpoint, then with corner I replaced; subdivide
+            # at U gives piece k = the parent with corner k replaced by U (U inside, on no facet);
+            # midpoints (triangles) gives [a1,m12,m13], [m12,a2,m23], [m13,m23,a3], [m23,m13,m12]
+            E = [list(bz.unit(m, k)) for k in range(m + 1)]
+            if op == "halve":
+                i, j = r.sample(range(1, m + 2), 2)
+                claim["edge"] = [i, j]
+                mid = [F(a + b, 2) for a, b in zip(E[i - 1], E[j - 1])]
+                pieces = [E[:j - 1] + [mid] + E[j:], E[:i - 1] + [mid] + E[i:]]
+            elif m == 2 and r.random() < 0.4:
+                claim["midpoints"] = True
+                mp = lambda a, b: [F(x + y, 2) for x, y in zip(E[a], E[b])]
+                pieces = [[E[0], mp(0, 1), mp(0, 2)], [mp(0, 1), E[1], mp(1, 2)], [mp(0, 2), mp(1, 2), E[2]], [mp(1, 2), mp(0, 2), mp(0, 1)]]
+            else:
+                while True:
+                    U = self.bary_exact(m, inside=True)
+                    if min(U) > 0:
+                        break
+                claim["at"] = [floats.frac_text(x) for x in U]
+                pieces = [E[:k] + [U] + E[k + 1:] for k in range(m + 1)]
+            keys = bz.indices(n, m)
+            nets = [bz.subpatch(P, v) for v in pieces]
+            qs = [x for net in nets for a in keys for x in net[a]]
+            texts, ok = self.numbers_claim(claim, qs, info)
+            per = len(keys) * d
+            claim["expect"] = [{bz.key_text(a): t for a, t in zip(keys, self.shape(texts[i * per:(i + 1) * per], [d] * len(keys)))} for i in range(len(nets))]
         elif op == "derivative":
             k = r.randint(1, min(n, 3) if not rational else 2)
             dom = bz.domain_of(P)
