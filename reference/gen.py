@@ -748,3 +748,87 @@ class BatchGen(Gen):
                      "lam_floats": all(floats.is_float(x, prec) for row in rows for x in row["lam"]) if prec else None},
         }
         return pf, text, "." + fmt, opts, expected
+
+
+# --- `check --locate-results` / `--ray-results` batches (guide §8) ---------------------------
+
+class InverseBatchGen(InverseGen):
+    """Rows of another implementation's answers to locate (x, y, then pairs or `none`) on a linear
+    triangle, or to ray (origin, direction, then the first hit or `none`) on a flat triangle in R^3.
+    Each row is judged like a locate/ray claim with the batch's tolerance."""
+
+    def row_claim(self, sols, prec, tol, dim):
+        """Claimed tuples for a row and whether the row holds."""
+        r = self.r
+        self.new_claim()
+        tuples = [list(s) for s in sols]
+        if not self.good:
+            c = r.random()
+            if c < 0.1 and tuples:
+                tuples = []
+            elif c < 0.2 and (dim == 2 or not tuples):  # a ray row claims one hit at most
+                tuples = tuples + [[F(r.randint(0, 8), 8) for _ in range(dim)]]
+        texts, ok = [], len(tuples) == len(sols)
+        for tup, s in zip(tuples, sols + [None] * len(tuples)):
+            for q in tup:
+                t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+                texts.append(t)
+            ys = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in texts[-dim:]]
+            if s is not None and ok:
+                if any(abs(y - q) > F(1, 2**20) * max(1, abs(q)) for y, q in zip(ys, s)):
+                    ok = False
+                elif not all(judge(y, q, tol, prec) for y, q in zip(ys, s)):
+                    ok = False
+        return (texts if texts else [r.choice(["none", "none", ""])]), ok
+
+    def batch(self, kind, nrows):
+        r = self.r
+        prec = r.choice([None, "f64", "f32"])
+        tol = r.choice(["exact", "abs=1e-9", "rel=1e-12"] + (["ulps=1", "ulps=4", "correctly_rounded", "faithful"] if prec else []))
+        while True:
+            A, B, C = (ipoint(r, 3 if kind == "ray" else 2) for _ in range(3))
+            if kind == "locate" and bz.det([[1, 1, 1], [A[0], B[0], C[0]], [A[1], B[1], C[1]]]) != 0:
+                break
+            if kind == "ray" and any(cross([B[i] - A[i] for i in range(3)], [C[i] - A[i] for i in range(3)])):
+                break
+        rows = []
+        for _ in range(nrows):
+            if kind == "locate":
+                lam = self.bary_exact(2, inside=r.random() < 0.7)
+                pt = [sum(l * v[i] for l, v in zip(lam, [A, B, C])) for i in range(2)]
+                qtexts = [self.point_text(x, prec) for x in pt]
+                seen = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in qtexts]
+                lam = bz.barycentric([A, B, C], seen)
+                sols = [(lam[1], lam[2])] if min(lam) >= 0 else []
+                dim = 2
+            else:
+                while True:
+                    d = ipoint(r, 3, -3, 3)
+                    e1 = [B[i] - A[i] for i in range(3)]
+                    e2 = [C[i] - A[i] for i in range(3)]
+                    M = [[e1[i], e2[i], -d[i]] for i in range(3)]
+                    if bz.det(M) != 0:
+                        break
+                lam = self.bary_exact(2, inside=r.random() < 0.7)
+                tau0 = F(r.randint(-2, 6), r.choice([1, 2, 4]))
+                target = [sum(l * v[i] for l, v in zip(lam, [A, B, C])) for i in range(3)]
+                o = [target[i] - tau0 * d[i] for i in range(3)]
+                otexts = [self.point_text(x, prec) for x in o]
+                o = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in otexts]
+                s_, t_, tau = bz.cramer_3(M, [o[i] - A[i] for i in range(3)])
+                sols = [(tau, s_, t_)] if tau >= 0 and s_ >= 0 and t_ >= 0 and s_ + t_ <= 1 else []
+                qtexts = otexts + [floats.frac_text(x) for x in d]
+                dim = 3
+            ctexts, ok = self.row_claim(sols, prec, tol, dim)
+            rows.append((qtexts + ctexts, ok))
+        text = "\n".join(",".join(t) for t, _ in rows) + "\n"
+        pf = linear_file([A, B, C], ["1,0,0", "0,1,0", "0,0,1"])
+        opts = ["--" + kind + "-results", "rows.csv"]
+        if prec:
+            opts += ["--precision", prec]
+        if tol != "exact" or r.random() < 0.5:
+            opts += ["--tolerance", tol]
+        failed_lines = [i + 1 for i, (_, ok) in enumerate(rows) if not ok]
+        return pf, text, opts, {"passed": nrows - len(failed_lines), "failed": len(failed_lines), "failed_lines": failed_lines,
+                                "exit": 1 if failed_lines else 0,
+                                "info": {"op": kind + "-batch", "format": "csv", "precision": prec, "tolerance": tol.split("=")[0]}}

@@ -28,11 +28,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fractions import Fraction  # noqa: E402
 
 import floats  # noqa: E402
-from gen import BatchGen, InverseGen, OpsGen  # noqa: E402
+from gen import BatchGen, InverseBatchGen, InverseGen, OpsGen  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
+CHUNK = 200  # claim files per `tribez check` run (bounds the size of one JSON report)
 OPS = ["blossom", "subpatch", "elevate", "derivative", "edge_curve", "tangent", "halve", "subdivide"]
 
 
@@ -44,9 +45,7 @@ def write_json(path, obj):
 def generate(seed, nclaims, workdir):
     """Write the cases; return (claim cases, batch cases)."""
     rng = random.Random(seed)
-    ops, inv, bat = OpsGen(rng), InverseGen(rng), BatchGen(rng)
-    cdir = os.path.join(workdir, "claims")
-    os.makedirs(cdir)
+    ops, inv, bat, ibat = OpsGen(rng), InverseGen(rng), BatchGen(rng), InverseBatchGen(rng)
     claims = []  # dicts: file, id, claim, patches {name: file dict}, expected
     batches = []
     budget_batch = nclaims // 5
@@ -89,6 +88,10 @@ def generate(seed, nclaims, workdir):
                 file_claims.append((claim, exp))
         if not file_claims:
             continue
+        # claim files in chunks of CHUNK files, one `tribez check` run per chunk
+        chunk = "c%04d" % ((nfile - 1) // CHUNK)
+        cdir = os.path.join(workdir, "claims", chunk)
+        os.makedirs(cdir, exist_ok=True)
         pnames = {}
         for pname, pfile in patches.items():
             fn = "%s.%s.json" % (name, pname)
@@ -102,34 +105,39 @@ def generate(seed, nclaims, workdir):
         doc["claim"] = [cl for cl, _ in file_claims]
         write_json(os.path.join(cdir, name + ".claims.json"), doc)
         for cl, exp in file_claims:
-            claims.append({"file": name + ".claims.json", "id": cl["id"], "claim": cl, "doc": doc, "patches": patches, "expected": exp})
+            claims.append({"chunk": chunk, "file": name + ".claims.json", "id": cl["id"], "claim": cl, "doc": doc, "patches": patches, "expected": exp})
     rows = 0
     nb = 0
     while rows < budget_batch:
         nb += 1
         n = rng.randint(5, 40)
-        pf, text, ext, opts, exp = bat.batch(n)
         bdir = os.path.join(workdir, "batch%03d" % nb)
         os.makedirs(bdir)
+        if rng.random() < 0.7:  # check --patch P --results FILE
+            pf, text, ext, opts, exp = bat.batch(n)
+            rowsfile = "rows" + ext
+            opts = ["--results", rowsfile] + opts
+        else:  # check --patch P --locate-results / --ray-results FILE
+            pf, text, opts, exp = ibat.batch(rng.choice(["locate", "ray"]), n)
+            rowsfile = "rows.csv"
         write_json(os.path.join(bdir, "patch.json"), pf)
-        with open(os.path.join(bdir, "rows" + ext), "w") as f:
+        with open(os.path.join(bdir, rowsfile), "w") as f:
             f.write(text)
-        batches.append({"dir": bdir, "rows": "rows" + ext, "opts": opts, "expected": exp, "n": n})
+        batches.append({"dir": bdir, "rows": rowsfile, "opts": opts, "expected": exp, "n": n})
         rows += n
     return claims, batches
 
 
-def run_claims(tribez, workdir):
-    """`tribez check claims --format json` on every claim file at once. If that exits 2 (bad input
+def run_chunk(tribez, cdir):
+    """`tribez check DIR --format json` on one chunk of claim files. If that exits 2 (bad input
     somewhere), every file is run alone, so that one refused file costs only its own claims.
     Returns (exit status, {(file, id): report of the claim}, {file: error line})."""
-    p = subprocess.run([tribez, "check", "claims", "--format", "json"], cwd=workdir, capture_output=True, text=True)
+    p = subprocess.run([tribez, "check", ".", "--format", "json"], cwd=cdir, capture_output=True, text=True)
     got, errors = {}, {}
     if p.returncode != 2:
         for c in json.loads(p.stdout)["claims"]:
             got[(os.path.basename(c["file"]), c["id"])] = c
         return p.returncode, got, errors
-    cdir = os.path.join(workdir, "claims")
     for fn in sorted(os.listdir(cdir)):
         if not fn.endswith(".claims.json"):
             continue
@@ -140,6 +148,21 @@ def run_claims(tribez, workdir):
         for c in json.loads(q.stdout)["claims"]:
             got[(os.path.basename(c["file"]), c["id"])] = c
     return 2, got, errors
+
+
+def run_claims(tribez, workdir, jobs):
+    """Every chunk, `jobs` at a time; returns ({chunk: exit status}, reports, errors)."""
+    from concurrent.futures import ThreadPoolExecutor
+    root = os.path.join(workdir, "claims")
+    chunks = sorted(os.listdir(root))
+    with ThreadPoolExecutor(max_workers=jobs) as ex:
+        results = list(ex.map(lambda c: run_chunk(tribez, os.path.join(root, c)), chunks))
+    rcs, got, errors = {}, {}, {}
+    for c, (rc, g, e) in zip(chunks, results):
+        rcs[c] = rc
+        got.update(g)
+        errors.update(e)
+    return rcs, got, errors
 
 
 def load_xfail():
@@ -167,7 +190,8 @@ def run_regressions(tribez):
             if p.returncode != exp["exit"]:
                 reasons.append("exit status: tribez %d, expected %d" % (p.returncode, exp["exit"]))
             if p.returncode in (0, 1):
-                s = json.loads(p.stdout)["summary"]
+                rep = json.loads(p.stdout)
+                s = rep.get("summary", rep)
                 if (s.get("passed"), s.get("failed")) != (exp["passed"], exp["failed"]):
                     reasons.append("counts: tribez %s/%s, expected %d/%d" % (s.get("passed"), s.get("failed"), exp["passed"], exp["failed"]))
         else:
@@ -233,6 +257,7 @@ def main():
     ap.add_argument("--tribez", default=os.path.join(ROOT, "target", "debug", "tribez"))
     ap.add_argument("--out", default="reference-disagreements", help="where disagreements are written")
     ap.add_argument("--keep", action="store_true", help="keep the generated files (printed)")
+    ap.add_argument("--jobs", type=int, default=2, help="tribez processes at a time (default 2)")
     a = ap.parse_args()
     seed = a.seed if a.seed is not None else random.SystemRandom().randrange(2**32)
     print("reference: seed %d, %d claims, tribez %s" % (seed, a.claims, a.tribez), flush=True)
@@ -245,6 +270,7 @@ def main():
         xfails = xf["expected_failures"]
         agreed = disagreed = xfailed = 0
         problems = []
+        xfail_chunks = set()  # chunks whose exit status an expected failure may change
 
         def disagree(label, reasons, files, expected, info):
             nonlocal disagreed, xfailed
@@ -252,15 +278,16 @@ def main():
             d = save_case(a.out, label, files, expected)
             if why:
                 xfailed += 1
+                if info.get("chunk"):
+                    xfail_chunks.add(info["chunk"])
                 tag = "expected failure (%s)" % why
             else:
                 disagreed += 1
                 tag = "DISAGREEMENT"
-            cat = ",".join("%s=%s" % (k, info[k]) for k in sorted(info) if info[k] is not None)
+            cat = ",".join("%s=%s" % (k, info[k]) for k in sorted(info) if info[k] is not None and k != "chunk")
             problems.append("%s %s (%s): %s [%s]" % (tag, label, cat, "; ".join(reasons), d))
 
-        rc, got, errors = run_claims(a.tribez, workdir)
-        expected_rc = 0 if all(c["expected"]["verdict"] == "passed" for c in claims) else 1
+        rcs, got, errors = run_claims(a.tribez, workdir, a.jobs)
         for c in claims:
             g = got.get((c["file"], c["id"]))
             reasons = ["tribez exited 2 on its file: " + errors[c["file"]]] if c["file"] in errors else compare_claim(c, g)
@@ -276,17 +303,21 @@ def main():
             for pname in used:
                 fn = doc["patch"] if "patch" in doc else doc["patches"][pname]
                 files[fn] = c["patches"][pname]
-            info = dict(c["expected"]["info"])
+            info = dict(c["expected"]["info"], chunk=c["chunk"])
             expected = {"issue": None, "found_by": "reference/run.py --seed %d" % seed, "category": info,
                         "claims": {c["id"]: {"verdict": c["expected"]["verdict"], "exact": c["expected"]["exact"]}},
                         "tribez_said": g and {"verdict": g["verdict"], "exact": g.get("exact")}}
             disagree("%s-%s" % (c["file"].split(".")[0], c["id"]), reasons, files, expected, info)
-        if rc != expected_rc:
-            disagreed += 1
-            problems.append("DISAGREEMENT exit status of `tribez check` on the claim files: %d, reference %d" % (rc, expected_rc))
+        for chunk, rc in sorted(rcs.items()):
+            expected_rc = 0 if all(c["expected"]["verdict"] == "passed" for c in claims if c["chunk"] == chunk) else 1
+            if rc != expected_rc and chunk in xfail_chunks:
+                xfailed += 1
+            elif rc != expected_rc:
+                disagreed += 1
+                problems.append("DISAGREEMENT exit status of `tribez check` on the claim files of %s: %d, reference %d" % (chunk, rc, expected_rc))
         nrows = 0
         for b in batches:
-            cmd = [a.tribez, "check", "--patch", "patch.json", "--results", b["rows"], "--format", "json"] + b["opts"]
+            cmd = [a.tribez, "check", "--patch", "patch.json", "--format", "json"] + b["opts"]
             p = subprocess.run(cmd, cwd=b["dir"], capture_output=True, text=True)
             exp = b["expected"]
             nrows += b["n"]
@@ -295,18 +326,18 @@ def main():
                 reasons.append("exit status: tribez %d, reference %d %s" % (p.returncode, exp["exit"], p.stderr.strip()[:200]))
             if p.returncode in (0, 1):
                 rep = json.loads(p.stdout)
-                s = rep["summary"]
+                s = rep.get("summary", rep)  # inverse batches give their counts at the top level
                 if (s.get("passed"), s.get("failed")) != (exp["passed"], exp["failed"]):
                     reasons.append("counts: tribez passed %s failed %s, reference passed %d failed %d" % (s.get("passed"), s.get("failed"), exp["passed"], exp["failed"]))
                 lines = sorted(f.get("line") for f in rep.get("failures", []))
-                if exp["info"]["format"] != "json" and not rep.get("failures_not_listed") and lines != exp["failed_lines"]:
+                if exp["info"].get("format") != "json" and not rep.get("failures_not_listed") and lines != exp["failed_lines"]:
                     reasons.append("failed lines: tribez %s, reference %s" % (lines, exp["failed_lines"]))
             if reasons:
                 with open(os.path.join(b["dir"], b["rows"])) as f:
                     text = f.read()
                 with open(os.path.join(b["dir"], "patch.json")) as f:
                     pf = json.load(f)
-                files = {"patch.json": pf, b["rows"]: text, "command.txt": "tribez check --patch patch.json --results %s %s\n" % (b["rows"], " ".join(b["opts"]))}
+                files = {"patch.json": pf, b["rows"]: text, "command.json": {"args": ["check", "--patch", "patch.json"] + b["opts"]}}
                 disagree(os.path.basename(b["dir"]), reasons, files, exp, exp["info"])
             else:
                 agreed += b["n"]
