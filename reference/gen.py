@@ -569,6 +569,8 @@ class InverseGen(Gen):
         # holds when it lists exactly one tuple per solution, paired, each coordinate in tolerance
         if len(ys_all) != len(sols):
             return False
+        # claimed tuples in the order of the exact ones: pair each with its own solution (the
+        # solutions here are far apart compared with 2^-20, so nearest pairing gives the same)
         for ys, s in zip(ys_all, sols):
             if any(abs(y - q) > F(1, 2**20) * max(1, abs(q)) for y, q in zip(ys, s)):
                 return False
@@ -592,6 +594,43 @@ class InverseGen(Gen):
         files = {"a": linear_file([P0, P1], ["1,0", "0,1"]), "b": linear_file([Q0, Q1], ["1,0", "0,1"])}
         claim = {"id": cid, "op": "intersect", "source": "reference", "patches": ["a", "b"]}
         info = {"op": "intersect", "patch_kind": "segment"}
+        ok = self.tuples_claim(claim, sols, info, r.choice([None, "f64", "f32"]), 2)
+        return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
+    def parabola_case(self, cid):
+        """A quadratic curve A (a parabola: control points not collinear) and a segment B on the line
+        through A(s1) and A(s2), or on the tangent at A(s1) (s1 = s2, a tangential point). A line
+        meets a parabola in at most two points, so the exact answer is {(s_i, t_i)} restricted to
+        [0, 1]^2, all rational; every coordinate is dyadic, so a precision rounds nothing."""
+        r = self.r
+        while True:
+            C = [ipoint(r, 2) for _ in range(3)]
+            if bz.det([[1, 1, 1], [C[0][0], C[1][0], C[2][0]], [C[0][1], C[1][1], C[2][1]]]) != 0:
+                break
+        A = {"n": 2, "m": 1, "points": {(2, 0): C[0], (1, 1): C[1], (0, 2): C[2]}, "weights": None}
+        at = lambda s: bz.evaluate(A, [1 - s, s])
+        s1 = F(r.randint(-2, 10), 8)
+        tangent = r.random() < 0.25
+        s2 = s1 if tangent else F(r.choice([k for k in range(-2, 11) if F(k, 8) != s1]), 8)
+        p1 = at(s1)
+        if tangent:
+            dvec = bz.derivative(A, [1 - s1, s1], [[-1, 1]])
+        else:
+            dvec = [x - y for x, y in zip(at(s2), p1)]
+        while True:
+            a, b = F(r.randint(-6, 6), 4), F(r.randint(-6, 6), 4)
+            if a != b:
+                break
+        B0 = [p + a * v for p, v in zip(p1, dvec)]
+        B1 = [p + b * v for p, v in zip(p1, dvec)]
+        cands = {(s1, -a / (b - a))}
+        if not tangent:
+            cands.add((s2, (1 - a) / (b - a)))
+        sols = sorted(c for c in cands if 0 <= c[0] <= 1 and 0 <= c[1] <= 1)
+        files = {"a": linear_file(C, ["2,0", "1,1", "0,2"]), "b": linear_file([B0, B1], ["1,0", "0,1"])}
+        files["a"]["degree"] = 2
+        claim = {"id": cid, "op": "intersect", "source": "reference", "patches": ["a", "b"]}
+        info = {"op": "intersect", "patch_kind": "parabola-tangent" if tangent else "parabola"}
         ok = self.tuples_claim(claim, sols, info, r.choice([None, "f64", "f32"]), 2)
         return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
