@@ -634,6 +634,47 @@ class InverseGen(Gen):
         ok = self.tuples_claim(claim, sols, info, r.choice([None, "f64", "f32"]), 2)
         return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
+    def join_case(self, cid):
+        """Two triangle patches over triangles sharing an edge (guide §5 join, theory §8): A over
+        [a1, a2, a3], B over [a1, a2, v] with v across the edge; B is the extension of A (the
+        subpatch of A over B's triangle) with one control point of row ρ (last index ρ) changed,
+        or none. B's first r+1 rows agree with the extension exactly for r < ρ, so max_smoothness
+        is ρ - 1 (-1: not C0), or n when nothing changed; c0 and c1 follow."""
+        r = self.r
+        n = r.randint(1, 3)
+        d = r.choice([1, 2, 3])
+        dom = [[F(x) for x in v] for v in r.choice(DOMAINS2)]
+        a1, a2, a3 = dom
+        # v: a3 reflected through the edge midpoint, moved along the edge: across the edge
+        mid = [(a1[i] + a2[i]) / 2 for i in range(2)]
+        shift = F(r.randint(-2, 2), 2)
+        v = [2 * mid[i] - a3[i] + shift * (a2[i] - a1[i]) for i in range(2)]
+        A = {"n": n, "m": 2, "d": d, "points": {}, "weights": None, "domain": dom}
+        for alpha in bz.indices(n, 2):
+            A["points"][alpha] = [F(r.randint(-9, 9), r.choice([1, 2, 3])) for _ in range(d)]
+        verts = [bz.barycentric(dom, p) for p in (a1, a2, v)]
+        Bnet = bz.subpatch(A, verts)
+        rho = r.choice([None] + list(range(n + 1)))
+        if rho is not None:
+            alpha = r.choice([a for a in bz.indices(n, 2) if a[2] == rho])
+            Bnet[alpha] = [x + (F(r.randint(1, 5), r.choice([1, 7])) if i == 0 else 0) for i, x in enumerate(Bnet[alpha])]
+        ms = n if rho is None else rho - 1
+        cp = lambda net: {bz.key_text(a): [floats.frac_text(x) for x in net[a]] for a in bz.indices(n, 2)}
+        files = {"a": {"degree": n, "control_points": cp(A["points"]), "domain": [[floats.frac_text(x) for x in p] for p in dom]},
+                 "b": {"degree": n, "control_points": cp(Bnet), "domain": [[floats.frac_text(x) for x in p] for p in (a1, a2, v)]}}
+        part = r.choice(["max_smoothness", "c0", "c1"])
+        truth = {"max_smoothness": ms, "c0": ms >= 0, "c1": ms >= 1}[part]
+        self.new_claim()
+        if self.good or r.random() < 0.4:
+            claimed = truth
+        elif part == "max_smoothness":
+            claimed = r.choice([x for x in range(-1, n + 1) if x != ms])
+        else:
+            claimed = not truth
+        claim = {"id": cid, "op": "join", "source": "reference", "patches": ["a", "b"], "part": part, "expect": claimed}
+        info = {"op": "join", "patch_kind": "bezier", "tolerance": "exact"}
+        return files, claim, {"verdict": "passed" if claimed == truth else "FAILED", "exact": None, "info": info}
+
     def locate_case(self, cid):
         r = self.r
         while True:

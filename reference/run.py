@@ -76,7 +76,7 @@ def generate(seed, nclaims, workdir):
                 file_claims.append(ops.free_claim("%s-x%d" % (op, k), op))
         else:  # inverse problems: each claim with its own patches
             for k in range(rng.randint(3, 8)):
-                kind = rng.choice(["intersect", "parabola", "locate", "ray"])
+                kind = rng.choice(["intersect", "parabola", "locate", "ray", "join"])
                 files, claim, exp = getattr(inv, kind + "_case")("%s-%d" % (kind, k))
                 for pname, pfile in files.items():
                     pn = "%s%d" % (pname, k)
