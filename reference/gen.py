@@ -71,8 +71,11 @@ class Gen:
     def patch(self, kind=None, m=None, d=None):
         """A random patch: (reference dict, file dict). kind: bezier, rational, spatch."""
         r = self.r
-        kind = kind or r.choice(["bezier"] * 6 + ["rational"] * 2 + ["spatch"])
+        kind = kind or r.choice(["bezier"] * 6 + ["rational"] * 2 + ["spatch", "functional"])
         f = {}
+        if kind == "functional":  # one ordinate per control point over a triangle (theory §13)
+            m, d = 2, 1
+            f["kind"] = "functional"
         if kind == "spatch":
             poly = r.choice(POLYGONS)
             n = r.randint(1, 2)
@@ -101,7 +104,7 @@ class Gen:
             P["weights"] = wt
         if kind == "spatch":
             P["polygon"] = [[F(x) for x in v] for v in poly]
-        elif r.random() < 0.6:
+        elif r.random() < 0.6 or kind == "functional":
             dom = r.choice({1: DOMAINS1, 2: DOMAINS2, 3: DOMAINS3}[m])
             if r.random() < 0.3:  # vertices in another order
                 dom = dom[:]
@@ -393,7 +396,9 @@ class OpsGen(Gen):
         info = {"op": op, "patch_kind": P["kind"], "precision": None}
         rational = P["weights"] is not None
         if op == "blossom":
-            args = [self.bary_exact(m, inside=r.random() < 0.7) for _ in range(n)]
+            # outside the simplex only for polynomial patches: a rational blossom is undefined
+            # where the weight blossom W vanishes, which positive weights exclude only inside
+            args = [self.bary_exact(m, inside=rational or r.random() < 0.7) for _ in range(n)]
             claim["args"] = [[floats.frac_text(x) for x in a] for a in args]
             qs = bz.blossom(P, args)
             texts, ok = self.numbers_claim(claim, qs, info)
@@ -674,6 +679,26 @@ class InverseGen(Gen):
         claim = {"id": cid, "op": "join", "source": "reference", "patches": ["a", "b"], "part": part, "expect": claimed}
         info = {"op": "join", "patch_kind": "bezier", "tolerance": "exact"}
         return files, claim, {"verdict": "passed" if claimed == truth else "FAILED", "exact": None, "info": info}
+
+    def height_case(self, cid):
+        """`ray` with `height` (x, y) on a functional patch: (z, s, t) with z = f(x, y) and (s, t) the
+        last two barycentric coordinates of (x, y) (the parameters, as for locate); none outside
+        the domain (guide §6)."""
+        r = self.r
+        P, pf = self.patch(kind="functional")
+        prec = r.choice([None, "f64", "f32"])
+        dom = P["domain"]
+        lam = self.bary_exact(2, inside=r.random() < 0.75)
+        pt = [sum(l * v[i] for l, v in zip(lam, dom)) for i in range(2)]
+        texts = [self.point_text(x, prec) for x in pt]
+        seen = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in texts]
+        Q = self.rounded(P, prec) if prec else P
+        lam = bz.barycentric(dom, seen)
+        sols = [(bz.evaluate(Q, lam)[0], lam[1], lam[2])] if min(lam) >= 0 else []
+        claim = {"id": cid, "op": "ray", "source": "reference", "height": texts}
+        info = {"op": "ray-height", "patch_kind": "functional"}
+        ok = self.tuples_claim(claim, sols, info, prec, 3)
+        return {"hill": pf}, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
     def locate_case(self, cid):
         r = self.r
