@@ -768,8 +768,10 @@ class BatchGen(Gen):
         Q = self.rounded(P, prec) if prec else P
         dom = bz.domain_of(P)
         rows = []
+        all_good = r.random() < 0.35  # a batch of correct (exact or correctly rounded) values
         for _ in range(nrows):
             self.new_claim()
+            self.good = self.good or all_good
             if cart:
                 p = self.cart_point(P)
                 texts = [self.point_text(x, prec) for x in p]
@@ -794,7 +796,7 @@ class BatchGen(Gen):
                 t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
                 ys.append(y)
                 yt.append(t)
-            bad = r.random() < 0.02  # a nan or an empty field fails the row (guide §8)
+            bad = not all_good and r.random() < 0.02  # a nan or an empty field fails the row (guide §8)
             if bad:
                 yt[r.randrange(len(yt))] = r.choice(["nan", "inf", ""])
             rows.append({"texts": texts + yt, "ys": ys, "qs": qs, "conds": conds, "lam": lam, "bad": bad})
@@ -866,6 +868,7 @@ class InverseBatchGen(InverseGen):
         """Claimed tuples for a row and whether the row holds."""
         r = self.r
         self.new_claim()
+        self.good = self.good or self.all_good
         tuples = [list(s) for s in sols]
         if not self.good:
             c = r.random()
@@ -897,6 +900,7 @@ class InverseBatchGen(InverseGen):
             if kind == "ray" and any(cross([B[i] - A[i] for i in range(3)], [C[i] - A[i] for i in range(3)])):
                 break
         rows = []
+        self.all_good = r.random() < 0.35
         for _ in range(nrows):
             if kind == "locate":
                 lam = self.bary_exact(2, inside=r.random() < 0.7)
