@@ -28,6 +28,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fractions import Fraction  # noqa: E402
 
 import floats  # noqa: E402
+import selftest  # noqa: E402
 from gen import BatchGen, InverseBatchGen, InverseGen, OpsGen  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -265,6 +266,7 @@ def main():
     seed = a.seed if a.seed is not None else random.SystemRandom().randrange(2**32)
     print("reference: seed %d, %d claims, tribez %s" % (seed, a.claims, a.tribez), flush=True)
     t0 = time.time()
+    selftest.run(seed)  # the reference checks itself first (floats against the platform, theory's examples)
     workdir = tempfile.mkdtemp(prefix="tribez-reference-")
     try:
         claims, batches = generate(seed, a.claims, workdir)
