@@ -11,7 +11,6 @@ Multi-index part k belongs to vertex k; barycentric points have m+1 coordinates.
 """
 
 from fractions import Fraction
-from itertools import combinations
 from math import factorial
 
 

@@ -10,7 +10,7 @@ from fractions import Fraction as F
 
 import bezier as bz
 import floats
-from verdict import judge, casteljau_bound, bernstein_bound, faithful_pair
+from verdict import bernstein_bound, casteljau_bound, judge
 
 PRECS = ["f64", "f32"]
 
