@@ -283,18 +283,20 @@ class Gen:
                 else:
                     bound = [casteljau_bound(c, P["m"], P["n"], sum(al), prec) for c in conds]
             else:
-                # rational: homogeneous net (w c, w) as seen; theory §14.1
+                # rational: homogeneous net (w c, w) as seen; theory §14.1: de Casteljau's bound
+                # (γ_K Σ|·|B(|λ|) plus its underflow term) on numerator and denominator, then
+                # |ŷ − q| ≤ E_1 + ε(|q| + E_1) + η with E_1 = (e_N + |q| e_D)/(|D| − e_D)
                 hn = {a: [Q["weights"][a] * x for x in Q["points"][a]] for a in Q["points"]}
                 SW = sum(abs(Q["weights"][a]) * bz.bernstein(a, al) for a in hn)
                 D = sum(Q["weights"][a] * bz.bernstein(a, seen_lam) for a in hn)
-                K = (P["m"] + 1) * P["n"]
                 eps = floats.EPS[prec]
-                g = K * eps / (1 - K * eps)
                 conds, bound = [], []
                 for i in range(P["d"]):
                     SX = sum(abs(hn[a][i]) * bz.bernstein(a, al) for a in hn)
                     conds.append((SX + abs(qs[i]) * SW) / abs(D))
-                    eN, eD = g * SX, g * SW
+                    # e_N, e_D: de Casteljau's bound on each net, with its underflow term
+                    eN = casteljau_bound(SX, P["m"], P["n"], sum(al), prec)
+                    eD = casteljau_bound(SW, P["m"], P["n"], sum(al), prec)
                     if abs(D) <= eD:
                         bound = None
                         break
