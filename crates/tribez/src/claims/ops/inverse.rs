@@ -809,7 +809,7 @@ fn hall_violator(i: usize, adj: &[Vec<usize>], left: &[Option<usize>], n_right: 
 /// The verdict is that of a matching: claimed tuple `i` may be matched with exact solution `j`
 /// when every coordinate lies within the pairing radius ([`MATCH_RADIUS`]) and the tolerance
 /// accepts every coordinate of `i` against the algebraic value of `j`. The claim holds when a
-/// maximum matching of that bipartite graph ([`maximum_matching`], Hopcroft–Karp) pairs every
+/// maximum matching of that bipartite graph (Hopcroft and Karp's algorithm) pairs every
 /// claimed tuple and every exact solution, each with a distinct partner (so the counts agree);
 /// whether it does is independent of the order of the tuples. Otherwise every tuple and solution
 /// the matching leaves unpaired is a finding: an unpaired tuple is compared with the nearest
