@@ -5,7 +5,8 @@
 //!
 //! 1. rounds the patch's numbers to the precision, as the float code holds them (control
 //!    points; for a rational patch the homogeneous net `(w c, w)`; for an S-patch the polygon
-//!    too), and the input to the precision (a no-op for floats of that precision);
+//!    too), and the input to the precision (a no-op for floats of that precision); a Cartesian
+//!    input ([`JudgeInput::Cartesian`]) is then converted exactly to barycentric coordinates;
 //! 2. evaluates exactly at the input as seen, with the numbers as seen (barycentric coordinates
 //!    that do not sum to 1, as `(0.5, 0.1, 0.4)` in binary does not, evaluate the homogeneous
 //!    form, which is what the float code computes);
@@ -34,6 +35,34 @@
 //! // one ULP off in the first coordinate is not correctly rounded
 //! let off = [0.4444444444444445, 0.5555555555555555, 0.8055555555555555];
 //! assert!(!judge(&patch, &input, &off, &tol, Precision::F64).unwrap().passed);
+//! ```
+//!
+//! A float program given a **Cartesian** point of the patch's domain is judged with
+//! [`judge_cartesian`] ([`JudgeInput::Cartesian`]): the point is rounded to the precision, then
+//! converted exactly to barycentric coordinates, and the verdict uses the exact value there. Those
+//! coordinates are rationals, never rounded: in the triangle (0,0), (3,0), (0,3) the point (1, 1)
+//! is (1/3, 1/3, 1/3). On the plane `21 λ0 + 67 λ1 − 2 λ2` the value there is
+//! (21 + 67 − 2)/3 = 86/3; its binade ULP is 2^-48 (16 ≤ 86/3 < 32), and 86·2^48 ≡ 2 (mod 3), so
+//! 86/3 lies 2/3 ulp above one float and 1/3 ulp below the next, its correct rounding:
+//!
+//! ```
+//! use tribez::{Patch, Precision, Tolerance, judge_cartesian, parse_rational};
+//! let q = |s: &str| parse_rational(s).unwrap();
+//! let plane = Patch::from_json(r#"{"degree": 1,
+//!     "control_points": {"1,0,0": ["21"], "0,1,0": ["67"], "0,0,1": ["-2"]},
+//!     "domain": [["0", "0"], ["3", "0"], ["0", "3"]]}"#).unwrap();
+//! let tol = Tolerance::parse("correctly_rounded").unwrap();
+//! let j = judge_cartesian(&plane, &[1.0, 1.0], &[28.666666666666668], &tol, Precision::F64)
+//!     .unwrap();
+//! assert_eq!(j.input_seen, vec![q("1/3"), q("1/3"), q("1/3")]);
+//! assert_eq!(j.coordinates[0].exact, q("86/3"));
+//! assert_eq!(j.coordinates[0].ulps, Some(q("1/3")));
+//! assert!(j.passed);
+//! // the float below, 2/3 ulp away, is not correctly rounded
+//! let j = judge_cartesian(&plane, &[1.0, 1.0], &[28.666666666666664], &tol, Precision::F64)
+//!     .unwrap();
+//! assert_eq!(j.coordinates[0].ulps, Some(q("2/3")));
+//! assert!(!j.passed);
 //! ```
 
 use num_rational::BigRational;
@@ -147,9 +176,30 @@ impl std::fmt::Display for Judgement {
     }
 }
 
+/// The point a float program evaluated at, as it was given to the program ([`judge_input`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum JudgeInput<'a> {
+    /// The kind's own coordinates: the `m + 1` barycentric coordinates of a patch over a simplex
+    /// (any sum: the homogeneous form is evaluated), the Cartesian point `(x, y)` of an S-patch.
+    /// Each is rounded to the precision (a no-op for floats of it) and judged there.
+    Native(&'a [f64]),
+    /// A Cartesian point `x` of the patch's domain (`m` coordinates; `(x, y)` for an S-patch),
+    /// rounded to the precision (a no-op for floats of it) and then converted **exactly** to
+    /// barycentric coordinates with the patch's domain, `λ = D⁻¹ (x, 1)` by Cramer's rule
+    /// (docs/theory.md §2; the reference triangle when the patch has no domain). The exact value,
+    /// the condition number `Σ|c_α| B_α(|λ|)` and the a-priori bound are those at that exact `λ`,
+    /// which is in general not a tuple of floats (`(1, 1)` in the triangle `(0,0), (3,0), (0,3)`
+    /// is `(1/3, 1/3, 1/3)`); it is never rounded. This is how claim files (`cartesian` with a
+    /// `precision`, docs/guide.md §7) and `check --results --cartesian` batches judge a point.
+    /// For an S-patch, whose input is Cartesian, the same as [`JudgeInput::Native`].
+    Cartesian(&'a [f64]),
+}
+
 /// Judge a float result: `patch` evaluated by a float program of `precision` at `input` (as the
 /// program saw it: floats of the precision) gave `claimed`; does `tolerance` accept it? The
-/// float program is the kind's default (de Casteljau); see the module documentation.
+/// float program is the kind's default (de Casteljau); see the module documentation. `input` is
+/// in the kind's own coordinates ([`JudgeInput::Native`]); for a Cartesian point of a patch over
+/// a simplex, see [`judge_cartesian`].
 pub fn judge(
     patch: &Patch,
     input: &[f64],
@@ -158,6 +208,35 @@ pub fn judge(
     precision: Precision,
 ) -> Result<Judgement, Error> {
     judge_with(patch, input, claimed, tolerance, precision, None)
+}
+
+/// [`judge`] at a Cartesian point `point` of the patch's domain ([`JudgeInput::Cartesian`]):
+/// the point is rounded to the precision and converted exactly to barycentric coordinates, and
+/// the verdict uses the exact value there. `Judgement::input_seen` holds those exact barycentric
+/// coordinates.
+pub fn judge_cartesian(
+    patch: &Patch,
+    point: &[f64],
+    claimed: &[f64],
+    tolerance: &Tolerance,
+    precision: Precision,
+) -> Result<Judgement, Error> {
+    judge_input(
+        patch,
+        default_algorithm(patch),
+        JudgeInput::Cartesian(point),
+        claimed,
+        tolerance,
+        precision,
+        None,
+    )
+}
+
+/// The kind's default float algorithm (the first of its float program's).
+fn default_algorithm(patch: &Patch) -> Algorithm {
+    patch
+        .float()
+        .map_or(Algorithm::Casteljau, |f| f.float_algorithms()[0])
 }
 
 /// [`judge`], also measuring the claim against the exact value at the `intended` exact input
@@ -170,11 +249,14 @@ pub fn judge_with(
     precision: Precision,
     intended: Option<&[BigRational]>,
 ) -> Result<Judgement, Error> {
-    let algorithm = patch
-        .float()
-        .map_or(Algorithm::Casteljau, |f| f.float_algorithms()[0]);
     judge_algorithm(
-        patch, algorithm, input, claimed, tolerance, precision, intended,
+        patch,
+        default_algorithm(patch),
+        input,
+        claimed,
+        tolerance,
+        precision,
+        intended,
     )
 }
 
@@ -226,14 +308,33 @@ impl Side {
     }
 }
 
+/// The input of [`exact_side`], in the kind's own coordinates.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum SideInput<'a> {
+    /// Floats as given to the program: rounded to the precision (a no-op for floats of it).
+    Floats(&'a [f64]),
+    /// The exact input as seen, already rounded where rounding applies: the exact barycentric
+    /// coordinates of a rounded Cartesian point (in general not floats), used as they are.
+    Seen(&'a [BigRational]),
+}
+
+impl SideInput<'_> {
+    fn len(&self) -> usize {
+        match self {
+            SideInput::Floats(x) => x.len(),
+            SideInput::Seen(x) => x.len(),
+        }
+    }
+}
+
 /// The exact side of judging `patch`'s float program of `precision` running `algorithm` at
 /// `input` with `tolerance`: the checks, then the exact value at the input as seen, the exact
 /// value at the `intended` input, the condition numbers and the bound. The one path of
-/// [`judge_algorithm`] and of `eval` claims with a precision ([`crate::claims`]).
+/// [`judge_input`] and of `eval` claims with a precision ([`crate::claims`]).
 pub(crate) fn exact_side(
     patch: &Patch,
     algorithm: Algorithm,
-    input: &[f64],
+    input: SideInput<'_>,
     tolerance: &Tolerance,
     precision: Precision,
     intended: Option<&[BigRational]>,
@@ -284,24 +385,9 @@ pub(crate) fn exact_side(
             },
         ));
     }
-    let exact_input: Vec<BigRational> = input
-        .iter()
-        .map(|&x| {
-            crate::number::exact_f64(x).ok_or((
-                Part::Input,
-                Refusal::NotFinite {
-                    what: "input",
-                    value: x,
-                },
-            ))
-        })
-        .collect::<Result<_, _>>()?;
     let program = float
         .float_program(precision)
         .map_err(|e| (Part::Patch, e.into()))?;
-    let seen_input = program
-        .round_input(&exact_input)
-        .map_err(|e| (Part::Input, e.into()))?;
     let bounds = program.error_bound().ok_or((
         Part::Patch,
         Refusal::Unsupported {
@@ -309,7 +395,16 @@ pub(crate) fn exact_side(
             what: Lacks::ErrorBound,
         },
     ))?;
-    let seen = bounds.seen(algorithm, &seen_input);
+    let seen = match input {
+        SideInput::Floats(input) => {
+            let exact_input = exact_floats(input)?;
+            let seen_input = program
+                .round_input(&exact_input)
+                .map_err(|e| (Part::Input, e.into()))?;
+            bounds.seen(algorithm, &seen_input)
+        }
+        SideInput::Seen(input) => bounds.seen_exact(algorithm, input),
+    };
     if tolerance.is_cond() && !seen.cond_tolerance {
         return Err((
             Part::Tolerance,
@@ -362,12 +457,90 @@ pub(crate) fn exact_side(
     })
 }
 
+/// The exact values of floats; an error naming the first that is not finite.
+fn exact_floats(xs: &[f64]) -> Result<Vec<BigRational>, (Part, Refusal)> {
+    xs.iter()
+        .map(|&x| {
+            crate::number::exact_f64(x).ok_or((
+                Part::Input,
+                Refusal::NotFinite {
+                    what: "input",
+                    value: x,
+                },
+            ))
+        })
+        .collect()
+}
+
+/// A Cartesian point of a patch over a simplex, as the program saw it: its floats rounded to
+/// `precision`, then converted exactly to barycentric coordinates with the patch's domain. Also
+/// converts the `intended` exact Cartesian point. (`None`: an S-patch, whose input is Cartesian.)
+#[allow(clippy::type_complexity)]
+fn cartesian_seen(
+    patch: &Patch,
+    point: &[f64],
+    precision: Precision,
+    intended: Option<&[BigRational]>,
+) -> Result<Option<(Vec<BigRational>, Option<Vec<BigRational>>)>, Refusal> {
+    let InputSpace::Barycentric { m } = patch.shape().input else {
+        return Ok(None);
+    };
+    let size = |what, found| Refusal::Size {
+        what,
+        expected: m,
+        found,
+    };
+    if point.len() != m {
+        return Err(size("Cartesian coordinates of the input", point.len()));
+    }
+    if let Some(i) = intended.filter(|i| i.len() != m) {
+        return Err(size("Cartesian coordinates of the intended input", i.len()));
+    }
+    let rounded = exact_floats(point)
+        .map_err(|(_, e)| e)?
+        .iter()
+        .map(|q| crate::certify::measures::as_float(q, precision))
+        .collect::<Option<Vec<_>>>()
+        .ok_or(Refusal::Core(crate::error::CoreError::Overflows {
+            what: "an input",
+            precision: precision.name(),
+        }))?;
+    let exact = patch.exact();
+    let lambda = exact.cartesian_input(&rounded)?;
+    let intended = intended.map(|i| exact.cartesian_input(i)).transpose()?;
+    Ok(Some((lambda, intended)))
+}
+
 /// [`judge_with`] for a named float `algorithm` of the kind (a polynomial patch also has the
 /// direct Bernstein form, [`Algorithm::Bernstein`], whose bound differs).
 pub fn judge_algorithm(
     patch: &Patch,
     algorithm: Algorithm,
     input: &[f64],
+    claimed: &[f64],
+    tolerance: &Tolerance,
+    precision: Precision,
+    intended: Option<&[BigRational]>,
+) -> Result<Judgement, Error> {
+    judge_input(
+        patch,
+        algorithm,
+        JudgeInput::Native(input),
+        claimed,
+        tolerance,
+        precision,
+        intended,
+    )
+}
+
+/// The judge with every choice: the float `algorithm`, the `input` in the kind's own
+/// coordinates or as a Cartesian point of the patch's domain ([`JudgeInput`]), and the
+/// `intended` exact input in the same coordinates as `input` (a Cartesian point for
+/// [`JudgeInput::Cartesian`]), whose exact value the claim is also measured against.
+pub fn judge_input(
+    patch: &Patch,
+    algorithm: Algorithm,
+    input: JudgeInput<'_>,
     claimed: &[f64],
     tolerance: &Tolerance,
     precision: Precision,
@@ -381,8 +554,29 @@ pub fn judge_algorithm(
             found: claimed.len(),
         }));
     }
-    let side = exact_side(patch, algorithm, input, tolerance, precision, intended)
-        .map_err(|(_, e)| Error::from(e))?;
+    let cartesian = match input {
+        JudgeInput::Cartesian(point) => cartesian_seen(patch, point, precision, intended)?,
+        JudgeInput::Native(_) => None,
+    };
+    let side = match (&cartesian, input) {
+        (Some((lambda, intended)), _) => exact_side(
+            patch,
+            algorithm,
+            SideInput::Seen(lambda),
+            tolerance,
+            precision,
+            intended.as_deref(),
+        ),
+        (None, JudgeInput::Native(x) | JudgeInput::Cartesian(x)) => exact_side(
+            patch,
+            algorithm,
+            SideInput::Floats(x),
+            tolerance,
+            precision,
+            intended,
+        ),
+    }
+    .map_err(|(_, e)| Error::from(e))?;
     let tolerance = &tolerance.for_patch(shape.simplex_dim, shape.degree);
     let mut coordinates = Vec::with_capacity(claimed.len());
     for (c, &y) in claimed.iter().enumerate() {

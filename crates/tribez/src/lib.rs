@@ -35,8 +35,9 @@
 //! * [`Patch`], [`PatchKind`], [`SimplexDim`], [`Degree`]: one type for every kind of patch;
 //! * [`capability`]: what a kind can do ([`ExactEval`], [`FloatEval`], [`ErrorBound`],
 //!   [`Constructions`]), implemented per kind, one file per kind;
-//! * [`judge`], [`judge_with`], [`judge_algorithm`], [`Judgement`]: one call that judges a float
-//!   result (docs/theory.md §14);
+//! * [`judge`], [`judge_with`], [`judge_algorithm`], [`judge_cartesian`], [`judge_input`]
+//!   ([`JudgeInput`]: barycentric or Cartesian points), [`Judgement`]: one call that judges a
+//!   float result (docs/theory.md §14);
 //! * [`Rational`], [`parse_rational`], [`Precision`], [`Tolerance`], [`Algorithm`]: exact
 //!   numbers, precisions and tolerances, parsed from the same strings as the command line;
 //! * [`mesh`]: meshes of functional Bézier triangles sharing their ordinates (C0), exact
@@ -103,7 +104,10 @@ pub use error::CoreError;
 pub use exact::Algorithm;
 pub use float::Precision;
 pub use io::{ClaimProblem, InputError, NeededKind, Problem, RowsProblem};
-pub use judge::{CoordinateJudgement, Judgement, judge, judge_algorithm, judge_with};
+pub use judge::{
+    CoordinateJudgement, JudgeInput, Judgement, judge, judge_algorithm, judge_cartesian,
+    judge_input, judge_with,
+};
 pub use judge_refusal::{Lacks, Refusal};
 pub use num_rational::BigRational as Rational;
 pub use number::parse_rational;

@@ -169,6 +169,17 @@ impl<F: Narrow> ErrorBound for Program<F> {
         }
     }
 
+    fn seen_exact(&self, algorithm: Algorithm, input: &[BigRational]) -> Seen {
+        let (exact, condition, bound) = self.cert.seen_exact(algorithm, input);
+        Seen {
+            input: input.to_vec(),
+            exact: Some(exact),
+            condition: Some(condition),
+            bound,
+            cond_tolerance: true,
+        }
+    }
+
     fn certify(&self, algorithm: Algorithm, input: &[f64]) -> FloatCase {
         let lam: Vec<F> = narrowed(input);
         let y = crate::certify::run(algorithm, &self.cert.net, &lam);

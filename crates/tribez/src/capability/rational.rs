@@ -149,6 +149,17 @@ impl<F: Narrow> ErrorBound for Program<F> {
         }
     }
 
+    fn seen_exact(&self, _algorithm: Algorithm, input: &[BigRational]) -> Seen {
+        let (exact, condition, bound) = self.cert.seen_exact(input);
+        Seen {
+            input: input.to_vec(),
+            exact,
+            condition,
+            bound,
+            cond_tolerance: true,
+        }
+    }
+
     fn certify(&self, _algorithm: Algorithm, input: &[f64]) -> FloatCase {
         let lam: Vec<F> = narrowed(input);
         let at: Vec<BigRational> = lam.iter().map(|x| x.exact().unwrap_or_default()).collect();

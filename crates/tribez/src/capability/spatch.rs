@@ -152,6 +152,37 @@ impl<F: Narrow> ErrorBound for Program<F> {
         }
     }
 
+    fn seen_exact(&self, algorithm: Algorithm, input: &[BigRational]) -> Seen {
+        // a point of floats of the precision (what a float program can be given): `seen`
+        let floats: Option<Vec<f64>> = input
+            .iter()
+            .map(|q| {
+                let x = F::round(q);
+                (x.exact().as_ref() == Some(q)).then(|| x.widen())
+            })
+            .collect();
+        if let Some(xs) = floats.filter(|xs| xs.len() == 2) {
+            return self.seen(algorithm, &xs);
+        }
+        let (exact, condition) = match self.cert.seen.evaluate(input) {
+            Ok((lambda, v)) => (
+                Some(v),
+                Some(crate::certify::bound::condition(
+                    &self.cert.seen.net,
+                    &lambda,
+                )),
+            ),
+            Err(_) => (None, None),
+        };
+        Seen {
+            input: input.to_vec(),
+            exact,
+            condition,
+            bound: None,
+            cond_tolerance: false,
+        }
+    }
+
     fn certify(&self, _algorithm: Algorithm, input: &[f64]) -> FloatCase {
         let p = Self::point(input);
         let case = self.cert.check(&p);

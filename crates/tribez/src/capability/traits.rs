@@ -229,6 +229,12 @@ pub trait ErrorBound: Send + Sync {
     /// The exact value at `input` as seen, the condition numbers and the a-priori bound of
     /// `algorithm` there.
     fn seen(&self, algorithm: Algorithm, input: &[f64]) -> Seen;
+    /// [`ErrorBound::seen`] at an exact input that need not be floats of the precision: the
+    /// exact barycentric coordinates `λ` of a float Cartesian point (docs/guide.md §7), where
+    /// the value, `Σ|c_α| B_α(|λ|)` and the a-priori bound are those at `λ` itself. For a
+    /// kind whose input is Cartesian (an S-patch) an input of floats is [`ErrorBound::seen`]'s;
+    /// at other points its bound is not given (`Seen::bound` `None`).
+    fn seen_exact(&self, algorithm: Algorithm, input: &[BigRational]) -> Seen;
     /// Run `algorithm` at `input` and judge its result against the proven bound.
     fn certify(&self, algorithm: Algorithm, input: &[f64]) -> FloatCase;
     /// The bound explained, for `algorithm`.

@@ -149,17 +149,23 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
             .iter()
             .map(|x| x.exact().unwrap_or_default())
             .collect();
-        let h = self.exact.evaluate(&lam, Algorithm::Casteljau);
+        self.seen_exact(&lam)
+    }
+
+    /// [`RationalCertifier::seen`] at exact inputs `lam`, which need not be floats (the exact
+    /// barycentric coordinates of a float Cartesian point).
+    pub fn seen_exact(&self, lam: &[BigRational]) -> SeenParts {
+        let h = self.exact.evaluate(lam, Algorithm::Casteljau);
         let (d, num) = h.split_last().expect("d + 1 coordinates");
         if d.is_zero() {
             return (None, None, None);
         }
         let q: Vec<BigRational> = num.iter().map(|x| x / d).collect();
-        let condition = bound::rational_condition(&self.exact_net, &lam);
+        let condition = bound::rational_condition(&self.exact_net, lam);
         let (m, n) = (self.net.m(), self.net.degree());
-        let errs: Option<Vec<BigRational>> = bound::condition(&self.exact_net, &lam)
+        let errs: Option<Vec<BigRational>> = bound::condition(&self.exact_net, lam)
             .iter()
-            .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam))
+            .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, lam))
             .collect();
         let bounds = errs.and_then(|e| {
             let (e_den, e_num) = e.split_last()?;

@@ -141,12 +141,23 @@ impl<F: Float> Certifier<F> {
             .iter()
             .map(|x| x.exact().unwrap_or_default())
             .collect();
-        let p = self.exact.evaluate_fast(&lam);
-        let cond = bound::condition(&self.exact_net, &lam);
+        self.seen_exact(algorithm, &lam)
+    }
+
+    /// [`Certifier::seen`] at exact inputs `lam`, which need not be floats: the exact
+    /// barycentric coordinates of a float Cartesian point (docs/guide.md §7), where the a-priori
+    /// bound is that of the algorithm run at those coordinates.
+    pub fn seen_exact(
+        &self,
+        algorithm: Algorithm,
+        lam: &[BigRational],
+    ) -> (Vec<BigRational>, Vec<BigRational>, Option<Vec<BigRational>>) {
+        let p = self.exact.evaluate_fast(lam);
+        let cond = bound::condition(&self.exact_net, lam);
         let (m, n) = (self.net.m(), self.net.degree());
         let bounds = cond
             .iter()
-            .map(|s| bound::a_priori(algorithm, F::PRECISION, m, n, s, &lam))
+            .map(|s| bound::a_priori(algorithm, F::PRECISION, m, n, s, lam))
             .collect();
         (p, cond, bounds)
     }

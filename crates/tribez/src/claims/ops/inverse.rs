@@ -35,16 +35,25 @@
 //! ```
 //!
 //! `expect` is a list of parameter tuples (its length is the claimed count; `[]` claims there is
-//! none) or a bare integer (a claimed count only). Tuples may come in any order: each is paired
-//! with the exact solution nearest it, if one lies within [`MATCH_RADIUS`] (relative to the
-//! value's size above 1) in every coordinate. Then:
+//! none) or a bare integer (a claimed count only). Tuples may come in any order. A claimed tuple
+//! and an exact solution *accept* each other when every coordinate lies within [`MATCH_RADIUS`]
+//! of the solution's (relative to the value's size above 1) and the claim's tolerance accepts
+//! every coordinate against the algebraic value itself (enclosures narrowed until both ends get
+//! the same verdict; the tolerances' acceptance sets are intervals, so the verdict is the
+//! algebraic value's). The claim holds when there is a perfect matching of this bipartite
+//! relation: every claimed tuple paired with a distinct exact solution that accepts it, and
+//! every solution paired (so the counts agree). It is found by Hopcroft and Karp's maximum
+//! matching ([`findings`]), not greedily: with roots 1/2 and 1/2 + 2e-7, the claim
+//! (0.50000011, 0.5000003) holds at `abs=1.5e-7` although both claims are nearest the second root.
+//! When there is none, what a maximum matching leaves unpaired is reported:
 //!
-//! * a paired coordinate is judged by the claim's tolerance against the algebraic value itself
-//!   (enclosures narrowed until both ends get the same verdict; the tolerances' acceptance sets
-//!   are intervals, so the verdict is the algebraic value's);
-//! * an exact solution no tuple is paired with is *missed*: the message shows it exactly (its
+//! * an unpaired tuple is compared with the nearest unpaired solution within the radius, and the
+//!   coordinates that break the tolerance are shown; where some solutions accept it but every
+//!   pairing gives them to other tuples, the message names that Hall violator (tuples accepted,
+//!   together, by fewer solutions than there are tuples);
+//! * an exact solution left unpaired is *missed*: the message shows it exactly (its
 //!   polynomial, isolating interval and decimal value);
-//! * a tuple paired with no solution is *extra*;
+//! * a tuple with no unpaired solution within the radius is *extra*;
 //! * curves that share a piece, and points that a whole curve of parameters maps to, cannot be
 //!   claimed as points: the claim fails and says so.
 //!
@@ -74,8 +83,8 @@ use crate::patch_type::Patch;
 
 type Q = BigRational;
 
-/// Claimed and exact tuples are paired when every coordinate differs by at most
-/// `2^-20 · max(1, |exact|)`.
+/// Claimed and exact tuples may be paired only when every coordinate differs by at most
+/// `2^-20 · max(1, |exact|)` (and the tolerance accepts them: [`findings`]).
 pub const MATCH_RADIUS_LOG2: i32 = -20;
 /// `2^MATCH_RADIUS_LOG2`, for the docs.
 pub const MATCH_RADIUS: f64 = 1.0 / 1_048_576.0;
@@ -215,13 +224,18 @@ pub enum InverseFinding {
         claimed: usize,
         /// The nearest exact solution, if any.
         nearest: Option<usize>,
+        /// Why it cannot be matched although some solutions accept it, if they do.
+        blocked: Option<Blocked>,
     },
-    /// A paired coordinate that breaks the tolerance.
+    /// A claimed tuple that no exact solution left unmatched accepts: a coordinate that breaks
+    /// the tolerance against the nearest unmatched solution within the radius.
     Coordinate {
         /// The claimed tuple.
         claimed: usize,
-        /// The exact solution it is paired with.
+        /// The exact solution it is compared with (the nearest unmatched one).
         solution: usize,
+        /// Why it cannot be matched with a solution that accepts it, if some do.
+        blocked: Option<Blocked>,
         /// The coordinate.
         coordinate: usize,
         /// The error against the algebraic value (measured at a rational within 2^-80 of it).
@@ -239,6 +253,17 @@ pub enum InverseFinding {
         /// What it is.
         what: String,
     },
+}
+
+/// A Hall violator of the matching ([`findings`]): claimed tuples (among them the one reported)
+/// that are together accepted by fewer exact solutions than there are tuples, so that one of them
+/// is left unmatched whatever the pairing.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Blocked {
+    /// The claimed tuples (indices in `expect`), in order.
+    pub claimed: Vec<usize>,
+    /// Every exact solution that accepts one of them (fewer than `claimed`), in order.
+    pub solutions: Vec<usize>,
 }
 
 fn tuple_text(xs: &[ExactNumber], names: &[&str]) -> String {
@@ -648,42 +673,150 @@ pub fn accepts(
     Ok((false, mid))
 }
 
-/// Pair claimed tuples with exact solutions: nearest first, each used once, within the radius.
-fn pair(claimed: &[Vec<Q>], exact: &[Vec<f64>]) -> Vec<Option<usize>> {
+/// The largest coordinate distance between a claimed tuple and an exact solution's nearest
+/// floats, if every coordinate lies within the pairing radius [`MATCH_RADIUS`] (relative to the
+/// value's size above 1).
+fn within_radius(c: &[Q], e: &[f64]) -> Option<f64> {
     let radius = 2f64.powi(MATCH_RADIUS_LOG2);
-    let mut cands: Vec<(f64, usize, usize)> = Vec::new();
-    for (i, c) in claimed.iter().enumerate() {
-        for (j, e) in exact.iter().enumerate() {
-            let mut worst = 0f64;
-            let mut ok = true;
-            for (cq, ef) in c.iter().zip(e) {
-                let cf = crate::number::round_f64(cq);
-                let d = (cf - ef).abs();
-                if d.is_nan() || d > radius * ef.abs().max(1.0) {
-                    ok = false;
-                    break;
+    let mut worst = 0f64;
+    for (cq, ef) in c.iter().zip(e) {
+        let d = (crate::number::round_f64(cq) - ef).abs();
+        if d.is_nan() || d > radius * ef.abs().max(1.0) {
+            return None;
+        }
+        worst = worst.max(d);
+    }
+    Some(worst)
+}
+
+/// A maximum matching of a bipartite graph by Hopcroft and Karp's algorithm (an O(E √V) sequence
+/// of phases, each a breadth-first layering from the unmatched left vertices and a depth-first
+/// search of vertex-disjoint shortest augmenting paths; the search is iterative, so a long path
+/// cannot overflow the stack). `adj[i]` lists the right vertices `0..n_right` adjacent to left
+/// vertex `i`, in the order they are tried (nearest first, so that a matching of nearest pairs
+/// is kept where one is maximum). Returns the partner of each left vertex.
+fn maximum_matching(adj: &[Vec<usize>], n_right: usize) -> Vec<Option<usize>> {
+    const FAR: usize = usize::MAX;
+    let n = adj.len();
+    let mut left: Vec<Option<usize>> = vec![None; n];
+    let mut right: Vec<Option<usize>> = vec![None; n_right];
+    let mut dist = vec![FAR; n];
+    let mut queue = std::collections::VecDeque::new();
+    let mut next = vec![0usize; n];
+    let mut stack = Vec::new();
+    loop {
+        // layers: unmatched left vertices at 0, then along alternating paths
+        queue.clear();
+        for (u, (d, l)) in dist.iter_mut().zip(&left).enumerate() {
+            *d = if l.is_none() {
+                queue.push_back(u);
+                0
+            } else {
+                FAR
+            };
+        }
+        let mut free_reached = false;
+        while let Some(u) = queue.pop_front() {
+            for &v in &adj[u] {
+                match right[v] {
+                    None => free_reached = true,
+                    Some(w) if dist[w] == FAR => {
+                        dist[w] = dist[u] + 1;
+                        queue.push_back(w);
+                    }
+                    Some(_) => {}
                 }
-                worst = worst.max(d);
             }
-            if ok {
-                cands.push((worst, i, j));
+        }
+        if !free_reached {
+            return left;
+        }
+        // augmenting paths along the layers, vertex-disjoint (a dead end leaves its layer)
+        next.fill(0);
+        for root in 0..n {
+            if left[root].is_some() {
+                continue;
+            }
+            stack.clear();
+            stack.push(root);
+            while let Some(&u) = stack.last() {
+                let Some(&v) = adj[u].get(next[u]) else {
+                    dist[u] = FAR;
+                    stack.pop();
+                    continue;
+                };
+                next[u] += 1;
+                match right[v] {
+                    None => {
+                        // flip the path: each vertex of the stack takes the edge it last tried
+                        for &x in &stack {
+                            let y = adj[x][next[x] - 1];
+                            left[x] = Some(y);
+                            right[y] = Some(x);
+                        }
+                        stack.clear();
+                    }
+                    Some(w) if dist[w] == dist[u].saturating_add(1) => stack.push(w),
+                    Some(_) => {}
+                }
             }
         }
     }
-    cands.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(Ordering::Equal));
-    let mut out = vec![None; claimed.len()];
-    let mut used = vec![false; exact.len()];
-    for (_, i, j) in cands {
-        if out[i].is_none() && !used[j] {
-            out[i] = Some(j);
-            used[j] = true;
+}
+
+/// The Hall violator through the unmatched left vertex `i`: the left vertices reachable from it
+/// by alternating paths (an edge, then a matched edge back), and their neighbours. With the
+/// matching maximum, every such neighbour is matched, to one of those left vertices, so there
+/// is one neighbour fewer than left vertices.
+fn hall_violator(i: usize, adj: &[Vec<usize>], left: &[Option<usize>], n_right: usize) -> Blocked {
+    let mut right_of = vec![None; n_right];
+    for (u, v) in left.iter().enumerate() {
+        if let Some(v) = v {
+            right_of[*v] = Some(u);
         }
     }
-    out
+    let mut seen_left = vec![false; adj.len()];
+    let mut seen_right = vec![false; n_right];
+    let mut todo = vec![i];
+    seen_left[i] = true;
+    while let Some(u) = todo.pop() {
+        for &v in &adj[u] {
+            if !seen_right[v] {
+                seen_right[v] = true;
+                if let Some(w) = right_of[v].filter(|&w| !seen_left[w]) {
+                    seen_left[w] = true;
+                    todo.push(w);
+                }
+            }
+        }
+    }
+    let on = |xs: Vec<bool>| -> Vec<usize> {
+        xs.iter()
+            .enumerate()
+            .filter(|x| *x.1)
+            .map(|x| x.0)
+            .collect()
+    };
+    Blocked {
+        claimed: on(seen_left),
+        solutions: on(seen_right),
+    }
 }
 
 /// Judge findings of claimed tuples against the exact answer (the typed core of [`judge`];
 /// `Err` when the tolerance needs what an inverse claim lacks, e.g. `bound`).
+///
+/// The verdict is that of a matching: claimed tuple `i` may be matched with exact solution `j`
+/// when every coordinate lies within the pairing radius ([`MATCH_RADIUS`]) and the tolerance
+/// accepts every coordinate of `i` against the algebraic value of `j`. The claim holds when a
+/// maximum matching of that bipartite graph (Hopcroft and Karp's algorithm) pairs every
+/// claimed tuple and every exact solution, each with a distinct partner (so the counts agree);
+/// whether it does is independent of the order of the tuples. Otherwise every tuple and solution
+/// the matching leaves unpaired is a finding: an unpaired tuple is compared with the nearest
+/// unpaired solution within the radius (the coordinates that break the tolerance), or else is
+/// *extra*; an unpaired solution is *missed*. An unpaired tuple that some solutions do accept
+/// carries the Hall violator that blocks it ([`Blocked`]): tuples accepted, together, by fewer
+/// solutions than there are tuples.
 pub fn findings(
     claimed_tuples: Option<&[Vec<Q>]>,
     claimed_count: usize,
@@ -709,14 +842,49 @@ pub fn findings(
         .iter()
         .map(|s| s.iter().map(ExactNumber::to_f64).collect())
         .collect();
-    let pairing = pair(tuples, &approx);
     let leaf = Leaf {
         precision,
         ..Leaf::default()
     };
-    let mut used = vec![false; answer.solutions.len()];
-    for (i, (c, p)) in tuples.iter().zip(&pairing).enumerate() {
-        let Some(j) = *p else {
+    let n_exact = answer.solutions.len();
+    // the pairs within the radius, nearest first; the accepted ones are the matching's edges
+    let mut near: Vec<Vec<(f64, usize)>> = Vec::with_capacity(tuples.len());
+    let mut adj: Vec<Vec<usize>> = Vec::with_capacity(tuples.len());
+    for c in tuples {
+        let mut cands: Vec<(f64, usize)> = approx
+            .iter()
+            .enumerate()
+            .filter_map(|(j, e)| within_radius(c, e).map(|d| (d, j)))
+            .collect();
+        cands.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(Ordering::Equal));
+        let mut edges = Vec::new();
+        for &(_, j) in &cands {
+            let mut all = true;
+            for (cq, x) in c.iter().zip(&answer.solutions[j]) {
+                if !accepts(cq, x, tolerance, &leaf)?.0 {
+                    all = false;
+                    break;
+                }
+            }
+            if all {
+                edges.push(j);
+            }
+        }
+        near.push(cands);
+        adj.push(edges);
+    }
+    let matching = maximum_matching(&adj, n_exact);
+    let mut used = vec![false; n_exact];
+    for j in matching.iter().flatten() {
+        used[*j] = true;
+    }
+    for (i, c) in tuples.iter().enumerate() {
+        if matching[i].is_some() {
+            continue;
+        }
+        let blocked = (!adj[i].is_empty()).then(|| hall_violator(i, &adj, &matching, n_exact));
+        // the nearest solution within the radius that the matching left unpaired
+        let Some(&(_, j)) = near[i].iter().find(|(_, j)| !used[*j]) else {
             let nearest = (0..approx.len()).min_by(|&a, &b| {
                 let d = |k: usize| -> f64 {
                     c.iter()
@@ -729,20 +897,32 @@ pub fn findings(
             out.push(InverseFinding::Extra {
                 claimed: i,
                 nearest,
+                blocked,
             });
             continue;
         };
         used[j] = true;
+        let before = out.len();
         for (k, (cq, x)) in c.iter().zip(&answer.solutions[j]).enumerate() {
             let (ok, at) = accepts(cq, x, tolerance, &leaf)?;
             if !ok {
                 out.push(InverseFinding::Coordinate {
                     claimed: i,
                     solution: j,
+                    blocked: blocked.clone(),
                     coordinate: k,
                     measures: Measures::new(cq, &at, precision),
                 });
             }
+        }
+        if out.len() == before {
+            // unreachable with a maximum matching (i and j would be an augmenting path), but
+            // an unmatched tuple must never pass
+            out.push(InverseFinding::Extra {
+                claimed: i,
+                nearest: Some(j),
+                blocked,
+            });
         }
     }
     for (j, u) in used.iter().enumerate() {
@@ -775,6 +955,46 @@ pub fn judge_answer(
     )
 }
 
+/// The Hall violator of an unmatched tuple, as the end of its mismatch's reason.
+fn blocked_text(
+    blocked: Option<&Blocked>,
+    tuples: Option<&[Vec<Q>]>,
+    answer: &InverseAnswer,
+    tolerance: &Tolerance,
+) -> String {
+    let Some(b) = blocked else {
+        return String::new();
+    };
+    let list = |xs: Vec<String>| xs.join(", ");
+    format!(
+        "; no pairing can give it a solution that accepts it: the claimed tuples {} are accepted (within `{tolerance}`) only by {} {}",
+        list(
+            b.claimed
+                .iter()
+                .map(|&i| format!(
+                    "[{i}] {}",
+                    tuples.map_or_else(String::new, |t| claimed_text(&t[i]))
+                ))
+                .collect()
+        ),
+        if b.solutions.len() == 1 {
+            "the exact solution"
+        } else {
+            "the exact solutions"
+        },
+        list(
+            b.solutions
+                .iter()
+                .map(|&j| format!(
+                    "{} {}",
+                    j + 1,
+                    tuple_text(&answer.solutions[j], answer.names)
+                ))
+                .collect()
+        ),
+    )
+}
+
 fn mismatch(
     f: &InverseFinding,
     tuples: Option<&[Vec<Q>]>,
@@ -796,21 +1016,39 @@ fn mismatch(
         InverseFinding::Extra {
             claimed: i,
             nearest,
-        } => Mismatch {
-            path: format!("[{i}]"),
-            claimed: claimed(*i),
-            exact: nearest.map_or_else(|| "(no solution)".into(), exact_text),
-            reason: match nearest {
-                Some(j) => format!(
-                    "extra: no exact solution within 2^{MATCH_RADIUS_LOG2} (the nearest is {})",
-                    exact_text(*j)
-                ),
-                None => "extra: there is no exact solution".into(),
-            },
-        },
+            blocked,
+        } => {
+            let near = |j: usize| {
+                tuples.is_some_and(|t| {
+                    let e: Vec<f64> = answer.solutions[j]
+                        .iter()
+                        .map(ExactNumber::to_f64)
+                        .collect();
+                    within_radius(&t[*i], &e).is_some()
+                })
+            };
+            Mismatch {
+                path: format!("[{i}]"),
+                claimed: claimed(*i),
+                exact: nearest.map_or_else(|| "(no solution)".into(), exact_text),
+                reason: match nearest {
+                    Some(j) if near(*j) => format!(
+                        "extra: every exact solution within 2^{MATCH_RADIUS_LOG2} is paired with another tuple (the nearest is {}){}",
+                        exact_text(*j),
+                        blocked_text(blocked.as_ref(), tuples, answer, tolerance)
+                    ),
+                    Some(j) => format!(
+                        "extra: no exact solution within 2^{MATCH_RADIUS_LOG2} (the nearest is {})",
+                        exact_text(*j)
+                    ),
+                    None => "extra: there is no exact solution".into(),
+                },
+            }
+        }
         InverseFinding::Coordinate {
             claimed: i,
             solution,
+            blocked,
             coordinate,
             measures,
         } => Mismatch {
@@ -818,14 +1056,15 @@ fn mismatch(
             claimed: claimed(*i),
             exact: exact_text(*solution),
             reason: format!(
-                "{} = {} breaks tolerance `{tolerance}` against {}: {}",
+                "{} = {} breaks tolerance `{tolerance}` against {}: {}{}",
                 answer.names[*coordinate],
                 tuples.map_or_else(String::new, |t| crate::number::to_decimal_string(
                     &t[*i][*coordinate],
                     17
                 )),
                 answer.solutions[*solution][*coordinate].text(),
-                measures.text()
+                measures.text(),
+                blocked_text(blocked.as_ref(), tuples, answer, tolerance)
             ),
         },
         InverseFinding::Count { claimed, exact } => Mismatch {
@@ -910,4 +1149,113 @@ pub fn judge(
         precision,
         floats: Vec::new(),
     })
+}
+
+#[cfg(test)]
+mod matching_tests {
+    use super::{hall_violator, maximum_matching};
+
+    /// The size of a maximum matching by trying every injection (small graphs only).
+    fn brute_force(adj: &[Vec<usize>], used: &mut [bool], i: usize) -> usize {
+        if i == adj.len() {
+            return 0;
+        }
+        let mut best = brute_force(adj, used, i + 1); // i unmatched
+        for &j in &adj[i] {
+            if !used[j] {
+                used[j] = true;
+                best = best.max(1 + brute_force(adj, used, i + 1));
+                used[j] = false;
+            }
+        }
+        best
+    }
+
+    fn check(adj: &[Vec<usize>], n_right: usize) {
+        let m = maximum_matching(adj, n_right);
+        // a matching: edges of the graph, distinct partners
+        let mut taken = vec![false; n_right];
+        for (i, j) in m.iter().enumerate() {
+            if let Some(j) = *j {
+                assert!(adj[i].contains(&j), "{adj:?}: {m:?}");
+                assert!(!taken[j], "{adj:?}: {m:?}");
+                taken[j] = true;
+            }
+        }
+        let size = m.iter().flatten().count();
+        assert_eq!(
+            size,
+            brute_force(adj, &mut vec![false; n_right], 0),
+            "{adj:?}"
+        );
+        // every unmatched left vertex with neighbours has a Hall violator: |N(S)| < |S|
+        for (i, j) in m.iter().enumerate() {
+            if j.is_none() && !adj[i].is_empty() {
+                let b = hall_violator(i, adj, &m, n_right);
+                assert!(b.claimed.contains(&i));
+                assert!(b.solutions.len() < b.claimed.len(), "{adj:?}: {b:?}");
+                for &u in &b.claimed {
+                    assert!(adj[u].iter().all(|v| b.solutions.contains(v)));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn greedy_is_not_maximum_but_this_is() {
+        // the issue's example: tuple 0 accepts both roots (nearest the second), tuple 1 only the
+        // second; nearest-first would give root 1 to tuple 0 and leave tuple 1 without one
+        let adj = vec![vec![1, 0], vec![1]];
+        assert_eq!(maximum_matching(&adj, 2), vec![Some(0), Some(1)]);
+        check(&adj, 2);
+        // both accept only root 1: one is left, and the violator is both tuples and root 1
+        let adj = vec![vec![1], vec![1]];
+        let m = maximum_matching(&adj, 2);
+        assert_eq!(m.iter().flatten().count(), 1);
+        let i = m.iter().position(Option::is_none).unwrap();
+        let b = hall_violator(i, &adj, &m, 2);
+        assert_eq!((b.claimed, b.solutions), (vec![0, 1], vec![1]));
+    }
+
+    #[test]
+    fn maximum_on_random_small_graphs() {
+        // SplitMix64, so that the graphs are the same on every run
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^ (z >> 31)
+        };
+        for _ in 0..2000 {
+            let n_left = (next() % 7) as usize;
+            let n_right = (next() % 7) as usize;
+            let density = next() % 100;
+            let adj: Vec<Vec<usize>> = (0..n_left)
+                .map(|_| (0..n_right).filter(|_| next() % 100 < density).collect())
+                .collect();
+            check(&adj, n_right);
+        }
+    }
+
+    #[test]
+    fn a_long_augmenting_chain() {
+        // tuple i < n-1 accepts solutions i+1 and i, tried in that order, the last tuple only
+        // solution n-1: the first phase matches i with i+1 and leaves the last tuple; the
+        // second flips an augmenting path through all n tuples (deeper than a recursive search
+        // could safely go)
+        let n = 100_000;
+        let adj: Vec<Vec<usize>> = (0..n)
+            .map(|i| {
+                if i + 1 < n {
+                    vec![i + 1, i]
+                } else {
+                    vec![n - 1]
+                }
+            })
+            .collect();
+        let m = maximum_matching(&adj, n);
+        assert!(m.iter().enumerate().all(|(i, j)| *j == Some(i)));
+    }
 }

@@ -394,9 +394,10 @@ pub struct FloatEval {
 }
 
 /// The float view of an `eval` claim in precision `p`: the exact side of the library's judge
-/// ([`crate::judge_algorithm`]), for any kind of patch through its capabilities. The input is
+/// ([`crate::judge_input`]), for any kind of patch through its capabilities. The input is
 /// rounded to `p` (a Cartesian point of a simplex is rounded, then converted to barycentric
-/// coordinates exactly), and the kind's float program holds its numbers rounded to `p` (for a
+/// coordinates exactly, and judged at those exact coordinates, as
+/// [`crate::JudgeInput::Cartesian`] and `check --results --cartesian` batches judge it), and the kind's float program holds its numbers rounded to `p` (for a
 /// rational patch its homogeneous net `(w c, w)`; for an S-patch its polygon too); `bound` is
 /// the proven bound of that program, and `cond=K` is refused where the program adds an error
 /// the condition number does not measure (S-patches: the float Wachspress coordinates).
@@ -413,17 +414,14 @@ pub fn eval_float(
     else {
         unreachable!("the float view is of `eval`")
     };
+    // `at` rounded to p, or the Cartesian point rounded to p and then converted exactly to
+    // barycentric coordinates (not floats in general: never rounded again)
     let seen = seen::input(inputs, point, patch, p)?;
-    let input: Vec<f64> = seen
-        .input()
-        .iter()
-        .map(crate::number::round_f64) // exact: floats of precision p
-        .collect();
     let (tolerance, _) = inputs.file.tolerance_of(inputs.claim)?;
     let side = crate::judge::exact_side(
         patch,
         *algorithm,
-        &input,
+        crate::judge::SideInput::Seen(seen.input()),
         &tolerance,
         p,
         Some(point.input()),
