@@ -447,10 +447,12 @@ pub fn solve_clipped(
 ) -> Result<Clipped, AlgebraicError> {
     let conds = conditions(region, extra);
     if let Solved::Points { solutions, .. } = solve(f, g, region, flags)? {
+        // `solve` keeps to the region itself: only the further conditions are left
+        let extra: Vec<BiPoly> = extra.iter().map(BiPoly::trimmed).collect();
         return Ok(Clipped::Points(
             solutions
                 .into_iter()
-                .filter(|s| inside(s, &conds))
+                .filter(|s| inside(s, &extra))
                 .collect(),
         ));
     }

@@ -520,11 +520,8 @@ pub fn ray_hits(p: &Patch, origin: &[Q; 3], direction: &[Q; 3]) -> Result<RayHit
             }),
         ),
     };
-    let mut hits: Vec<Hit> = solutions
-        .into_iter()
-        .map(hit)
-        .filter(|h| h.tau.sign() != Ordering::Less)
-        .collect();
+    // τ ≥ 0 is one of the conditions `solve_clipped` kept to
+    let mut hits: Vec<Hit> = solutions.into_iter().map(hit).collect();
     hits.sort_by(|a, b| cmp_tau(&a.tau, &b.tau));
     Ok(RayHits {
         hits,
