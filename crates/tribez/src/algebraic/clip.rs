@@ -300,7 +300,7 @@ pub fn bipoly_text(h: &BiPoly, x: &str, y: &str) -> String {
         }
     }
     // by total degree, then by the power of x, descending
-    terms.sort_by(|a, b| (b.0 + b.1, b.0).cmp(&(a.0 + a.1, a.0)));
+    terms.sort_by_key(|t| std::cmp::Reverse((t.0 + t.1, t.0)));
     if terms.is_empty() {
         return "0".into();
     }
