@@ -258,7 +258,7 @@ pub enum RayReport {
         /// Direction.
         direction: [Rational; 3],
         /// The hits.
-        hits: RayHits,
+        hits: Box<RayHits>,
     },
     /// `--height x,y` on a functional patch.
     Height {
@@ -322,7 +322,7 @@ pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
             file,
             origin: o,
             direction: d,
-            hits,
+            hits: Box::new(hits),
         }
     };
     Outcome::rendered(&report, args.out.format, true)
