@@ -10,7 +10,7 @@ use crate::cli::OutputArgs;
 use crate::report::Render;
 use tribez::Patch;
 use tribez::Rational;
-use tribez::algebraic::{Expr, Locations, RayHits, RealAlgebraic, locate, ray_hits};
+use tribez::algebraic::{Degenerate, Expr, Locations, RayHits, RealAlgebraic, locate, ray_hits};
 use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez locate` (a plain comment: see `Command`).
@@ -119,8 +119,10 @@ impl Render for LocateReport {
             self.file,
             self.point[0],
             self.point[1],
-            if f.infinite {
-                "is the image of a whole curve of parameters\n".to_string()
+            if let Some(d) = &f.degenerate {
+                degenerate_text(d, self.anywhere, f.points.len(), |l| {
+                    format!("({}, {})", alg_text("s", &l.s), alg_text("t", &l.t))
+                })
             } else {
                 format!(
                     "has {} parameter point{} {}\n",
@@ -141,7 +143,9 @@ impl Render for LocateReport {
                 alg_text("s", &l.s),
                 alg_text("t", &l.t),
                 expr_text("λ0 = 1 − s − t", &l.lambda0),
-                if l.jacobian_zero {
+                if l.jacobian_zero && l.multiplicity == 0 {
+                    "\n   the Jacobian vanishes here (a point of a curve of solutions)".to_string()
+                } else if l.jacobian_zero {
                     format!(
                         "\n   the Jacobian vanishes here (multiplicity {})",
                         l.multiplicity
@@ -163,6 +167,11 @@ impl Render for LocateReport {
             infinite: f.infinite,
             count: f.points.len(),
             parameters: &f.points,
+            degenerate: f.degenerate.as_ref().map(|d| DegenerateJson {
+                dimension: d.dimension,
+                curve: &d.curve,
+                boundary: &d.boundary,
+            }),
         })
         .expect("serializable")
     }
@@ -177,6 +186,53 @@ struct LocateJson<'a> {
     infinite: bool,
     count: usize,
     parameters: &'a [tribez::algebraic::Located],
+    degenerate: Option<DegenerateJson<'a, tribez::algebraic::Located>>,
+}
+
+/// The JSON of a solution set that is not finite: `{dimension, curve, boundary}`.
+#[derive(serde::Serialize)]
+struct DegenerateJson<'a, T: serde::Serialize> {
+    dimension: usize,
+    curve: &'a str,
+    boundary: &'a [T],
+}
+
+/// The first line's end for a solution set that is not finite (`locate` and `ray`): the
+/// dimension, the curve, the points where it meets the boundary, and the isolated points to
+/// follow.
+fn degenerate_text<T>(
+    d: &Degenerate<T>,
+    anywhere: bool,
+    isolated: usize,
+    point: impl Fn(&T) -> String,
+) -> String {
+    let region = if anywhere {
+        "the plane"
+    } else {
+        "the closed triangle"
+    };
+    let mut out = if d.dimension == 2 {
+        format!("is the image of every parameter point of {region} (infinitely many)\n")
+    } else {
+        let mut t = format!(
+            "is the image of a whole curve of parameters (infinitely many): the pieces of {} = 0 in {region}\n",
+            d.curve
+        );
+        if !d.boundary.is_empty() {
+            t += &format!(
+                "   meeting the boundary of the triangle at {}\n",
+                d.boundary.iter().map(&point).collect::<Vec<_>>().join(", ")
+            );
+        }
+        t
+    };
+    if isolated > 0 {
+        out += &format!(
+            "   and {isolated} isolated parameter point{} off it:\n",
+            if isolated == 1 { "" } else { "s" }
+        );
+    }
+    out
 }
 
 /// One hit in the JSON of `tribez ray`.
@@ -202,7 +258,7 @@ pub enum RayReport {
         /// Direction.
         direction: [Rational; 3],
         /// The hits.
-        hits: RayHits,
+        hits: Box<RayHits>,
     },
     /// `--height x,y` on a functional patch.
     Height {
@@ -266,10 +322,22 @@ pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
             file,
             origin: o,
             direction: d,
-            hits,
+            hits: Box::new(hits),
         }
     };
     Outcome::rendered(&report, args.out.format, true)
+}
+
+fn hit_json(h: &tribez::algebraic::Hit, first: bool) -> HitJson<'_> {
+    HitJson {
+        tau: &h.tau,
+        first,
+        s: &h.s,
+        t: &h.t,
+        lambda0: &h.lambda0,
+        kind: if h.touch { "touch" } else { "cross" },
+        multiplicity: h.multiplicity,
+    }
 }
 
 fn tuple(xs: &[Rational]) -> String {
@@ -302,15 +370,46 @@ impl Render for RayReport {
                     tuple(origin),
                     tuple(direction)
                 );
-                if hits.infinite {
-                    out += "it runs along the surface (infinitely many hits)\n";
-                    return out;
+                match &hits.degenerate {
+                    Some(d) if d.dimension == 2 => {
+                        out += "the patch lies on the ray's line (infinitely many hits)\n";
+                    }
+                    Some(d) => {
+                        out += &format!(
+                            "it runs along the surface (infinitely many hits): the parameters on the pieces of {} = 0 in the closed triangle with τ ≥ 0\n",
+                            d.curve
+                        );
+                        if !d.boundary.is_empty() {
+                            out += &format!(
+                                "   ending (or touching the boundary) at {}\n",
+                                d.boundary
+                                    .iter()
+                                    .map(|h| format!(
+                                        "({}, {}, {})",
+                                        expr_text("τ", &h.tau),
+                                        alg_text("s", &h.s),
+                                        alg_text("t", &h.t)
+                                    ))
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            );
+                        }
+                        if !hits.hits.is_empty() {
+                            out += &format!(
+                                "   and {} isolated hit{} off it:\n",
+                                hits.hits.len(),
+                                if hits.hits.len() == 1 { "" } else { "s" }
+                            );
+                        }
+                    }
+                    None => {
+                        out += &format!(
+                            "{} hit{}\n",
+                            hits.hits.len(),
+                            if hits.hits.len() == 1 { "" } else { "s" }
+                        );
+                    }
                 }
-                out += &format!(
-                    "{} hit{}\n",
-                    hits.hits.len(),
-                    if hits.hits.len() == 1 { "" } else { "s" }
-                );
                 for (k, h) in hits.hits.iter().enumerate() {
                     out += &format!(
                         "{}. {}{}, {}\n   {}\n   {}\n   {}\n",
@@ -353,15 +452,12 @@ impl Render for RayReport {
                 "direction": direction.iter().map(ToString::to_string).collect::<Vec<_>>(),
                 "infinite": hits.infinite,
                 "count": hits.hits.len(),
-                "hits": hits.hits.iter().enumerate().map(|(k, h)| HitJson {
-                    tau: &h.tau,
-                    first: k == 0,
-                    s: &h.s,
-                    t: &h.t,
-                    lambda0: &h.lambda0,
-                    kind: if h.touch { "touch" } else { "cross" },
-                    multiplicity: h.multiplicity,
-                }).collect::<Vec<_>>(),
+                "hits": hits.hits.iter().enumerate().map(|(k, h)| hit_json(h, k == 0)).collect::<Vec<_>>(),
+                "degenerate": hits.degenerate.as_ref().map(|d| json!({
+                    "dimension": d.dimension,
+                    "curve": d.curve,
+                    "boundary": d.boundary.iter().map(|h| hit_json(h, false)).collect::<Vec<_>>(),
+                })),
             }),
         }
     }

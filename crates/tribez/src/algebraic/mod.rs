@@ -16,6 +16,7 @@
 //! [`MAX_CURVE_DEGREE`], [`MAX_PATCH_DEGREE`]) with a typed error ([`AlgebraicError`]).
 
 mod bivariate;
+mod clip;
 mod curves;
 mod interval;
 mod isolate;
@@ -25,12 +26,14 @@ mod surfaces;
 mod system;
 
 pub use bivariate::{BiPoly, resultant, subresultant1};
+pub use clip::{Clipped, bipoly_text, solve_clipped};
 pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
 pub use surfaces::{
-    Hit, Located, Locations, RayHits, check_locate_patch, check_ray_patch, locate, ray_hits,
+    Degenerate, Hit, Located, Locations, RayHits, check_locate_patch, check_ray_patch, locate,
+    ray_hits,
 };
 pub use system::{Expr, Half, Partner, Region, Solution, Solved, solve};
 

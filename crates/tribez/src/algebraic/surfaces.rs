@@ -12,7 +12,8 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 
 use super::bivariate::BiPoly;
-use super::system::{Expr, Region, Solved, solve};
+use super::clip::{Clipped, bipoly_text, solve_clipped};
+use super::system::{Expr, Region, Solution};
 use super::{AlgebraicError, MAX_PATCH_DEGREE, RealAlgebraic, check_input};
 use crate::any_patch::AnyPatch;
 use crate::patch_type::Patch;
@@ -227,13 +228,36 @@ pub struct Located {
     pub multiplicity: usize,
 }
 
+/// A solution set that is not a finite set of points: the two equations share a factor, and
+/// what of its zero set lies in the region has positive length (or area). See
+/// docs/theory.md §16.7.
+#[derive(Clone, Debug)]
+pub struct Degenerate<T> {
+    /// `2`: every parameter point of the region is a solution (both equations vanish
+    /// identically: a constant patch at the point); `1`: pieces of positive length of the curve
+    /// [`Degenerate::curve`].
+    pub dimension: usize,
+    /// The curve `h(s, t) = 0` the pieces lie on (dimension 1): the common factor of the two
+    /// equations, square-free, integer coefficients, as text in `s` and `t` (empty for
+    /// dimension 2).
+    pub curve: String,
+    /// The points of the curve in the region that lie on the region's boundary (an edge of the
+    /// closed triangle; for a ray, also `τ = 0`): where its pieces end, and where it touches
+    /// the boundary; by `s`, then `t`, exactly (multiplicity 0).
+    pub boundary: Vec<T>,
+}
+
 /// What [`locate`] found.
 #[derive(Clone, Debug)]
 pub struct Locations {
-    /// The parameter points, by increasing `s`, then `t`.
+    /// The parameter points, by increasing `s`, then `t` (with a curve of solutions: the
+    /// isolated solutions off it).
     pub points: Vec<Located>,
-    /// A whole curve of parameters maps to the point (the equations share a factor).
+    /// A piece of positive length of a curve of parameters (or the whole triangle) maps to
+    /// the point: [`Locations::degenerate`] says which.
     pub infinite: bool,
+    /// The solutions that are not isolated points, when there are such.
+    pub degenerate: Option<Degenerate<Located>>,
 }
 
 /// `∂(P/W)` numerators: `(X_u W − X W_u)` for each coordinate, for `∂/∂x` and `∂/∂y`.
@@ -306,30 +330,46 @@ pub fn locate(p: &Patch, point: &[Q; 2], anywhere: bool) -> Result<Locations, Al
     } else {
         Region::triangle()
     };
-    let solved = solve(&f1, &f2, &region, &[jac])?;
-    let Solved::Points { solutions, .. } = solved else {
-        return Ok(Locations {
-            points: Vec::new(),
-            infinite: true,
-        });
-    };
+    let solved = solve_clipped(&f1, &f2, &region, &[], &[jac])?;
     let one_minus = BiPoly {
         c: vec![vec![q(1), q(-1)], vec![q(-1)]],
     };
-    let mut points: Vec<Located> = solutions
-        .into_iter()
-        .map(|sol| Located {
-            lambda0: sol.ratio(&one_minus, &bi_const(q(1))),
-            jacobian_zero: sol.flags[0],
-            multiplicity: sol.multiplicity,
-            s: sol.x,
-            t: sol.y,
-        })
-        .collect();
+    let located = |sol: Solution| Located {
+        lambda0: sol.ratio(&one_minus, &bi_const(q(1))),
+        jacobian_zero: sol.flags[0],
+        multiplicity: sol.multiplicity,
+        s: sol.x,
+        t: sol.y,
+    };
+    let (solutions, degenerate) = match solved {
+        Clipped::Points(s) => (s, None),
+        Clipped::Region => (
+            Vec::new(),
+            Some(Degenerate {
+                dimension: 2,
+                curve: String::new(),
+                boundary: Vec::new(),
+            }),
+        ),
+        Clipped::Curve {
+            curve,
+            boundary,
+            points,
+        } => (
+            points,
+            Some(Degenerate {
+                dimension: 1,
+                curve: bipoly_text(&curve, "s", "t"),
+                boundary: boundary.into_iter().map(located).collect(),
+            }),
+        ),
+    };
+    let mut points: Vec<Located> = solutions.into_iter().map(located).collect();
     points.sort_by(|a, b| a.s.cmp_exact(&b.s).then_with(|| a.t.cmp_exact(&b.t)));
     Ok(Locations {
         points,
-        infinite: false,
+        infinite: degenerate.is_some(),
+        degenerate,
     })
 }
 
@@ -347,17 +387,21 @@ pub struct Hit {
     /// Does the ray touch the surface (its direction lies in the tangent plane) rather than
     /// cross it?
     pub touch: bool,
-    /// Multiplicity as a root of the resultant.
+    /// Multiplicity as a root of the resultant (0 for a point of a curve of solutions).
     pub multiplicity: usize,
 }
 
 /// What [`ray_hits`] found.
 #[derive(Clone, Debug)]
 pub struct RayHits {
-    /// The hits with `τ ≥ 0`, in order of `τ` (the first is the first hit).
+    /// The hits with `τ ≥ 0`, in order of `τ` (the first is the first hit; with a curve of
+    /// hits, the isolated hits off it).
     pub hits: Vec<Hit>,
-    /// The ray runs along the surface (infinitely many hits).
+    /// The ray runs along the surface over a piece of positive length with `τ ≥ 0`
+    /// (infinitely many hits): [`RayHits::degenerate`] says where.
     pub infinite: bool,
+    /// The hits that are not isolated points, when there are such.
+    pub degenerate: Option<Degenerate<Hit>>,
 }
 
 /// Compare two ray parameters exactly when one is rational; otherwise by enclosures narrowed
@@ -438,34 +482,50 @@ pub fn ray_hits(p: &Patch, origin: &[Q; 3], direction: &[Q; 3]) -> Result<RayHit
         ),
         &bi_scale(&cross(0, 1), &direction[2]),
     );
-    let solved = solve(&f1, &f2, &Region::triangle(), &[touch])?;
-    let Solved::Points { solutions, .. } = solved else {
-        return Ok(RayHits {
-            hits: Vec::new(),
-            infinite: true,
-        });
-    };
+    // τ = rel_k / (d_k W) ≥ 0 ⟺ rel_k · d_k W ≥ 0 (where W ≠ 0)
+    let tau_den = bi_scale(w, &direction[k]);
+    let forward = bi_mul(&rel[k], &tau_den);
+    let solved = solve_clipped(&f1, &f2, &Region::triangle(), &[forward], &[touch])?;
     let one_minus = BiPoly {
         c: vec![vec![q(1), q(-1)], vec![q(-1)]],
     };
-    let mut hits = Vec::new();
-    for sol in solutions {
-        let tau = sol.ratio(&rel[k], &bi_scale(w, &direction[k]));
-        if tau.sign() == Ordering::Less {
-            continue;
-        }
-        hits.push(Hit {
-            tau,
-            lambda0: sol.ratio(&one_minus, &bi_const(q(1))),
-            touch: sol.flags[0],
-            multiplicity: sol.multiplicity,
-            s: sol.x,
-            t: sol.y,
-        });
-    }
+    let hit = |sol: Solution| Hit {
+        tau: sol.ratio(&rel[k], &tau_den),
+        lambda0: sol.ratio(&one_minus, &bi_const(q(1))),
+        touch: sol.flags[0],
+        multiplicity: sol.multiplicity,
+        s: sol.x,
+        t: sol.y,
+    };
+    let (solutions, degenerate) = match solved {
+        Clipped::Points(s) => (s, None),
+        Clipped::Region => (
+            Vec::new(),
+            Some(Degenerate {
+                dimension: 2,
+                curve: String::new(),
+                boundary: Vec::new(),
+            }),
+        ),
+        Clipped::Curve {
+            curve,
+            boundary,
+            points,
+        } => (
+            points,
+            Some(Degenerate {
+                dimension: 1,
+                curve: bipoly_text(&curve, "s", "t"),
+                boundary: boundary.into_iter().map(hit).collect(),
+            }),
+        ),
+    };
+    // τ ≥ 0 is one of the conditions `solve_clipped` kept to
+    let mut hits: Vec<Hit> = solutions.into_iter().map(hit).collect();
     hits.sort_by(|a, b| cmp_tau(&a.tau, &b.tau));
     Ok(RayHits {
         hits,
-        infinite: false,
+        infinite: degenerate.is_some(),
+        degenerate,
     })
 }

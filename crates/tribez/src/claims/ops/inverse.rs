@@ -466,9 +466,22 @@ impl<'a> InverseOp<'a> {
                         .iter()
                         .map(|p| vec![alg(&p.s), alg(&p.t)])
                         .collect(),
-                    infinite: r
-                        .infinite
-                        .then(|| "a whole curve of parameters maps to the point".to_string()),
+                    infinite: r.degenerate.as_ref().map(|d| {
+                        let region = if *anywhere {
+                            "the plane"
+                        } else {
+                            "the closed triangle"
+                        };
+                        if d.dimension == 2 {
+                            format!("every parameter point of {region} maps to the point")
+                        } else {
+                            format!(
+                                "a whole curve of parameters maps to the point: the pieces of {} = 0 in {region}{}",
+                                d.curve,
+                                boundary_text(d.boundary.iter().map(|l| (&l.s, &l.t)))
+                            )
+                        }
+                    }),
                 })
             }
             InverseQuery::Ray {
@@ -484,9 +497,17 @@ impl<'a> InverseOp<'a> {
                         .iter()
                         .map(|h| vec![ExactNumber::Expr(h.tau.clone()), alg(&h.s), alg(&h.t)])
                         .collect(),
-                    infinite: r
-                        .infinite
-                        .then(|| "the ray runs along the surface".to_string()),
+                    infinite: r.degenerate.as_ref().map(|d| {
+                        if d.dimension == 2 {
+                            "the patch lies on the ray's line".to_string()
+                        } else {
+                            format!(
+                                "the ray runs along the surface: the parameters on the pieces of {} = 0 in the closed triangle with τ ≥ 0{}",
+                                d.curve,
+                                boundary_text(d.boundary.iter().map(|h| (&h.s, &h.t)))
+                            )
+                        }
+                    }),
                 })
             }
             InverseQuery::Height { patch, at } => {
@@ -531,6 +552,20 @@ impl<'a> InverseOp<'a> {
             .answer()
             .map_err(|e| inputs.error("op", InverseProblem::from(e)))?;
         Ok(answer_value(&answer))
+    }
+}
+
+/// `, meeting the boundary at (s, t) = (…), (…)` (nothing for no point).
+fn boundary_text<'b>(
+    points: impl Iterator<Item = (&'b RealAlgebraic, &'b RealAlgebraic)>,
+) -> String {
+    let parts: Vec<String> = points
+        .map(|(s, t)| format!("({}, {})", s.to_text(), t.to_text()))
+        .collect();
+    if parts.is_empty() {
+        String::new()
+    } else {
+        format!(", meeting the boundary at (s, t) = {}", parts.join(", "))
     }
 }
 
