@@ -24,7 +24,9 @@ mod poly;
 mod surfaces;
 mod system;
 
-pub use bivariate::{BiPoly, resultant, subresultant1};
+pub use bivariate::{
+    BiPoly, div_exact as bivariate_div_exact, gcd as bivariate_gcd, resultant, subresultant1,
+};
 pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
@@ -158,12 +160,16 @@ mod json {
         }
     }
 
-    /// `{s: [from, to], t: [from, to]}`.
+    /// `{s: [from, to], t: [at s from, at s to], t_increasing}`.
     impl Serialize for Overlap {
         fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-            let mut m = s.serialize_map(Some(2))?;
+            let mut m = s.serialize_map(Some(3))?;
             m.serialize_entry("s", &self.s)?;
             m.serialize_entry("t", &self.t)?;
+            m.serialize_entry(
+                "t_increasing",
+                &(self.t[0].cmp_exact(&self.t[1]) == std::cmp::Ordering::Less),
+            )?;
             m.end()
         }
     }
