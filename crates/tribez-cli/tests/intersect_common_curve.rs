@@ -6,7 +6,11 @@ mod common;
 use common::{fixtures, tribez};
 
 fn fx(name: &str) -> String {
-    fixtures().join("intersect").join(name).display().to_string()
+    fixtures()
+        .join("intersect")
+        .join(name)
+        .display()
+        .to_string()
 }
 
 fn text(a: &str, b: &str) -> String {
@@ -34,13 +38,22 @@ fn a_fold_gives_one_line_per_piece() {
         "{t}"
     );
     // the relation, up to a constant factor: 4s − 1 − 4t + 4t^2
-    assert!(t.contains("on each overlap: ") && t.contains("4·t^2") && t.contains("4·s"), "{t}");
+    assert!(
+        t.contains("on each overlap: ") && t.contains("4·t^2") && t.contains("4·s"),
+        "{t}"
+    );
 }
 
 #[test]
 fn overlaps_in_json_carry_ends_direction_and_relation() {
     let out = tribez()
-        .args(["intersect", &fx("drop.toml"), &fx("loop.toml"), "--format", "json"])
+        .args([
+            "intersect",
+            &fx("drop.toml"),
+            &fx("loop.toml"),
+            "--format",
+            "json",
+        ])
         .assert()
         .code(0)
         .get_output()

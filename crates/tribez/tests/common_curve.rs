@@ -78,8 +78,18 @@ fn two_pieces_of_a_nodal_cubic_cross_at_the_node() {
 fn bezier_package_fixture_pair_crosses_at_an_irrational_point() {
     // G = s − t − 1; off it, s = 1 − √5/3 (root of 9x^2 − 18x + 4), t = √5/3 (root of
     // 9x^2 − 5), at (−1/4, 11/8), transversal; and the shared end point (1, 0)
-    let a = curve(&[("0", "2"), ("-1/2", "1"), ("-1/4", "3/4"), ("-3/32", "53/64")]);
-    let b = curve(&[("-3/32", "53/64"), ("1/16", "29/32"), ("1/8", "21/16"), ("-3/4", "13/8")]);
+    let a = curve(&[
+        ("0", "2"),
+        ("-1/2", "1"),
+        ("-1/4", "3/4"),
+        ("-3/32", "53/64"),
+    ]);
+    let b = curve(&[
+        ("-3/32", "53/64"),
+        ("1/16", "29/32"),
+        ("1/8", "21/16"),
+        ("-3/4", "13/8"),
+    ]);
     let r = intersect_curves(&a, &b).unwrap();
     assert_eq!(r.points.len(), 2, "{:?}", r.points);
     assert!(r.overlaps.is_empty());
@@ -103,11 +113,17 @@ fn a_curve_folding_back_on_a_segment_gives_two_pieces() {
     // to 1/2 as s goes from 1/4 to 1/2, and t from 1 down to 1/2
     let r = intersect_curves(&seg(), &fold2()).unwrap();
     points_are(&r, &[]);
-    pieces_are(&r, &[("1/4", "1/2", "0", "1/2"), ("1/4", "1/2", "1", "1/2")]);
+    pieces_are(
+        &r,
+        &[("1/4", "1/2", "0", "1/2"), ("1/4", "1/2", "1", "1/2")],
+    );
     // swapped: t = 1/4 + s − s^2: up from 1/4 to 1/2 on s ∈ [0, 1/2], down on [1/2, 1]
     let r = intersect_curves(&fold2(), &seg()).unwrap();
     points_are(&r, &[]);
-    pieces_are(&r, &[("0", "1/2", "1/4", "1/2"), ("1/2", "1", "1/2", "1/4")]);
+    pieces_are(
+        &r,
+        &[("0", "1/2", "1/4", "1/2"), ("1/2", "1", "1/2", "1/4")],
+    );
 }
 
 #[test]

@@ -141,11 +141,10 @@ struct IntersectJson<'a> {
 /// `j` (the polynomial's `y` is `s`, its `x` is `t`).
 fn relation_int(g: &tribez::algebraic::BiPoly) -> Vec<(num_bigint::BigInt, usize, usize)> {
     use num_integer::Integer;
-    let l = g
-        .c
-        .iter()
-        .flatten()
-        .fold(num_bigint::BigInt::from(1), |l, x| l.lcm(x.denom()));
+    let l =
+        g.c.iter()
+            .flatten()
+            .fold(num_bigint::BigInt::from(1), |l, x| l.lcm(x.denom()));
     let mut out = Vec::new();
     for (i, row) in g.c.iter().enumerate() {
         for (j, x) in row.iter().enumerate() {

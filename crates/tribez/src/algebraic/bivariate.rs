@@ -482,18 +482,17 @@ fn zbi_trim(p: &mut ZBi) {
 fn zbi_primitive(p: &[super::IntPoly]) -> (super::IntPoly, ZBi) {
     let mut g = super::IntPoly::default();
     for c in p {
-        g = if g.is_zero() {
-            c.primitive()
-        } else {
-            g.gcd(c)
-        };
+        g = if g.is_zero() { c.primitive() } else { g.gcd(c) };
     }
     if g.is_zero() {
         return (g, Vec::new());
     }
     let mut q: ZBi = p
         .iter()
-        .map(|c| c.div_exact(&g).expect("the content divides every coefficient"))
+        .map(|c| {
+            c.div_exact(&g)
+                .expect("the content divides every coefficient")
+        })
         .collect();
     let mut n = BigInt::zero();
     for c in &q {
@@ -609,7 +608,9 @@ pub fn div_exact(a: &BiPoly, b: &BiPoly) -> Option<BiPoly> {
         return None;
     }
     if r.is_zero() {
-        return Some(BiPoly { c: vec![Vec::new()] });
+        return Some(BiPoly {
+            c: vec![Vec::new()],
+        });
     }
     let db = b.c.len() - 1;
     if r.c.len() <= db {
@@ -620,7 +621,10 @@ pub fn div_exact(a: &BiPoly, b: &BiPoly) -> Option<BiPoly> {
         let k = r.c.len() - 1 - db;
         let qk = div_q(r.c.last().expect("non-empty"), &b.c[db])?;
         for (j, bj) in b.c.iter().enumerate() {
-            r.c[k + j] = trim(add(&r.c[k + j], &mul(&qk, bj).iter().map(|x| -x).collect::<Vec<_>>()));
+            r.c[k + j] = trim(add(
+                &r.c[k + j],
+                &mul(&qk, bj).iter().map(|x| -x).collect::<Vec<_>>(),
+            ));
         }
         if !r.c[k + db].is_empty() {
             return None;

@@ -358,6 +358,7 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
                 .collect(),
         }
     };
+    check_work(&f1, &f2)?;
     let found = match solve_points(&f1, &f2, std::slice::from_ref(&cross))? {
         Some(found) => found,
         None => return on_common_curve(b, &f1, &f2, &cross),
@@ -380,6 +381,51 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
         resultant: found.resultant,
         relation: None,
     })
+}
+
+/// The largest work estimate [`intersect_curves`] takes on (see [`work_estimate`]).
+pub const MAX_INTERSECT_WORK: u64 = 12_000_000;
+
+/// The largest bit length of the integer coefficients of `p` scaled by the lcm of its
+/// denominators.
+fn int_bits(p: &BiPoly) -> u64 {
+    let l = p.c.iter().flatten().fold(BigInt::one(), |l, x| {
+        num_integer::Integer::lcm(&l, x.denom())
+    });
+    p.c.iter()
+        .flatten()
+        .map(|x| (x.numer() * (&l / x.denom())).bits())
+        .max()
+        .unwrap_or(0)
+}
+
+/// The work estimate of intersecting two curves whose equations are `f1`, `f2` (polynomials
+/// in `s` with coefficients in `t`): with `D = deg_s f2·deg_t f1 + deg_s f1·deg_t f2` the
+/// degree bound of the resultant and `L = (deg_s f1 + deg_s f2)·b` a bound on the bit length
+/// of its coefficients (`b` the largest bit length of the equations' integer coefficients),
+/// `D²·(D + L)`: root isolation by subdivision of a degree-`D` polynomial with `L`-bit
+/// coefficients, and the `D + 1` determinants of the resultant, grow about so.
+pub fn work_estimate(f1: &BiPoly, f2: &BiPoly) -> u64 {
+    let (f1, f2) = (f1.trimmed(), f2.trimmed());
+    let d = (f2.deg_y() * f1.deg_x() + f1.deg_y() * f2.deg_x()) as u64;
+    let l = (f1.deg_y() + f2.deg_y()) as u64 * int_bits(&f1).max(int_bits(&f2));
+    d.saturating_mul(d).saturating_mul(d.saturating_add(l))
+}
+
+/// Refuse a pair of curves whose [`work_estimate`] is above [`MAX_INTERSECT_WORK`].
+fn check_work(f1: &BiPoly, f2: &BiPoly) -> Result<(), AlgebraicError> {
+    let w = work_estimate(f1, f2);
+    if w > MAX_INTERSECT_WORK {
+        let (f1, f2) = (f1.trimmed(), f2.trimmed());
+        return Err(AlgebraicError::Unsupported(format!(
+            "curves whose resultant has degree up to {} with coefficients of up to about {} bits \
+             (work estimate {w}, above the limit {MAX_INTERSECT_WORK}; lower the degrees or the \
+             coordinates' bit lengths)",
+            f2.deg_y() * f1.deg_x() + f1.deg_y() * f2.deg_x(),
+            (f1.deg_y() + f2.deg_y()) as u64 * int_bits(&f1).max(int_bits(&f2)),
+        )));
+    }
+    Ok(())
 }
 
 /// The point `B(t)` as a rational enclosure of width at most 2^-120 per coordinate.
@@ -489,7 +535,13 @@ fn solve_points(
         return Ok(None);
     }
     let s_roots = RealAlgebraic::roots_in(&ry, &q(0), &q(1))?;
-    for lam in [q(1) / q(2), q(-1) / q(3), q(2) / q(3), q(-3) / q(5), q(3) / q(7)] {
+    for lam in [
+        q(1) / q(2),
+        q(-1) / q(3),
+        q(2) / q(3),
+        q(-3) / q(5),
+        q(3) / q(7),
+    ] {
         let g1 = shear(f1, &lam);
         let g2 = shear(f2, &lam);
         let gf: Vec<BiPoly> = flags.iter().map(|f| shear(f, &lam)).collect();
@@ -551,13 +603,12 @@ fn solve_points(
 
 /// `∂p/∂y`.
 fn d_y(p: &BiPoly) -> BiPoly {
-    let c: Vec<Vec<Q>> = p
-        .c
-        .iter()
-        .enumerate()
-        .skip(1)
-        .map(|(j, cj)| cj.iter().map(|a| a * q(j as i64)).collect())
-        .collect();
+    let c: Vec<Vec<Q>> =
+        p.c.iter()
+            .enumerate()
+            .skip(1)
+            .map(|(j, cj)| cj.iter().map(|a| a * q(j as i64)).collect())
+            .collect();
     BiPoly {
         c: if c.is_empty() { vec![Vec::new()] } else { c },
     }
@@ -589,15 +640,18 @@ fn reduced(p: &BiPoly) -> BiPoly {
             c: vec![p.c[0].clone()],
         };
         for cj in &p.c[1..] {
-            g = super::bivariate::gcd(&g, &BiPoly { c: vec![cj.clone()] });
+            g = super::bivariate::gcd(
+                &g,
+                &BiPoly {
+                    c: vec![cj.clone()],
+                },
+            );
         }
         super::bivariate::div_exact(&p, &g).unwrap_or(p)
     };
     let p = strip(&strip(p).swap()).swap().trimmed();
     let g = super::bivariate::gcd(&p, &d_y(&p)).trimmed();
-    super::bivariate::div_exact(&p, &g)
-        .unwrap_or(p)
-        .trimmed()
+    super::bivariate::div_exact(&p, &g).unwrap_or(p).trimmed()
 }
 
 /// The sign of `g` at a solution whose base value is algebraic and whose other unknown is
@@ -706,12 +760,7 @@ fn curve_in_square(
     // points in y (p = p_x = 0), the sides y = 0 and y = 1, and x = 0, 1
     let mut breaks = vec![RealAlgebraic::rational(q(0)), RealAlgebraic::rational(q(1))];
     let y1: Vec<Q> = p.c.iter().fold(Vec::new(), |acc, c| add(&acc, c));
-    for poly in [
-        resultant(p, &py),
-        resultant(p, &px),
-        p.c[0].clone(),
-        y1,
-    ] {
+    for poly in [resultant(p, &py), resultant(p, &px), p.c[0].clone(), y1] {
         breaks.extend(unit_roots(&poly)?);
     }
     breaks.sort_by(|a, b| a.cmp_exact(b));
@@ -746,7 +795,11 @@ fn curve_in_square(
                     [None, None]
                 } else {
                     let k = if interior { 2 } else { 1 };
-                    if syy != sx { [Some(0), Some(k)] } else { [Some(k), Some(0)] }
+                    if syy != sx {
+                        [Some(0), Some(k)]
+                    } else {
+                        [Some(k), Some(0)]
+                    }
                 }
             } else {
                 [None, None]

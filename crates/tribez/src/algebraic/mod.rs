@@ -27,7 +27,10 @@ mod system;
 pub use bivariate::{
     BiPoly, div_exact as bivariate_div_exact, gcd as bivariate_gcd, resultant, subresultant1,
 };
-pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
+pub use curves::{
+    Curve, CurveIntersections, Intersection, MAX_INTERSECT_WORK, Overlap, intersect_curves,
+    point_text, work_estimate,
+};
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
