@@ -105,3 +105,22 @@ fn a_claim_of_no_points_fails_on_an_overlap() {
     let t = String::from_utf8(out).unwrap();
     assert!(t.contains("share a piece"), "{t}");
 }
+
+#[test]
+fn a_pair_above_the_work_limit_stops_at_once() {
+    // two degree-11 curves with 40-bit coordinates: D = 121, L ≥ 22·40 = 880, so
+    // D²·(D + L) ≥ 14641·1001 > 14 million, above the limit of 12 million (guide, intersect)
+    let start = std::time::Instant::now();
+    let out = tribez()
+        .args(["intersect", &fx("big11_a.toml"), &fx("big11_b.toml")])
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("big11_a.toml") && err.contains("big11_b.toml"), "{err}");
+    assert!(err.contains("above the limit 12000000"), "{err}");
+    assert!(start.elapsed().as_secs() < 10);
+}
