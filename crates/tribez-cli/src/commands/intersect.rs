@@ -89,12 +89,22 @@ impl Render for IntersectReport {
         }
         for o in &r.overlaps {
             out += &format!(
-                "overlap: s from {} to {}, t from {} to {}\n",
+                "overlap: s from {} to {}, t from {} to {}{}\n",
                 o.s[0].to_text(),
                 o.s[1].to_text(),
                 o.t[0].to_text(),
-                o.t[1].to_text()
+                o.t[1].to_text(),
+                match o.t[0].cmp_exact(&o.t[1]) {
+                    std::cmp::Ordering::Less => " (t increasing with s)",
+                    std::cmp::Ordering::Greater => " (t decreasing as s increases)",
+                    std::cmp::Ordering::Equal => "",
+                }
             );
+        }
+        if let Some(g) = &r.relation
+            && !r.overlaps.is_empty()
+        {
+            out += &format!("on each overlap: {} = 0\n", relation_text(g));
         }
         out
     }
@@ -107,6 +117,7 @@ impl Render for IntersectReport {
             count: r.points.len(),
             intersections: &r.points,
             overlaps: &r.overlaps,
+            relation: r.relation.as_ref().map(relation_terms),
         })
         .expect("serializable")
     }
@@ -120,4 +131,61 @@ struct IntersectJson<'a> {
     count: usize,
     intersections: &'a [tribez::algebraic::Intersection],
     overlaps: &'a [tribez::algebraic::Overlap],
+    /// The relation `Σ c·s^i·t^j = 0` of the overlaps (integer coefficients), when the curves
+    /// lie on one algebraic curve.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    relation: Option<Vec<Json>>,
+}
+
+/// The relation's terms with integer coefficients: `(c, i, j)` for `c·s^i·t^j`, by `i` then
+/// `j` (the polynomial's `y` is `s`, its `x` is `t`).
+fn relation_int(g: &tribez::algebraic::BiPoly) -> Vec<(num_bigint::BigInt, usize, usize)> {
+    use num_integer::Integer;
+    let l =
+        g.c.iter()
+            .flatten()
+            .fold(num_bigint::BigInt::from(1), |l, x| l.lcm(x.denom()));
+    let mut out = Vec::new();
+    for (i, row) in g.c.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            if !num_traits::Zero::is_zero(x) {
+                out.push((x.numer() * (&l / x.denom()), i, j));
+            }
+        }
+    }
+    out
+}
+
+fn relation_terms(g: &tribez::algebraic::BiPoly) -> Vec<Json> {
+    relation_int(g)
+        .into_iter()
+        .map(|(c, i, j)| serde_json::json!({"coefficient": c.to_string(), "s": i, "t": j}))
+        .collect()
+}
+
+fn relation_text(g: &tribez::algebraic::BiPoly) -> String {
+    let mut out = String::new();
+    for (k, (c, i, j)) in relation_int(g).into_iter().enumerate() {
+        let neg = c < num_bigint::BigInt::from(0);
+        let a = if neg { -c } else { c };
+        out += match (k, neg) {
+            (0, true) => "-",
+            (0, false) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        };
+        let mut factors = Vec::new();
+        if a != num_bigint::BigInt::from(1) || (i == 0 && j == 0) {
+            factors.push(a.to_string());
+        }
+        for (v, e) in [("s", i), ("t", j)] {
+            match e {
+                0 => {}
+                1 => factors.push(v.to_string()),
+                e => factors.push(format!("{v}^{e}")),
+            }
+        }
+        out += &factors.join("·");
+    }
+    out
 }

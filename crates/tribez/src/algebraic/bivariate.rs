@@ -443,3 +443,194 @@ pub fn subresultant1_generic(f: &BiPoly, g: &BiPoly) -> (Vec<Q>, Vec<Q>) {
     }
     (interpolate(&v1), interpolate(&v0))
 }
+
+/// `P` with integer coefficients, as a polynomial in `y` over `ℤ[x]`: `p[j]` is the
+/// coefficient of `y^j` (the exact arithmetic of [`gcd`] and [`div_exact`]).
+type ZBi = Vec<super::IntPoly>;
+
+fn to_zbi(p: &BiPoly) -> ZBi {
+    let (c, _) = integer_bipoly(p);
+    let mut z: ZBi = c.into_iter().map(super::IntPoly::new).collect();
+    zbi_trim(&mut z);
+    z
+}
+
+fn from_zbi(p: &[super::IntPoly]) -> BiPoly {
+    let c: Vec<Vec<Q>> = p
+        .iter()
+        .map(|c| {
+            c.coeffs()
+                .iter()
+                .map(|x| Q::from_integer(x.clone()))
+                .collect()
+        })
+        .collect();
+    BiPoly {
+        c: if c.is_empty() { vec![Vec::new()] } else { c },
+    }
+}
+
+fn zbi_trim(p: &mut ZBi) {
+    while p.last().is_some_and(super::IntPoly::is_zero) {
+        p.pop();
+    }
+}
+
+/// The primitive part over `ℤ[x]`: every coefficient divided by the gcd of all of them (a
+/// primitive polynomial in `x`) and by the gcd of the integers left; the content is returned
+/// too (primitive, positive leading coefficient; zero for zero).
+fn zbi_primitive(p: &[super::IntPoly]) -> (super::IntPoly, ZBi) {
+    let mut g = super::IntPoly::default();
+    for c in p {
+        g = if g.is_zero() { c.primitive() } else { g.gcd(c) };
+    }
+    if g.is_zero() {
+        return (g, Vec::new());
+    }
+    let mut q: ZBi = p
+        .iter()
+        .map(|c| {
+            c.div_exact(&g)
+                .expect("the content divides every coefficient")
+        })
+        .collect();
+    let mut n = BigInt::zero();
+    for c in &q {
+        n = n.gcd(&c.content());
+    }
+    if !n.is_zero() && !n.is_one() {
+        let d = super::IntPoly::new(vec![n]);
+        q = q
+            .iter()
+            .map(|c| c.div_exact(&d).expect("integer content"))
+            .collect();
+    }
+    (g, q)
+}
+
+/// `prem_y(a, b)`: the remainder of `lc(b)^(deg a − deg b + 1)·a` by `b` in `ℤ[x][y]`.
+fn zbi_prem(a: &[super::IntPoly], b: &[super::IntPoly]) -> ZBi {
+    let db = b.len() - 1;
+    let lc = b[db].clone();
+    let mut r: ZBi = a.to_vec();
+    zbi_trim(&mut r);
+    while r.len() > db && !r.is_empty() {
+        let k = r.len() - 1 - db;
+        let top = r.pop().expect("non-empty");
+        for x in r.iter_mut() {
+            *x = x.mul(&lc);
+        }
+        for (j, bj) in b[..db].iter().enumerate() {
+            r[k + j] = r[k + j].sub(&top.mul(bj));
+        }
+        zbi_trim(&mut r);
+    }
+    r
+}
+
+/// The greatest common divisor of `a` and `b` in `ℚ[x, y]`, up to a constant factor, with
+/// integer coefficients (Gauss's lemma: `gcd = gcd(cont a, cont b)·gcd(pp a, pp b)` with
+/// contents and primitive parts over `ℤ[x]`, the primitive parts' gcd by the primitive
+/// pseudo-remainder sequence in `y`; docs/theory.md §16.5). `gcd(0, b)` is `b`'s primitive
+/// multiple; `gcd(0, 0)` is zero.
+///
+/// ```
+/// use tribez::algebraic::{BiPoly, bivariate_gcd};
+/// use tribez::parse_rational;
+/// let q = |s: &str| parse_rational(s).unwrap();
+/// // (y − x)(y + 1) and (y − x)(x + 2): the gcd is y − x (up to a constant)
+/// let a = BiPoly { c: vec![vec![q("0"), q("-1")], vec![q("1"), q("-1")], vec![q("1")]] };
+/// let b = BiPoly { c: vec![vec![q("0"), q("-2"), q("-1")], vec![q("2"), q("1")]] };
+/// let g = bivariate_gcd(&a, &b).trimmed();
+/// assert_eq!(g.c.len(), 2);
+/// assert_eq!(g.c[0].len(), 2);
+/// assert_eq!(&g.c[0][1] + &g.c[1][0], q("0"));
+/// ```
+pub fn gcd(a: &BiPoly, b: &BiPoly) -> BiPoly {
+    let (za, zb) = (to_zbi(a), to_zbi(b));
+    if za.is_empty() {
+        return from_zbi(&zbi_primitive(&zb).1);
+    }
+    if zb.is_empty() {
+        return from_zbi(&zbi_primitive(&za).1);
+    }
+    let (ca, mut pa) = zbi_primitive(&za);
+    let (cb, mut pb) = zbi_primitive(&zb);
+    let c = ca.gcd(&cb);
+    if pa.len() < pb.len() {
+        std::mem::swap(&mut pa, &mut pb);
+    }
+    while !pb.is_empty() {
+        let r = zbi_prem(&pa, &pb);
+        pa = pb;
+        pb = zbi_primitive(&r).1;
+    }
+    let g: ZBi = if pa.len() <= 1 {
+        vec![c]
+    } else {
+        pa.iter().map(|x| x.mul(&c)).collect()
+    };
+    from_zbi(&g)
+}
+
+/// The exact quotient `a / b` of univariate polynomials over `ℚ` (ascending) when `b ≠ 0`
+/// divides `a` (`None` otherwise).
+fn div_q(a: &[Q], b: &[Q]) -> Option<Vec<Q>> {
+    let b = trim(b.to_vec());
+    let mut r = trim(a.to_vec());
+    let db = b.len().checked_sub(1)?;
+    if r.is_empty() {
+        return Some(Vec::new());
+    }
+    if r.len() <= db {
+        return None;
+    }
+    let mut quot = vec![Q::zero(); r.len() - db];
+    while r.len() > db {
+        let k = r.len() - 1 - db;
+        let qk = r[r.len() - 1].clone() / &b[db];
+        for (j, bj) in b.iter().enumerate() {
+            r[k + j] -= &qk * bj;
+        }
+        r.pop();
+        quot[k] = qk;
+        r = trim(r);
+    }
+    r.is_empty().then_some(quot)
+}
+
+/// The exact quotient `a / b` in `ℚ[x, y]` when `b ≠ 0` divides `a` (`None` otherwise): long
+/// division in `y`, each quotient coefficient an exact division in `ℚ[x]`.
+pub fn div_exact(a: &BiPoly, b: &BiPoly) -> Option<BiPoly> {
+    let b = b.trimmed();
+    let mut r = a.trimmed();
+    if b.is_zero() {
+        return None;
+    }
+    if r.is_zero() {
+        return Some(BiPoly {
+            c: vec![Vec::new()],
+        });
+    }
+    let db = b.c.len() - 1;
+    if r.c.len() <= db {
+        return None;
+    }
+    let mut quot = vec![Vec::new(); r.c.len() - db];
+    while r.c.len() > db && !r.is_zero() {
+        let k = r.c.len() - 1 - db;
+        let qk = div_q(r.c.last().expect("non-empty"), &b.c[db])?;
+        for (j, bj) in b.c.iter().enumerate() {
+            r.c[k + j] = trim(add(
+                &r.c[k + j],
+                &mul(&qk, bj).iter().map(|x| -x).collect::<Vec<_>>(),
+            ));
+        }
+        if !r.c[k + db].is_empty() {
+            return None;
+        }
+        quot[k] = qk;
+        r = r.trimmed();
+    }
+    r.is_zero().then(|| BiPoly { c: quot })
+}

@@ -20,9 +20,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::bivariate::{BiPoly, add, horner, mul};
+use super::bivariate::{BiPoly, add, horner, mul, resultant, subresultant1};
 use super::number::simplest_between;
-use super::system::{Region, Solved, enclose_ratio, solve};
+use super::system::{Half, Region, Solution, Solved, enclose_ratio, match_value, solve};
 use super::{AlgebraicError, IntPoly, MAX_CURVE_DEGREE, RealAlgebraic, check_input};
 use crate::patch_type::Patch;
 
@@ -53,12 +53,16 @@ pub struct Intersection {
     pub point: [(Q, Q); 2],
 }
 
-/// A piece shared by both curves: `A([s0, s1]) = B([t0, t1])` (as sets).
+/// A piece shared by both curves: a branch of the relation `G(s, t) = 0` on which `s` and `t`
+/// are both strictly monotone, from `(s[0], t[0])` to `(s[1], t[1])` with `s[0] < s[1]`:
+/// for every `s` in `[s[0], s[1]]` exactly one `t` between `t[0]` and `t[1]` has
+/// `A(s) = B(t)` on this piece, increasing with `s` when `t[0] < t[1]` and decreasing when
+/// `t[0] > t[1]`. A curve that folds back or passes a node gives several pieces.
 #[derive(Clone, Debug)]
 pub struct Overlap {
-    /// The parameter interval on the first curve.
+    /// The parameter interval on the first curve (increasing).
     pub s: [RealAlgebraic; 2],
-    /// The parameter interval on the second curve (in the order matching `s`).
+    /// The parameters on the second curve at `s[0]` and at `s[1]`.
     pub t: [RealAlgebraic; 2],
 }
 
@@ -71,6 +75,11 @@ pub struct CurveIntersections {
     pub overlaps: Vec<Overlap>,
     /// `Res_s(F1, F2)` as a primitive integer polynomial in `t` (zero when the curves overlap).
     pub resultant: IntPoly,
+    /// When both curves lie on one algebraic curve: the relation `G(s, t) = 0` that holds
+    /// exactly on every shared piece (the square-free common factor of `F1` and `F2`, with
+    /// no factor in `s` or `t` alone), as a polynomial in `s` (the `y` of [`BiPoly`]) with
+    /// coefficients in `t`.
+    pub relation: Option<BiPoly>,
 }
 
 fn q(k: i64) -> Q {
@@ -349,136 +358,87 @@ pub fn intersect_curves(a: &Curve, b: &Curve) -> Result<CurveIntersections, Alge
                 .collect(),
         }
     };
-    let (solutions, resultant) = match solve(&f1, &f2, &Region::unit_square(), &[cross])? {
-        Solved::Infinite => return overlap(a, b),
-        Solved::Points {
-            solutions,
-            resultant,
-        } => (solutions, resultant),
+    check_work(&f1, &f2)?;
+    let found = match solve_points(&f1, &f2, std::slice::from_ref(&cross))? {
+        Some(found) => found,
+        None => return on_common_curve(b, &f1, &f2, &cross),
     };
-    let mut points: Vec<Intersection> = solutions
+    let mut points: Vec<Intersection> = found
+        .points
         .into_iter()
-        .map(|sol| {
-            // the point from the curve whose parameter is the base value
-            let point = if sol.partner.base_is_x {
-                [
-                    enclose_ratio(&sol.x, &xb, &wb, &tiny()),
-                    enclose_ratio(&sol.x, &yb, &wb, &tiny()),
-                ]
-            } else {
-                [
-                    enclose_ratio(&sol.y, &xa, &wa, &tiny()),
-                    enclose_ratio(&sol.y, &ya, &wa, &tiny()),
-                ]
-            };
-            Intersection {
-                s: sol.y,
-                t: sol.x,
-                multiplicity: Some(sol.multiplicity),
-                tangential: sol.flags[0],
-                point,
-            }
+        .map(|p| Intersection {
+            point: point_of(b, &p.t),
+            s: p.s,
+            t: p.t,
+            multiplicity: p.multiplicity,
+            tangential: p.flags[0],
         })
         .collect();
     points.sort_by(|x, y| x.s.cmp_exact(&y.s).then_with(|| x.t.cmp_exact(&y.t)));
     Ok(CurveIntersections {
         points,
         overlaps: Vec::new(),
-        resultant,
+        resultant: found.resultant,
+        relation: None,
     })
+}
+
+/// The largest work estimate [`intersect_curves`] takes on (see [`work_estimate`]).
+pub const MAX_INTERSECT_WORK: u64 = 12_000_000;
+
+/// The largest bit length of the integer coefficients of `p` scaled by the lcm of its
+/// denominators.
+fn int_bits(p: &BiPoly) -> u64 {
+    let l = p.c.iter().flatten().fold(BigInt::one(), |l, x| {
+        num_integer::Integer::lcm(&l, x.denom())
+    });
+    p.c.iter()
+        .flatten()
+        .map(|x| (x.numer() * (&l / x.denom())).bits())
+        .max()
+        .unwrap_or(0)
+}
+
+/// The work estimate of intersecting two curves whose equations are `f1`, `f2` (polynomials
+/// in `s` with coefficients in `t`): with `D = deg_s f2·deg_t f1 + deg_s f1·deg_t f2` the
+/// degree bound of the resultant and `L = (deg_s f1 + deg_s f2)·b` a bound on the bit length
+/// of its coefficients (`b` the largest bit length of the equations' integer coefficients),
+/// `D²·(D + L)`: root isolation by subdivision of a degree-`D` polynomial with `L`-bit
+/// coefficients, and the `D + 1` determinants of the resultant, grow about so.
+pub fn work_estimate(f1: &BiPoly, f2: &BiPoly) -> u64 {
+    let (f1, f2) = (f1.trimmed(), f2.trimmed());
+    let d = (f2.deg_y() * f1.deg_x() + f1.deg_y() * f2.deg_x()) as u64;
+    let l = (f1.deg_y() + f2.deg_y()) as u64 * int_bits(&f1).max(int_bits(&f2));
+    d.saturating_mul(d).saturating_mul(d.saturating_add(l))
+}
+
+/// Refuse a pair of curves whose [`work_estimate`] is above [`MAX_INTERSECT_WORK`].
+fn check_work(f1: &BiPoly, f2: &BiPoly) -> Result<(), AlgebraicError> {
+    let w = work_estimate(f1, f2);
+    if w > MAX_INTERSECT_WORK {
+        let (f1, f2) = (f1.trimmed(), f2.trimmed());
+        return Err(AlgebraicError::Unsupported(format!(
+            "curves whose resultant has degree up to {} with coefficients of up to about {} bits \
+             (work estimate {w}, above the limit {MAX_INTERSECT_WORK}; lower the degrees or the \
+             coordinates' bit lengths)",
+            f2.deg_y() * f1.deg_x() + f1.deg_y() * f2.deg_x(),
+            (f1.deg_y() + f2.deg_y()) as u64 * int_bits(&f1).max(int_bits(&f2)),
+        )));
+    }
+    Ok(())
+}
+
+/// The point `B(t)` as a rational enclosure of width at most 2^-120 per coordinate.
+fn point_of(b: &Curve, t: &RealAlgebraic) -> [(Q, Q); 2] {
+    let [xb, yb, wb] = b.homogeneous();
+    [
+        enclose_ratio(t, &xb, &wb, &tiny()),
+        enclose_ratio(t, &yb, &wb, &tiny()),
+    ]
 }
 
 fn tiny() -> Q {
     Q::new(BigInt::one(), BigInt::one() << 120u32)
-}
-
-/// The parameter on `c` nearest (by value) to `near` among those mapping to `p`.
-fn nearest_parameter(
-    c: &Curve,
-    p: &[Q; 2],
-    near: &Q,
-) -> Result<Option<RealAlgebraic>, AlgebraicError> {
-    let Some(ts) = c.parameters_of(p)? else {
-        return Ok(None);
-    };
-    let w = q(1) / q(1 << 30);
-    Ok(ts.into_iter().min_by_key(|t| {
-        let (a, b) = t.enclosure(&w);
-        ((a + b) / q(2) - near).abs()
-    }))
-}
-
-/// Curves that share a component: the pieces of `[0, 1]` on `a` whose image lies on `b`.
-fn overlap(a: &Curve, b: &Curve) -> Result<CurveIntersections, AlgebraicError> {
-    // break points on a: its ends, and the parameters of b's end points
-    let mut brk: Vec<(RealAlgebraic, [Q; 2])> = vec![
-        (RealAlgebraic::rational(q(0)), a.at(&q(0))),
-        (RealAlgebraic::rational(q(1)), a.at(&q(1))),
-    ];
-    for end in [q(0), q(1)] {
-        let p = b.at(&end);
-        for s in a.parameters_of(&p)?.unwrap_or_default() {
-            brk.push((s, p.clone()));
-        }
-    }
-    brk.sort_by(|x, y| x.0.cmp_exact(&y.0));
-    brk.dedup_by(|x, y| x.0.cmp_exact(&y.0) == Ordering::Equal);
-    // which pieces lie on b
-    let mut on = Vec::new();
-    for w in brk.windows(2) {
-        let r = rational_between(&w[0].0, &w[1].0);
-        let ts = b.parameters_of(&a.at(&r))?;
-        let t_mid = ts.and_then(|ts| {
-            ts.first().map(|t| {
-                let (x, y) = t.enclosure(&(q(1) / q(1 << 30)));
-                (x + y) / q(2)
-            })
-        });
-        on.push(t_mid);
-    }
-    let mut out = CurveIntersections::default();
-    let mut i = 0;
-    while i < on.len() {
-        let Some(tm) = on[i].clone() else {
-            i += 1;
-            continue;
-        };
-        let mut j = i;
-        while j + 1 < on.len() && on[j + 1].is_some() {
-            j += 1;
-        }
-        let (s0, p0) = &brk[i];
-        let (s1, p1) = &brk[j + 1];
-        let t0 = nearest_parameter(b, p0, &tm)?;
-        let t1 = nearest_parameter(b, p1, &tm)?;
-        if let (Some(t0), Some(t1)) = (t0, t1) {
-            out.overlaps.push(Overlap {
-                s: [s0.clone(), s1.clone()],
-                t: [t0, t1],
-            });
-        }
-        i = j + 1;
-    }
-    // break points on b that no overlap covers: isolated touching points
-    for (k, (s, p)) in brk.iter().enumerate() {
-        let left = k > 0 && on[k - 1].is_some();
-        let right = k < on.len() && on[k].is_some();
-        if left || right {
-            continue;
-        }
-        if let Some(ts) = b.parameters_of(p)? {
-            for t in ts {
-                out.points.push(Intersection {
-                    s: s.clone(),
-                    t,
-                    multiplicity: None,
-                    tangential: true,
-                    point: [(p[0].clone(), p[0].clone()), (p[1].clone(), p[1].clone())],
-                });
-            }
-        }
-    }
-    Ok(out)
 }
 
 /// The point of an intersection as text: exact coordinates, or 17 significant digits of an
@@ -498,5 +458,532 @@ pub fn point_text(point: &[(Q, Q); 2]) -> [String; 2] {
                 )
             }
         }
+    })
+}
+
+/// A solution of two equations in `(s, t)`: the parameters, the multiplicity (as a root of
+/// the resultant it was found from) and whether each flag polynomial vanishes there.
+struct Found {
+    s: RealAlgebraic,
+    t: RealAlgebraic,
+    multiplicity: Option<usize>,
+    flags: Vec<bool>,
+}
+
+/// The solutions of `f1 = f2 = 0` in `[0, 1]²` and `Res_s(f1, f2)`.
+struct FoundAll {
+    points: Vec<Found>,
+    resultant: IntPoly,
+}
+
+/// `p(x, y' + λx)`: the polynomial in the sheared unknown `y' = y − λx` (binomial expansion
+/// of `(y' + λx)^j`).
+fn shear(p: &BiPoly, lam: &Q) -> BiPoly {
+    let n = p.c.len();
+    let mut c: Vec<Vec<Q>> = vec![Vec::new(); n.max(1)];
+    for (j, cj) in p.c.iter().enumerate() {
+        let mut lp = Q::one(); // λ^(j − k)
+        for k in (0..=j).rev() {
+            // C(j, k) λ^(j−k) x^(j−k) c_j(x) y'^k
+            let f = Q::from_integer(binom(j, k)) * &lp;
+            let mut term = vec![Q::zero(); j - k];
+            term.extend(cj.iter().map(|a| a * &f));
+            c[k] = add(&c[k], &term);
+            lp *= lam;
+        }
+    }
+    BiPoly { c }
+}
+
+/// Every solution of `f1 = f2 = 0` (polynomials in `s` with coefficients in `t`) in
+/// `[0, 1]²`, each with whether each of `flags` vanishes there; `None` when the resultant
+/// vanishes identically (the equations share a factor). Where the engine cannot tell the
+/// partners apart (both lines through a solution meet the solution set again, as at a point
+/// where each curve passes twice), the unknowns are sheared, `s = s' + λt` for a few small
+/// rational `λ`, which separates the solutions' projections; each solution's `s` is then
+/// identified among the roots of `Res_t(f1, f2)` by exact signs.
+fn solve_points(
+    f1: &BiPoly,
+    f2: &BiPoly,
+    flags: &[BiPoly],
+) -> Result<Option<FoundAll>, AlgebraicError> {
+    match solve(f1, f2, &Region::unit_square(), flags) {
+        Ok(Solved::Infinite) => return Ok(None),
+        Ok(Solved::Points {
+            solutions,
+            resultant,
+        }) => {
+            return Ok(Some(FoundAll {
+                points: solutions
+                    .into_iter()
+                    .map(|sol| Found {
+                        s: sol.y,
+                        t: sol.x,
+                        multiplicity: Some(sol.multiplicity),
+                        flags: sol.flags,
+                    })
+                    .collect(),
+                resultant,
+            }));
+        }
+        Err(AlgebraicError::Unsupported(_)) => {}
+        Err(e) => return Err(e),
+    }
+    let rx = IntPoly::from_rationals(&resultant(&f1.trimmed(), &f2.trimmed()));
+    let ry = IntPoly::from_rationals(&resultant(&f1.swap().trimmed(), &f2.swap().trimmed()));
+    if rx.is_zero() || ry.is_zero() {
+        return Ok(None);
+    }
+    let s_roots = RealAlgebraic::roots_in(&ry, &q(0), &q(1))?;
+    for lam in [
+        q(1) / q(2),
+        q(-1) / q(3),
+        q(2) / q(3),
+        q(-3) / q(5),
+        q(3) / q(7),
+    ] {
+        let g1 = shear(f1, &lam);
+        let g2 = shear(f2, &lam);
+        let gf: Vec<BiPoly> = flags.iter().map(|f| shear(f, &lam)).collect();
+        let region = Region {
+            x: Some((q(0), q(1))),
+            y: Some((-lam.abs(), q(1) + lam.abs())),
+            halves: vec![
+                // s = y' + λt ≥ 0 and 1 − s ≥ 0
+                Half {
+                    a: lam.clone(),
+                    b: q(1),
+                    c: q(0),
+                },
+                Half {
+                    a: -lam.clone(),
+                    b: q(-1),
+                    c: q(1),
+                },
+            ],
+        };
+        let solutions = match solve(&g1, &g2, &region, &gf) {
+            Ok(Solved::Points { solutions, .. }) => solutions,
+            Ok(Solved::Infinite) => return Ok(None),
+            Err(AlgebraicError::Unsupported(_)) => continue,
+            Err(e) => return Err(e),
+        };
+        let mut points = Vec::with_capacity(solutions.len());
+        for sol in solutions {
+            let (num, den) = (&sol.partner.num, &sol.partner.den);
+            // s = y' + λx as num_s/den in the base variable
+            let lam_poly = [Q::zero(), lam.clone()];
+            let num_s = if sol.partner.base_is_x {
+                add(num, &mul(&lam_poly, den))
+            } else {
+                let l: Vec<Q> = num.iter().map(|c| c * &lam).collect();
+                add(&mul(&[Q::zero(), Q::one()], den), &l)
+            };
+            let Some(k) = match_value(sol.base(), &num_s, den, &s_roots) else {
+                return Err(AlgebraicError::Unsupported(
+                    "a sheared solution that matches no root of the resultant (internal)".into(),
+                ));
+            };
+            points.push(Found {
+                s: s_roots[k].clone(),
+                t: sol.x,
+                multiplicity: Some(sol.multiplicity),
+                flags: sol.flags,
+            });
+        }
+        return Ok(Some(FoundAll {
+            points,
+            resultant: rx,
+        }));
+    }
+    Err(AlgebraicError::Unsupported(
+        "a point where both unknowns have several partners, even after shearing".into(),
+    ))
+}
+
+/// `∂p/∂y`.
+fn d_y(p: &BiPoly) -> BiPoly {
+    let c: Vec<Vec<Q>> =
+        p.c.iter()
+            .enumerate()
+            .skip(1)
+            .map(|(j, cj)| cj.iter().map(|a| a * q(j as i64)).collect())
+            .collect();
+    BiPoly {
+        c: if c.is_empty() { vec![Vec::new()] } else { c },
+    }
+}
+
+/// `∂p/∂x`.
+fn d_x(p: &BiPoly) -> BiPoly {
+    BiPoly {
+        c: p.c
+            .iter()
+            .map(|cj| {
+                cj.iter()
+                    .enumerate()
+                    .skip(1)
+                    .map(|(i, a)| a * q(i as i64))
+                    .collect()
+            })
+            .collect(),
+    }
+}
+
+/// `p` divided by its contents in both variables (the gcd of its coefficients as a
+/// polynomial in `y`, then in `x`) and by its repeated factors: square-free, with no factor
+/// in one variable alone.
+fn reduced(p: &BiPoly) -> BiPoly {
+    let strip = |p: &BiPoly| -> BiPoly {
+        let p = p.trimmed();
+        let mut g = BiPoly {
+            c: vec![p.c[0].clone()],
+        };
+        for cj in &p.c[1..] {
+            g = super::bivariate::gcd(
+                &g,
+                &BiPoly {
+                    c: vec![cj.clone()],
+                },
+            );
+        }
+        super::bivariate::div_exact(&p, &g).unwrap_or(p)
+    };
+    let p = strip(&strip(p).swap()).swap().trimmed();
+    let g = super::bivariate::gcd(&p, &d_y(&p)).trimmed();
+    super::bivariate::div_exact(&p, &g).unwrap_or(p).trimmed()
+}
+
+/// The sign of `g` at a solution whose base value is algebraic and whose other unknown is
+/// `num/den` of it: the sign of `den^N·g(…)` (a polynomial in the base) times `sign(den)^N`.
+fn sign_at(sol: &Solution, g: &BiPoly) -> Ordering {
+    let g2 = if sol.partner.base_is_x {
+        g.clone()
+    } else {
+        g.swap()
+    };
+    let n = g2.deg_y();
+    let v = sol
+        .base()
+        .sign_of_rationals(&g2.substitute_y(&sol.partner.num, &sol.partner.den));
+    let sd = sol.base().sign_of_rationals(&sol.partner.den);
+    if sd == Ordering::Less && n % 2 == 1 {
+        v.reverse()
+    } else {
+        v
+    }
+}
+
+/// The points `(b, y)`, `y ∈ [0, 1]`, of `p = 0` over an algebraic `x = b`, increasing in
+/// `y`. The candidates `y` are the roots of `Res_x(m_b(x), p(x, y))` (`m_b` the polynomial
+/// of `b`); at each, the first subresultant in `x` gives the unique common root
+/// `x = −d_0(y)/d_1(y)`, which is `b` exactly when it lies in `b`'s isolating interval.
+fn fiber(p: &BiPoly, b: &RealAlgebraic) -> Result<Vec<Solution>, AlgebraicError> {
+    let (m, interval): (Vec<Q>, Option<(Q, Q)>) = match b {
+        RealAlgebraic::Rational(r) => (vec![-r.clone(), Q::one()], None),
+        RealAlgebraic::Root(root) => {
+            let (lo, hi) = root.interval();
+            (
+                root.poly()
+                    .coeffs()
+                    .iter()
+                    .map(|c| Q::from_integer(c.clone()))
+                    .collect(),
+                Some((lo.clone(), hi.clone())),
+            )
+        }
+    };
+    let fm = BiPoly {
+        c: m.iter().map(|c| vec![c.clone()]).collect(),
+    };
+    let pw = p.swap().trimmed();
+    let r = IntPoly::from_rationals(&resultant(&fm, &pw));
+    if r.is_zero() {
+        return Err(AlgebraicError::Unsupported(
+            "a shared curve with a whole line of parameters (internal)".into(),
+        ));
+    }
+    let (d1, d0) = subresultant1(&fm, &pw);
+    let nd0 = neg(&d0);
+    let mut out = Vec::new();
+    for y in RealAlgebraic::roots_in(&r, &q(0), &q(1))? {
+        if y.sign_of_rationals(&d1) == Ordering::Equal {
+            return Err(AlgebraicError::Unsupported(
+                "a shared curve that meets a line of constant parameter at two conjugate points"
+                    .into(),
+            ));
+        }
+        if let Some((lo, hi)) = &interval {
+            let e = super::system::Expr {
+                base: y.clone(),
+                num: nd0.clone(),
+                den: d1.clone(),
+            };
+            if e.cmp_rational(lo) != Ordering::Greater || e.cmp_rational(hi) != Ordering::Less {
+                continue;
+            }
+        }
+        out.push(Solution {
+            x: b.clone(),
+            y,
+            multiplicity: 1,
+            flags: Vec::new(),
+            partner: super::system::Partner {
+                base_is_x: false,
+                num: nd0.clone(),
+                den: d1.clone(),
+            },
+        });
+    }
+    Ok(out)
+}
+
+/// The roots in `[0, 1]` of a polynomial with rational coefficients (none if it is zero).
+fn unit_roots(p: &[Q]) -> Result<Vec<RealAlgebraic>, AlgebraicError> {
+    let p = IntPoly::from_rationals(p);
+    if p.is_zero() {
+        return Ok(Vec::new());
+    }
+    RealAlgebraic::roots_in(&p, &q(0), &q(1))
+}
+
+/// The real curve `p(x, y) = 0` in `[0, 1]²` (square-free, no factor in one variable alone):
+/// its pieces, each strictly monotone in both unknowns, as `((x0, y0), (x1, y1))` with
+/// `x0 < x1`, and its isolated points (docs/theory.md §16.5, "Overlaps").
+#[allow(clippy::type_complexity)]
+fn curve_in_square(
+    p: &BiPoly,
+) -> Result<(Vec<[(RealAlgebraic, RealAlgebraic); 2]>, Vec<Solution>), AlgebraicError> {
+    let (py, px) = (d_y(p).trimmed(), d_x(p).trimmed());
+    let pyy = d_y(&py).trimmed();
+    // the sweep's break values: critical points of the projection on x (p = p_y = 0), turning
+    // points in y (p = p_x = 0), the sides y = 0 and y = 1, and x = 0, 1
+    let mut breaks = vec![RealAlgebraic::rational(q(0)), RealAlgebraic::rational(q(1))];
+    let y1: Vec<Q> = p.c.iter().fold(Vec::new(), |acc, c| add(&acc, c));
+    for poly in [resultant(p, &py), resultant(p, &px), p.c[0].clone(), y1] {
+        breaks.extend(unit_roots(&poly)?);
+    }
+    breaks.sort_by(|a, b| a.cmp_exact(b));
+    breaks.dedup_by(|a, b| a.cmp_exact(b) == Ordering::Equal);
+    // the fibers and, at each point, how many arcs leave it to the left and to the right
+    // (None: to be found from the count of arcs over the neighbouring interval)
+    let last = breaks.len() - 1;
+    let mut fibers: Vec<Vec<(Solution, [Option<usize>; 2])>> = Vec::new();
+    for (i, b) in breaks.iter().enumerate() {
+        let mut f = Vec::new();
+        for sol in fiber(p, b)? {
+            let interior = sol.y.cmp_rational(&q(0)) == Ordering::Greater
+                && sol.y.cmp_rational(&q(1)) == Ordering::Less;
+            let at_lo = sol.y.cmp_rational(&q(0)) == Ordering::Equal;
+            let sy = sign_at(&sol, &py);
+            let sx = sign_at(&sol, &px);
+            let mut lr: [Option<usize>; 2] = if sy != Ordering::Equal {
+                if interior {
+                    [Some(1), Some(1)]
+                } else if sx == Ordering::Equal {
+                    [None, None]
+                } else {
+                    // y = φ(x), φ' = −p_x/p_y: into y > 0 on the right when φ' > 0
+                    let rising = sx != sy;
+                    let right = rising == at_lo;
+                    [Some(usize::from(!right)), Some(usize::from(right))]
+                }
+            } else if sx != Ordering::Equal {
+                // x = ψ(y) with ψ' = 0, ψ'' = −p_yy/p_x: both branches on the side of ψ''
+                let syy = sign_at(&sol, &pyy);
+                if syy == Ordering::Equal {
+                    [None, None]
+                } else {
+                    let k = if interior { 2 } else { 1 };
+                    if syy != sx {
+                        [Some(0), Some(k)]
+                    } else {
+                        [Some(k), Some(0)]
+                    }
+                }
+            } else {
+                [None, None]
+            };
+            if i == 0 {
+                lr[0] = Some(0);
+            }
+            if i == last {
+                lr[1] = Some(0);
+            }
+            f.push((sol, lr));
+        }
+        fibers.push(f);
+    }
+    // arcs over each open interval, and the unknown counts from them
+    let mut arcs: Vec<Vec<(usize, usize)>> = Vec::new();
+    for i in 0..last {
+        let r = rational_between(&breaks[i], &breaks[i + 1]);
+        let m = unit_roots(&p.at_x(&r))?.len();
+        for (fi, side) in [(i, 1usize), (i + 1, 0usize)] {
+            let known: usize = fibers[fi].iter().filter_map(|(_, lr)| lr[side]).sum();
+            let unknown: Vec<usize> = (0..fibers[fi].len())
+                .filter(|&k| fibers[fi][k].1[side].is_none())
+                .collect();
+            if known > m || (unknown.is_empty() && known != m) {
+                return Err(AlgebraicError::Unsupported(
+                    "a shared curve whose arcs do not add up (internal)".into(),
+                ));
+            }
+            match unknown.len() {
+                0 => {}
+                1 => fibers[fi][unknown[0]].1[side] = Some(m - known),
+                _ if known == m => {
+                    for k in unknown {
+                        fibers[fi][k].1[side] = Some(0);
+                    }
+                }
+                _ => {
+                    return Err(AlgebraicError::Unsupported(
+                        "a shared curve with two singular points over one parameter value".into(),
+                    ));
+                }
+            }
+        }
+        let ends = |fi: usize, side: usize| -> Vec<usize> {
+            let mut v = Vec::new();
+            for (k, (_, lr)) in fibers[fi].iter().enumerate() {
+                for _ in 0..lr[side].unwrap_or(0) {
+                    v.push(k);
+                }
+            }
+            v
+        };
+        let (from, to) = (ends(i, 1), ends(i + 1, 0));
+        arcs.push(from.into_iter().zip(to).collect());
+    }
+    // merge arcs through points with one arc on each side and the same direction in y
+    let dir = |i: usize, a: (usize, usize)| -> Ordering {
+        fibers[i + 1][a.1].0.y.cmp_exact(&fibers[i][a.0].0.y)
+    };
+    let mut pieces = Vec::new();
+    for i in 0..last {
+        for &a in &arcs[i] {
+            let joins = |i: usize, node: usize, d: Ordering| -> Option<usize> {
+                // the arc of interval i leaving `node` (in fiber i), when it continues one arc
+                if i == last {
+                    return None;
+                }
+                let [l, r] = fibers[i][node].1;
+                if l != Some(1) || r != Some(1) {
+                    return None;
+                }
+                let next = arcs[i].iter().position(|x| x.0 == node)?;
+                (dir(i, arcs[i][next]) == d).then_some(next)
+            };
+            let d = dir(i, a);
+            if i > 0 && fibers[i][a.0].1 == [Some(1), Some(1)] {
+                let before = arcs[i - 1].iter().find(|x| x.1 == a.0);
+                if before.is_some_and(|&x| dir(i - 1, x) == d) {
+                    continue; // continues an arc of the interval before
+                }
+            }
+            let start = (fibers[i][a.0].0.x.clone(), fibers[i][a.0].0.y.clone());
+            let (mut j, mut cur) = (i, a);
+            while let Some(n) = joins(j + 1, cur.1, d) {
+                j += 1;
+                cur = arcs[j][n];
+            }
+            let end = (
+                fibers[j + 1][cur.1].0.x.clone(),
+                fibers[j + 1][cur.1].0.y.clone(),
+            );
+            pieces.push([start, end]);
+        }
+    }
+    let mut isolated = Vec::new();
+    for f in fibers {
+        for (sol, lr) in f {
+            if lr == [Some(0), Some(0)] {
+                isolated.push(sol);
+            }
+        }
+    }
+    Ok((pieces, isolated))
+}
+
+/// Two curves whose equations share a factor `G` (`F_i = G·H_i`): both lie on one algebraic
+/// curve. The solution set is `{G = 0} ∪ {H_1 = H_2 = 0}`: the pieces and isolated points of
+/// `G = 0` in `[0, 1]²` ([`curve_in_square`]), and the solutions of `H_1 = H_2 = 0` off
+/// `G = 0` (points where the curves meet without sharing a piece: a node of the common
+/// curve, a closing point).
+fn on_common_curve(
+    b: &Curve,
+    f1: &BiPoly,
+    f2: &BiPoly,
+    cross: &BiPoly,
+) -> Result<CurveIntersections, AlgebraicError> {
+    let g0 = super::bivariate::gcd(f1, f2).trimmed();
+    let h1 = super::bivariate::div_exact(f1, &g0).map(|h| h.trimmed());
+    let h2 = super::bivariate::div_exact(f2, &g0).map(|h| h.trimmed());
+    let (Some(h1), Some(h2)) = (h1, h2) else {
+        return Err(AlgebraicError::Unsupported(
+            "the common factor does not divide (internal)".into(),
+        ));
+    };
+    let constant = |h: &BiPoly| h.c.len() == 1 && h.c[0].len() <= 1;
+    let mut points = Vec::new();
+    if !(h1.is_zero() || h2.is_zero() || constant(&h1) || constant(&h2)) {
+        let Some(found) = solve_points(&h1, &h2, &[cross.clone(), g0.clone()])? else {
+            return Err(AlgebraicError::Unsupported(
+                "the cofactors share a factor (internal)".into(),
+            ));
+        };
+        for f in found.points {
+            if f.flags[1] {
+                continue; // on G = 0: a point of a piece or an isolated point of G
+            }
+            points.push(Intersection {
+                point: point_of(b, &f.t),
+                s: f.s,
+                t: f.t,
+                multiplicity: f.multiplicity,
+                tangential: f.flags[0],
+            });
+        }
+    }
+    // G in (x, y) = (t, s)
+    let g = reduced(&g0);
+    let (pieces, isolated) = curve_in_square(&g)?;
+    for sol in isolated {
+        points.push(Intersection {
+            point: point_of(b, &sol.x),
+            tangential: sign_at(&sol, cross) == Ordering::Equal,
+            s: sol.y,
+            t: sol.x,
+            multiplicity: None,
+        });
+    }
+    points.sort_by(|x, y| x.s.cmp_exact(&y.s).then_with(|| x.t.cmp_exact(&y.t)));
+    let mut overlaps: Vec<Overlap> = pieces
+        .into_iter()
+        .map(|[(x0, y0), (x1, y1)]| {
+            if y0.cmp_exact(&y1) == Ordering::Greater {
+                Overlap {
+                    s: [y1, y0],
+                    t: [x1, x0],
+                }
+            } else {
+                Overlap {
+                    s: [y0, y1],
+                    t: [x0, x1],
+                }
+            }
+        })
+        .collect();
+    overlaps.sort_by(|a, b| {
+        a.s[0]
+            .cmp_exact(&b.s[0])
+            .then_with(|| a.t[0].cmp_exact(&b.t[0]))
+    });
+    Ok(CurveIntersections {
+        points,
+        overlaps,
+        resultant: IntPoly::default(),
+        relation: Some(g),
     })
 }

@@ -25,9 +25,14 @@ mod poly;
 mod surfaces;
 mod system;
 
-pub use bivariate::{BiPoly, resultant, subresultant1};
+pub use bivariate::{
+    BiPoly, div_exact as bivariate_div_exact, gcd as bivariate_gcd, resultant, subresultant1,
+};
 pub use clip::{Clipped, bipoly_text, solve_clipped};
-pub use curves::{Curve, CurveIntersections, Intersection, Overlap, intersect_curves, point_text};
+pub use curves::{
+    Curve, CurveIntersections, Intersection, MAX_INTERSECT_WORK, Overlap, intersect_curves,
+    point_text, work_estimate,
+};
 pub use isolate::{Cell, isolate};
 pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
@@ -161,12 +166,16 @@ mod json {
         }
     }
 
-    /// `{s: [from, to], t: [from, to]}`.
+    /// `{s: [from, to], t: [at s from, at s to], t_increasing}`.
     impl Serialize for Overlap {
         fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-            let mut m = s.serialize_map(Some(2))?;
+            let mut m = s.serialize_map(Some(3))?;
             m.serialize_entry("s", &self.s)?;
             m.serialize_entry("t", &self.t)?;
+            m.serialize_entry(
+                "t_increasing",
+                &(self.t[0].cmp_exact(&self.t[1]) == std::cmp::Ordering::Less),
+            )?;
             m.end()
         }
     }
