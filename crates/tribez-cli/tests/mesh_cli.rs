@@ -183,11 +183,24 @@ fn mesh_patch_chooses_the_format_by_the_extension() {
     // .toml gets TOML (not JSON) even with --format text spelled out
     let toml = dir.path().join("t.toml");
     tribez()
-        .args(["mesh", "patch", &fx(HEX), "--triangle", "2", "--format", "text", "-o"])
+        .args([
+            "mesh",
+            "patch",
+            &fx(HEX),
+            "--triangle",
+            "2",
+            "--format",
+            "text",
+            "-o",
+        ])
         .arg(&toml)
         .assert()
         .code(0);
-    assert!(std::fs::read_to_string(&toml).unwrap().contains("kind = \"functional\""));
+    assert!(
+        std::fs::read_to_string(&toml)
+            .unwrap()
+            .contains("kind = \"functional\"")
+    );
     let bad = dir.path().join("u.toml");
     fails_with(
         &[

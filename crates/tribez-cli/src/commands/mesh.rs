@@ -179,7 +179,11 @@ fn run_patch(args: &PatchArgs) -> Result<Outcome, CliError> {
         )));
     }
     let patch = mesh.triangle_patch(args.triangle)?;
-    Outcome::rendered(&PatchReport::of(patch.into_any()), patch_format(&args.out)?, true)
+    Outcome::rendered(
+        &PatchReport::of(patch.into_any()),
+        patch_format(&args.out)?,
+        true,
+    )
 }
 
 /// The format of the patch file `mesh patch` writes: with `-o`, chosen by the file's extension
@@ -196,7 +200,9 @@ fn patch_format(out: &OutputArgs) -> Result<TextOrJson, CliError> {
         (Some("json"), _) => Ok(TextOrJson::Json),
         (Some("toml"), TextOrJson::Json) => Err(CliError::Usage(format!(
             "-o {}: a .toml file, but --format json asks for JSON (name it .json, or drop --format json)",
-            out.output.as_ref().map_or(String::new(), |p| p.display().to_string())
+            out.output
+                .as_ref()
+                .map_or(String::new(), |p| p.display().to_string())
         ))),
         (Some("toml"), _) => Ok(TextOrJson::Text),
         _ => Ok(out.format),

@@ -881,7 +881,9 @@ mod tests {
         let pts: Vec<Vec<BigRational>> = (0..15)
             .map(|i: i64| {
                 (0..3)
-                    .map(|c: i64| &far + BigRational::from_integer(((i * 7 + c * 3) % 9 + 1).into()))
+                    .map(|c: i64| {
+                        &far + BigRational::from_integer(((i * 7 + c * 3) % 9 + 1).into())
+                    })
                     .collect()
             })
             .collect();
@@ -923,7 +925,10 @@ mod tests {
         let mut scratch = Vec::new();
         assert_eq!(fast.value(&[q(1, 2), q(1, 2)], &mut scratch), None);
         // away from it: x = λ_1 / (λ_0 − λ_1) = (1/4)/(1/2) = 1/2 at (3/4, 1/4)
-        assert_eq!(fast.value(&[q(3, 4), q(1, 4)], &mut scratch), Some(vec![0.5]));
+        assert_eq!(
+            fast.value(&[q(3, 4), q(1, 4)], &mut scratch),
+            Some(vec![0.5])
+        );
     }
 
     #[test]

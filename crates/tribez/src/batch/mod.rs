@@ -119,7 +119,10 @@ pub enum BatchError {
         values: usize,
     },
     /// In-memory rows: `first_row` plus the rows passes the largest row index.
-    #[error("first_row {first_row} + {rows} rows passes the largest row index {}", usize::MAX)]
+    #[error(
+        "first_row {first_row} + {rows} rows passes the largest row index {}",
+        usize::MAX
+    )]
     RowIndexOverflow {
         /// The first row's index.
         first_row: usize,
@@ -934,10 +937,7 @@ impl BatchChecker {
             return Err(InputError::file(file, RowsProblem::NoResultRows).into());
         }
         if first_row.checked_add(n - 1).is_none() {
-            return Err(BatchError::RowIndexOverflow {
-                first_row,
-                rows: n,
-            });
+            return Err(BatchError::RowIndexOverflow { first_row, rows: n });
         }
         let mut acc = Accumulator::new(p, file, patch_name, None);
         let mut verdicts = Vec::with_capacity(n);
