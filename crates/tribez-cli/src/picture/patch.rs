@@ -154,7 +154,8 @@ struct Sample {
 /// it can, exactly where it cannot; a point where the patch is undefined (a rational patch's
 /// zero denominator) is `None`.
 fn evaluate(patch: &Patch, g: &Geometry<'_>, samples: &[Sample]) -> Vec<Option<[f64; 3]>> {
-    let evaluator = patch.exact().exact_evaluator();
+    // made only if a point needs it: preparing the exact kernel costs as much as a picture
+    let evaluator = std::sync::OnceLock::new();
     let fast = Fast::new(patch);
     samples
         .par_iter()
@@ -162,7 +163,10 @@ fn evaluate(patch: &Patch, g: &Geometry<'_>, samples: &[Sample]) -> Vec<Option<[
             let value = match fast.as_ref().and_then(|f| f.value(&s.input, scratch)) {
                 Some(v) => v,
                 None => {
-                    let exact = evaluator.evaluate(&s.input).ok()?;
+                    let exact = evaluator
+                        .get_or_init(|| patch.exact().exact_evaluator())
+                        .evaluate(&s.input)
+                        .ok()?;
                     exact.iter().map(round_f64).collect()
                 }
             };
