@@ -181,8 +181,11 @@ pub fn certify(
         };
         let patch = Patch::from(patch.patch.clone());
         let report = py
-            .detach(|| tribez::certify(&patch, &options).map_err(|e| e.to_string()))
-            .map_err(|e| input_error(py, e))?;
+            .detach(|| {
+                tribez::certify_until(&patch, &options, &crate::interrupted)
+                    .map_err(|e| e.to_string())
+            })
+            .map_err(|e| input_error(py, e))??;
         Ok(NativeDocument {
             kind: "certify",
             json: json_of(py, &report)?,

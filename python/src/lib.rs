@@ -92,6 +92,14 @@ fn _panic_in_worker_for_test(py: Python<'_>) -> PyResult<usize> {
     })
 }
 
+/// The stop test of long library calls run with the GIL released (`check`, `certify`): takes
+/// the GIL for a moment and runs Python's pending signal handlers, so that Ctrl-C (SIGINT)
+/// raises `KeyboardInterrupt` between slabs of rows or points, not when the call ends. Python
+/// runs signal handlers on its main thread only; elsewhere this answers `None`.
+pub(crate) fn interrupted() -> Option<PyErr> {
+    Python::attach(|py| py.check_signals().err())
+}
+
 /// Number of threads the batch engine uses (rayon's global pool).
 #[pyfunction]
 fn threads() -> usize {

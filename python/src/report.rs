@@ -75,10 +75,17 @@ pub fn check_rows(
         let (report, verdicts) = py
             .detach(|| {
                 checker
-                    .check_rows(&pts, &vals, first_row, "<arrays>", &name)
+                    .check_rows_until(
+                        &pts,
+                        &vals,
+                        first_row,
+                        "<arrays>",
+                        &name,
+                        &crate::interrupted,
+                    )
                     .map_err(|e| e.to_string())
             })
-            .map_err(|e| input_error(py, e))?;
+            .map_err(|e| input_error(py, e))??;
         let source = Rows {
             patch: poly,
             precision,

@@ -172,7 +172,58 @@ def test_bad_merges():
            tribez.check(other, pts[2:], vals[2:], tolerance="ulps=1", first_row=2))
     raises("merge: reports judged differently", a.merge,
            tribez.check(finn, pts[2:], vals[2:], tolerance="ulps=1", first_row=2, algorithm="bernstein"))
-    raises("merge: expected a tribez.Report, got str", a.merge, "report")
+    raises("merge: expected a report of tribez.check, got str", a.merge, "report")
+    # issue 35 §8: a claims report was a TypeError naming the native classes
+    claims = tribez.check_claims(pathlib.Path(__file__).parents[2] / "fixtures" / "finn_day30.claims.toml")
+    msg = raises("merge: expected a report of tribez.check, got ClaimsReport", a.merge, claims)
+    assert "Native" not in msg
+    raises("ClaimsReports do not merge", claims.merge, a)
+
+
+def test_first_row_near_the_largest_row_index():
+    # issue 35 §8: first_row = 2^64 - 10 wrapped the row indices (the worst row came out as
+    # row 5); rows are int64 in the report, so the last row index is at most 2^63 - 1
+    finn, pts, vals = finn_rows()
+    raises("first_row: 18446744073709551606 + 4 rows passes the largest row index 2^63 - 1",
+           tribez.check, finn, pts, vals, first_row=2**64 - 10)
+    raises("passes the largest row index", tribez.check, finn, pts, vals, first_row=2**63 - 3)
+    # the last allowed start: rows 2^63 - 4 ... 2^63 - 1
+    r = tribez.check(finn, pts, vals, tolerance="ulps=1", first_row=2**63 - 4)
+    assert r.passed == 4
+    assert list(r.rows()["row"]) == [2**63 - 4, 2**63 - 3, 2**63 - 2, 2**63 - 1]
+
+
+def test_long_numbers_are_read_or_refused_with_tribez_message():
+    # issue 35 §8: Fraction(1, 10**5000) hit Python's 4,300-digit limit of int -> str (a bare
+    # ValueError); it is a valid number of 5,002 digits, far below tribez's 100,000
+    tiny = F(1, 10**5000)
+    p = tribez.Patch.from_nodes([[0, tiny, 0]], simplex=1)
+    assert p.evaluate([F(1, 2), F(1, 2)]) == [(tiny / 2,)]
+    assert p.nodes[0][1] == tiny
+    # 10**5000 + 1 as an int too (a numerator alone)
+    big = 10**5000 + 1
+    q = tribez.Patch.from_nodes([[big, 0]], simplex=1)
+    assert q.evaluate([F(1, 2), F(1, 2)]) == [(F(big, 2),)]
+    # beyond tribez's own limit: an InputError with the library's wording
+    raises("100001 digits, above the limit of 100000 digits for a number",
+           tribez.Patch.from_nodes, [[0, 10**100000, 0]], simplex=1)
+    raises("above the limit of 100000 digits for a number",
+           tribez.Patch.from_nodes, [[0, F(1, 10**99999 * 7), 0]], simplex=1)
+    raises("above the limit of 100000 digits for a number",
+           tribez.Patch.from_nodes, [[0, 1 << 10**7, 0]], simplex=1)
+
+
+def test_huge_ints_for_sizes_are_input_errors():
+    # issue 35 §8: from_nodes(degree=10**30) was an OverflowError from the native layer
+    nodes = [[0, 1, 0, 0, 1, 0]]
+    raises("degree: 1000000000000000000000000000000 is above the limit of 200",
+           tribez.Patch.from_nodes, nodes, degree=10**30)
+    raises("simplex: 1000000000000000000000000000000 is not a simplex dimension from 1 to 16",
+           tribez.Patch.from_nodes, nodes, simplex=10**30)
+    finn = tribez.Patch.from_toml(FINN_TOML)
+    raises("random: 1000000000000000000000000000000: expected a whole number from 1 to 1000000",
+           tribez.certify, finn, random=10**30)
+    raises("seed: 18446744073709551616 is above the limit of 2^64 - 1", tribez.certify, finn, seed=2**64)
 
 
 def test_help_explains_the_tolerances():
@@ -186,3 +237,12 @@ def test_help_explains_the_tolerances():
     with contextlib.redirect_stdout(out):
         help(tribez.check)
     assert "correctly_rounded   y is the float nearest q" in out.getvalue()
+
+
+def test_certify_random_points_of_a_huge_polygon():
+    # issue 35 §3: the centroid of random points overflowed f64 and the library panicked
+    huge = tribez.Patch.from_toml(
+        'degree = 1\npolygon = [["0", "0"], ["1.7e308", "0"], ["1.7e308", "1.7e308"]]\n'
+        '[control_points]\n"1,0,0" = ["0"]\n"0,1,0" = ["1"]\n"0,0,1" = ["2"]\n',
+        name="huge_spatch.toml")
+    raises("polygon: its coordinates are too large for random points", tribez.certify, huge, random=20)

@@ -28,7 +28,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from . import _native
-from ._convert import float_rows, matrix_texts, number_text
+from ._convert import float_rows, fraction, matrix_texts, number_text
 from ._errors import CertificationError, InputError, InternalError, TribezError
 from ._report import CertifyReport, ClaimsReport, InverseReport, Report
 
@@ -68,7 +68,7 @@ def parse_number(x) -> Fraction:
     >>> parse_number("0.1"), parse_number(0.1) == Fraction(0.1)
     (Fraction(1, 10), True)
     """
-    return Fraction(_native.parse_number(number_text(x, "number")))
+    return fraction(_native.parse_number(number_text(x, "number")))
 
 
 class Patch:
@@ -155,8 +155,11 @@ class Patch:
                 raise InputError(f"weights: expected a sequence of numbers, got {type(weights).__name__}")
             w = [number_text(x, f"weights[{i}]") for i, x in enumerate(weights)]
         if degree is not None:
-            degree = _count(degree, "degree")
-        simplex = _count(simplex, "simplex")
+            degree = _count(degree, "degree", (MAX_DEGREE, f"{{x}} is above the limit of {MAX_DEGREE}"))
+        simplex = _count(simplex, "simplex", (
+            MAX_SIMPLEX_DIMENSION,
+            f"{{x}} is not a simplex dimension from 1 to {MAX_SIMPLEX_DIMENSION} "
+            "(1 for curves, 2 for triangles, 3 for tetrahedra)"))
         return cls(_native.NativePatch.from_nodes(simplex, degree, points, w))
 
     # -- attributes ---------------------------------------------------------------------
@@ -191,13 +194,13 @@ class Patch:
         """The control points, exact, in ``bezier``'s layout: ``dimension`` lists of Fractions,
         one entry per control point in canonical order."""
         pts = self._native.control_points()
-        return [[Fraction(p[i]) for p in pts] for i in range(self.dimension)]
+        return [[fraction(p[i]) for p in pts] for i in range(self.dimension)]
 
     @property
     def weights(self) -> Optional[list]:
         """The weights of a rational patch (Fractions, canonical order), else None."""
         w = self._native.weights()
-        return None if w is None else [Fraction(x) for x in w]
+        return None if w is None else [fraction(x) for x in w]
 
     def to_toml(self) -> str:
         """The patch as a TOML patch file (exact numbers as strings)."""
@@ -234,7 +237,7 @@ class Patch:
         """
         rows = matrix_texts(points, "points", allow_vector=True)
         values = self._native.evaluate(rows, bool(cartesian))
-        return [tuple(Fraction(x) for x in v) for v in values]
+        return [tuple(fraction(x) for x in v) for v in values]
 
     def evaluate_float(self, points, precision: str = "f64") -> np.ndarray:
         """tribez's own float path at float points: a numpy array of shape (rows, dimension),
@@ -262,12 +265,21 @@ def _check_str(x, where):
         raise InputError(f"{where}: expected a str, got {type(x).__name__}")
 
 
-def _count(x, where) -> int:
+#: The largest row index (the report's ``row`` arrays are int64).
+_MAX_ROW = 2**63 - 1
+
+
+def _count(x, where, above: Optional[tuple] = None) -> int:
+    """A non-negative int; ``above = (limit, message)``: an int above ``limit`` is an InputError
+    with that message (``{x}`` in it is the value), so that no int reaches the native module
+    beyond the machine word it is read into (an OverflowError there)."""
     if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, np.integer)):
         raise InputError(f"{where}: expected a non-negative int, got {x!r}")
     x = int(x)
     if x < 0:
         raise InputError(f"{where}: {x} is negative")
+    if above is not None and x > above[0]:
+        raise InputError(f"{where}: " + above[1].format(x=x))
     return x
 
 
@@ -350,6 +362,11 @@ def check(patch: Patch, points, values, tolerance: str = "cond=9", precision: Op
         raise InputError(f"{pts.shape[0]} rows of points but {vals.shape[0]} rows of values")
     if pts.shape[0] == 0:
         raise InputError("points: no rows")
+    if first_row + pts.shape[0] - 1 > _MAX_ROW:
+        # row indices are int64 in the report's arrays (and machine words in the library)
+        raise InputError(
+            f"first_row: {first_row} + {pts.shape[0]} rows passes the largest row index 2^63 - 1"
+        )
     native = _native.check_rows(patch._native, pts.tobytes(), vals.tobytes(), width, patch.dimension,
                                 tolerance, prec, bool(cartesian), algorithm, first_row)
     return Report(native)
@@ -416,7 +433,9 @@ def certify(patch: Patch, points=None, random: Optional[int] = None, seed: Optio
     elif random is None:
         random = 1000
     if random is not None:
-        random = _count(random, "random")
+        random = _count(random, "random", (
+            _native.MAX_RANDOM_POINTS,
+            f"{{x}}: expected a whole number from 1 to {_native.MAX_RANDOM_POINTS}"))
     seed = 1 if seed is None else _count(seed, "seed")
     if seed >= 2**64:
         raise InputError(f"seed: {seed} is above the limit of 2^64 - 1")

@@ -27,13 +27,13 @@ def number_text(x, where: str) -> str:
     if isinstance(x, float):
         return x.hex()
     if isinstance(x, numbers.Integral):
-        return str(int(x))
+        return _integer_text(int(x), 1, where)
     if isinstance(x, numbers.Rational):
-        return f"{x.numerator}/{x.denominator}"
+        return _integer_text(int(x.numerator), int(x.denominator), where)
     if isinstance(x, np.floating):
         if np.isfinite(x):
             p, q = x.as_integer_ratio()
-            return f"{p}/{q}"
+            return _integer_text(p, q, where)
         return repr(float(x))
     if isinstance(x, numbers.Real) and hasattr(x, "as_integer_ratio"):
         # decimal.Decimal and friends: their exact value
@@ -41,8 +41,55 @@ def number_text(x, where: str) -> str:
             p, q = x.as_integer_ratio()
         except (ValueError, OverflowError):
             return str(x)
-        return f"{p}/{q}"
+        return _integer_text(p, q, where)
     raise InputError(f"{where}: {x!r} is not a number ({_KINDS})")
+
+
+#: The most digits tribez reads in one number (numerator and denominator together; the library's
+#: ``MAX_DIGITS``).
+MAX_DIGITS = 100_000
+
+#: Digits per piece of a long integer's decimal text: below Python's smallest limit on int-to-str
+#: conversion (640 digits), so that no setting of ``sys.set_int_max_str_digits`` refuses a piece.
+_PIECE = 600
+
+
+def _digits(n: int) -> int:
+    """Decimal digits of ``n >= 0`` (1 for 0), without converting it to text."""
+    if n == 0:
+        return 1
+    d = (n.bit_length() * 30103) // 100000  # floor(bits log10 2) <= digits
+    while n >= 10**d:
+        d += 1
+    return max(d, 1)
+
+
+def _decimal(n: int) -> str:
+    """The decimal text of ``n >= 0`` in pieces of ``_PIECE`` digits (Python's own ``str`` of a
+    long int is refused beyond ``sys.get_int_max_str_digits()``, 4300 by default)."""
+    base = 10**_PIECE
+    pieces = []
+    while n >= base:
+        n, r = divmod(n, base)
+        pieces.append(str(r).zfill(_PIECE))
+    pieces.append(str(n))
+    return "".join(reversed(pieces))
+
+
+def _integer_text(p: int, q: int, where: str) -> str:
+    """``p`` (``q == 1``) or ``p/q`` in decimal, whatever their length up to tribez's limit of
+    ``MAX_DIGITS`` digits; a longer number is an InputError with the library's message."""
+    # bits first: an int of a billion bits is refused before any digit is counted
+    if (p.bit_length() + q.bit_length()) * 30103 // 100000 > 2 * MAX_DIGITS:
+        digits = (p.bit_length() + q.bit_length()) * 30103 // 100000
+        raise InputError(
+            f"{where}: about {digits} digits, above the limit of {MAX_DIGITS} digits for a number"
+        )
+    digits = _digits(abs(p)) + (0 if q == 1 else _digits(q))
+    if digits > MAX_DIGITS:
+        raise InputError(f"{where}: {digits} digits, above the limit of {MAX_DIGITS} digits for a number")
+    text = ("-" if p < 0 else "") + _decimal(abs(p))
+    return text if q == 1 else f"{text}/{_decimal(q)}"
 
 
 def _is_sequence(x) -> bool:
@@ -120,6 +167,22 @@ def float_rows(a, where: str, width: int | None = None) -> np.ndarray:
     return np.ascontiguousarray(arr, dtype=np.float64)
 
 
+def _int_of(digits: str) -> int:
+    """The int of a decimal text of any length, in pieces of ``_PIECE`` digits (Python's own
+    ``int`` of a long text is refused beyond ``sys.get_int_max_str_digits()``)."""
+    neg = digits.startswith("-")
+    digits = digits.lstrip("+-")
+    n = 0
+    for i in range(0, len(digits), _PIECE):
+        piece = digits[i:i + _PIECE]
+        n = n * 10**len(piece) + int(piece)
+    return -n if neg else n
+
+
 def fraction(text: str) -> Fraction:
-    """A Fraction from the library's exact text (``p/q`` or ``p``)."""
-    return Fraction(text)
+    """A Fraction from the library's exact text (``p/q`` or ``p``), of any length (an exact value
+    of many digits is not refused by Python's limit on int-from-text conversion)."""
+    if len(text) < 4000:
+        return Fraction(text)
+    p, _, q = text.partition("/")
+    return Fraction(_int_of(p), _int_of(q) if q else 1)

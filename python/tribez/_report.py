@@ -129,8 +129,11 @@ class Report:
         machines, each with its ``first_row``): counts and histograms add, the worst row is the
         larger error (ties: the smaller row index), the listed failures are the first ones by
         row index. Equal to the report of one run over all the rows."""
-        if not isinstance(other, Report):
-            raise InputError(f"merge: expected a tribez.Report, got {type(other).__name__}")
+        if not isinstance(other, Report) or isinstance(other, _DocumentReport):
+            raise InputError(
+                f"merge: expected a report of tribez.check, got {type(other).__name__} "
+                "(claims, certification and inverse reports do not merge)"
+            )
         return Report(self._native.merge(other._native))
 
     def raise_if_failed(self) -> None:

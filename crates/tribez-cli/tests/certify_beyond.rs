@@ -401,6 +401,51 @@ fn bad_inputs_of_certify_on_rational_and_s_patches() {
         .success();
 }
 
+/// Issue 35 §3: random points of a polygon whose coordinates are near f64's largest (1.7e308)
+/// are sums that overflow (the centroid's x is (0 + 1.7e308 + 1.7e308)/3, its sum 3.4e308 >
+/// f64::MAX ≈ 1.798e308): one line naming the file and the polygon, exit 2, never a panic.
+#[test]
+fn random_points_of_a_polygon_too_large_for_f64_are_bad_input() {
+    let dir = tempfile::tempdir().unwrap();
+    let huge = dir.path().join("huge_spatch.toml");
+    std::fs::write(
+        &huge,
+        "degree = 1\npolygon = [[\"0\", \"0\"], [\"1.7e308\", \"0\"], [\"1.7e308\", \"1.7e308\"]]\n[control_points]\n\"1,0,0\" = [\"0\"]\n\"0,1,0\" = [\"1\"]\n\"0,0,1\" = [\"2\"]\n",
+    )
+    .unwrap();
+    for precision in ["f64", "f32", "all"] {
+        bad(
+            &["--random", "20", "--precision", precision],
+            &huge,
+            "huge_spatch.toml: polygon: its coordinates are too large for random points",
+        );
+    }
+    // a polygon beyond f64 altogether (a vertex rounds to infinity): the same line
+    let beyond = dir.path().join("beyond.toml");
+    std::fs::write(
+        &beyond,
+        "degree = 1\npolygon = [[\"0\", \"0\"], [\"1e400\", \"0\"], [\"0\", \"1\"]]\n[control_points]\n\"1,0,0\" = [\"0\"]\n\"0,1,0\" = [\"1\"]\n\"0,0,1\" = [\"2\"]\n",
+    )
+    .unwrap();
+    bad(
+        &["--random", "5"],
+        &beyond,
+        "beyond.toml: polygon: its coordinates are too large for random points",
+    );
+    // given points need no sums: the f64 run judges them (exit 0 or 1, never 2)
+    let pts = dir.path().join("p.csv");
+    std::fs::write(&pts, "1e308,1\n").unwrap();
+    let code = tribez()
+        .arg("certify")
+        .arg(&huge)
+        .args(["--points", pts.to_str().unwrap(), "--precision", "f64"])
+        .output()
+        .unwrap()
+        .status
+        .code();
+    assert!(matches!(code, Some(0 | 1)), "{code:?}");
+}
+
 fn claims(dir: &Path, patch: &str, body: &str) -> PathBuf {
     std::fs::copy(fixture(patch), dir.join(patch)).unwrap();
     let path = dir.join("c.claims.toml");

@@ -154,6 +154,71 @@ fn mesh_patch_writes_a_functional_patch_every_command_reads() {
     );
 }
 
+/// Issue 35 §8: `mesh patch -o t.json` wrote TOML into t.json. The extension chooses the format,
+/// as `fit -o` does; `--format json` with a `.toml` name is refused.
+#[test]
+fn mesh_patch_chooses_the_format_by_the_extension() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("t.JSON");
+    tribez()
+        .args(["mesh", "patch", &fx(HEX), "--triangle", "2", "-o"])
+        .arg(&out)
+        .assert()
+        .code(0);
+    let text = std::fs::read_to_string(&out).unwrap();
+    let j: serde_json::Value = serde_json::from_str(&text).expect("JSON in a .json file");
+    assert_eq!(j["kind"], "functional", "{text}");
+    // the JSON file is a patch file every command reads: the same value as the TOML test above
+    let o = tribez()
+        .args(["eval"])
+        .arg(&out)
+        .args(["--at", "1/2,1/4,1/4", "--format", "json"])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&o).unwrap();
+    assert_eq!(v["results"][0]["point"][0], "1007/1536");
+    // .toml gets TOML (not JSON) even with --format text spelled out
+    let toml = dir.path().join("t.toml");
+    tribez()
+        .args([
+            "mesh",
+            "patch",
+            &fx(HEX),
+            "--triangle",
+            "2",
+            "--format",
+            "text",
+            "-o",
+        ])
+        .arg(&toml)
+        .assert()
+        .code(0);
+    assert!(
+        std::fs::read_to_string(&toml)
+            .unwrap()
+            .contains("kind = \"functional\"")
+    );
+    let bad = dir.path().join("u.toml");
+    fails_with(
+        &[
+            "mesh",
+            "patch",
+            &fx(HEX),
+            "--triangle",
+            "2",
+            "--format",
+            "json",
+            "-o",
+            bad.to_str().unwrap(),
+        ],
+        &["u.toml", "--format json"],
+    );
+    assert!(!bad.exists());
+}
+
 fn write(dir: &Path, name: &str, text: &str) -> String {
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();

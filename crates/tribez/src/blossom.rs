@@ -148,6 +148,7 @@ fn plan<T: Field>(f: &[Vec<T>], m: usize) -> Result<Plan<T>, CoreError> {
             slot_of[s] = s;
             continue;
         }
+        // invariant: g starts as the unit simplex and each step replaces slot t only where λ_t ≠ 0 (the exchange lemma), so g stays non-degenerate and coordinates_in answers; f's lengths were checked by check_vertices
         let lambda = coordinates_in(&g, &f[s]).expect("the current simplex is non-degenerate");
         let free = |t: usize| !held[t] && !lambda[t].is_zero();
         let t = if free(s) {
@@ -208,6 +209,7 @@ fn exchange<T: Field>(net: &ControlNet<T>, steps: &Vec<(Vec<T>, usize)>) -> Cont
         for (lambda, t) in steps {
             cur = cur.faces(lambda, &[*t]).remove(0);
         }
+        // invariant: this branch runs only when the downcast above found T = BigRational, so the cast back succeeds
         return cast(cur.rational()).expect("T is BigRational");
     }
     exchange_generic(net, steps)

@@ -83,6 +83,7 @@ pub fn levels<T: Scalar>(net: &ControlNet<T>, lambda: &[T]) -> Vec<ControlNet<T>
     let mut out = Vec::with_capacity(net.degree() + 1);
     out.push(net.clone());
     for _ in 0..net.degree() {
+        // invariant: `out` holds the net pushed above, so it is never empty
         let next = step(out.last().expect("non-empty"), lambda);
         out.push(next);
     }

@@ -62,6 +62,7 @@ impl Domain {
         for (k, v) in vertices.iter_mut().enumerate().take(m) {
             v[k] = BigRational::one();
         }
+        // invariant: e_1, …, e_m and the origin are affinely independent for every m ≥ 1 (callers pass a patch's simplex dimension, which patch constructors keep ≥ 1)
         Domain::new(vertices).expect("the reference simplex is not degenerate")
     }
 

@@ -56,6 +56,7 @@ pub fn elevate_once<T: Field>(net: &ControlNet<T>) -> ControlNet<T> {
                     Some(a) => a + term,
                 });
             }
+            // invariant: |α| = n + 1 ≥ 1, so some α_k > 0 and the loop above set `acc`
             coords.push(acc.expect("some α_k > 0") / &den);
         }
     }
@@ -72,6 +73,7 @@ pub fn elevate<T: Field>(net: &ControlNet<T>, r: usize) -> ControlNet<T> {
         return net.clone();
     }
     match downcast_ref::<_, ControlNet<BigRational>>(net) {
+        // invariant: the downcast found T = BigRational, so the cast back succeeds
         Some(q) => cast(elevate_integer(q, r)).expect("T is BigRational"),
         None => elevate_generic(net, r),
     }

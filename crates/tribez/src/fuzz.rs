@@ -24,6 +24,7 @@ pub const TARGETS: &[&str] = &[
     "mesh",
     "batch_inverse",
     "fit_data",
+    "certify",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -41,6 +42,7 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "mesh" => mesh(data),
         "batch_inverse" => batch_inverse(data),
         "fit_data" => fit_data(data),
+        "certify" => certify(data),
         _ => return false,
     }
     true
@@ -181,4 +183,98 @@ pub fn batch_inverse(data: &[u8]) {
 /// small file fitted and its residuals checked ([`crate::fit::fuzz_fit_data`]).
 pub fn fit_data(data: &[u8]) {
     crate::fit::fuzz_fit_data(data);
+}
+
+/// The caps of the `certify` target, so that one input runs in milliseconds: the patch of
+/// degree at most [`CERTIFY_MAX_DEGREE`], written back as TOML in at most
+/// [`CERTIFY_MAX_TEXT`] bytes (this bounds the control points and the size of their numbers),
+/// at most [`CERTIFY_MAX_POINTS`] points.
+pub const CERTIFY_MAX_DEGREE: usize = 12;
+/// See [`CERTIFY_MAX_DEGREE`].
+pub const CERTIFY_MAX_TEXT: usize = 16 << 10;
+/// See [`CERTIFY_MAX_DEGREE`].
+pub const CERTIFY_MAX_POINTS: usize = 24;
+
+/// A certification run ([`crate::certify()`]) of a patch file with options. The first byte
+/// chooses the precision (`b % 3`: both, f64, f32), the algorithm (`b / 3 % 3`: all, de
+/// Casteljau, Bernstein), the patch format (`b / 9 % 2`: TOML, JSON) and the points
+/// (`b / 18 % 2`: random or given); the second byte the number of random points (1 to
+/// [`CERTIFY_MAX_POINTS`]), the next eight the seed (little-endian). The rest is text: the
+/// patch file, then, for given points, a line `%%` and the points as CSV. The report is
+/// rendered as text; its worst errors and every row's per-point results are checked for the
+/// sizes the report promises.
+pub fn certify(data: &[u8]) {
+    use crate::certify::report::{CertifyOptions, CertifyPoints};
+    if data.len() < 10 {
+        return;
+    }
+    let (head, rest) = data.split_at(10);
+    let b = head[0];
+    let precision = match b % 3 {
+        0 => None,
+        1 => Some(crate::float::Precision::F64),
+        _ => Some(crate::float::Precision::F32),
+    };
+    let algorithm = match b / 3 % 3 {
+        0 => None,
+        1 => Some(crate::exact::Algorithm::Casteljau),
+        _ => Some(crate::exact::Algorithm::Bernstein),
+    };
+    let json = b / 9 % 2 == 1;
+    let given = b / 18 % 2 == 1;
+    let count = usize::from(head[1]) % CERTIFY_MAX_POINTS + 1;
+    let mut seed = [0u8; 8];
+    seed.copy_from_slice(&head[2..10]);
+    let seed = u64::from_le_bytes(seed);
+    let Some(t) = text(rest) else { return };
+    let (patch_text, points_text) = match t.split_once("\n%%\n") {
+        Some((p, q)) if given => (p, Some(q)),
+        _ => (t, None),
+    };
+    let doc = if json {
+        Document::parse_json("fuzz.json", patch_text)
+    } else {
+        Document::parse_toml("fuzz.toml", patch_text)
+    };
+    let Ok(any) = doc.and_then(|d| any_patch_from_document(&d, &d.root, "")) else {
+        return;
+    };
+    if any_patch_to_toml(&any).len() > CERTIFY_MAX_TEXT {
+        return;
+    }
+    let patch = crate::patch_type::Patch::from(any);
+    let shape = patch.shape();
+    if shape.degree > CERTIFY_MAX_DEGREE {
+        return;
+    }
+    let points = match points_text {
+        Some(q) => {
+            let Ok(points) = parse_csv_points(q, shape.input.len(), "fuzz.csv") else {
+                return;
+            };
+            if points.len() > CERTIFY_MAX_POINTS {
+                return;
+            }
+            CertifyPoints::Given {
+                points,
+                source: "fuzz.csv".into(),
+            }
+        }
+        None => CertifyPoints::Random { count, seed },
+    };
+    let options = CertifyOptions {
+        points,
+        precision,
+        algorithm,
+        label: "fuzz.toml".into(),
+    };
+    let Ok(report) = crate::certify::report::certify(&patch, &options) else {
+        return;
+    };
+    let _ = report.text();
+    assert_eq!(report.worst_errors().len(), report.rows.len());
+    for row in &report.rows {
+        assert_eq!(row.per_point.len(), report.inputs.len());
+        assert!(row.coordinates <= report.inputs.len() * shape.dimension);
+    }
 }

@@ -99,6 +99,7 @@ pub use capability::{
 pub use certify::measures::Tolerance;
 pub use certify::report::{
     CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, PointResult, RandomPoints, certify,
+    certify_until,
 };
 pub use error::CoreError;
 pub use exact::Algorithm;

@@ -130,6 +130,7 @@ impl RationalPatch {
     /// `λ` need not sum to one (the rational map is homogeneous of degree 0).
     pub fn evaluate(&self, lambda: &[BigRational]) -> Result<Vec<BigRational>, CoreError> {
         let h = ExactEvaluator::new(&self.homogeneous()).evaluate(lambda, Algorithm::Casteljau);
+        // invariant: the homogeneous net has d + 1 ≥ 2 coordinates (d ≥ 1 points plus the weight)
         let (w, x) = h.split_last().expect("d + 1 >= 2 coordinates");
         if w.is_zero() {
             return Err(undefined(lambda));
@@ -225,6 +226,7 @@ impl RationalPatch {
             }
             p[set] = v.into_iter().map(|x| x / w).collect();
         }
+        // invariant: `p` has one entry per subset of the directions (2^k ≥ 1 of them), the full set last
         Ok(p.pop().expect("the full set"))
     }
 
@@ -245,6 +247,7 @@ impl RationalPatch {
         let n = h.degree();
         let hf = crate::derivative::tangent_frame(&h, domain, lambda)?;
         let dim = h.dim() - 1;
+        // invariant: the tangent frame of the homogeneous net has its d + 1 ≥ 2 coordinates
         let (w, x) = hf.point.split_last().expect("d + 1 coordinates");
         if w.is_zero() {
             return Err(undefined(lambda));
@@ -252,6 +255,7 @@ impl RationalPatch {
         let point: Vec<BigRational> = x.iter().map(|c| c / w).collect();
         let mut intermediate = Vec::with_capacity(hf.intermediate.len());
         for (k, c) in hf.intermediate.iter().enumerate() {
+            // invariant: every intermediate point of the homogeneous net has d + 1 ≥ 2 coordinates
             let (wk, xk) = c.split_last().expect("d + 1 coordinates");
             if wk.is_zero() {
                 return Err(CoreError::FrameAtInfinity {
@@ -305,6 +309,7 @@ impl RationalPatch {
     /// variables. It is identically zero exactly when the whole patch lies on `F = 0`.
     pub fn implicit_residual(&self, f: &Polynomial) -> Polynomial {
         let comps = self.homogeneous_form();
+        // invariant: the homogeneous form has d + 1 ≥ 2 components
         let (w, x) = comps.split_last().expect("d + 1 coordinates");
         homogenised_residual(f, x, w)
     }
@@ -312,6 +317,7 @@ impl RationalPatch {
 
 /// The final step of the float path: `(X_1, …, X_d, W) ↦ (X_1/W, …, X_d/W)`, one division each.
 pub fn divide_last<F: Float + std::ops::Div<Output = F>>(v: &[F]) -> Vec<F> {
+    // invariant: the float path's homogeneous results have d + 1 ≥ 2 coordinates (every caller passes one)
     let (w, x) = v.split_last().expect("d + 1 coordinates");
     x.iter().map(|&c| c / *w).collect()
 }
@@ -364,6 +370,7 @@ impl RationalPatch {
     /// ```
     pub fn blossom(&self, args: &[Vec<BigRational>]) -> Result<Vec<BigRational>, CoreError> {
         let h = crate::blossom::blossom(&self.homogeneous(), args)?;
+        // invariant: the blossom of the homogeneous net has d + 1 ≥ 2 coordinates
         let (w, x) = h.split_last().expect("d + 1 >= 2 coordinates");
         if w.is_zero() {
             return Err(CoreError::BlossomUndefined {

@@ -42,6 +42,7 @@ pub trait Scalar:
         I: Iterator<Item = (&'a Self, &'a Self)>,
         Self: 'a,
     {
+        // invariant: every caller sums over a basis of a simplex, which has at least one multi-index
         let (w, x) = terms.next().expect("weighted_sum of no terms");
         let mut acc = w.clone() * x;
         for (w, x) in terms {
@@ -101,6 +102,7 @@ macro_rules! float_scalar {
             where
                 I: Iterator<Item = (&'a Self, &'a Self)>,
             {
+                // invariant: every caller sums over a basis of a simplex, which has at least one multi-index
                 let (w, x) = terms.next().expect("weighted_sum of no terms");
                 let mut acc = w * x;
                 for (w, x) in terms {

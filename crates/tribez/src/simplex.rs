@@ -49,6 +49,7 @@ pub fn binomial(n: u64, k: u64) -> u128 {
 
 /// Number of multi-indices of degree `n` on the `m`-simplex: `C(n+m, m)`.
 pub fn count(m: usize, n: usize) -> usize {
+    // invariant: readers check the count in u128 against MAX_CONTROL_POINTS before any simplex is built (io::patch_file), and constructions stay within degree 200, m ≤ 16 (C(216, 16) < 2^64)
     usize::try_from(binomial((n + m) as u64, m as u64)).expect("simplex too large")
 }
 

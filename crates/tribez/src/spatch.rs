@@ -113,6 +113,7 @@ impl Polygon {
         if right {
             return Err(CoreError::Clockwise);
         }
+        // invariant: neither `left` (every vertex strictly left) nor `right` held, so the loop recorded a witness
         let (k, i, on) = witness.expect("some vertex is not strictly left");
         Err(CoreError::NotConvex {
             vertex: k + 1,

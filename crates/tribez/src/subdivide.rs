@@ -140,6 +140,7 @@ pub fn halve_domains<T: Field>(m: usize, i: usize, j: usize) -> [Vec<Vec<T>>; 2]
 /// first keeping corner `i`, the second keeping corner `j`.
 pub fn halve<T: Field>(net: &ControlNet<T>, i: usize, j: usize) -> [Piece<T>; 2] {
     halve_domains(net.m(), i, j).map(|d| {
+        // invariant: halve_domains gives the two halves of the simplex (a vertex replaced by an edge midpoint), never degenerate
         let n = subpatch(net, &d).expect("a half is non-degenerate");
         Piece {
             domain_in_parent: d,

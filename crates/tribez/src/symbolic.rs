@@ -891,6 +891,7 @@ fn checked_pow(p: &Polynomial, k: u64, work: &mut Budget) -> Result<Polynomial, 
     }
     check_bits(p.max_coefficient_bits().saturating_mul(k))?;
     if deg == 0 {
+        // invariant: the zero polynomial returned above, so a degree-0 `p` has its one constant term
         let c = p.terms.values().next().expect("non-zero");
         let k = u32::try_from(k).map_err(|_| "exponent too large".to_string())?;
         charge(work, 1, coefficient_bits(c).saturating_mul(u64::from(k)))?;
@@ -942,6 +943,7 @@ pub fn barycentric_form(net: &ControlNet<BigRational>) -> Vec<Polynomial> {
 pub fn barycentric_of_cartesian(domain: &Domain) -> Vec<Polynomial> {
     let m = domain.m();
     let zero = vec![BigRational::zero(); m];
+    // invariant: `zero` has the domain's m coordinates
     let base = domain.barycentric(&zero).expect("dimension matches");
     let mut out: Vec<Polynomial> = base
         .iter()
@@ -950,6 +952,7 @@ pub fn barycentric_of_cartesian(domain: &Domain) -> Vec<Polynomial> {
     for c in 0..m {
         let mut unit = zero.clone();
         unit[c] = BigRational::one();
+        // invariant: `unit` has the domain's m coordinates
         let at = domain.barycentric(&unit).expect("dimension matches");
         for (k, poly) in out.iter_mut().enumerate() {
             let slope = &at[k] - &base[k];

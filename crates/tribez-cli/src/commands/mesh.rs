@@ -8,7 +8,7 @@ use serde_json::{Value as Json, json};
 
 use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
-use crate::cli::{OutputArgs, examples};
+use crate::cli::{OutputArgs, TextOrJson, examples};
 use crate::report::Render;
 use tribez::hazmat::float::Float;
 use tribez::hazmat::io::points::read_points;
@@ -42,7 +42,8 @@ pub struct CheckArgs {
     pub out: OutputArgs,
 }
 
-/// Arguments of `tribez mesh patch`.
+/// Arguments of `tribez mesh patch` (with `-o FILE` the file's extension chooses the format:
+/// `.json` JSON, `.toml` TOML, anything else `--format`).
 #[derive(Debug, clap::Args)]
 pub struct PatchArgs {
     /// The mesh file (.toml or .json).
@@ -178,7 +179,34 @@ fn run_patch(args: &PatchArgs) -> Result<Outcome, CliError> {
         )));
     }
     let patch = mesh.triangle_patch(args.triangle)?;
-    Outcome::rendered(&PatchReport::of(patch.into_any()), args.out.format, true)
+    Outcome::rendered(
+        &PatchReport::of(patch.into_any()),
+        patch_format(&args.out)?,
+        true,
+    )
+}
+
+/// The format of the patch file `mesh patch` writes: with `-o`, chosen by the file's extension
+/// as `fit -o` chooses (`.json` JSON, `.toml` TOML, either case), so that a `.json` file never
+/// holds TOML; `--format json` with a `.toml` name is a usage error. Other names (and standard
+/// output) take `--format`.
+fn patch_format(out: &OutputArgs) -> Result<TextOrJson, CliError> {
+    let ext = out
+        .output
+        .as_ref()
+        .and_then(|p| p.extension())
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    match (ext.as_deref(), out.format) {
+        (Some("json"), _) => Ok(TextOrJson::Json),
+        (Some("toml"), TextOrJson::Json) => Err(CliError::Usage(format!(
+            "-o {}: a .toml file, but --format json asks for JSON (name it .json, or drop --format json)",
+            out.output
+                .as_ref()
+                .map_or(String::new(), |p| p.display().to_string())
+        ))),
+        (Some("toml"), _) => Ok(TextOrJson::Text),
+        _ => Ok(out.format),
+    }
 }
 
 /// One float lookup, judged.

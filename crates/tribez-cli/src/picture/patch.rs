@@ -1,6 +1,15 @@
-//! Pictures of patches (`tribez plot`): the geometry is sampled from exact values (the library's
-//! exact evaluation at exact sample points), converted to `f64` (correctly rounded) for drawing
-//! only.
+//! Pictures of patches (`tribez plot`): the geometry is sampled at exact sample points, and a
+//! picture needs no more than its pixels' precision, so the values are summed in `f64`
+//! ([`Fast`]): the Bernstein form `Σ_α C(n;α) c_α λ^α`, with the control points translated to the
+//! first one and scaled by a power of two `S ≥ max |c_α − c_0|`, each `C(n;α)(c_α − c_0)/S`
+//! rounded once from its exact value. On the closed domain (`λ ≥ 0`, `Σ λ^α C(n;α) = 1`) every
+//! term is at most 1 in magnitude, so the error of a value is at most about `(N + n + m + 2)·2^-53·S`
+//! (`N ≤ 250,000` control points, `S < 4 max |c_α − c_0|`): below `10^-9` of the net's extent,
+//! and the picture's frame holds the whole net. A rational patch's denominator is summed the same way with
+//! a running bound; where it is not certainly `2^20` times larger than its error, that point is
+//! evaluated exactly (where the denominator vanishes the point is left out). An S-patch takes
+//! its float Wachspress coordinates first (exactly where they are not finite). The exact path
+//! ran in the order of `N·n` big-number operations per point: minutes at degree 200.
 //!
 //! * Over a triangle (or an S-patch's polygon) in R^3, and the graph of a scalar patch: a shaded
 //!   projection (painter's algorithm over the sampled triangles, far ones first; Lambert shading
@@ -14,7 +23,7 @@
 //! `ξ_α = Σ α_k a_k / n` (docs/theory.md §9), so the net of the graph is the graph's net.
 
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 use rayon::prelude::*;
 
 use super::project::{Frame, View, cross, dot, normalize, sub};
@@ -24,6 +33,7 @@ use tribez::Patch;
 use tribez::hazmat::any_patch::AnyPatch;
 use tribez::hazmat::number::round_f64;
 use tribez::hazmat::patch::ControlNet;
+use tribez::hazmat::simplex::multinomial;
 
 /// The colour of control nets (points, lines and labels): a magenta no surface colour is near.
 pub const NET: Rgb = Rgb(220, 38, 127);
@@ -45,6 +55,10 @@ pub const MAX_SAMPLES: usize = 256;
 /// At most this many points are sampled in all (S-patches over many-sided polygons take fewer
 /// segments per fan triangle).
 const MAX_POINTS: usize = 200_000;
+/// At most this many Bernstein terms are summed for an S-patch's fan (points × control points;
+/// more sides or control points take fewer segments per fan triangle). A triangle of degree 200
+/// at 256 segments sums about 8.5·10^8.
+const MAX_TERMS: usize = 1_000_000_000;
 /// `--labels all` labels nets of at most this many points (larger nets: corners only).
 const MAX_LABELS: usize = 1_000;
 
@@ -136,20 +150,200 @@ struct Sample {
     input: Vec<BigRational>,
 }
 
-/// Evaluate every sample exactly (in parallel) and convert to picture points; a point where the
-/// patch is undefined (a rational patch's zero denominator) is `None`.
+/// Evaluate every sample (in parallel) and convert to picture points: in f64 by [`Fast`] where
+/// it can, exactly where it cannot; a point where the patch is undefined (a rational patch's
+/// zero denominator) is `None`.
 fn evaluate(patch: &Patch, g: &Geometry<'_>, samples: &[Sample]) -> Vec<Option<[f64; 3]>> {
-    let evaluator = patch.exact().exact_evaluator();
+    // made only if a point needs it: preparing the exact kernel costs as much as a picture
+    let evaluator = std::sync::OnceLock::new();
+    let fast = Fast::new(patch);
     samples
         .par_iter()
-        .map(|s| {
-            let value = evaluator.evaluate(&s.input).ok()?;
-            let value: Vec<f64> = value.iter().map(round_f64).collect();
+        .map_init(Vec::new, |scratch, s| {
+            let value = match fast.as_ref().and_then(|f| f.value(&s.input, scratch)) {
+                Some(v) => v,
+                None => {
+                    let exact = evaluator
+                        .get_or_init(|| patch.exact().exact_evaluator())
+                        .evaluate(&s.input)
+                        .ok()?;
+                    exact.iter().map(round_f64).collect()
+                }
+            };
             let domain: Vec<f64> = s.domain.iter().map(round_f64).collect();
             let p = g.point(&domain, &value);
             p.iter().all(|x| x.is_finite()).then_some(p)
         })
         .collect()
+}
+
+/// Bernstein sums in f64 for a picture (the module's documentation gives the error).
+struct Fast {
+    /// The net's simplex dimension and degree, the points' dimension.
+    m: usize,
+    n: usize,
+    d: usize,
+    /// Every control point's multi-index, `m + 1` entries each (canonical order).
+    exponents: Vec<u16>,
+    /// `C(n;α) w_α (c_α − c_0) / (S W)`, `d` per control point (`w = W = 1` unless rational).
+    numerators: Vec<f64>,
+    /// A rational patch's `C(n;α) w_α / W` (`W` a power of two `≥ max |w_α|`).
+    denominators: Option<Vec<f64>>,
+    /// `c_0` rounded, and `S`.
+    origin: Vec<f64>,
+    scale: f64,
+    /// An S-patch's polygon, translated to its first vertex `v_0` (rounded), and `v_0` exactly.
+    polygon: Option<(Vec<[f64; 2]>, [BigRational; 2])>,
+}
+
+/// A power of two `2^k ≥ x` (for `x ≥ 0`; 1 for 0), or `None` beyond f64.
+fn power_of_two_above(x: &BigRational) -> Option<BigRational> {
+    let f = round_f64(x);
+    if !f.is_finite() {
+        return None;
+    }
+    if f == 0.0 {
+        return Some(BigRational::one());
+    }
+    let mut p = 1.0f64;
+    while p < f {
+        p *= 2.0; // ends: f is finite
+    }
+    while p / 2.0 >= f {
+        p /= 2.0; // ends: f > 0
+    }
+    // f ≤ p, and x ≤ f (1 + 2^-53) since f is x rounded: 2p ≥ x
+    BigRational::from_float(p * 2.0)
+}
+
+impl Fast {
+    /// `None` when the numbers are beyond f64 (the exact path then draws what it can).
+    fn new(patch: &Patch) -> Option<Fast> {
+        let (net, weights, polygon) = match patch.as_any() {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (&p.net, None, None),
+            AnyPatch::Rational(r) => (&r.patch.net, Some(&r.weights), None),
+            AnyPatch::SPatch(s) => (&s.net, None, Some(s.polygon.vertices())),
+        };
+        let (m, n, d) = (net.m(), net.degree(), net.dim());
+        let first = net.points().next()?.to_vec();
+        let spread = net
+            .coords()
+            .iter()
+            .enumerate()
+            .map(|(i, x)| (x - &first[i % d]).abs())
+            .max()
+            .unwrap_or_else(BigRational::zero);
+        let scale = power_of_two_above(&spread)?;
+        let wscale = match weights {
+            Some(w) => power_of_two_above(&w.iter().map(|x| x.abs()).max()?)?,
+            None => BigRational::one(),
+        };
+        let mut exponents = Vec::with_capacity(net.len() * (m + 1));
+        let mut numerators = Vec::with_capacity(net.len() * d);
+        let mut denominators = weights.map(|_| Vec::with_capacity(net.len()));
+        for (r, (alpha, c)) in net.entries().enumerate() {
+            exponents.extend(alpha.iter().map(|&a| u16::try_from(a).unwrap_or(u16::MAX)));
+            let binomial = BigRational::from_integer(multinomial(alpha).into());
+            let w = match weights {
+                Some(w) => &binomial * &w[r] / &wscale,
+                None => binomial,
+            };
+            for (x, o) in c.iter().zip(&first) {
+                numerators.push(round_f64(&((x - o) * &w / &scale)));
+            }
+            if let Some(den) = denominators.as_mut() {
+                den.push(round_f64(&w));
+            }
+        }
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        if !finite(&numerators) || !denominators.as_deref().is_none_or(finite) {
+            return None;
+        }
+        let polygon = polygon.map(|v| {
+            let v0 = v[0].clone();
+            let shifted = v
+                .iter()
+                .map(|p| [0, 1].map(|c| round_f64(&(&p[c] - &v0[c]))))
+                .collect();
+            (shifted, v0)
+        });
+        Some(Fast {
+            m,
+            n,
+            d,
+            exponents,
+            numerators,
+            denominators,
+            origin: first.iter().map(round_f64).collect(),
+            scale: round_f64(&scale),
+            polygon,
+        })
+    }
+
+    /// The value at the exact input (barycentric, or an S-patch's Cartesian point), or `None`
+    /// where f64 cannot give it (then the caller evaluates exactly). `scratch` holds the powers.
+    fn value(&self, input: &[BigRational], scratch: &mut Vec<f64>) -> Option<Vec<f64>> {
+        let lambda: Vec<f64> = match &self.polygon {
+            Some((vertices, v0)) => {
+                let p = [0, 1].map(|c| round_f64(&(&input[c] - &v0[c])));
+                let l = tribez::hazmat::spatch::wachspress_float(vertices, &p);
+                if !l.iter().all(|x| x.is_finite() && *x >= 0.0) {
+                    return None;
+                }
+                l
+            }
+            None => input.iter().map(round_f64).collect(),
+        };
+        if lambda.len() != self.m + 1 {
+            return None;
+        }
+        // powers λ_k^e, e = 0..=n, row k at k(n + 1)
+        let (n1, m1) = (self.n + 1, self.m + 1);
+        scratch.clear();
+        for &l in &lambda {
+            let mut p = 1.0f64;
+            scratch.push(p);
+            for _ in 0..self.n {
+                p *= l;
+                scratch.push(p);
+            }
+        }
+        let mut num = vec![0.0f64; self.d];
+        let (mut den, mut den_abs) = (0.0f64, 0.0f64);
+        for (r, alpha) in self.exponents.chunks_exact(m1).enumerate() {
+            let mut b = 1.0f64;
+            for (k, &a) in alpha.iter().enumerate() {
+                b *= scratch[k * n1 + usize::from(a)];
+            }
+            for (c, acc) in num.iter_mut().enumerate() {
+                *acc += self.numerators[r * self.d + c] * b;
+            }
+            if let Some(w) = &self.denominators {
+                let t = w[r] * b;
+                den += t;
+                den_abs += t.abs();
+            }
+        }
+        let quotient = match &self.denominators {
+            Some(_) => {
+                // |computed − exact| ≤ γ_K Σ|terms|, K = N + n + m + 2 roundings at most per
+                // term; trust the quotient only far from a zero denominator
+                let k = (self.exponents.len() / m1 + self.n + m1 + 1) as f64;
+                let bound = k * f64::EPSILON * den_abs;
+                if !(den.abs() > bound * (1u64 << 20) as f64) {
+                    return None;
+                }
+                den
+            }
+            None => 1.0,
+        };
+        Some(
+            num.iter()
+                .zip(&self.origin)
+                .map(|(x, o)| o + self.scale * (x / quotient))
+                .collect(),
+        )
+    }
 }
 
 fn q(n: usize, d: usize) -> BigRational {
@@ -273,7 +467,11 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
         // a fan of triangles from the centroid (the polygon is convex)
         let k = g.vertices.len();
         let mut per = n;
-        while per > 1 && k * (per + 1) * (per + 2) / 2 > MAX_POINTS {
+        let terms = g.net.len();
+        while per > 1
+            && (k * (per + 1) * (per + 2) / 2 > MAX_POINTS
+                || k * (per + 1) * (per + 2) / 2 * terms > MAX_TERMS)
+        {
             per -= 1;
         }
         let centroid = vec![q(1, k); k];
@@ -651,6 +849,91 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use tribez::hazmat::io::patch_file::read_any_patch;
+
+    fn fixture(name: &str) -> Patch {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
+        Patch::from(read_any_patch(&root.join(name)).unwrap())
+    }
+
+    /// The f64 sums of a picture against the exact values, rounded, at a grid of the domain
+    /// (triangles: barycentric; S-patches: the fan's Cartesian points): within `1e-9` of the
+    /// net's extent (the module's bound), and every point evaluated in f64 (none fell back).
+    fn agrees_with_exact(patch: &Patch, samples: &[Vec<BigRational>], extent: f64) {
+        let fast = Fast::new(patch).expect("numbers within f64");
+        let exact = patch.exact().exact_evaluator();
+        let mut scratch = Vec::new();
+        for s in samples {
+            let got = fast.value(s, &mut scratch).expect("decided in f64");
+            let want: Vec<f64> = exact.evaluate(s).unwrap().iter().map(round_f64).collect();
+            for (g, w) in got.iter().zip(&want) {
+                assert!((g - w).abs() <= 1e-9 * extent, "at {s:?}: {g} vs {w}");
+            }
+        }
+    }
+
+    fn bary_grid(n: usize) -> Vec<Vec<BigRational>> {
+        grid(n).into_iter().map(|p| p.to_vec()).collect()
+    }
+
+    #[test]
+    fn f64_sums_agree_with_the_exact_values() {
+        // a quartic far from the origin: 10^20 + small offsets (the translation to the first
+        // control point keeps the spread, 1 to 9, in view; without it 10^20 · 2^-53 ≈ 10^4)
+        let n = 4;
+        let far = BigRational::from_integer(num_bigint::BigInt::from(10u32).pow(20));
+        let pts: Vec<Vec<BigRational>> = (0..15)
+            .map(|i: i64| {
+                (0..3)
+                    .map(|c: i64| {
+                        &far + BigRational::from_integer(((i * 7 + c * 3) % 9 + 1).into())
+                    })
+                    .collect()
+            })
+            .collect();
+        let p = Patch::bezier(tribez::SimplexDim(2), tribez::Degree(n), pts).unwrap();
+        agrees_with_exact(&p, &bary_grid(9), 8.0);
+        // a rational patch with positive weights, an S-patch, a curve
+        agrees_with_exact(&fixture("beyond/octant_quartic.toml"), &bary_grid(9), 1.0);
+        let on_curve: Vec<Vec<BigRational>> = (0..=8).map(|i| vec![q(8 - i, 8), q(i, 8)]).collect();
+        agrees_with_exact(&fixture("beyond/cubic_curve.toml"), &on_curve, 4.0);
+        let pentagon = fixture("beyond/pentagon_depth2.toml");
+        let AnyPatch::SPatch(s) = pentagon.as_any() else {
+            panic!("an S-patch")
+        };
+        let v = s.polygon.vertices();
+        let k = v.len();
+        // convex combinations of the vertices: inside the polygon
+        let inside: Vec<Vec<BigRational>> = (1..k)
+            .map(|i| {
+                (0..2)
+                    .map(|c| {
+                        (&v[0][c] * q(2, 5) + &v[i][c] * q(2, 5) + &v[(i + 1) % k][c] * q(1, 5))
+                            .clone()
+                    })
+                    .collect()
+            })
+            .collect();
+        agrees_with_exact(&pentagon, &inside, 10.0);
+    }
+
+    #[test]
+    fn a_denominator_near_zero_is_left_to_the_exact_path() {
+        // weights 1, -1 on a line: W(λ) = λ_0 − λ_1 vanishes at (1/2, 1/2)
+        let text = "degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n[weights]\n\"1,0\" = \"1\"\n\"0,1\" = \"-1\"\n";
+        let doc = tribez::hazmat::io::tree::Document::parse_toml("w.toml", text).unwrap();
+        let any =
+            tribez::hazmat::io::patch_file::any_patch_from_document(&doc, &doc.root, "").unwrap();
+        let p = Patch::from(any);
+        let fast = Fast::new(&p).unwrap();
+        let mut scratch = Vec::new();
+        assert_eq!(fast.value(&[q(1, 2), q(1, 2)], &mut scratch), None);
+        // away from it: x = λ_1 / (λ_0 − λ_1) = (1/4)/(1/2) = 1/2 at (3/4, 1/4)
+        assert_eq!(
+            fast.value(&[q(3, 4), q(1, 4)], &mut scratch),
+            Some(vec![0.5])
+        );
+    }
 
     #[test]
     fn the_grid_indexes_its_rows() {

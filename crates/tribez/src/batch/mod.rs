@@ -50,6 +50,10 @@ use parse::{Chunk, Num, RowReader, parse_row, texts_of};
 
 /// Rows judged per chunk (the memory bound: one chunk of lines is held at a time).
 pub const CHUNK: usize = 1 << 16;
+
+/// Rows in memory judged between two calls of the stop test of
+/// [`BatchChecker::check_rows_until`] (a fraction of a second of exact fallbacks).
+pub const STOP_SLAB: usize = 1 << 12;
 /// Failures listed in full in a report (the rest are counted).
 pub const MAX_LISTED: usize = 100;
 /// At most this many rows tied (within their enclosures) for the largest error are kept to be
@@ -113,6 +117,17 @@ pub enum BatchError {
         points: usize,
         /// Rows of values.
         values: usize,
+    },
+    /// In-memory rows: `first_row` plus the rows passes the largest row index.
+    #[error(
+        "first_row {first_row} + {rows} rows passes the largest row index {}",
+        usize::MAX
+    )]
+    RowIndexOverflow {
+        /// The first row's index.
+        first_row: usize,
+        /// Rows given.
+        rows: usize,
     },
     /// [`BatchReport::merge`]: reports judged differently or about different patches.
     #[error("reports {what} ({this} vs {other})")]
@@ -692,6 +707,7 @@ impl<'p> Accumulator<'p> {
                                 outcome.inputs = inputs;
                                 outcome.claimed = claimed;
                             }
+                            // invariant: the row was read by csv_floats just before, so parsing it again succeeds
                             _ => unreachable!("csv_floats read the row"),
                         }
                     }
@@ -876,6 +892,24 @@ impl BatchChecker {
         file: &str,
         patch_name: &str,
     ) -> Result<(BatchReport, Vec<RowVerdict>), BatchError> {
+        let none = &|| None::<std::convert::Infallible>;
+        let Ok(out) = self.check_rows_until(points, values, first_row, file, patch_name, none)?;
+        Ok(out)
+    }
+
+    /// [`BatchChecker::check_rows`], asking `stop` on the calling thread between slabs of
+    /// [`STOP_SLAB`] rows: when it answers `Some(s)` the check ends with `Ok(Err(s))` (the
+    /// Python package stops on Ctrl-C this way). `first_row` plus the rows passing
+    /// `usize::MAX` is an error ([`BatchError::RowIndexOverflow`]), never a wrapped index.
+    pub fn check_rows_until<S>(
+        &self,
+        points: &[f64],
+        values: &[f64],
+        first_row: usize,
+        file: &str,
+        patch_name: &str,
+        stop: &dyn Fn() -> Option<S>,
+    ) -> Result<Result<(BatchReport, Vec<RowVerdict>), S>, BatchError> {
         let p = &self.prepared;
         let (width, dim) = (p.width(), p.patch.net.dim());
         if !points.len().is_multiple_of(width) {
@@ -902,10 +936,16 @@ impl BatchChecker {
         if n == 0 {
             return Err(InputError::file(file, RowsProblem::NoResultRows).into());
         }
+        if first_row.checked_add(n - 1).is_none() {
+            return Err(BatchError::RowIndexOverflow { first_row, rows: n });
+        }
         let mut acc = Accumulator::new(p, file, patch_name, None);
         let mut verdicts = Vec::with_capacity(n);
-        for start in (0..n).step_by(CHUNK) {
-            let end = (start + CHUNK).min(n);
+        for start in (0..n).step_by(STOP_SLAB) {
+            if let Some(s) = stop() {
+                return Ok(Err(s));
+            }
+            let end = (start + STOP_SLAB).min(n);
             let judged: Vec<Judged> = (start..end)
                 .into_par_iter()
                 .map_init(RowScratch::default, |scratch, i| {
@@ -931,7 +971,7 @@ impl BatchChecker {
                 acc.add(j, &Source::Memory);
             }
         }
-        Ok((acc.finish(), verdicts))
+        Ok(Ok((acc.finish(), verdicts)))
     }
 }
 

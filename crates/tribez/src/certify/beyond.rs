@@ -70,6 +70,7 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
     pub fn exact_at(&self, lambda: &[F]) -> Option<Vec<BigRational>> {
         let lam: Vec<BigRational> = lambda.iter().map(|x| x.exact()).collect::<Option<_>>()?;
         let h = self.exact.evaluate(&lam, Algorithm::Casteljau);
+        // invariant: the homogeneous net has d + 1 ≥ 2 coordinates
         let (w, x) = h.split_last().expect("d + 1 coordinates");
         (!w.is_zero()).then(|| x.iter().map(|c| c / w).collect())
     }
@@ -100,7 +101,9 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
             .map(|s| bound::a_priori(Algorithm::Casteljau, F::PRECISION, m, n, s, &lam))
             .collect();
         let Some(errs) = errs else { return case };
+        // invariant: one bound per homogeneous coordinate, d + 1 ≥ 2 of them
         let (e_den, e_num) = errs.split_last().expect("d + 1 coordinates");
+        // invariant: the homogeneous net has d + 1 ≥ 2 coordinates
         let (d, num) = h.split_last().expect("d + 1 coordinates");
         let d_hat = v.last().and_then(|x| x.exact()).unwrap_or_default();
         if d_hat.abs() <= *e_den {
@@ -119,6 +122,7 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
             .map(|x| x.exact().unwrap_or_default())
             .collect();
         case.bound = bound::rational_a_posteriori(F::PRECISION, e_num, e_den, &q, &d_hat, &y_hat);
+        // invariant: one condition number per homogeneous coordinate, d + 1 ≥ 2 of them
         let (cd, cn) = cond.split_last().expect("d + 1 coordinates");
         case.condition = Some(
             cn.iter()
@@ -156,6 +160,7 @@ impl<F: Float + Div<Output = F>> RationalCertifier<F> {
     /// barycentric coordinates of a float Cartesian point).
     pub fn seen_exact(&self, lam: &[BigRational]) -> SeenParts {
         let h = self.exact.evaluate(lam, Algorithm::Casteljau);
+        // invariant: the homogeneous net has d + 1 ≥ 2 coordinates
         let (d, num) = h.split_last().expect("d + 1 coordinates");
         if d.is_zero() {
             return (None, None, None);

@@ -140,6 +140,7 @@ impl Thresholds {
             Tolerance::Exact | Tolerance::CorrectlyRounded | Tolerance::Faithful => (0.0, 0.0),
             Tolerance::Ulps(x) | Tolerance::Abs(x) | Tolerance::Rel(x) => enclose(x),
             Tolerance::Cond(k) => enclose(&(k * super::measures::unit_roundoff(precision))),
+            // invariant: for_patch turns CondDegree into Cond(K) for this patch's m and n
             Tolerance::CondDegree => unreachable!("resolved by for_patch above"),
             Tolerance::Bound => match super::bound::gamma(roundings(algorithm, m, n), precision) {
                 Some(g) => enclose(&g),

@@ -325,13 +325,18 @@ impl Acc {
     }
 }
 
-/// One algorithm of the float program `program`, over all points.
-fn certify_row(
+/// Points judged between two calls of a run's stop test ([`certify_until`]).
+const SLAB: usize = 64;
+
+/// One algorithm of the float program `program`, over all points, in slabs of [`SLAB`] points
+/// with the stop test between them (`Ok(Err(s))`: stopped).
+fn certify_row<S>(
     program: &dyn FloatProgram,
     algorithm: Algorithm,
     points: &[Vec<BigRational>],
     (m, n): (usize, usize),
-) -> Result<CertifyRow, Error> {
+    stop: &dyn Fn() -> Option<S>,
+) -> Result<Result<CertifyRow, S>, Error> {
     let precision = program.precision();
     let bound = program
         .error_bound()
@@ -340,9 +345,12 @@ fn certify_row(
         })?;
     let text = bound.text(algorithm);
     let coordinate = text.coordinates.as_ref().map_or("", |c| c.one);
-    let accs: Vec<Acc> = points
-        .par_iter()
-        .map(|point| {
+    let mut accs: Vec<Acc> = Vec::with_capacity(points.len());
+    for slab in points.chunks(SLAB) {
+        if let Some(s) = stop() {
+            return Ok(Err(s));
+        }
+        accs.par_extend(slab.par_iter().map(|point| {
             // rounded as the float code rounds (an overflow is an infinite input)
             let input: Vec<f64> = point
                 .iter()
@@ -352,8 +360,8 @@ fn certify_row(
                 })
                 .collect();
             Acc::of_case(precision, bound.certify(algorithm, &input), coordinate)
-        })
-        .collect();
+        }));
+    }
     let mut row = CertifyRow::new(algorithm, precision, roundings(algorithm, m, n), text.label);
     let lambda_ulps = row.fold(accs, points);
     if let Some(c) = &text.coordinates {
@@ -369,7 +377,7 @@ fn certify_row(
             row.outside_hypothesis
         ));
     }
-    Ok(row)
+    Ok(Ok(row))
 }
 
 /// The algorithms asked for, among those of the kind's float program.
@@ -397,6 +405,8 @@ fn algorithms(
 fn points_of(patch: &Patch, options: &CertifyOptions) -> Result<Vec<Vec<BigRational>>, Error> {
     let input = patch.shape().input;
     let exact = patch.exact().exact_evaluator();
+    // Only finite floats come here: `random_points` makes coordinates in [-1/2, 3/2], and
+    // polygon points are checked finite below before they are converted.
     let rational = |x: f64| BigRational::from_float(x).expect("finite");
     Ok(match &options.points {
         CertifyPoints::Given { points, source } => {
@@ -441,8 +451,15 @@ fn points_of(patch: &Patch, options: &CertifyOptions) -> Result<Vec<Vec<BigRatio
                         .iter()
                         .map(|v| [round_f64(&v[0]), round_f64(&v[1])])
                         .collect();
-                    random_polygon_points(&verts, count, seed)
-                        .into_iter()
+                    let made = random_polygon_points(&verts, count, seed);
+                    // a vertex beyond f64, or sums of huge coordinates (the centroid, an edge's
+                    // difference), overflow: a bad input, not a point to drop
+                    if made.iter().flatten().any(|x| !x.is_finite()) {
+                        let error = InputError::file(&options.label, Problem::RandomPointsOverflow)
+                            .with_key("polygon");
+                        return Err(error.into());
+                    }
+                    made.into_iter()
                         .map(|p| p.into_iter().map(rational).collect::<Vec<_>>())
                         .filter(|p| exact.coordinates(p).is_ok())
                         .collect()
@@ -475,6 +492,18 @@ fn points_of(patch: &Patch, options: &CertifyOptions) -> Result<Vec<Vec<BigRatio
 /// assert!(report.success());
 /// ```
 pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport, Error> {
+    let Ok(report) = certify_until::<std::convert::Infallible>(patch, options, &|| None)?;
+    Ok(report)
+}
+
+/// [`certify()`], asking `stop` between slabs of points (a few dozen exact evaluations): when it
+/// answers `Some(s)` the run ends with `Ok(Err(s))` (the Python package stops on Ctrl-C this
+/// way). `stop` runs on the calling thread.
+pub fn certify_until<S>(
+    patch: &Patch,
+    options: &CertifyOptions,
+    stop: &dyn Fn() -> Option<S>,
+) -> Result<Result<CertifyReport, S>, Error> {
     let precisions = match options.precision {
         None => vec![Precision::F64, Precision::F32],
         Some(p) => vec![p],
@@ -497,12 +526,16 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
             if let Some(b) = program.error_bound() {
                 note = b.text(a).note;
             }
-            rows.push(certify_row(
+            match certify_row(
                 program.as_ref(),
                 a,
                 &points,
                 (shape.simplex_dim, shape.degree),
-            )?);
+                stop,
+            )? {
+                Ok(row) => rows.push(row),
+                Err(s) => return Ok(Err(s)),
+            }
         }
     }
     let random = match options.points {
@@ -518,7 +551,7 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
         }),
         CertifyPoints::Given { .. } => None,
     };
-    Ok(CertifyReport {
+    Ok(Ok(CertifyReport {
         patch: options.label.clone(),
         points: points.len(),
         inputs: points,
@@ -526,7 +559,7 @@ pub fn certify(patch: &Patch, options: &CertifyOptions) -> Result<CertifyReport,
         rows,
         baseline_regressions: Vec::new(),
         bound_note: note.to_string(),
-    })
+    }))
 }
 
 /// A float for people: up to 4 decimals between 10^-3 and 10^6, else scientific.

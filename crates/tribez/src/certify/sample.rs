@@ -21,7 +21,7 @@ impl SplitMix {
 }
 
 /// Random barycentric points (m+1 coordinates): 70% inside, 15% within 1e-9 of an edge,
-/// 15% outside the simplex (coordinates down to −1/2); `w = 1 − u − v` computed in f64 (so the
+/// 15% outside the simplex (coordinates down to −1/2; every coordinate finite, in [−1/2, 3/2]); `w = 1 − u − v` computed in f64 (so the
 /// coordinates need not sum to 1 exactly; the exact value is the homogeneous form there).
 pub fn random_points(m: usize, count: usize, seed: u64) -> Vec<Vec<f64>> {
     let mut r = SplitMix(seed);
@@ -29,7 +29,8 @@ pub fn random_points(m: usize, count: usize, seed: u64) -> Vec<Vec<f64>> {
         .map(|i| {
             let kind = i % 20;
             let mut lam: Vec<f64> = (0..m).map(|_| r.unit()).collect();
-            let total: f64 = lam.iter().sum::<f64>() + r.unit();
+            // (every draw 0 would divide 0 by 0: the maximum keeps the point finite)
+            let total: f64 = (lam.iter().sum::<f64>() + r.unit()).max(f64::MIN_POSITIVE);
             lam.iter_mut().for_each(|x| *x /= total);
             if kind < 3 {
                 let k = (r.next_u64() % m as u64) as usize;

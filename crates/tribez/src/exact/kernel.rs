@@ -327,10 +327,12 @@ fn census(
     let mut at_full: HashMap<u64, (usize, usize)> = HashMap::new();
     for (r, point) in net.points().enumerate() {
         let (odd, _) = odd_part(point[c].denom().magnitude())
+            // invariant: this runs only for nets whose denominators' odd parts were factored above (word-sized, else the kernel is not used)
             .expect("factored denominators have word-sized odd parts");
         let i = factors
             .of_odd_part
             .binary_search_by_key(&odd, |&(o, _)| o)
+            // invariant: `factors` was built from the odd parts of these same denominators
             .expect("every denominator's odd part was factored");
         for &(p, e) in &factors.of_odd_part[i].1 {
             if full(p) == Some(e) {
@@ -962,6 +964,7 @@ impl FastNet {
                             small: global,
                         }
                     } else {
+                        // invariant: the integer nets are built for every simplex except the triangle, which takes the branch above
                         Form::Simplex(global.expect(
                             "the integer nets are given for every simplex but the triangle",
                         ))
@@ -1031,6 +1034,7 @@ impl FastNet {
         pw: &[Vec<u64>],
         bufs: &mut [Vec<u64>],
     ) {
+        // invariant: the caller gives one buffer per remaining level, and recursion stops before they run out
         let (head, rest) = bufs.split_first_mut().expect("one buffer per level");
         head.clear();
         if t == 1 {

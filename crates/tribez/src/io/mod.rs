@@ -207,6 +207,13 @@ pub enum Problem {
     /// A points file without a point.
     #[error("no points")]
     NoPoints,
+    /// Random points of an S-patch are made in f64 as convex combinations of the polygon's
+    /// vertices (rounded to f64); for this polygon such a sum overflows.
+    #[error(
+        "its coordinates are too large for random points, which are made in f64 as combinations \
+         of the vertices (a sum overflows f64); give the points instead"
+    )]
+    RandomPointsOverflow,
     /// More rows (or array entries) than a file of this kind may hold (checked before the row
     /// is stored).
     #[error("more than {limit} {unit} (the limit of {what})")]

@@ -270,6 +270,7 @@ impl Mesh {
                 };
                 let e = self
                     .edge_index(a, b)
+                    // invariant: the edge list is built from every triangle's edges when the mesh is made
                     .expect("every triangle edge is in the edge list");
                 self.vertex_end() + e * (n - 1) + (kb as usize - 1)
             }

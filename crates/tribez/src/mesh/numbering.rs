@@ -57,7 +57,7 @@ impl fmt::Display for OrdinateId {
                 triangle, alpha, ..
             } => write!(
                 f,
-                "triangle {triangle}, interior ordinate {}{}{}",
+                "triangle {triangle}, interior ordinate ({},{},{})",
                 alpha[0], alpha[1], alpha[2]
             ),
         }
@@ -134,6 +134,27 @@ mod tests {
             index: 0,
             alpha: [1, 1, 1],
         };
-        assert_eq!(id.to_string(), "triangle 2, interior ordinate 111");
+        assert_eq!(id.to_string(), "triangle 2, interior ordinate (1,1,1)");
+        // from degree 13 on an entry has two digits: (11,1,1), (1,11,1) and (1,1,11) are
+        // three different ordinates, and their names must differ
+        let names: Vec<String> = [[11, 1, 1], [1, 11, 1], [1, 1, 11]]
+            .into_iter()
+            .map(|alpha| {
+                let id = OrdinateId::Interior {
+                    triangle: 0,
+                    index: interior_rank(alpha),
+                    alpha,
+                };
+                id.to_string()
+            })
+            .collect();
+        assert_eq!(
+            names,
+            [
+                "triangle 0, interior ordinate (11,1,1)",
+                "triangle 0, interior ordinate (1,11,1)",
+                "triangle 0, interior ordinate (1,1,11)"
+            ]
+        );
     }
 }

@@ -366,6 +366,7 @@ fn decimal(neg: bool, mut m: BigUint, e: i64) -> BigRational {
     let five = BigUint::from(5u32);
     let mut powers = vec![five.clone()];
     while powers.last().is_some_and(|p| p.bits() * 2 <= m.bits() + 1) {
+        // invariant: `powers` starts with 5 and only grows
         let p = powers.last().expect("non-empty");
         powers.push(p * p);
     }

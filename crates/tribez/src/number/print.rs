@@ -255,6 +255,7 @@ fn push_chunks<const D: usize, const T: usize>(
 
 /// Digits written by [`fill_digits`] as text.
 fn ascii(digits: &[u8]) -> &str {
+    // invariant: fill_digits writes ASCII digits (b'0' + d, d < 10) only
     std::str::from_utf8(digits).expect("ASCII digits")
 }
 
