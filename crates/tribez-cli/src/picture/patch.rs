@@ -330,7 +330,9 @@ impl Fast {
                 // term; trust the quotient only far from a zero denominator
                 let k = (self.exponents.len() / m1 + self.n + m1 + 1) as f64;
                 let bound = k * f64::EPSILON * den_abs;
-                if !(den.abs() > bound * (1u64 << 20) as f64) {
+                // not clearly away from zero (NaN included): the exact path decides
+                let margin = bound * (1u64 << 20) as f64;
+                if den.abs().partial_cmp(&margin) != Some(std::cmp::Ordering::Greater) {
                     return None;
                 }
                 den

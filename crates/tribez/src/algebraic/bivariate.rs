@@ -632,5 +632,5 @@ pub fn div_exact(a: &BiPoly, b: &BiPoly) -> Option<BiPoly> {
         quot[k] = qk;
         r = r.trimmed();
     }
-    r.is_zero().then(|| BiPoly { c: quot })
+    r.is_zero().then_some(BiPoly { c: quot })
 }
