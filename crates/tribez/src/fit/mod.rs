@@ -29,6 +29,7 @@
 mod c1;
 mod data;
 mod judge;
+mod minnorm;
 #[cfg(test)]
 mod tests;
 
@@ -132,6 +133,19 @@ pub enum FitError {
         /// The number of ordinates.
         unknowns: usize,
     },
+    /// The data cannot determine every ordinate, known before solving: their distinct points
+    /// (at most `(n+1)(n+2)/2` counted per triangle) are fewer than the degrees of freedom.
+    #[error(
+        "the data do not determine the fit: their distinct points give at most {bound} independent conditions (counting at most (n+1)(n+2)/2 per triangle) for {dimension} degrees of freedom ({unknowns} ordinates); add data, or regularize (--regularize) for the minimum-norm fit"
+    )]
+    TooFewData {
+        /// The bound of the rank.
+        bound: usize,
+        /// The dimension of the space searched.
+        dimension: usize,
+        /// The number of ordinates.
+        unknowns: usize,
+    },
     /// More ordinates than [`MAX_FIT_UNKNOWNS`].
     #[error("{unknowns} ordinates to fit, above the limit of {max} for an exact fit")]
     TooManyUnknowns {
@@ -189,12 +203,21 @@ struct DesignRow {
 pub(crate) struct Design {
     rows: Vec<DesignRow>,
     indices: Vec<Vec<usize>>,
-    normal: NormalEquations,
+    /// The normal equations, accumulated when first asked for ([`Design::normal`]).
+    normal: std::cell::OnceCell<NormalEquations>,
+    unknowns: usize,
+    /// One entry per distinct data point: its first row (in `rows`), the sum of its values and
+    /// how many rows it has.
+    distinct: Vec<(usize, BigRational, usize)>,
+    /// An upper bound of the rank of the design matrix: `Σ_t min(distinct points located in t,
+    /// (n+1)(n+2)/2)` (the rows of a triangle touch only its ordinates; equal points give equal
+    /// rows).
+    rank_bound: usize,
 }
 
 impl Design {
-    /// Locate every data point exactly and accumulate the normal equations, one block per
-    /// triangle over integers ([`BlockSums`]).
+    /// Locate every data point exactly and compute its row of the design matrix (the normal
+    /// equations are accumulated on first use, [`Design::normal`]).
     pub(crate) fn new(mesh: &Mesh, data: &[DataPoint], file: &str) -> Result<Design, FitError> {
         let n = mesh.degree();
         let unknowns = mesh.ordinate_count();
@@ -211,7 +234,10 @@ impl Design {
             .collect();
         let k = simplex.len();
         let mut rows = Vec::with_capacity(data.len());
-        let mut blocks: Vec<Option<BlockSums>> = vec![None; mesh.triangles().len()];
+        let mut seen: std::collections::HashMap<(BigRational, BigRational), usize> =
+            std::collections::HashMap::new();
+        let mut distinct: Vec<(usize, BigRational, usize)> = Vec::new();
+        let mut per_triangle = vec![0usize; mesh.triangles().len()];
         for p in data {
             let point = [p.x.clone(), p.y.clone()];
             let located = mesh.locate(&point);
@@ -244,9 +270,18 @@ impl Design {
                 })
                 .collect();
             let den = num_traits::pow(d, n);
-            blocks[l.triangle]
-                .get_or_insert_with(|| BlockSums::new(k))
-                .add(&beta, &den, &p.value);
+            match seen.entry((p.x.clone(), p.y.clone())) {
+                std::collections::hash_map::Entry::Occupied(e) => {
+                    let (_, sum, count) = &mut distinct[*e.get()];
+                    *sum += &p.value;
+                    *count += 1;
+                }
+                std::collections::hash_map::Entry::Vacant(e) => {
+                    e.insert(distinct.len());
+                    distinct.push((rows.len(), p.value.clone(), 1));
+                    per_triangle[l.triangle] += 1;
+                }
+            }
             rows.push(DesignRow {
                 line: p.line,
                 triangle: l.triangle,
@@ -258,22 +293,37 @@ impl Design {
         let indices: Vec<Vec<usize>> = (0..mesh.triangles().len())
             .map(|t| mesh.local_indices(t))
             .collect();
-        let mut normal = NormalEquations::new(unknowns);
-        for (t, b) in blocks.iter().enumerate() {
-            if let Some(b) = b {
-                normal.add_block(b, &indices[t]);
-            }
-        }
+        let rank_bound: usize = per_triangle.iter().map(|&c| c.min(k)).sum();
         Ok(Design {
             rows,
             indices,
-            normal,
+            normal: std::cell::OnceCell::new(),
+            unknowns,
+            distinct,
+            rank_bound,
         })
     }
 
-    /// The normal equations.
+    /// The normal equations, accumulated exactly on first use, one block per triangle over
+    /// integers ([`BlockSums`]), with the rank bound set.
     pub(crate) fn normal(&self) -> &NormalEquations {
-        &self.normal
+        self.normal.get_or_init(|| {
+            let k = self.indices.first().map_or(0, Vec::len);
+            let mut blocks: Vec<Option<BlockSums>> = vec![None; self.indices.len()];
+            for r in &self.rows {
+                blocks[r.triangle]
+                    .get_or_insert_with(|| BlockSums::new(k))
+                    .add(&r.beta, &r.den, &r.value);
+            }
+            let mut normal = NormalEquations::new(self.unknowns);
+            normal.set_rank_bound(self.rank_bound);
+            for (t, b) in blocks.iter().enumerate() {
+                if let Some(b) = b {
+                    normal.add_block(b, &self.indices[t]);
+                }
+            }
+            normal
+        })
     }
 
     /// The largest absolute residual `|f_x(x_i, y_i) − v_i|` and its line (the first of equal
@@ -359,6 +409,38 @@ pub fn fit(
         Regularize::No
     };
     let unknowns = mesh.ordinate_count();
+    if !options.regularize && constraints.is_empty() && design.rank_bound < unknowns {
+        // Said at once, before the normal equations are accumulated.
+        return Err(FitError::TooFewData {
+            bound: design.rank_bound,
+            dimension: unknowns,
+            unknowns,
+        });
+    }
+    if options.regularize && constraints.is_empty() && design.rank_bound < unknowns {
+        // Rank-deficient for certain: the minimum-norm fit from the rows (minnorm.rs), which
+        // is small where the normal equations' kernel is large.
+        if let Some(m) = minnorm::minimum_norm_by_rows(&design, unknowns) {
+            let max_residual = design.max_residual(&m.x);
+            return Ok(Fit {
+                mesh: mesh.with_ordinates(m.x)?,
+                smoothness: options.smoothness,
+                rows: data.len(),
+                unknowns,
+                constraints: 0,
+                dimension: unknowns,
+                rank: m.rank,
+                undetermined: m
+                    .undetermined
+                    .iter()
+                    .map(|&g| mesh.ordinate_id(g))
+                    .collect(),
+                regularized: true,
+                rss: m.rss,
+                max_residual,
+            });
+        }
+    }
     let sol =
         solve_least_squares(design.normal(), &constraints, regularize).map_err(|e| match e {
             LinalgError::RankDeficient {
@@ -368,6 +450,11 @@ pub fn fit(
             } => FitError::RankDeficient {
                 undetermined: undetermined.iter().map(|&g| mesh.ordinate_id(g)).collect(),
                 rank,
+                dimension,
+                unknowns,
+            },
+            LinalgError::RankBelow { bound, dimension } => FitError::TooFewData {
+                bound,
                 dimension,
                 unknowns,
             },
