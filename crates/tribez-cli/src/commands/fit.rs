@@ -71,8 +71,7 @@ fn fit_error(e: FitError, data: &str, lines: &MeshLines) -> CliError {
     match e {
         // names the data file and line already
         e @ FitError::Outside { .. } => CliError::Usage(e.to_string()),
-        e
-        @ (FitError::RankDeficient { .. } | FitError::TooFewData { .. } | FitError::Solver(_)) => {
+        e @ (FitError::RankDeficient { .. } | FitError::Solver(_)) => {
             CliError::check(data, e.to_string())
         }
         FitError::Mesh(p) => lines.locate(p).into(),

@@ -133,19 +133,6 @@ pub enum FitError {
         /// The number of ordinates.
         unknowns: usize,
     },
-    /// The data cannot determine every ordinate, known before solving: their distinct points
-    /// (at most `(n+1)(n+2)/2` counted per triangle) are fewer than the degrees of freedom.
-    #[error(
-        "the data do not determine the fit: their distinct points give at most {bound} independent conditions (counting at most (n+1)(n+2)/2 per triangle) for {dimension} degrees of freedom ({unknowns} ordinates); add data, or regularize (--regularize) for the minimum-norm fit"
-    )]
-    TooFewData {
-        /// The bound of the rank.
-        bound: usize,
-        /// The dimension of the space searched.
-        dimension: usize,
-        /// The number of ordinates.
-        unknowns: usize,
-    },
     /// More ordinates than [`MAX_FIT_UNKNOWNS`].
     #[error("{unknowns} ordinates to fit, above the limit of {max} for an exact fit")]
     TooManyUnknowns {
@@ -305,7 +292,7 @@ impl Design {
     }
 
     /// The normal equations, accumulated exactly on first use, one block per triangle over
-    /// integers ([`BlockSums`]), with the rank bound set.
+    /// integers ([`BlockSums`]).
     pub(crate) fn normal(&self) -> &NormalEquations {
         self.normal.get_or_init(|| {
             let k = self.indices.first().map_or(0, Vec::len);
@@ -316,7 +303,6 @@ impl Design {
                     .add(&r.beta, &r.den, &r.value);
             }
             let mut normal = NormalEquations::new(self.unknowns);
-            normal.set_rank_bound(self.rank_bound);
             for (t, b) in blocks.iter().enumerate() {
                 if let Some(b) = b {
                     normal.add_block(b, &self.indices[t]);
@@ -409,18 +395,23 @@ pub fn fit(
         Regularize::No
     };
     let unknowns = mesh.ordinate_count();
-    if !options.regularize && constraints.is_empty() && design.rank_bound < unknowns {
-        // Said at once, before the normal equations are accumulated.
-        return Err(FitError::TooFewData {
-            bound: design.rank_bound,
-            dimension: unknowns,
-            unknowns,
-        });
-    }
-    if options.regularize && constraints.is_empty() && design.rank_bound < unknowns {
-        // Rank-deficient for certain: the minimum-norm fit from the rows (minnorm.rs), which
-        // is small where the normal equations' kernel is large.
+    if constraints.is_empty() && design.rank_bound < unknowns {
+        // Rank-deficient for certain: the minimum-norm fit and the undetermined ordinates from
+        // the rows (minnorm.rs), an m × m problem where the normal equations' kernel is large.
         if let Some(m) = minnorm::minimum_norm_by_rows(&design, unknowns) {
+            let undetermined: Vec<OrdinateId> = m
+                .undetermined
+                .iter()
+                .map(|&g| mesh.ordinate_id(g))
+                .collect();
+            if !options.regularize {
+                return Err(FitError::RankDeficient {
+                    undetermined,
+                    rank: m.rank,
+                    dimension: unknowns,
+                    unknowns,
+                });
+            }
             let max_residual = design.max_residual(&m.x);
             return Ok(Fit {
                 mesh: mesh.with_ordinates(m.x)?,
@@ -430,11 +421,7 @@ pub fn fit(
                 constraints: 0,
                 dimension: unknowns,
                 rank: m.rank,
-                undetermined: m
-                    .undetermined
-                    .iter()
-                    .map(|&g| mesh.ordinate_id(g))
-                    .collect(),
+                undetermined,
                 regularized: true,
                 rss: m.rss,
                 max_residual,
@@ -450,11 +437,6 @@ pub fn fit(
             } => FitError::RankDeficient {
                 undetermined: undetermined.iter().map(|&g| mesh.ordinate_id(g)).collect(),
                 rank,
-                dimension,
-                unknowns,
-            },
-            LinalgError::RankBelow { bound, dimension } => FitError::TooFewData {
-                bound,
                 dimension,
                 unknowns,
             },

@@ -518,6 +518,8 @@ fn minimum_norm_from_rows_equals_the_kernel_path() {
             "0,0,1\n2,0,2\n2,2,3\n0,2,4\n1,1,0\n1/3,1/7,9\n5/3,1/2,-2\n1,3/2,1/5\n",
         ),
         (3, "1/2,1/2,1\n1/2,1/2,2\n1/2,1/2,4\n3/2,1/2,0\n"),
+        // a point at every vertex and nothing else: the vertex ordinates are determined
+        (2, "0,0,1\n2,0,2\n2,2,3\n0,2,4\n1,1,5\n"),
     ];
     for (n, text) in cases {
         let mesh = diamond(n);
@@ -547,10 +549,20 @@ fn minimum_norm_from_rows_equals_the_kernel_path() {
         )
         .unwrap();
         assert_eq!(f.rss, general.rss);
-        assert!(matches!(
-            fit(&mesh, &data, "d.csv", &FitOptions::default()),
-            Err(FitError::TooFewData { .. })
-        ));
+        match fit(&mesh, &data, "d.csv", &FitOptions::default()) {
+            Err(FitError::RankDeficient {
+                undetermined, rank, ..
+            }) => {
+                assert_eq!(rank, general.rank);
+                let ids: Vec<OrdinateId> = general
+                    .undetermined
+                    .iter()
+                    .map(|&g| mesh.ordinate_id(g))
+                    .collect();
+                assert_eq!(undetermined, ids);
+            }
+            other => panic!("{other:?}"),
+        }
     }
 }
 

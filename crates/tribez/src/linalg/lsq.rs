@@ -34,7 +34,6 @@ pub struct NormalEquations {
     rhs: Vec<BigRational>,
     bb: BigRational,
     rows: usize,
-    rank_bound: Option<usize>,
 }
 
 impl NormalEquations {
@@ -46,15 +45,7 @@ impl NormalEquations {
             rhs: vec![BigRational::zero(); unknowns],
             bb: BigRational::zero(),
             rows: 0,
-            rank_bound: None,
         }
-    }
-
-    /// Declare that `rank A ≤ bound` (known by the caller, e.g. from the number of distinct
-    /// rows): [`solve_least_squares`] without regularisation then reports a bound below the
-    /// dimension searched at once ([`LinalgError::RankBelow`]) instead of solving.
-    pub fn set_rank_bound(&mut self, bound: usize) {
-        self.rank_bound = Some(bound);
     }
 
     /// Number of unknowns.
@@ -313,13 +304,6 @@ pub fn solve_least_squares(
         null_space_map(&rref(constraints, n))
     };
     let f = free.len();
-    if let (Some(bound), Regularize::No) = (ne.rank_bound.filter(|&b| b < f), regularize) {
-        // rank(A Z) ≤ rank A ≤ bound < f: rank-deficient for certain.
-        return Err(LinalgError::RankBelow {
-            bound,
-            dimension: f,
-        });
-    }
     let identity = constraints.is_empty();
     // Reduced system M = ZᵀGZ, g = Zᵀh.
     let (m, g) = if identity {

@@ -58,17 +58,6 @@ pub enum LinalgError {
         /// The dimension of the space searched.
         dimension: usize,
     },
-    /// The data cannot determine every unknown, known before solving: the rank is at most
-    /// `bound` ([`lsq::NormalEquations::set_rank_bound`]), below the `dimension` searched.
-    #[error(
-        "the data give at most {bound} independent conditions for {dimension} degrees of freedom"
-    )]
-    RankBelow {
-        /// The bound of the rank.
-        bound: usize,
-        /// The dimension of the space searched.
-        dimension: usize,
-    },
     /// No certified solution with any of the primes tried (not expected for a consistent
     /// system; a bug if it happens).
     #[error("no exact solution could be certified (after {primes} primes)")]
