@@ -8,7 +8,12 @@
 //! Theorem 20.1) for relative perturbations of size `ε` (the unit roundoff of the precision)
 //! in `A` and `b`:
 //!
-//! `‖Δx‖₂ ≤ ‖x*‖₂ · κε/(1 − κε) · (2 + (κ + 1) ‖r*‖₂ / (‖A‖₂ ‖x*‖₂))`,  `κ = κ₂(A) = σ_max/σ_min`.
+//! `‖Δx‖₂ ≤ κε/(1 − κε) · (2 ‖x*‖₂ + (κ + 1) ‖r*‖₂ / ‖A‖₂)`,  `κ = κ₂(A) = σ_max/σ_min`,
+//!
+//! the theorem's relative bound `‖Δx‖₂/‖x*‖₂ ≤ κε/(1 − κε) · (2 + (κ + 1) ‖r*‖₂/(‖A‖₂ ‖x*‖₂))`
+//! multiplied by `‖x*‖₂`. This form also holds at `x* = 0` (the data orthogonal to the range
+//! of `A`), where only the residual term is left: both sides are continuous in the data `b`,
+//! and `b` with `x* ≠ 0` are dense.
 //!
 //! `κ` is not computed (the singular values are algebraic numbers) but bounded **rigorously**
 //! from above: `σ_max² = λ_max(G) ≤ ‖G‖_∞` with `G = AᵀA`; and with `X` an approximate inverse
@@ -16,11 +21,18 @@
 //! rank) and `E = I − XĜ` computed **exactly**, `‖E‖_∞ < 1` gives
 //! `σ_min² ≥ λ_min(Ĝ) ≥ (1 − ‖E‖_∞)/‖X‖_∞` (the smallest non-zero eigenvalue of `G` is at least
 //! the smallest eigenvalue of `Ĝ`, which acts as `G` on the range of `G`). `‖A‖₂` in the
-//! residual term is bounded from below by `max_i √G_ii`. So the allowed error printed is an
-//! upper bound of the theorem's bound. If `‖E‖_∞ ≥ 1` (the matrix is too ill-conditioned for
-//! the `f64` inverse) or `κε ≥ 1`, no bound is given and the `cond` tolerances accept any
-//! error. Rank-deficient problems use `κ = σ_max/σ_min⁺` and the minimum-norm `x*` (which
-//! `numpy.linalg.lstsq` also returns), valid for perturbations that keep the rank.
+//! residual term is bounded from below by `max_i √G_ii`.
+//!
+//! The allowed error is evaluated **exactly** over the rationals, except for the square roots
+//! (`κ̄ = √(bound of κ²)`, `‖x*‖₂ = √(x*ᵀx*)`, `‖r*‖₂ = √RSS`, `√max_i G_ii`), which are
+//! replaced by dyadic bounds within a relative `2^-64` **in the direction that makes the
+//! allowed error larger** (up for the first three, down for `‖A‖₂`). So the allowed error is a
+//! rational upper bound of the theorem's bound, at any scale (no floating-point underflow or
+//! overflow), and `cond=K` compares `‖x̂ − x*‖₂² ≤ (K · allowed)²` exactly. If `‖E‖_∞ ≥ 1`
+//! (the matrix is too ill-conditioned for the `f64` inverse) or `κ̄ε ≥ 1`, no bound is given
+//! and the `cond` tolerances accept any error. Rank-deficient problems use
+//! `κ = σ_max/σ_min⁺` and the minimum-norm `x*` (which `numpy.linalg.lstsq` also returns),
+//! valid for perturbations that keep the rank.
 
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -94,8 +106,12 @@ pub struct FloatFitReport {
     pub passed: bool,
     /// A rigorous upper bound of `κ₂(A)` (`null` if none could be certified).
     pub condition_bound: Option<f64>,
-    /// The error the conditioning allows, `‖Δx‖₂` (`null` without a bound).
+    /// The error the conditioning allows, `‖Δx‖₂`, rounded to the nearest `f64` (`null`
+    /// without a bound; `0` or `null` if it is beyond the range of `f64`: see
+    /// `allowed_error_exact`).
     pub allowed_error: Option<f64>,
+    /// The allowed error as computed (a rational: the verdict compares with it exactly).
+    pub allowed_error_exact: Option<ExactNumber>,
     /// `‖x̂ − x*‖₂`.
     pub error_norm: f64,
     /// `‖x̂ − x*‖₂ / allowed_error`.
@@ -158,42 +174,43 @@ pub fn judge_float_fit(
     let err: Vec<BigRational> = x_hat.iter().zip(&sol.x).map(|(a, b)| a - b).collect();
     let err_sq: BigRational = err.iter().map(|e| e * e).sum();
     let x_sq: BigRational = sol.x.iter().map(|e| e * e).sum();
-    let error_norm = round_f64(&err_sq).sqrt();
-    let x_norm = round_f64(&x_sq).sqrt();
     let rss_claimed = ne.residual_sum_of_squares(&x_hat);
     let excess = &rss_claimed - &sol.rss;
-    let eps = match options.precision {
-        Precision::F64 => f64::EPSILON / 2.0,
-        Precision::F32 => f64::from(f32::EPSILON) / 2.0,
+    let (eps, eps_f64) = match options.precision {
+        Precision::F64 => (
+            ratio(BigInt::one(), BigInt::one() << 53u32),
+            f64::EPSILON / 2.0,
+        ),
+        Precision::F32 => (
+            ratio(BigInt::one(), BigInt::one() << 24u32),
+            f64::from(f32::EPSILON) / 2.0,
+        ),
     };
-    // κ bound.
-    let gram_rows = ne.gram_rows();
-    let kappa = condition_bound(&gram_rows, &sol.kernel, n);
-    let norm_a_low = (0..n)
-        .map(|i| round_f64(&ne.gram(i, i)))
-        .fold(0.0f64, f64::max)
-        .sqrt();
-    let r_norm = round_f64(&sol.rss).sqrt();
-    let allowed = kappa.and_then(|k| {
-        let ke = k * eps;
-        if ke >= 1.0 {
-            return None;
-        }
-        let resid = if norm_a_low > 0.0 && x_norm > 0.0 {
-            (k + 1.0) * r_norm / (norm_a_low * x_norm)
-        } else {
-            0.0
-        };
-        Some(x_norm * ke / (1.0 - ke) * (2.0 + resid))
+    // κ̄ ≥ κ (certified), then the allowed error, every step exact or rounded upwards.
+    let kappa = condition_bound(&ne.gram_rows(), &sol.kernel, n).map(|k2| sqrt_bound(&k2, true));
+    let max_diag = (0..n)
+        .map(|i| ne.gram(i, i))
+        .max()
+        .unwrap_or_else(BigRational::zero);
+    let allowed = kappa.as_ref().and_then(|k| {
+        allowed_error(
+            k,
+            &eps,
+            &sqrt_bound(&x_sq, true),
+            &sqrt_bound(&sol.rss, true),
+            &sqrt_bound(&max_diag, false),
+        )
     });
-    let ratio_of = |e: f64| -> Option<f64> {
-        allowed.map(|a| {
-            if a > 0.0 {
-                e / a
-            } else if e == 0.0 {
+    // Ratios are taken of the exact figures (squared where a norm is involved), then rounded:
+    // nothing underflows or overflows on the way.
+    let ratio_of = |e_sq: &BigRational| -> Option<f64> {
+        allowed.as_ref().map(|a| {
+            if e_sq.is_zero() {
                 0.0
-            } else {
+            } else if a.is_zero() {
                 f64::INFINITY
+            } else {
+                round_f64(&(e_sq / (a * a))).sqrt()
             }
         })
     };
@@ -206,8 +223,12 @@ pub fn judge_float_fit(
         Tolerance::Exact => err.iter().all(Zero::is_zero),
         Tolerance::Abs(e) => max_abs <= *e,
         Tolerance::Rel(e) => err_sq <= e * e * &x_sq,
-        _ => match (allowed, &k_factor) {
-            (Some(a), Some(k)) => error_norm <= round_f64(k) * a,
+        _ => match (&allowed, &k_factor) {
+            // ‖x̂ − x*‖₂ ≤ K·allowed ⟺ ‖x̂ − x*‖₂² ≤ (K·allowed)², both sides exact.
+            (Some(a), Some(k)) => {
+                let ka = k * a;
+                err_sq <= &ka * &ka
+            }
             _ => true,
         },
     };
@@ -217,7 +238,7 @@ pub fn judge_float_fit(
             claimed: ExactNumber::of(&x_hat[g]),
             exact: ExactNumber::of(&sol.x[g]),
             error: ExactNumber::of(&err[g]),
-            ratio: ratio_of(round_f64(&err[g].abs())),
+            ratio: ratio_of(&(&err[g] * &err[g])),
         })
         .collect();
     Ok(FloatFitReport {
@@ -232,14 +253,15 @@ pub fn judge_float_fit(
             .map(|&g| mesh.ordinate_id(g).to_string())
             .collect(),
         precision: options.precision.to_string(),
-        unit_roundoff: eps,
+        unit_roundoff: eps_f64,
         tolerance: options.tolerance.to_string(),
         passed,
-        condition_bound: kappa,
-        allowed_error: allowed,
-        error_norm,
-        error_ratio: ratio_of(error_norm),
-        relative_error: (x_norm > 0.0).then(|| error_norm / x_norm),
+        condition_bound: kappa.as_ref().map(round_f64),
+        allowed_error: allowed.as_ref().map(round_f64),
+        allowed_error_exact: allowed.as_ref().map(ExactNumber::of),
+        error_norm: round_f64(&sqrt_bound(&err_sq, true)),
+        error_ratio: ratio_of(&err_sq),
+        relative_error: (!x_sq.is_zero()).then(|| round_f64(&(&err_sq / &x_sq)).sqrt()),
         max_abs_error: ExactNumber::of(&max_abs),
         rss_exact: ExactNumber::of(&sol.rss),
         rss_claimed: ExactNumber::of(&rss_claimed),
@@ -249,12 +271,12 @@ pub fn judge_float_fit(
     })
 }
 
-/// A rigorous upper bound of `κ₂(A) = √(λ_max(G)/λ_min⁺(G))` (module docs), or `None`.
+/// A rigorous upper bound of `κ₂(A)² = λ_max(G)/λ_min⁺(G)` (module docs), exact, or `None`.
 fn condition_bound(
     gram: &[Vec<(usize, BigRational)>],
     kernel: &[Vec<BigRational>],
     n: usize,
-) -> Option<f64> {
+) -> Option<BigRational> {
     if n == 0 {
         return None;
     }
@@ -341,10 +363,61 @@ fn condition_bound(
     if e_norm >= BigRational::one() || x_norm.is_zero() {
         return None;
     }
-    // κ² ≤ ‖G‖_∞ · ‖X‖_∞ / (1 − ‖E‖_∞), exact; then √ in f64, rounded up generously.
-    let k2 = lambda_max_bound * x_norm / (BigRational::one() - e_norm);
-    let k = round_f64(&k2).sqrt() * (1.0 + 1e-12);
-    k.is_finite().then_some(k)
+    // κ² ≤ ‖G‖_∞ · ‖X‖_∞ / (1 − ‖E‖_∞), exact.
+    Some(lambda_max_bound * x_norm / (BigRational::one() - e_norm))
+}
+
+/// The allowed error `κ̄ε/(1 − κ̄ε) · (2 x̄ + (κ̄ + 1) r̄/ā)` (module docs), exactly, from
+/// `κ̄ ≥ κ₂(A)`, `x̄ ≥ ‖x*‖₂`, `r̄ ≥ ‖r*‖₂` and `0 ≤ ā ≤ ‖A‖₂`; `None` when `κ̄ε ≥ 1`. The
+/// residual term is left out when `ā = 0` (then `A = 0`: no perturbation `‖ΔA‖₂ ≤ ε‖A‖₂`
+/// moves anything, and `κ̄ = 0`).
+fn allowed_error(
+    kappa: &BigRational,
+    eps: &BigRational,
+    x_up: &BigRational,
+    r_up: &BigRational,
+    a_low: &BigRational,
+) -> Option<BigRational> {
+    let ke = kappa * eps;
+    let one = BigRational::one();
+    if ke >= one {
+        return None;
+    }
+    let two_x = x_up + x_up;
+    let inner = if a_low.is_zero() {
+        two_x
+    } else {
+        two_x + (kappa + &one) * r_up / a_low
+    };
+    Some(&ke / (&one - &ke) * inner)
+}
+
+/// Significant bits of the square roots in [`sqrt_bound`].
+const SQRT_BITS: u64 = 64;
+
+/// A dyadic bound of `√q` (`q ≥ 0`; `0` for `q ≤ 0`) within a relative `2^-64`: from above if
+/// `up`, else from below. With `s` chosen so that `y = q·4^s ≥ 2^128`, `t = ⌊√⌊y⌋⌋ = ⌊√y⌋`,
+/// so `t/2^s ≤ √q < (t + 1)/2^s`. The scale follows `q`: nothing underflows or overflows.
+pub(crate) fn sqrt_bound(q: &BigRational, up: bool) -> BigRational {
+    if !q.is_positive() {
+        return BigRational::zero();
+    }
+    let (n, d) = (q.numer(), q.denom());
+    // q ≥ 2^(bits(n) − 1 − bits(d)); make the exponent of y at least 2·SQRT_BITS.
+    let e = n.bits() as i64 - 1 - d.bits() as i64;
+    let s = (2 * SQRT_BITS as i64 - e + 1).div_euclid(2); // ⌈(128 − e)/2⌉
+    let y = if s >= 0 {
+        (n << (2 * s) as u64) / d
+    } else {
+        n / (d << (-2 * s) as u64)
+    };
+    let t = y.sqrt();
+    let t = if up { t + 1u32 } else { t };
+    if s >= 0 {
+        ratio(t, BigInt::one() << s as u64)
+    } else {
+        BigRational::from_integer(t << (-s) as u64)
+    }
 }
 
 /// The inverse of a square matrix in `f64` (Gauss–Jordan with partial pivoting), or `None` if
@@ -410,7 +483,11 @@ impl FloatFitReport {
             s,
             "  condition number κ₂(A) ≤ {}; the conditioning allows ‖Δx‖₂ ≤ {} (ε = {:e})",
             fmt(self.condition_bound),
-            fmt(self.allowed_error),
+            match (self.allowed_error, &self.allowed_error_exact) {
+                // beyond the normal range of f64: the exact figure's decimal
+                (Some(v), Some(q)) if !(v.is_normal() || q.exact == "0") => q.decimal.clone(),
+                (v, _) => fmt(v),
+            },
             self.unit_roundoff
         );
         let _ = writeln!(

@@ -29,6 +29,7 @@
 mod c1;
 mod data;
 mod judge;
+mod minnorm;
 #[cfg(test)]
 mod tests;
 
@@ -189,12 +190,21 @@ struct DesignRow {
 pub(crate) struct Design {
     rows: Vec<DesignRow>,
     indices: Vec<Vec<usize>>,
-    normal: NormalEquations,
+    /// The normal equations, accumulated when first asked for ([`Design::normal`]).
+    normal: std::cell::OnceCell<NormalEquations>,
+    unknowns: usize,
+    /// One entry per distinct data point: its first row (in `rows`), the sum of its values and
+    /// how many rows it has.
+    distinct: Vec<(usize, BigRational, usize)>,
+    /// An upper bound of the rank of the design matrix: `Σ_t min(distinct points located in t,
+    /// (n+1)(n+2)/2)` (the rows of a triangle touch only its ordinates; equal points give equal
+    /// rows).
+    rank_bound: usize,
 }
 
 impl Design {
-    /// Locate every data point exactly and accumulate the normal equations, one block per
-    /// triangle over integers ([`BlockSums`]).
+    /// Locate every data point exactly and compute its row of the design matrix (the normal
+    /// equations are accumulated on first use, [`Design::normal`]).
     pub(crate) fn new(mesh: &Mesh, data: &[DataPoint], file: &str) -> Result<Design, FitError> {
         let n = mesh.degree();
         let unknowns = mesh.ordinate_count();
@@ -211,7 +221,10 @@ impl Design {
             .collect();
         let k = simplex.len();
         let mut rows = Vec::with_capacity(data.len());
-        let mut blocks: Vec<Option<BlockSums>> = vec![None; mesh.triangles().len()];
+        let mut seen: std::collections::HashMap<(BigRational, BigRational), usize> =
+            std::collections::HashMap::new();
+        let mut distinct: Vec<(usize, BigRational, usize)> = Vec::new();
+        let mut per_triangle = vec![0usize; mesh.triangles().len()];
         for p in data {
             let point = [p.x.clone(), p.y.clone()];
             let located = mesh.locate(&point);
@@ -244,9 +257,18 @@ impl Design {
                 })
                 .collect();
             let den = num_traits::pow(d, n);
-            blocks[l.triangle]
-                .get_or_insert_with(|| BlockSums::new(k))
-                .add(&beta, &den, &p.value);
+            match seen.entry((p.x.clone(), p.y.clone())) {
+                std::collections::hash_map::Entry::Occupied(e) => {
+                    let (_, sum, count) = &mut distinct[*e.get()];
+                    *sum += &p.value;
+                    *count += 1;
+                }
+                std::collections::hash_map::Entry::Vacant(e) => {
+                    e.insert(distinct.len());
+                    distinct.push((rows.len(), p.value.clone(), 1));
+                    per_triangle[l.triangle] += 1;
+                }
+            }
             rows.push(DesignRow {
                 line: p.line,
                 triangle: l.triangle,
@@ -258,22 +280,36 @@ impl Design {
         let indices: Vec<Vec<usize>> = (0..mesh.triangles().len())
             .map(|t| mesh.local_indices(t))
             .collect();
-        let mut normal = NormalEquations::new(unknowns);
-        for (t, b) in blocks.iter().enumerate() {
-            if let Some(b) = b {
-                normal.add_block(b, &indices[t]);
-            }
-        }
+        let rank_bound: usize = per_triangle.iter().map(|&c| c.min(k)).sum();
         Ok(Design {
             rows,
             indices,
-            normal,
+            normal: std::cell::OnceCell::new(),
+            unknowns,
+            distinct,
+            rank_bound,
         })
     }
 
-    /// The normal equations.
+    /// The normal equations, accumulated exactly on first use, one block per triangle over
+    /// integers ([`BlockSums`]).
     pub(crate) fn normal(&self) -> &NormalEquations {
-        &self.normal
+        self.normal.get_or_init(|| {
+            let k = self.indices.first().map_or(0, Vec::len);
+            let mut blocks: Vec<Option<BlockSums>> = vec![None; self.indices.len()];
+            for r in &self.rows {
+                blocks[r.triangle]
+                    .get_or_insert_with(|| BlockSums::new(k))
+                    .add(&r.beta, &r.den, &r.value);
+            }
+            let mut normal = NormalEquations::new(self.unknowns);
+            for (t, b) in blocks.iter().enumerate() {
+                if let Some(b) = b {
+                    normal.add_block(b, &self.indices[t]);
+                }
+            }
+            normal
+        })
     }
 
     /// The largest absolute residual `|f_x(x_i, y_i) − v_i|` and its line (the first of equal
@@ -359,6 +395,39 @@ pub fn fit(
         Regularize::No
     };
     let unknowns = mesh.ordinate_count();
+    if constraints.is_empty() && design.rank_bound < unknowns {
+        // Rank-deficient for certain: the minimum-norm fit and the undetermined ordinates from
+        // the rows (minnorm.rs), an m × m problem where the normal equations' kernel is large.
+        if let Some(m) = minnorm::minimum_norm_by_rows(&design, unknowns) {
+            let undetermined: Vec<OrdinateId> = m
+                .undetermined
+                .iter()
+                .map(|&g| mesh.ordinate_id(g))
+                .collect();
+            if !options.regularize {
+                return Err(FitError::RankDeficient {
+                    undetermined,
+                    rank: m.rank,
+                    dimension: unknowns,
+                    unknowns,
+                });
+            }
+            let max_residual = design.max_residual(&m.x);
+            return Ok(Fit {
+                mesh: mesh.with_ordinates(m.x)?,
+                smoothness: options.smoothness,
+                rows: data.len(),
+                unknowns,
+                constraints: 0,
+                dimension: unknowns,
+                rank: m.rank,
+                undetermined,
+                regularized: true,
+                rss: m.rss,
+                max_residual,
+            });
+        }
+    }
     let sol =
         solve_least_squares(design.normal(), &constraints, regularize).map_err(|e| match e {
             LinalgError::RankDeficient {
