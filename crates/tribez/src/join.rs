@@ -383,24 +383,7 @@ fn cross(a: &[Q], b: &[Q]) -> Vec<Q> {
 /// and point dimensions must agree.
 pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
     let (na, nb) = (&a.net, &b.net);
-    if na.m() != nb.m() {
-        return Err(CoreError::SimplexDimensions {
-            a: na.m(),
-            b: nb.m(),
-        });
-    }
-    if na.degree() != nb.degree() {
-        return Err(CoreError::Degrees {
-            a: na.degree(),
-            b: nb.degree(),
-        });
-    }
-    if na.dim() != nb.dim() {
-        return Err(CoreError::PointDimensions {
-            a: na.dim(),
-            b: nb.dim(),
-        });
-    }
+    same_shape(na, nb)?;
     let (da, db) = (a.domain_or_reference(), b.domain_or_reference());
     let facet = shared_facet(&da, &db)?;
     let m = na.m();
@@ -417,27 +400,8 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
             mu[facet.a_opposite]
         ));
     }
-    let ext = Extension::new(na, &mu);
-    let mut rows_agree = vec![true; n + 1];
     let mut violations = Vec::new();
-    for (beta, actual) in nb.entries() {
-        let rho = beta[facet.b_opposite] as usize;
-        let required = match rho {
-            0 => na.at(&a_index(&facet, beta, 0)).to_vec(),
-            1 => mu_rule(na, &facet, &mu, beta),
-            _ => ext.point(&facet, beta),
-        };
-        if actual != required.as_slice() {
-            rows_agree[rho] = false;
-            violations.push(Violation::Row {
-                rho,
-                index: beta.to_vec(),
-                actual: actual.to_vec(),
-                difference: sub(actual, &required),
-                required,
-            });
-        }
-    }
+    let rows_agree = rows_agreeing(na, nb, &facet, &mu, &mut violations);
     let max_smoothness = rows_agree
         .iter()
         .position(|&ok| !ok)
@@ -450,124 +414,13 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
 
     let (mut g1, mut g1_minors, mut coplanarity) = (None, Vec::new(), None);
     if m == 2 && d >= 3 {
-        // Finn's quadrilaterals
-        let mut all_planar = true;
-        for (beta, qb) in nb.entries().filter(|(beta, _)| beta[facet.b_opposite] == 1) {
-            let base = a_index(&facet, beta, 0);
-            let mut p1 = base.clone();
-            p1[facet.a[0]] += 1;
-            let mut p2 = base.clone();
-            p2[facet.a[1]] += 1;
-            let mut p3 = base;
-            p3[facet.a_opposite] += 1;
-            let pts = [
-                na.at(&p1).to_vec(),
-                na.at(&p2).to_vec(),
-                na.at(&p3).to_vec(),
-                qb.to_vec(),
-            ];
-            let vecs = [
-                sub(&pts[1], &pts[0]),
-                sub(&pts[2], &pts[0]),
-                sub(&pts[3], &pts[0]),
-            ];
-            let volume = first_nonzero_minor3(&vecs);
-            if !volume.is_zero() {
-                all_planar = false;
-                violations.push(Violation::Coplanarity {
-                    index: beta.to_vec(),
-                    points: vec![
-                        (p1, pts[0].clone()),
-                        (p2, pts[1].clone()),
-                        (p3, pts[2].clone()),
-                        (beta.to_vec(), pts[3].clone()),
-                    ],
-                    volume,
-                });
-            }
-        }
-        coplanarity = Some(all_planar);
+        coplanarity = Some(finn_coplanarity(na, nb, &facet, &mut violations));
         if n == 0 {
             notes.push("degree 0: Finn's condition has no quadrilaterals (it holds vacuously); constant patches have no tangent plane, so G1 fails although the pair is C^r for every r".into());
         }
-
-        // G1 as a polynomial identity in the edge parameter t
-        let (ia, ja, ka) = (facet.a[0], facet.a[1], facet.a_opposite);
-        let (ib, jb, kb) = (facet.b[0], facet.b[1], facet.b_opposite);
-        let la = edge_param(m, ia, ja);
-        let e = edge_derivative(na, &unit_diff(m, ja, ia), ia, ja);
-        let xa = edge_derivative(na, &unit_diff(m, ka, ia), ia, ja);
-        let xb = edge_derivative(nb, &unit_diff(m, kb, ib), ib, jb);
-        g1_minors = minors(&[e.clone(), xa.clone(), xb.clone()]);
-        let regular_a = minors(&[e.clone(), xa.clone()])
-            .iter()
-            .any(|p| !p.is_zero());
-        let regular_b = minors(&[e.clone(), xb.clone()])
-            .iter()
-            .any(|p| !p.is_zero());
-        let mut holds = c0 && regular_a && regular_b;
-        if !c0 {
-            violations.push(Violation::G1 {
-                reason: "the patches do not meet along the edge (not C0)".into(),
-                determinant: None,
-                witness: None,
-            });
-        }
-        for (who, ok) in [("A", regular_a), ("B", regular_b)] {
-            if !ok {
-                violations.push(Violation::G1 {
-                    reason: if n == 0 {
-                        format!("{who} is constant (degree 0): its derivatives vanish, it has no tangent plane")
-                    } else {
-                        format!("{who} is singular along the whole edge (its edge tangent and cross-boundary derivative are parallel): no tangent plane")
-                    },
-                    determinant: None,
-                    witness: None,
-                });
-            }
-        }
-        if let Some(bad) = g1_minors.iter().find(|p| !p.is_zero()) {
-            holds = false;
-            let deg = bad.degree().unwrap_or(0).max(1);
-            // a non-zero polynomial of degree `deg` has at most `deg` roots: one of these is not one
-            let witness = (0..=deg).find_map(|k| {
-                let t = Q::new(k.into(), deg.into());
-                let value = bad.evaluate(std::slice::from_ref(&t));
-                if value.is_zero() {
-                    return None;
-                }
-                let at: Vec<Q> = la
-                    .iter()
-                    .map(|p| p.evaluate(std::slice::from_ref(&t)))
-                    .collect();
-                let ev = |v: &[Polynomial]| {
-                    v.iter()
-                        .map(|p| p.evaluate(std::slice::from_ref(&t)))
-                        .collect::<Vec<_>>()
-                };
-                let (normal_a, normal_b) = if d == 3 {
-                    (
-                        Some(cross(&ev(&e), &ev(&xa))),
-                        Some(cross(&ev(&e), &ev(&xb))),
-                    )
-                } else {
-                    (None, None)
-                };
-                Some(G1Witness {
-                    t,
-                    at,
-                    value,
-                    normal_a,
-                    normal_b,
-                })
-            });
-            violations.push(Violation::G1 {
-                reason: "B's cross-boundary derivative leaves the span of A's edge tangent and cross-boundary derivative: det[E, X_A, X_B](t) is not the zero polynomial".into(),
-                determinant: Some(bad.clone()),
-                witness,
-            });
-        }
+        let (holds, minors) = g1_identity(na, nb, &facet, c0, &mut violations);
         g1 = Some(holds);
+        g1_minors = minors;
     } else if m == 2 {
         notes.push(format!("G1 and Finn's coplanarity are decided for surfaces in R^d with d >= 3; these points have d = {d}"));
     } else {
@@ -589,6 +442,203 @@ pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
         violations,
         notes,
     })
+}
+
+/// Two nets of one simplex dimension, degree and point dimension, or the error naming which
+/// differs.
+fn same_shape(na: &ControlNet<Q>, nb: &ControlNet<Q>) -> Result<(), CoreError> {
+    if na.m() != nb.m() {
+        return Err(CoreError::SimplexDimensions {
+            a: na.m(),
+            b: nb.m(),
+        });
+    }
+    if na.degree() != nb.degree() {
+        return Err(CoreError::Degrees {
+            a: na.degree(),
+            b: nb.degree(),
+        });
+    }
+    if na.dim() != nb.dim() {
+        return Err(CoreError::PointDimensions {
+            a: na.dim(),
+            b: nb.dim(),
+        });
+    }
+    Ok(())
+}
+
+/// C^r by rows (theory §8): row ρ of B (its control points at distance ρ from the common facet)
+/// must be the ρ-th row of A's extension across the facet: row 0 A's facet net, row 1 the μ
+/// rule, rows beyond by the blossom of A at μ. Whether each row agrees; every differing control
+/// point is a [`Violation::Row`].
+fn rows_agreeing(
+    na: &ControlNet<Q>,
+    nb: &ControlNet<Q>,
+    facet: &SharedFacet,
+    mu: &[Q],
+    violations: &mut Vec<Violation>,
+) -> Vec<bool> {
+    let n = na.degree();
+    let ext = Extension::new(na, mu);
+    let mut rows_agree = vec![true; n + 1];
+    for (beta, actual) in nb.entries() {
+        let rho = beta[facet.b_opposite] as usize;
+        let required = match rho {
+            0 => na.at(&a_index(facet, beta, 0)).to_vec(),
+            1 => mu_rule(na, facet, mu, beta),
+            _ => ext.point(facet, beta),
+        };
+        if actual != required.as_slice() {
+            rows_agree[rho] = false;
+            violations.push(Violation::Row {
+                rho,
+                index: beta.to_vec(),
+                actual: actual.to_vec(),
+                difference: sub(actual, &required),
+                required,
+            });
+        }
+    }
+    rows_agree
+}
+
+/// Finn's coplanarity condition for triangles in R^d, d >= 3: each quadrilateral of A's two
+/// control points beside the edge, A's point across it and B's point across it spans no volume.
+/// Every quadrilateral that does is a [`Violation::Coplanarity`]; true when none does.
+fn finn_coplanarity(
+    na: &ControlNet<Q>,
+    nb: &ControlNet<Q>,
+    facet: &SharedFacet,
+    violations: &mut Vec<Violation>,
+) -> bool {
+    let mut all_planar = true;
+    for (beta, qb) in nb.entries().filter(|(beta, _)| beta[facet.b_opposite] == 1) {
+        let base = a_index(facet, beta, 0);
+        let mut p1 = base.clone();
+        p1[facet.a[0]] += 1;
+        let mut p2 = base.clone();
+        p2[facet.a[1]] += 1;
+        let mut p3 = base;
+        p3[facet.a_opposite] += 1;
+        let pts = [
+            na.at(&p1).to_vec(),
+            na.at(&p2).to_vec(),
+            na.at(&p3).to_vec(),
+            qb.to_vec(),
+        ];
+        let vecs = [
+            sub(&pts[1], &pts[0]),
+            sub(&pts[2], &pts[0]),
+            sub(&pts[3], &pts[0]),
+        ];
+        let volume = first_nonzero_minor3(&vecs);
+        if !volume.is_zero() {
+            all_planar = false;
+            violations.push(Violation::Coplanarity {
+                index: beta.to_vec(),
+                points: vec![
+                    (p1, pts[0].clone()),
+                    (p2, pts[1].clone()),
+                    (p3, pts[2].clone()),
+                    (beta.to_vec(), pts[3].clone()),
+                ],
+                volume,
+            });
+        }
+    }
+    all_planar
+}
+
+/// G1 along the common edge as a polynomial identity in the edge parameter t (theory §8): the
+/// patches meet (C0), both are regular along the edge, and every 3×3 minor of
+/// `[E, X_A, X_B](t)` (edge tangent, A's and B's cross-boundary derivatives) is the zero
+/// polynomial. Whether G1 holds, and the minors; each failure is a [`Violation::G1`], a
+/// non-zero minor with a parameter where it does not vanish.
+fn g1_identity(
+    na: &ControlNet<Q>,
+    nb: &ControlNet<Q>,
+    facet: &SharedFacet,
+    c0: bool,
+    violations: &mut Vec<Violation>,
+) -> (bool, Vec<Polynomial>) {
+    let (m, n, d) = (na.m(), na.degree(), na.dim());
+    let (ia, ja, ka) = (facet.a[0], facet.a[1], facet.a_opposite);
+    let (ib, jb, kb) = (facet.b[0], facet.b[1], facet.b_opposite);
+    let la = edge_param(m, ia, ja);
+    let e = edge_derivative(na, &unit_diff(m, ja, ia), ia, ja);
+    let xa = edge_derivative(na, &unit_diff(m, ka, ia), ia, ja);
+    let xb = edge_derivative(nb, &unit_diff(m, kb, ib), ib, jb);
+    let g1_minors = minors(&[e.clone(), xa.clone(), xb.clone()]);
+    let regular_a = minors(&[e.clone(), xa.clone()])
+        .iter()
+        .any(|p| !p.is_zero());
+    let regular_b = minors(&[e.clone(), xb.clone()])
+        .iter()
+        .any(|p| !p.is_zero());
+    let mut holds = c0 && regular_a && regular_b;
+    if !c0 {
+        violations.push(Violation::G1 {
+            reason: "the patches do not meet along the edge (not C0)".into(),
+            determinant: None,
+            witness: None,
+        });
+    }
+    for (who, ok) in [("A", regular_a), ("B", regular_b)] {
+        if !ok {
+            violations.push(Violation::G1 {
+                reason: if n == 0 {
+                    format!("{who} is constant (degree 0): its derivatives vanish, it has no tangent plane")
+                } else {
+                    format!("{who} is singular along the whole edge (its edge tangent and cross-boundary derivative are parallel): no tangent plane")
+                },
+                determinant: None,
+                witness: None,
+            });
+        }
+    }
+    if let Some(bad) = g1_minors.iter().find(|p| !p.is_zero()) {
+        holds = false;
+        let deg = bad.degree().unwrap_or(0).max(1);
+        // a non-zero polynomial of degree `deg` has at most `deg` roots: one of these is not one
+        let witness = (0..=deg).find_map(|k| {
+            let t = Q::new(k.into(), deg.into());
+            let value = bad.evaluate(std::slice::from_ref(&t));
+            if value.is_zero() {
+                return None;
+            }
+            let at: Vec<Q> = la
+                .iter()
+                .map(|p| p.evaluate(std::slice::from_ref(&t)))
+                .collect();
+            let ev = |v: &[Polynomial]| {
+                v.iter()
+                    .map(|p| p.evaluate(std::slice::from_ref(&t)))
+                    .collect::<Vec<_>>()
+            };
+            let (normal_a, normal_b) = if d == 3 {
+                (
+                    Some(cross(&ev(&e), &ev(&xa))),
+                    Some(cross(&ev(&e), &ev(&xb))),
+                )
+            } else {
+                (None, None)
+            };
+            Some(G1Witness {
+                t,
+                at,
+                value,
+                normal_a,
+                normal_b,
+            })
+        });
+        violations.push(Violation::G1 {
+            reason: "B's cross-boundary derivative leaves the span of A's edge tangent and cross-boundary derivative: det[E, X_A, X_B](t) is not the zero polynomial".into(),
+            determinant: Some(bad.clone()),
+            witness,
+        });
+    }
+    (holds, g1_minors)
 }
 
 /// The first non-zero `3×3` minor of the `d×3` matrix with the given columns (`d >= 3`), else 0.

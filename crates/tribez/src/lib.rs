@@ -60,6 +60,7 @@ mod bernstein;
 mod blossom;
 pub mod capability;
 mod casteljau;
+mod certification;
 mod certify;
 pub mod claims;
 mod derivative;
@@ -96,11 +97,11 @@ pub use api_error::Error;
 pub use capability::{
     Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram, Split, SubPatch,
 };
-pub use certify::measures::Tolerance;
-pub use certify::report::{
+pub use certification::{
     CertifyOptions, CertifyPoints, CertifyReport, CertifyRow, PointResult, RandomPoints, certify,
     certify_until,
 };
+pub use certify::measures::Tolerance;
 pub use error::CoreError;
 pub use exact::Algorithm;
 pub use float::Precision;

@@ -123,7 +123,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             args.tolerance.as_deref(),
             args.precision.as_deref(),
             args.cartesian,
-            tribez::hazmat::certify::report::algorithm_key(args.algorithm.algorithm()),
+            args.algorithm.algorithm().name(),
         );
         let min_ulps = smallest.settle(&checker);
         crate::picture::reports::batch(&pictures, &report, map.finish(), min_ulps, &command)?;

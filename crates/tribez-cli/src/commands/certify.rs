@@ -185,11 +185,7 @@ impl Render for CertifyReport {
             .rows
             .iter()
             .map(|r| JunitCase {
-                name: format!(
-                    "{} {}",
-                    tribez::hazmat::certify::report::algorithm_key(r.algorithm),
-                    r.precision.name()
-                ),
+                name: format!("{} {}", r.algorithm.name(), r.precision.name()),
                 checks: r.coordinates,
                 failures: r.violations.clone(),
             })

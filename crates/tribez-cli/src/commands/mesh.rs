@@ -414,7 +414,7 @@ pub fn run_batch(args: &super::check::Args) -> Result<Outcome, CliError> {
     let results = args.results.as_ref().expect("checked by the caller");
     let (mesh, _) = read_valid_mesh(mesh_path)?;
     let options = super::batch::options(args)?;
-    let checker = tribez::mesh::MeshBatchChecker::new(mesh, &options)?;
+    let checker = tribez::batch::MeshBatchChecker::new(mesh, &options)?;
     let show = std::io::stderr().is_terminal();
     let mut progress = |rows: u64, failed: u64| {
         if show {

@@ -11,7 +11,6 @@ use super::html::{self, HtmlReport, Section};
 use crate::error::CliError;
 use tribez::batch::{BatchChecker, BatchReport, FailedCoord, RowPoint, UlpHistogram};
 use tribez::claims::ClaimsReport;
-use tribez::hazmat::certify::report::algorithm_key;
 use tribez::hazmat::domain::format_tuple;
 use tribez::hazmat::number::{format_rational, round_f64, to_decimal_string};
 use tribez::{CertifyReport, Patch};
@@ -373,7 +372,7 @@ pub fn certify(
             .per_point
             .iter()
             .position(|r| r.ulps == row.max_ulps && row.worst_point.is_some());
-        let (a, p) = (algorithm_key(row.algorithm), row.precision.name());
+        let (a, p) = (row.algorithm.name(), row.precision.name());
         panels.push((
             b.finish(),
             Panel {
@@ -429,7 +428,7 @@ pub fn certify(
     for (row, (data, _)) in report.rows.iter().zip(&panels) {
         let range = data.range(Some(row.max_ulps), None);
         summary.push((
-            format!("{} {}", algorithm_key(row.algorithm), row.precision.name()),
+            format!("{} {}", row.algorithm.name(), row.precision.name()),
             format!(
                 "errors from {} to {} ulp; {:.2}% correctly rounded; largest error ÷ bound {}; {}",
                 range.map_or("-".into(), |r| ulps_text(r.0)),
@@ -459,7 +458,7 @@ pub fn certify(
             });
         let (y, exact) = case.unwrap_or_default();
         worst_rows.push(vec![
-            format!("{} {}", algorithm_key(row.algorithm), row.precision.name()),
+            format!("{} {}", row.algorithm.name(), row.precision.name()),
             format_tuple(point),
             ulps_text(row.max_ulps),
             y.iter()
@@ -485,7 +484,7 @@ pub fn certify(
         .flat_map(|r| {
             r.violations.iter().take(100).map(move |v| {
                 vec![
-                    format!("{} {}", algorithm_key(r.algorithm), r.precision.name()),
+                    format!("{} {}", r.algorithm.name(), r.precision.name()),
                     v.clone(),
                 ]
             })

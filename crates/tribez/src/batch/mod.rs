@@ -25,17 +25,18 @@ use std::path::Path;
 use num_rational::BigRational;
 use rayon::prelude::*;
 
-mod histogram;
 pub mod inverse;
 mod judge;
+mod mesh;
 mod parse;
 mod report;
 pub(crate) mod routed;
 
-pub use histogram::{ULP_BUCKETS, UlpHistogram};
+pub use crate::report::{ULP_BUCKETS, UlpHistogram};
 pub use inverse::{
     InverseBatchChecker, InverseBatchOptions, InverseBatchReport, InverseFailedRow, InverseKind,
 };
+pub use mesh::MeshBatchChecker;
 pub use parse::Format;
 pub(crate) use parse::{fuzz_rows, open_results};
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};

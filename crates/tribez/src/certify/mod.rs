@@ -17,7 +17,6 @@ pub mod beyond;
 pub mod bound;
 pub mod filter;
 pub mod measures;
-pub mod report;
 pub mod sample;
 
 use num_rational::BigRational;

@@ -11,10 +11,10 @@ use serde_json::Value as Json;
 
 use super::{ClaimFile, FloatLeaf, Judged, Verdict};
 use crate::api_error::Error;
-use crate::batch::UlpHistogram;
 use crate::certify::measures::Measures;
 use crate::io::{ClaimProblem, InputError, Problem};
 use crate::number::to_decimal_string;
+use crate::report::UlpHistogram;
 use crate::report::WorstError;
 
 /// How claims are checked and reported.

@@ -165,13 +165,13 @@ pub enum ClaimProblem {
     /// A claimed table with a key the exact value does not have.
     #[error("unexpected key")]
     UnexpectedKey,
-    /// A polynomial that does not parse (`reason` is the polynomial parser's message).
+    /// A polynomial that does not parse (`reason`: what the polynomial parser found, and where).
     #[error("`{text}`: {reason}")]
     BadPolynomial {
         /// The text.
         text: String,
-        /// The parser's message.
-        reason: String,
+        /// What is wrong.
+        reason: crate::symbolic::PolyError,
     },
     /// A point with the wrong number of coordinates.
     #[error("{found} coordinates, expected {expected}")]

@@ -2,7 +2,7 @@
 //! of located points or ray hits ([`super::Problem::Inverse`]): the figures of each message as
 //! data.
 
-use crate::algebraic::AlgebraicError;
+use crate::error::AlgebraicError;
 
 /// What is wrong in an inverse claim's or batch's inputs.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

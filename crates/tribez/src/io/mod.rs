@@ -228,9 +228,10 @@ pub enum Problem {
     /// A check of the patch file format.
     #[error(transparent)]
     Patch(#[from] patch_file::PatchFileProblem),
-    /// A check of the mesh file format, or an invalid mesh.
+    /// A check of a file format that a layer above this one reads (a mesh file: `tribez::mesh`
+    /// defines its problems), typed behind a trait object ([`FormatProblem::downcast_ref`]).
     #[error(transparent)]
-    Mesh(#[from] crate::mesh::MeshFileProblem),
+    Format(FormatProblem),
     /// A claim file's or a claim operation's check.
     #[error(transparent)]
     Claim(#[from] ClaimProblem),
@@ -254,6 +255,56 @@ pub enum Problem {
         /// What is wrong with it.
         error: CoreError,
     },
+}
+
+/// The problem of a file format defined above the file layer ([`Problem::Format`]): this layer
+/// carries it without naming its type, so that the layers keep pointing down; the layer that
+/// defines it gets it back with [`FormatProblem::downcast_ref`].
+///
+/// Two are equal when they are of one type and say the same.
+#[derive(Clone)]
+pub struct FormatProblem {
+    problem: std::sync::Arc<dyn std::error::Error + Send + Sync + 'static>,
+    type_id: std::any::TypeId,
+}
+
+impl FormatProblem {
+    /// Wrap a typed problem.
+    pub fn new<E: std::error::Error + Send + Sync + 'static>(problem: E) -> Self {
+        FormatProblem {
+            problem: std::sync::Arc::new(problem),
+            type_id: std::any::TypeId::of::<E>(),
+        }
+    }
+
+    /// The typed problem, if it is an `E`.
+    pub fn downcast_ref<E: std::error::Error + 'static>(&self) -> Option<&E> {
+        self.problem.downcast_ref::<E>()
+    }
+}
+
+impl fmt::Debug for FormatProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(&self.problem, f)
+    }
+}
+
+impl fmt::Display for FormatProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.problem, f)
+    }
+}
+
+impl std::error::Error for FormatProblem {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        self.problem.source()
+    }
+}
+
+impl PartialEq for FormatProblem {
+    fn eq(&self, other: &Self) -> bool {
+        self.type_id == other.type_id && self.problem.to_string() == other.problem.to_string()
+    }
 }
 
 /// What is wrong in JSON text ([`Problem::Json`]).

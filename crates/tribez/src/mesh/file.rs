@@ -34,7 +34,7 @@ pub const MESH_KEYS: &[&str] = &["name", "degree", "vertices", "triangles", "ord
 /// The keys of its `ordinates` table.
 pub const ORDINATE_KEYS: &[&str] = &["vertex", "edge", "interior"];
 
-/// What is wrong in a mesh file ([`Problem::Mesh`]).
+/// What is wrong in a mesh file (carried by [`Problem::Format`]).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
 pub enum MeshFileProblem {
@@ -87,6 +87,12 @@ pub enum MeshFileProblem {
     /// An invalid mesh (located at the entry at fault).
     #[error(transparent)]
     Mesh(#[from] MeshError),
+}
+
+impl From<MeshFileProblem> for Problem {
+    fn from(problem: MeshFileProblem) -> Self {
+        Problem::Format(crate::io::FormatProblem::new(problem))
+    }
 }
 
 /// Where each part of a mesh is in its file, to locate [`Mesh::check`]'s problems.

@@ -37,7 +37,6 @@
 //! assert!(hits.iter().all(|(_, value)| *value == q("1").unwrap()));
 //! ```
 
-mod batch;
 mod check;
 pub use check::MAX_PROBLEMS;
 mod error;
@@ -51,7 +50,6 @@ use std::sync::OnceLock;
 use num_rational::BigRational;
 use num_traits::Zero;
 
-pub use batch::MeshBatchChecker;
 pub use error::MeshError;
 pub use file::{
     MESH_KEYS, MeshFileProblem, MeshLines, ORDINATE_KEYS, fuzz_mesh, mesh_from_document, read_mesh,

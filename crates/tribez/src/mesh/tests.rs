@@ -302,8 +302,8 @@ fn lookups_from_a_reader_are_judged_as_from_a_file() {
     let m = square(1)
         .with_ordinates(vec![q("0"), q("1"), q("3"), q("2")])
         .unwrap();
-    let checker =
-        MeshBatchChecker::new(m, &crate::batch::BatchOptions::default()).expect("a valid mesh");
+    let checker = crate::batch::MeshBatchChecker::new(m, &crate::batch::BatchOptions::default())
+        .expect("a valid mesh");
     // rows: f(1/2, 1/4) = 1 (right, triangle 0), f(1/4, 1/2) = 5/4 (right, triangle 1),
     // f(1/2, 1/2) = 3/2 claimed 2 (line 4), and (2, 2) outside the mesh (line 5)
     let text = "x,y,value\n1/2,1/4,1\n1/4,1/2,5/4\n1/2,1/2,2\n2,2,6\n";

@@ -148,14 +148,6 @@ pub struct CertifyReport {
     pub bound_note: String,
 }
 
-/// The name of an algorithm in certification reports.
-pub fn algorithm_key(a: Algorithm) -> &'static str {
-    match a {
-        Algorithm::Casteljau => "casteljau",
-        Algorithm::Bernstein => "bernstein",
-    }
-}
-
 impl CertifyRow {
     /// An empty row: `gamma_k` roundings, the bound column's `label` if not `γ_K`.
     fn new(
@@ -395,7 +387,7 @@ fn algorithms(
         Some(a) => Err(Error::Refusal(Refusal::Unsupported {
             kind: patch.kind().plural(),
             what: Lacks::CertifyAlgorithm {
-                algorithm: algorithm_key(a),
+                algorithm: a.name(),
             },
         })),
     }
@@ -546,7 +538,7 @@ pub fn certify_until<S>(
                 "tribez certify {} --random {count} --seed {seed} --precision {} --algorithm {}",
                 options.label,
                 options.precision.map_or("all", |p| p.name()),
-                options.algorithm.map_or("all", algorithm_key)
+                options.algorithm.map_or("all", Algorithm::name)
             ),
         }),
         CertifyPoints::Given { .. } => None,
@@ -589,7 +581,7 @@ impl CertifyReport {
             .iter()
             .map(|r| WorstError {
                 op: "eval".into(),
-                algorithm: algorithm_key(r.algorithm).into(),
+                algorithm: r.algorithm.name().into(),
                 precision: r.precision.name().into(),
                 ulps: r.max_ulps,
                 at: r
@@ -625,7 +617,7 @@ impl CertifyReport {
         for r in &self.rows {
             out += &format!(
                 "{:<10} {:<5} {:>9} {:>10} {:>8.2}% {:>11} {:>11} {:>8} {:>9} {:>8}\n",
-                algorithm_key(r.algorithm),
+                r.algorithm.name(),
                 r.precision.name(),
                 r.coordinates,
                 g(r.max_ulps),
@@ -645,7 +637,7 @@ impl CertifyReport {
         }
         out += &format!("\n{}\n", self.bound_note);
         for r in &self.rows {
-            let (a, p) = (algorithm_key(r.algorithm), r.precision.name());
+            let (a, p) = (r.algorithm.name(), r.precision.name());
             for line in &r.notes {
                 out += &format!("{a} {p}: {line}\n");
             }
@@ -716,7 +708,7 @@ impl Serialize for CertifyReport {
                 .rows
                 .iter()
                 .map(|r| RowJson {
-                    algorithm: algorithm_key(r.algorithm),
+                    algorithm: r.algorithm.name(),
                     precision: r.precision.name(),
                     coordinates: r.coordinates,
                     max_ulps: r.max_ulps,

@@ -12,11 +12,11 @@ use std::sync::OnceLock;
 
 use num_rational::BigRational;
 
-use super::Mesh;
+use super::open_results;
+use super::routed::{Route, Routing, check_routed};
+use super::{BatchChecker, BatchError, BatchOptions, BatchReport, Format, UlpHistogram};
 use crate::any_patch::AnyPatch;
-use crate::batch::open_results;
-use crate::batch::routed::{Route, Routing, check_routed};
-use crate::batch::{BatchChecker, BatchError, BatchOptions, BatchReport, Format, UlpHistogram};
+use crate::mesh::Mesh;
 
 /// Judges batches of lookups in one mesh (one batch checker per triangle, built on first use).
 pub struct MeshBatchChecker {

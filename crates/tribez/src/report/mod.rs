@@ -1,5 +1,10 @@
 //! What the reports share: the worst error of one operation, algorithm and precision (what a
-//! baseline records, like a libm's table of known worst cases).
+//! baseline records, like a libm's table of known worst cases), and the histogram of errors in
+//! ULPs that batch and claim reports print.
+
+mod histogram;
+
+pub use histogram::{ULP_BUCKETS, UlpHistogram};
 
 use serde::Serialize;
 

@@ -3,8 +3,12 @@
 //! The input layer ([`crate::io`]) adds the file, line and key; the command line turns either
 //! into a one-line message and exit status 2.
 
+mod algebraic;
+
 use num_rational::BigRational;
 use thiserror::Error;
+
+pub use algebraic::AlgebraicError;
 
 use crate::number::{format_points, format_tuple};
 
