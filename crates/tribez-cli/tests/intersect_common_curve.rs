@@ -120,7 +120,10 @@ fn a_pair_above_the_work_limit_stops_at_once() {
     assert!(out.stdout.is_empty());
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.contains("big11_a.toml") && err.contains("big11_b.toml"), "{err}");
+    assert!(
+        err.contains("big11_a.toml") && err.contains("big11_b.toml"),
+        "{err}"
+    );
     assert!(err.contains("above the limit 12000000"), "{err}");
     assert!(start.elapsed().as_secs() < 10);
 }

@@ -204,7 +204,7 @@ pub const CERTIFY_MAX_POINTS: usize = 24;
 /// rendered as text; its worst errors and every row's per-point results are checked for the
 /// sizes the report promises.
 pub fn certify(data: &[u8]) {
-    use crate::certify::report::{CertifyOptions, CertifyPoints};
+    use crate::certification::{CertifyOptions, CertifyPoints};
     if data.len() < 10 {
         return;
     }
@@ -268,7 +268,7 @@ pub fn certify(data: &[u8]) {
         algorithm,
         label: "fuzz.toml".into(),
     };
-    let Ok(report) = crate::certify::report::certify(&patch, &options) else {
+    let Ok(report) = crate::certification::certify(&patch, &options) else {
         return;
     };
     let _ = report.text();

@@ -328,7 +328,7 @@ fn edge_derivative(net: &ControlNet<Q>, dir: &[Q], i: usize, j: usize) -> Vec<Po
             s.pow((q - k) as u32)
                 .mul(&t.pow(k as u32))
                 .scale(&Q::from_integer(
-                    crate::simplex::binomial(q as u64, k as u64).into(),
+                    crate::simplex::binomial_exact(q as u64, k as u64).into(),
                 ))
         })
         .collect();

@@ -32,8 +32,16 @@
 
 use num_bigint::BigUint;
 
-/// Binomial coefficient `C(n, k)` in `u128` (exact; panics only on overflow, far beyond any
-/// degree tribez accepts).
+/// Binomial coefficient `C(n, k)` as a count, to compare with a size limit: exact while the
+/// computation fits `u128`, and `u128::MAX` (above every limit) past it. Never a coefficient of a
+/// formula: [`binomial_exact`] is.
+///
+/// ```
+/// use tribez::hazmat::simplex::binomial;
+/// assert_eq!(binomial(5, 2), 10);
+/// assert_eq!(binomial(2, 5), 0);
+/// assert_eq!(binomial(400, 200), u128::MAX); // about 1.03e119: saturated
+/// ```
 pub fn binomial(n: u64, k: u64) -> u128 {
     if k > n {
         return 0;
@@ -41,10 +49,48 @@ pub fn binomial(n: u64, k: u64) -> u128 {
     let k = k.min(n - k);
     let mut acc: u128 = 1;
     for i in 0..k {
-        // acc * (n - i) / (i + 1) stays an integer at every step.
-        acc = acc * u128::from(n - i) / u128::from(i + 1);
+        // acc · (n − i) / (i + 1) = C(n, i + 1) · (i + 1)!/(i + 1)! stays an integer at every step;
+        // a product past u128 means a count past every limit
+        match acc.checked_mul(u128::from(n - i)) {
+            Some(p) => acc = p / u128::from(i + 1),
+            None => return u128::MAX,
+        }
     }
     acc
+}
+
+/// Binomial coefficient `C(n, k)`, exact at any size: on a 128-bit word while it fits, then on
+/// big integers (degree-200 triangles need `C(200, 100) ≈ 9.05·10^58`, beyond `u128`).
+///
+/// ```
+/// use tribez::hazmat::simplex::binomial_exact;
+/// assert_eq!(binomial_exact(5, 2).to_string(), "10");
+/// // C(200, 100), from Python's math.comb(200, 100)
+/// assert_eq!(
+///     binomial_exact(200, 100).to_string(),
+///     "90548514656103281165404177077484163874504589675413336841320"
+/// );
+/// ```
+pub fn binomial_exact(n: u64, k: u64) -> BigUint {
+    if k > n {
+        return BigUint::default();
+    }
+    let k = k.min(n - k);
+    let mut acc: u128 = 1;
+    for i in 0..k {
+        match acc.checked_mul(u128::from(n - i)) {
+            Some(p) => acc = p / u128::from(i + 1),
+            None => {
+                let mut big = BigUint::from(acc);
+                for i in i..k {
+                    big *= n - i;
+                    big /= i + 1;
+                }
+                return big;
+            }
+        }
+    }
+    BigUint::from(acc)
 }
 
 /// Number of multi-indices of degree `n` on the `m`-simplex: `C(n+m, m)`.

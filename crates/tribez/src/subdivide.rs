@@ -333,7 +333,7 @@ mod tests {
         let n = 5;
         let sx = simplex::Simplex::new(2, n);
         let binom = |a: u32, b: u32| {
-            BigRational::from_integer(simplex::binomial(a.into(), b.into()).into())
+            BigRational::from_integer(simplex::binomial_exact(a.into(), b.into()).into())
         };
         let pow2 = |e: u32| BigRational::from_integer(num_bigint::BigInt::from(1u64 << e));
         for piece in 0..2 {

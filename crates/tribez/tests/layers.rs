@@ -38,10 +38,10 @@ fn declared_modules(lib: &str) -> BTreeSet<String> {
             .strip_prefix("pub mod ")
             .or_else(|| line.strip_prefix("pub(crate) mod "))
             .or_else(|| line.strip_prefix("mod "));
-        if let Some(rest) = decl.and_then(|r| r.strip_suffix(';')) {
-            if !test_only {
-                out.insert(rest.trim().to_string());
-            }
+        if let Some(rest) = decl.and_then(|r| r.strip_suffix(';'))
+            && !test_only
+        {
+            out.insert(rest.trim().to_string());
         }
         if !line.starts_with("#[") {
             test_only = false;
@@ -134,7 +134,7 @@ fn root_reexports(lib: &str) -> BTreeMap<String, String> {
         }
         // the leaves: the last segment of each path; after `as`, the alias
         let leaves: Vec<&str> = item
-            .split(|c: char| c == ',' || c == '{' || c == '}')
+            .split([',', '{', '}'])
             .map(str::trim)
             .filter(|t| !t.is_empty())
             .filter_map(|t| {

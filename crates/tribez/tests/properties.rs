@@ -191,3 +191,34 @@ proptest! {
         }
     }
 }
+
+/// Linear precision at the largest degree a patch file may have (200): the control point of
+/// index α being α_0/n makes the patch the first barycentric coordinate, u, exactly (theory §1:
+/// Σ C(n;α) λ^α α_0/n = λ_0 (λ_0 + λ_1 + λ_2)^(n−1)). The exact kernel's binomials C(200, k)
+/// reach 9·10^58, beyond 128 bits: they must be exact, not wrapped (nor a panic).
+#[test]
+fn degree_200_reproduces_its_linear_function_exactly() {
+    use tribez::{Degree, Patch, SimplexDim, parse_rational};
+    let n = 200u32;
+    let mut net = Vec::new();
+    // canonical order of a triangle: α = (i, j, k) with k the slowest, then j (theory §1)
+    for k in 0..=n {
+        for j in 0..=n - k {
+            let i = n - j - k;
+            net.push(vec![
+                parse_rational(&format!("{i}/{n}")).expect("a rational"),
+            ]);
+        }
+    }
+    let patch = Patch::bezier(SimplexDim(2), Degree(n as usize), net).expect("a patch");
+    let q = |s: &str| parse_rational(s).expect("a rational");
+    for point in [
+        ["1/3", "1/3", "1/3"],
+        ["1/7", "2/7", "4/7"],
+        ["1", "0", "0"],
+    ] {
+        let at: Vec<_> = point.iter().map(|s| q(s)).collect();
+        let value = patch.evaluate(&at).expect("a value");
+        assert_eq!(value, vec![at[0].clone()], "at {point:?}");
+    }
+}

@@ -672,8 +672,8 @@ impl Rows {
                 .iter()
                 .enumerate()
                 .map(|(j, zj)| {
-                    let t =
-                        (zj + &kk) * BigInt::from(crate::simplex::binomial(nn as u64, j as u64));
+                    let t = (zj + &kk)
+                        * BigInt::from(crate::simplex::binomial_exact(nn as u64, j as u64));
                     to_limbs(t.magnitude())
                 })
                 .collect();
@@ -697,8 +697,9 @@ impl Rows {
             debug_assert_eq!(m_k, lcm_big(&m_next, &row_lcm[k]));
             e[k] = to_limbs((&m_k / &m_next).magnitude());
             f[k] = to_limbs(
-                (&m_k / &row_lcm[k] * BigInt::from(crate::simplex::binomial(n as u64, k as u64)))
-                    .magnitude(),
+                (&m_k / &row_lcm[k]
+                    * BigInt::from(crate::simplex::binomial_exact(n as u64, k as u64)))
+                .magnitude(),
             );
             m_next = m_k;
         }
