@@ -96,7 +96,7 @@ fn a_point_hit_twice_by_each_curve_is_four_pairs() {
 #[test]
 fn a_claim_of_no_points_fails_on_an_overlap() {
     let out = tribez()
-        .args(["check", &fx("seg_fold2.claims.toml")])
+        .args(["check", &fx("seg_fold2_false_claim.toml")])
         .assert()
         .code(1)
         .get_output()
