@@ -190,7 +190,7 @@ def test_first_row_near_the_largest_row_index():
     # the last allowed start: rows 2^63 - 4 ... 2^63 - 1
     r = tribez.check(finn, pts, vals, tolerance="ulps=1", first_row=2**63 - 4)
     assert r.passed == 4
-    assert list(r.rows()["row"]) == [2**63 - 4, 2**63 - 3, 2**63 - 2, 2**63 - 1]
+    assert list(r.rows["row"]) == [2**63 - 4, 2**63 - 3, 2**63 - 2, 2**63 - 1]
 
 
 def test_long_numbers_are_read_or_refused_with_tribez_message():

@@ -52,9 +52,16 @@ use parse::{Chunk, Num, RowReader, parse_row, texts_of};
 /// Rows judged per chunk (the memory bound: one chunk of lines is held at a time).
 pub const CHUNK: usize = 1 << 16;
 
-/// Rows in memory judged between two calls of the stop test of
-/// [`BatchChecker::check_rows_until`] (a fraction of a second of exact fallbacks).
+/// The most rows in memory judged between two calls of the stop test of
+/// [`BatchChecker::check_rows_until`]. Slabs start at [`STOP_SLAB_MIN`] rows and double while a
+/// slab takes under [`STOP_SLAB_TIME`] (halving when one takes over four times that), so that
+/// the stop test is asked every fraction of a second even where every row falls back to exact
+/// arithmetic at a high degree. Slabs change when the stop test is asked, never a verdict.
 pub const STOP_SLAB: usize = 1 << 12;
+/// The fewest rows of a slab ([`STOP_SLAB`]).
+pub const STOP_SLAB_MIN: usize = 16;
+/// The time one slab aims at ([`STOP_SLAB`]).
+pub const STOP_SLAB_TIME: std::time::Duration = std::time::Duration::from_millis(50);
 /// Failures listed in full in a report (the rest are counted).
 pub const MAX_LISTED: usize = 100;
 /// At most this many rows tied (within their enclosures) for the largest error are kept to be
@@ -898,8 +905,8 @@ impl BatchChecker {
         Ok(out)
     }
 
-    /// [`BatchChecker::check_rows`], asking `stop` on the calling thread between slabs of
-    /// [`STOP_SLAB`] rows: when it answers `Some(s)` the check ends with `Ok(Err(s))` (the
+    /// [`BatchChecker::check_rows`], asking `stop` on the calling thread between slabs of at
+    /// most [`STOP_SLAB`] rows (sized to take a fraction of a second each): when it answers `Some(s)` the check ends with `Ok(Err(s))` (the
     /// Python package stops on Ctrl-C this way). `first_row` plus the rows passing
     /// `usize::MAX` is an error ([`BatchError::RowIndexOverflow`]), never a wrapped index.
     pub fn check_rows_until<S>(
@@ -942,11 +949,13 @@ impl BatchChecker {
         }
         let mut acc = Accumulator::new(p, file, patch_name, None);
         let mut verdicts = Vec::with_capacity(n);
-        for start in (0..n).step_by(STOP_SLAB) {
+        let (mut start, mut slab) = (0, STOP_SLAB_MIN);
+        while start < n {
             if let Some(s) = stop() {
                 return Ok(Err(s));
             }
-            let end = (start + STOP_SLAB).min(n);
+            let end = (start + slab).min(n);
+            let began = std::time::Instant::now();
             let judged: Vec<Judged> = (start..end)
                 .into_par_iter()
                 .map_init(RowScratch::default, |scratch, i| {
@@ -971,6 +980,13 @@ impl BatchChecker {
                 });
                 acc.add(j, &Source::Memory);
             }
+            let took = began.elapsed();
+            if took < STOP_SLAB_TIME {
+                slab = (slab * 2).min(STOP_SLAB);
+            } else if took > 4 * STOP_SLAB_TIME {
+                slab = (slab / 2).max(STOP_SLAB_MIN);
+            }
+            start = end;
         }
         Ok(Ok((acc.finish(), verdicts)))
     }
