@@ -74,6 +74,7 @@ impl BiPoly {
         let mut np = vec![Q::one()];
         let mut dp: Vec<Vec<Q>> = vec![vec![Q::one()]];
         for _ in 0..n {
+            // invariant: `dp` starts with one entry and only grows
             let next = mul(dp.last().expect("non-empty"), den);
             dp.push(next);
         }
@@ -490,6 +491,7 @@ fn zbi_primitive(p: &[super::IntPoly]) -> (super::IntPoly, ZBi) {
     let mut q: ZBi = p
         .iter()
         .map(|c| {
+            // invariant: g is the content: it divides every coefficient
             c.div_exact(&g)
                 .expect("the content divides every coefficient")
         })
@@ -500,6 +502,7 @@ fn zbi_primitive(p: &[super::IntPoly]) -> (super::IntPoly, ZBi) {
     }
     if !n.is_zero() && !n.is_one() {
         let d = super::IntPoly::new(vec![n]);
+        // invariant: n is the gcd of the coefficients' contents: it divides each
         q = q
             .iter()
             .map(|c| c.div_exact(&d).expect("integer content"))
@@ -516,6 +519,7 @@ fn zbi_prem(a: &[super::IntPoly], b: &[super::IntPoly]) -> ZBi {
     zbi_trim(&mut r);
     while r.len() > db && !r.is_empty() {
         let k = r.len() - 1 - db;
+        // invariant: the loop runs only while r is not empty
         let top = r.pop().expect("non-empty");
         for x in r.iter_mut() {
             *x = x.mul(&lc);
@@ -619,6 +623,7 @@ pub fn div_exact(a: &BiPoly, b: &BiPoly) -> Option<BiPoly> {
     let mut quot = vec![Vec::new(); r.c.len() - db];
     while r.c.len() > db && !r.is_zero() {
         let k = r.c.len() - 1 - db;
+        // invariant: r.c.len() > db >= 0, so r has a last coefficient
         let qk = div_q(r.c.last().expect("non-empty"), &b.c[db])?;
         for (j, bj) in b.c.iter().enumerate() {
             r.c[k + j] = trim(add(

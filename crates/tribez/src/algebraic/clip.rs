@@ -195,6 +195,7 @@ fn primitive(p: &BiPoly) -> BiPoly {
     if c.is_empty() {
         return p.trimmed();
     }
+    // invariant: the content in y divides every coefficient of p, by its definition
     div_x(p, &c).expect("the content divides")
 }
 
@@ -211,7 +212,9 @@ pub fn gcd(f: &BiPoly, g: &BiPoly) -> BiPoly {
     let (cf, cg) = (content_y(&f), content_y(&g));
     let c = gcd1(&cf, &cg);
     let (mut a, mut b) = (
+        // invariant: a polynomial's content in y divides it, by its definition
         div_x(&f, &cf).expect("content"),
+        // invariant: a polynomial's content in y divides it, by its definition
         div_x(&g, &cg).expect("content"),
     );
     if a.deg_y() < b.deg_y() {
@@ -286,6 +289,7 @@ fn square_free_y(p: &BiPoly) -> BiPoly {
     if is_const(&g) {
         return p.clone();
     }
+    // invariant: gcd(p, ∂p/∂y) divides p
     div_exact(p, &g).expect("the gcd divides")
 }
 
@@ -560,6 +564,7 @@ fn clip_curve(
         return Ok((false, Vec::new()));
     }
     let c = content_y(&h);
+    // invariant: the content in y divides h, by its definition
     let p = div_x(&h, &c).expect("the content divides");
     let mut piece = false;
     let mut points = Vec::new();

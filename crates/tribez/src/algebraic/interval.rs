@@ -48,7 +48,9 @@ impl IntInterval {
             &self.hi * &o.lo,
             &self.hi * &o.hi,
         ];
+        // invariant: the array has four products
         let lo = p.iter().min().expect("four").clone();
+        // invariant: the array has four products
         let hi = p.iter().max().expect("four").clone();
         IntInterval { lo, hi }
     }

@@ -75,6 +75,7 @@ fn no_rational_root(p: &IntPoly) -> bool {
             .iter()
             .map(|x| {
                 let r = x.mod_floor(&lb);
+                // invariant: mod_floor by the small prime lb gives 0 <= r < lb, which fits u64
                 u64::try_from(r).expect("reduced modulo a small prime")
             })
             .collect();
@@ -433,6 +434,7 @@ impl RealAlgebraic {
                 loop {
                     let bc = bernstein_on(q, &r.lo, &r.hi);
                     if variations(&bc) == 0 {
+                        // invariant: q is a non-zero polynomial, so its Bernstein coefficients on an interval are not all zero
                         let nz = bc.iter().find(|x| !x.is_zero()).expect("q is not zero");
                         return if nz.is_positive() {
                             Ordering::Greater
@@ -577,6 +579,7 @@ impl RealAlgebraic {
                 m.insert("rational".into(), x.to_string().into());
             }
             RealAlgebraic::Root(r) => {
+                // invariant: every Root has a printed interval (its isolating interval)
                 let (lo, hi) = self.printed_interval().expect("a root");
                 m.insert(
                     "polynomial".into(),
@@ -602,6 +605,7 @@ impl RealAlgebraic {
         match self {
             RealAlgebraic::Rational(x) => x.to_string(),
             RealAlgebraic::Root(r) => {
+                // invariant: every Root has a printed interval (its isolating interval)
                 let (lo, hi) = self.printed_interval().expect("a root");
                 format!(
                     "≈ {} (root of {} in ({lo}, {hi}))",

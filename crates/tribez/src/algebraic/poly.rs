@@ -149,6 +149,7 @@ impl IntPoly {
         let lc = d.lc();
         while r.len() > dn && !r.is_empty() {
             let k = r.len() - 1 - dn;
+            // invariant: the loop runs only while r is not empty
             let top = r.pop().expect("non-empty");
             for x in r.iter_mut() {
                 *x *= &lc;
@@ -224,6 +225,7 @@ impl IntPoly {
             return p;
         }
         let g = p.gcd(&p.derivative());
+        // invariant: gcd(p, p′) divides p
         p.div_exact(&g)
             .expect("gcd divides the polynomial")
             .primitive()
@@ -246,14 +248,17 @@ impl IntPoly {
             return out;
         }
         let mut g = p.gcd(&p.derivative());
+        // invariant: gcd(p, p′) divides p
         let mut w = p.div_exact(&g).expect("gcd divides").primitive();
         let mut i = 1;
         while w.degree().unwrap_or(0) > 0 {
             let y = w.gcd(&g);
+            // invariant: y = gcd(w, g) divides w
             let f = w.div_exact(&y).expect("gcd divides").primitive();
             if f.degree().unwrap_or(0) > 0 {
                 out.push((f, i));
             }
+            // invariant: y = gcd(w, g) divides g
             g = g.div_exact(&y).expect("gcd divides").primitive();
             w = y;
             i += 1;
@@ -338,6 +343,7 @@ fn pow_mod(mut a: u64, mut e: u64) -> u64 {
 /// The coefficients modulo `P61` (ascending, trailing zeros dropped).
 fn reduce_mod(c: &[BigInt]) -> Vec<u64> {
     let p = BigInt::from(P61);
+    // invariant: mod_floor by P61 gives 0 <= x < P61 < 2^61
     let mut v: Vec<u64> = c
         .iter()
         .map(|x| u64::try_from(x.mod_floor(&p)).expect("reduced"))
@@ -355,8 +361,10 @@ fn gcd_degree_mod(mut a: Vec<u64>, mut b: Vec<u64>) -> Option<usize> {
     }
     while !b.is_empty() {
         // a ← a mod b
+        // invariant: the loop runs only while b is not empty
         let inv = pow_mod(*b.last().expect("non-empty"), P61 - 2);
         while a.len() >= b.len() {
+            // invariant: a.len() >= b.len() >= 1 here
             let top = mul_mod(*a.last().expect("non-empty"), inv);
             let shift = a.len() - b.len();
             for (j, bj) in b.iter().enumerate() {

@@ -105,6 +105,7 @@ fn bernstein(entries: &[(Vec<u32>, Q)]) -> BiPoly {
     let n: u32 = entries.first().map_or(0, |(a, _)| a.iter().sum());
     let mut powers = vec![bi_const(q(1))];
     for _ in 0..n {
+        // invariant: `powers` starts with one entry and only grows
         let next = bi_mul(powers.last().expect("non-empty"), &one_minus);
         powers.push(next);
     }
@@ -262,6 +263,7 @@ pub struct Locations {
 
 /// `∂(P/W)` numerators: `(X_u W − X W_u)` for each coordinate, for `∂/∂x` and `∂/∂y`.
 fn tangents(h: &[BiPoly]) -> [Vec<BiPoly>; 2] {
+    // invariant: the homogeneous form always ends with the weight W (a polynomial patch has W = 1)
     let w = h.last().expect("W");
     let d = h.len() - 1;
     let part = |dv: &dyn Fn(&BiPoly) -> BiPoly| -> Vec<BiPoly> {

@@ -300,7 +300,9 @@ pub(crate) fn ratio_on(n: &[BigInt], d: &[BigInt], lo: &Q, hi: &Q) -> Option<(Q,
         Q::new(ni.hi.clone(), di.lo.clone()),
         Q::new(ni.hi, di.hi),
     ];
+    // invariant: the array has four corner quotients
     let a = c.iter().min().expect("four").clone();
+    // invariant: the array has four corner quotients
     let b = c.iter().max().expect("four").clone();
     Some((a, b))
 }

@@ -92,6 +92,7 @@ pub fn compare_exact(claimed: &Value, exact: &Value, path: &str, out: &mut Vec<M
         &mut 0,
         path,
         out,
+        // invariant: the exact tolerance needs no condition number or bound
     )
     .expect("the exact tolerance needs nothing");
 }
@@ -128,6 +129,7 @@ pub fn compare(
         {
             // Keys are matched by name: a file may list them in any order.
             for (k, y) in b {
+                // invariant: the guard checked that every key of b is in a
                 let x = &a.iter().find(|(j, _)| j == k).expect("checked above").1;
                 compare(
                     x,

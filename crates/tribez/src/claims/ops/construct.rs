@@ -339,6 +339,7 @@ impl<'a> Construction<'a> {
                 }
                 Construction::EdgeCurve { patch, from, to }
             }
+            // invariant: the caller dispatches only the construction operations here
             other => unreachable!("`{}` is not a construction", other.name()),
         })
     }
@@ -408,6 +409,7 @@ impl<'a> Construction<'a> {
                     Value::numbers(&r.blossom(args).map_err(|e| inputs.error("args", e))?)
                 }
                 other => {
+                    // invariant: parsing refused kinds without a polynomial net for a blossom
                     let p = other.polynomial().expect("checked when parsed");
                     Value::numbers(
                         &crate::blossom::blossom(&p.net, args)
@@ -417,6 +419,7 @@ impl<'a> Construction<'a> {
             },
             Construction::Subpatch { patch, vertices } => {
                 let constructions =
+                    // invariant: parsing refused kinds without constructions for a subpatch
                     crate::capability::constructions(patch).expect("checked when parsed");
                 match constructions
                     .subpatch(vertices)
@@ -438,6 +441,7 @@ impl<'a> Construction<'a> {
                             Value::List(vertices.iter().map(|v| Value::numbers(v)).collect()),
                         ),
                     ]),
+                    // invariant: the rational kind is matched above; parsing refused kinds without a polynomial net
                     other => net_value(&other.polynomial().expect("a polynomial kind").net),
                 }
             }

@@ -266,6 +266,7 @@ impl<'a> Form<'a> {
                     patch: Cow::Borrowed(p),
                 }
             }
+            // invariant: the caller dispatches only the polynomial-form operations here
             other => unreachable!("`{}` is not a polynomial form", other.name()),
         })
     }
@@ -363,11 +364,13 @@ impl<'a> Form<'a> {
                         let sum = (0..=m).fold(Polynomial::zero(m + 1), |acc, i| {
                             acc.add(&Polynomial::variable(m + 1, i))
                         });
+                        // invariant: patch degrees are capped far below u32::MAX when read
                         let n = u32::try_from(p.net.degree()).expect("degrees are capped");
                         (barycentric_form(&p.net), sum.pow(n))
                     }
                     AnyPatch::Rational(r) => {
                         let mut h = r.homogeneous_form();
+                        // invariant: a rational patch's homogeneous form has its weight as the last component
                         let w = h.pop().expect("weight component");
                         (h, w)
                     }

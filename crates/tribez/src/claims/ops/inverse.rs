@@ -594,6 +594,7 @@ fn answer_value(answer: &InverseAnswer) -> Value {
 }
 
 fn to_array<const N: usize>(v: Vec<Q>) -> [Q; N] {
+    // invariant: tuple lengths are checked when the claim is parsed
     v.try_into()
         .unwrap_or_else(|_| unreachable!("lengths checked at parsing"))
 }

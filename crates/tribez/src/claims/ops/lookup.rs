@@ -216,6 +216,7 @@ pub fn judge(
     };
     let (hits, value) = op.answer(inputs)?;
     let (exact, found) = op.value_of(&hits, value);
+    // invariant: `value_of` picks `found` from these hits
     let located = hits
         .iter()
         .find(|l| l.triangle == found)

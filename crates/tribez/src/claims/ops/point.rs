@@ -183,6 +183,7 @@ impl<'a> PointOp<'a> {
                     direction,
                 }
             }
+            // invariant: the caller dispatches only the point operations here
             other => unreachable!("`{}` is not a point operation", other.name()),
         })
     }
@@ -197,8 +198,10 @@ impl<'a> PointOp<'a> {
             ..
         } = self
         else {
+            // invariant: called for `derivative` operations only
             unreachable!("derivative only")
         };
+        // invariant: parsing refused kinds without a simplex domain for a derivative
         let domain = domain_of(patch).expect("a polynomial or rational patch");
         let mut out = dirs.clone();
         for (i, v) in vectors.iter().enumerate() {
@@ -290,6 +293,7 @@ impl<'a> PointOp<'a> {
                         .map(|v| Value::numbers(&v))
                         .map_err(|e| inputs.error(point.key(), e)),
                     other => {
+                        // invariant: the rational kind is matched above; parsing refused kinds without a polynomial net
                         let p = other.polynomial().expect("checked when parsed");
                         Ok(Value::numbers(&crate::derivative::directional_derivative(
                             &p.net, &refs, &point.at,
@@ -303,6 +307,7 @@ impl<'a> PointOp<'a> {
                         r.tangent_frame(&r.patch.domain_or_reference(), &point.at)
                     }
                     other => {
+                        // invariant: the rational kind is matched above; parsing refused kinds without a polynomial net
                         let p = other.polynomial().expect("checked when parsed");
                         crate::derivative::tangent_frame(
                             &p.net,
@@ -412,6 +417,7 @@ pub fn eval_float(
         algorithm,
     } = op
     else {
+        // invariant: the float view is asked of `eval` operations only
         unreachable!("the float view is of `eval`")
     };
     // `at` rounded to p, or the Cartesian point rounded to p and then converted exactly to
