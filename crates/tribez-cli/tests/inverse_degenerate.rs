@@ -260,3 +260,40 @@ fn ray_rows_on_degenerate_queries_get_the_right_verdicts() {
     ]);
     assert_eq!(code, 0, "{out}");
 }
+
+#[test]
+fn locate_three_preimages_that_share_their_lines() {
+    // (x, y) = (s² + t² − s − t, s·t) (fixture comment): (0, 0) has the preimages (0, 0),
+    // (0, 1), (1, 0) (s·t = 0, then t² − t = 0 or s² − s = 0). (0, 0) shares s = 0 with (0, 1)
+    // and t = 0 with (1, 0); tribez once reported the other two alone. The Jacobian
+    // [[2s − 1, 2t − 1], [t, s]] is singular at (0, 0) only (det = 2s² − s − 2t² + t: 0, −1,
+    // 1), where the circle crosses both axes once: multiplicity 1 + 1 = 2 (Bézout: 2 + 1 + 1 =
+    // 4 = 2·2).
+    let f = fx("three_preimages.toml");
+    let (code, out) = run(&["locate", &f, "--point", "0,0"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("has 3 parameter points"), "{out}");
+    let j = json(&["locate", &f, "--point", "0,0"]);
+    let got: Vec<(String, String, bool)> = j["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            (
+                p["s"]["rational"].as_str().unwrap().to_string(),
+                p["t"]["rational"].as_str().unwrap().to_string(),
+                p["jacobian_zero"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    let want = |s: &str, t: &str, z: bool| (s.to_string(), t.to_string(), z);
+    assert_eq!(
+        got,
+        vec![
+            want("0", "0", true),
+            want("0", "1", false),
+            want("1", "0", false)
+        ]
+    );
+    assert_eq!(j["parameters"][0]["multiplicity"], 2);
+}

@@ -137,6 +137,27 @@ pub fn trim(mut p: Vec<Q>) -> Vec<Q> {
 
 /// The determinant of a square matrix of rationals: rows scaled to integers, then Bareiss's
 /// fraction-free elimination.
+/// `p(x, y' + λx)`: the polynomial in the sheared unknown `y' = y − λx` (binomial expansion
+/// of `(y' + λx)^j`).
+pub fn shear(p: &BiPoly, lam: &Q) -> BiPoly {
+    let n = p.c.len();
+    let mut c: Vec<Vec<Q>> = vec![Vec::new(); n.max(1)];
+    for (j, cj) in p.c.iter().enumerate() {
+        let mut lp = Q::one(); // λ^(j − k)
+        for k in (0..=j).rev() {
+            // C(j, k) λ^(j−k) x^(j−k) c_j(x) y'^k
+            let f = Q::from_integer(BigInt::from(crate::simplex::binomial_exact(
+                j as u64, k as u64,
+            ))) * &lp;
+            let mut term = vec![Q::zero(); j - k];
+            term.extend(cj.iter().map(|a| a * &f));
+            c[k] = add(&c[k], &term);
+            lp *= lam;
+        }
+    }
+    BiPoly { c }
+}
+
 #[cfg(test)]
 pub fn det(m: &[Vec<Q>]) -> Q {
     let n = m.len();

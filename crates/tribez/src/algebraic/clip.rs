@@ -434,6 +434,7 @@ fn swap_solution(s: Solution) -> Solution {
         multiplicity: s.multiplicity,
         flags: s.flags,
         partner,
+        sheared_base: s.sheared_base,
     }
 }
 

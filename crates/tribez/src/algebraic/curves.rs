@@ -18,11 +18,11 @@ use std::cmp::Ordering;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 use super::bivariate::{BiPoly, add, horner, mul, resultant, subresultant1};
 use super::number::simplest_between;
-use super::system::{Half, Region, Solution, Solved, enclose_ratio, match_value, solve};
+use super::system::{Region, Solution, Solved, enclose_ratio, solve};
 use super::{AlgebraicError, IntPoly, MAX_CURVE_DEGREE, RealAlgebraic, check_input};
 use crate::patch_type::Patch;
 
@@ -476,129 +476,34 @@ struct FoundAll {
     resultant: IntPoly,
 }
 
-/// `p(x, y' + λx)`: the polynomial in the sheared unknown `y' = y − λx` (binomial expansion
-/// of `(y' + λx)^j`).
-fn shear(p: &BiPoly, lam: &Q) -> BiPoly {
-    let n = p.c.len();
-    let mut c: Vec<Vec<Q>> = vec![Vec::new(); n.max(1)];
-    for (j, cj) in p.c.iter().enumerate() {
-        let mut lp = Q::one(); // λ^(j − k)
-        for k in (0..=j).rev() {
-            // C(j, k) λ^(j−k) x^(j−k) c_j(x) y'^k
-            let f = Q::from_integer(binom(j, k)) * &lp;
-            let mut term = vec![Q::zero(); j - k];
-            term.extend(cj.iter().map(|a| a * &f));
-            c[k] = add(&c[k], &term);
-            lp *= lam;
-        }
-    }
-    BiPoly { c }
-}
-
 /// Every solution of `f1 = f2 = 0` (polynomials in `s` with coefficients in `t`) in
 /// `[0, 1]²`, each with whether each of `flags` vanishes there; `None` when the resultant
-/// vanishes identically (the equations share a factor). Where the engine cannot tell the
-/// partners apart (both lines through a solution meet the solution set again, as at a point
-/// where each curve passes twice), the unknowns are sheared, `s = s' + λt` for a few small
-/// rational `λ`, which separates the solutions' projections; each solution's `s` is then
-/// identified among the roots of `Res_t(f1, f2)` by exact signs.
+/// vanishes identically (the equations share a factor). Points that share both their `s` and
+/// their `t` with other solutions (as where each curve passes twice) are separated by the
+/// engine's shear ([`solve`]).
 fn solve_points(
     f1: &BiPoly,
     f2: &BiPoly,
     flags: &[BiPoly],
 ) -> Result<Option<FoundAll>, AlgebraicError> {
-    match solve(f1, f2, &Region::unit_square(), flags) {
-        Ok(Solved::Infinite) => return Ok(None),
-        Ok(Solved::Points {
+    match solve(f1, f2, &Region::unit_square(), flags)? {
+        Solved::Infinite => Ok(None),
+        Solved::Points {
             solutions,
             resultant,
-        }) => {
-            return Ok(Some(FoundAll {
-                points: solutions
-                    .into_iter()
-                    .map(|sol| Found {
-                        s: sol.y,
-                        t: sol.x,
-                        multiplicity: Some(sol.multiplicity),
-                        flags: sol.flags,
-                    })
-                    .collect(),
-                resultant,
-            }));
-        }
-        Err(AlgebraicError::Unsupported(_)) => {}
-        Err(e) => return Err(e),
+        } => Ok(Some(FoundAll {
+            points: solutions
+                .into_iter()
+                .map(|sol| Found {
+                    s: sol.y,
+                    t: sol.x,
+                    multiplicity: Some(sol.multiplicity),
+                    flags: sol.flags,
+                })
+                .collect(),
+            resultant,
+        })),
     }
-    let rx = IntPoly::from_rationals(&resultant(&f1.trimmed(), &f2.trimmed()));
-    let ry = IntPoly::from_rationals(&resultant(&f1.swap().trimmed(), &f2.swap().trimmed()));
-    if rx.is_zero() || ry.is_zero() {
-        return Ok(None);
-    }
-    let s_roots = RealAlgebraic::roots_in(&ry, &q(0), &q(1))?;
-    for lam in [
-        q(1) / q(2),
-        q(-1) / q(3),
-        q(2) / q(3),
-        q(-3) / q(5),
-        q(3) / q(7),
-    ] {
-        let g1 = shear(f1, &lam);
-        let g2 = shear(f2, &lam);
-        let gf: Vec<BiPoly> = flags.iter().map(|f| shear(f, &lam)).collect();
-        let region = Region {
-            x: Some((q(0), q(1))),
-            y: Some((-lam.abs(), q(1) + lam.abs())),
-            halves: vec![
-                // s = y' + λt ≥ 0 and 1 − s ≥ 0
-                Half {
-                    a: lam.clone(),
-                    b: q(1),
-                    c: q(0),
-                },
-                Half {
-                    a: -lam.clone(),
-                    b: q(-1),
-                    c: q(1),
-                },
-            ],
-        };
-        let solutions = match solve(&g1, &g2, &region, &gf) {
-            Ok(Solved::Points { solutions, .. }) => solutions,
-            Ok(Solved::Infinite) => return Ok(None),
-            Err(AlgebraicError::Unsupported(_)) => continue,
-            Err(e) => return Err(e),
-        };
-        let mut points = Vec::with_capacity(solutions.len());
-        for sol in solutions {
-            let (num, den) = (&sol.partner.num, &sol.partner.den);
-            // s = y' + λx as num_s/den in the base variable
-            let lam_poly = [Q::zero(), lam.clone()];
-            let num_s = if sol.partner.base_is_x {
-                add(num, &mul(&lam_poly, den))
-            } else {
-                let l: Vec<Q> = num.iter().map(|c| c * &lam).collect();
-                add(&mul(&[Q::zero(), Q::one()], den), &l)
-            };
-            let Some(k) = match_value(sol.base(), &num_s, den, &s_roots) else {
-                return Err(AlgebraicError::Unsupported(
-                    "a sheared solution that matches no root of the resultant (internal)".into(),
-                ));
-            };
-            points.push(Found {
-                s: s_roots[k].clone(),
-                t: sol.x,
-                multiplicity: Some(sol.multiplicity),
-                flags: sol.flags,
-            });
-        }
-        return Ok(Some(FoundAll {
-            points,
-            resultant: rx,
-        }));
-    }
-    Err(AlgebraicError::Unsupported(
-        "a point where both unknowns have several partners, even after shearing".into(),
-    ))
 }
 
 /// `∂p/∂y`.
@@ -657,21 +562,7 @@ fn reduced(p: &BiPoly) -> BiPoly {
 /// The sign of `g` at a solution whose base value is algebraic and whose other unknown is
 /// `num/den` of it: the sign of `den^N·g(…)` (a polynomial in the base) times `sign(den)^N`.
 fn sign_at(sol: &Solution, g: &BiPoly) -> Ordering {
-    let g2 = if sol.partner.base_is_x {
-        g.clone()
-    } else {
-        g.swap()
-    };
-    let n = g2.deg_y();
-    let v = sol
-        .base()
-        .sign_of_rationals(&g2.substitute_y(&sol.partner.num, &sol.partner.den));
-    let sd = sol.base().sign_of_rationals(&sol.partner.den);
-    if sd == Ordering::Less && n % 2 == 1 {
-        v.reverse()
-    } else {
-        v
-    }
+    sol.sign_of(g)
 }
 
 /// The points `(b, y)`, `y ∈ [0, 1]`, of `p = 0` over an algebraic `x = b`, increasing in
@@ -730,9 +621,11 @@ fn fiber(p: &BiPoly, b: &RealAlgebraic) -> Result<Vec<Solution>, AlgebraicError>
             flags: Vec::new(),
             partner: super::system::Partner {
                 base_is_x: false,
+                shear: Q::zero(),
                 num: nd0.clone(),
                 den: d1.clone(),
             },
+            sheared_base: None,
         });
     }
     Ok(out)

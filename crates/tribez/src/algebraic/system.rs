@@ -11,9 +11,9 @@ use std::cmp::Ordering;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::{One, Signed, Zero};
 
-use super::bivariate::{BiPoly, add, horner, resultant, subresultant1, trim};
+use super::bivariate::{BiPoly, add, horner, mul, resultant, shear, subresultant1, trim};
 use super::interval::{IntBiPoly, Scaled, horner_scaled};
 use super::{AlgebraicError, IntPoly, RealAlgebraic};
 
@@ -80,10 +80,17 @@ impl Region {
 }
 
 /// One variable as a rational function of the other at an algebraic value.
+///
+/// Plainly (`shear = 0`) the base is `x` and `y = num/den` at it, or the base is `y` and
+/// `x = num/den`. Sheared (`shear = λ ≠ 0`), the base is `b = x − λ·y` with `y = num/den(b)`
+/// (`base_is_x`) or `b = y − λ·x` with `x = num/den(b)`: the unknowns of a system solved with
+/// one family of lines slanted (docs/theory.md §16.5).
 #[derive(Clone, Debug)]
 pub struct Partner {
     /// Is the base variable `x` (then `y = num/den` at it), or `y`?
     pub base_is_x: bool,
+    /// The shear `λ` of the base variable (0 for `x` or `y` itself).
+    pub shear: Q,
     /// Numerator (polynomial in the base variable).
     pub num: Vec<Q>,
     /// Denominator (non-zero at the base value).
@@ -103,38 +110,64 @@ pub struct Solution {
     pub flags: Vec<bool>,
     /// How the other variable depends on the base one.
     pub partner: Partner,
+    /// The base value `x − λ·y` or `y − λ·x` of a sheared partner (`None` when the base is `x`
+    /// or `y` itself).
+    pub sheared_base: Option<RealAlgebraic>,
 }
 
 impl Solution {
-    /// The base value (`x` or `y`, as [`Partner::base_is_x`] says).
+    /// The base value (`x` or `y`, as [`Partner::base_is_x`] says, or the sheared one).
     pub fn base(&self) -> &RealAlgebraic {
-        if self.partner.base_is_x {
+        if let Some(b) = &self.sheared_base {
+            b
+        } else if self.partner.base_is_x {
             &self.x
         } else {
             &self.y
         }
     }
 
-    /// `den^N · G(x, y)` as a polynomial in the base variable (`N` the formal degree of `G` in
-    /// the other variable): the sign of `G` at the solution times the sign of `den^N`.
-    pub fn substitute(&self, g: &BiPoly) -> Vec<Q> {
+    /// `G` written in the base variable and the other one: `G(b + λ·v, v)` with `v` the
+    /// partner's variable (`λ = 0` unless sheared).
+    fn oriented(&self, g: &BiPoly) -> BiPoly {
         let g = if self.partner.base_is_x {
             g.clone()
         } else {
             g.swap()
         };
-        g.substitute_y(&self.partner.num, &self.partner.den)
+        if self.partner.shear.is_zero() {
+            g
+        } else {
+            shear(&g.swap(), &self.partner.shear).swap()
+        }
+    }
+
+    /// `den^N · G(x, y)` as a polynomial in the base variable (`N` the formal degree of `G` in
+    /// the other variable): the sign of `G` at the solution times the sign of `den^N`.
+    pub fn substitute(&self, g: &BiPoly) -> Vec<Q> {
+        self.oriented(g)
+            .substitute_y(&self.partner.num, &self.partner.den)
+    }
+
+    /// The sign of `G` at the solution.
+    pub fn sign_of(&self, g: &BiPoly) -> Ordering {
+        let g = self.oriented(g);
+        let v = self
+            .base()
+            .sign_of_rationals(&g.substitute_y(&self.partner.num, &self.partner.den));
+        let sd = self.base().sign_of_rationals(&self.partner.den);
+        if sd == Ordering::Less && g.deg_y() % 2 == 1 {
+            v.reverse()
+        } else {
+            v
+        }
     }
 
     /// The value `G(x, y)/H(x, y)` at the solution as an expression in the base value (`H ≠ 0`
     /// there).
     pub fn ratio(&self, g: &BiPoly, h: &BiPoly) -> Expr {
         // pad both to the same formal degree in the other variable so den^N cancels
-        let (mut g, mut h) = if self.partner.base_is_x {
-            (g.clone(), h.clone())
-        } else {
-            (g.swap(), h.swap())
-        };
+        let (mut g, mut h) = (self.oriented(g), self.oriented(h));
         let n = g.c.len().max(h.c.len());
         g.c.resize(n, Vec::new());
         h.c.resize(n, Vec::new());
@@ -447,24 +480,159 @@ fn roots(
 }
 
 /// Every solution of `f = g = 0` in `region`, each with whether each of `flags` vanishes there.
+///
+/// Where a solution shares its `x` with another solution and its `y` with another (so that
+/// neither resultant's root has a single partner there), the system is solved again in
+/// `(x, y − λ·x)` for a few small rational `λ`, which slants the lines `y = const` and leaves
+/// the solutions where they are; each `y` is then identified among the roots of `R_y` by exact
+/// signs (docs/theory.md §16.5). Refused only when no shear separates them.
 pub fn solve(
     f: &BiPoly,
     g: &BiPoly,
     region: &Region,
     flags: &[BiPoly],
 ) -> Result<Solved, AlgebraicError> {
+    let (ys, rx) = match solve_once(f, g, region, flags)? {
+        Once::Done(solved) => return Ok(solved),
+        Once::Tangled { ys, rx } => (ys, rx),
+    };
+    for lam in [
+        q(1) / q(2),
+        q(-1) / q(3),
+        q(2) / q(3),
+        q(-3) / q(5),
+        q(3) / q(7),
+    ] {
+        let sheared = sheared_region(region, &lam);
+        let fl: Vec<BiPoly> = flags.iter().map(|p| shear(p, &lam)).collect();
+        let solutions = match solve_once(&shear(f, &lam), &shear(g, &lam), &sheared, &fl)? {
+            Once::Done(Solved::Points { solutions, .. }) => solutions,
+            Once::Done(Solved::Infinite) => return Ok(Solved::Infinite),
+            Once::Tangled { .. } => continue,
+        };
+        let mut out = Vec::with_capacity(solutions.len());
+        for sol in solutions {
+            out.push(unshear(sol, &lam, &ys)?);
+        }
+        return Ok(Solved::Points {
+            solutions: out,
+            resultant: rx,
+        });
+    }
+    Err(AlgebraicError::Unsupported(
+        "a point where both unknowns have several partners (the equations meet more than once on both lines through it), even after shearing".into(),
+    ))
+}
+
+/// The region in the sheared unknowns `(x, y' = y − λx)`: the `x`-range kept, the `y`-range
+/// and every half-plane rewritten as half-planes, and a `y'`-range that contains them.
+fn sheared_region(region: &Region, lam: &Q) -> Region {
+    let mut halves: Vec<Half> = region
+        .halves
+        .iter()
+        .map(|h| Half {
+            a: &h.a + &h.b * lam,
+            b: h.b.clone(),
+            c: h.c.clone(),
+        })
+        .collect();
+    let y = match (&region.x, &region.y) {
+        (Some((xl, xh)), Some((lo, hi))) => {
+            let (p, r) = (lam * xl, lam * xh);
+            let (mn, mx) = if p <= r { (p, r) } else { (r, p) };
+            Some((lo - mx, hi - mn))
+        }
+        _ => None,
+    };
+    if let Some((lo, hi)) = &region.y {
+        // y' + λx − lo ≥ 0 and hi − y' − λx ≥ 0
+        halves.push(Half {
+            a: lam.clone(),
+            b: q(1),
+            c: -lo,
+        });
+        halves.push(Half {
+            a: -lam,
+            b: q(-1),
+            c: hi.clone(),
+        });
+    }
+    Region {
+        x: region.x.clone(),
+        y,
+        halves,
+    }
+}
+
+/// A solution of the sheared system as one of the original: `x` kept, `y = y' + λx`
+/// identified among `ys` (the roots of `R_y` in the region); a partner over `x` stays one over
+/// `x` (`y = (num + λ·x·den)/den`), a partner over `y'` becomes a sheared one.
+fn unshear(sol: Solution, lam: &Q, ys: &[RealAlgebraic]) -> Result<Solution, AlgebraicError> {
+    let internal =
+        || AlgebraicError::Unsupported("a sheared solution that matches no root (internal)".into());
+    let (num, den) = (&sol.partner.num, &sol.partner.den);
+    if sol.partner.base_is_x {
+        let num_y = add(num, &mul(&[Q::zero(), lam.clone()], den));
+        let k = match_value(&sol.x, &num_y, den, ys).ok_or_else(internal)?;
+        Ok(Solution {
+            y: ys[k].clone(),
+            partner: Partner {
+                base_is_x: true,
+                shear: Q::zero(),
+                num: num_y,
+                den: den.clone(),
+            },
+            ..sol
+        })
+    } else {
+        // y = y' + λ·num/den = (y'·den + λ·num)/den over the base y'
+        let lnum: Vec<Q> = num.iter().map(|c| c * lam).collect();
+        let num_y = add(&mul(&[Q::zero(), Q::one()], den), &lnum);
+        let k = match_value(&sol.y, &num_y, den, ys).ok_or_else(internal)?;
+        Ok(Solution {
+            x: sol.x,
+            y: ys[k].clone(),
+            multiplicity: sol.multiplicity,
+            flags: sol.flags,
+            partner: Partner {
+                base_is_x: false,
+                shear: lam.clone(),
+                num: num.clone(),
+                den: den.clone(),
+            },
+            sheared_base: Some(sol.y),
+        })
+    }
+}
+
+/// What one pass of the engine found.
+enum Once {
+    /// The solutions (or a shared factor).
+    Done(Solved),
+    /// A solution may be resolved from neither side: the roots of `R_y` in the region and
+    /// `R_x`, for the sheared retry.
+    Tangled { ys: Vec<RealAlgebraic>, rx: IntPoly },
+}
+
+/// One pass of [`solve`] in the given unknowns.
+fn solve_once(
+    f: &BiPoly,
+    g: &BiPoly,
+    region: &Region,
+    flags: &[BiPoly],
+) -> Result<Once, AlgebraicError> {
     let (f, g) = (&f.trimmed(), &g.trimmed());
     if f.is_zero() || g.is_zero() {
-        return Ok(Solved::Infinite);
+        return Ok(Once::Done(Solved::Infinite));
     }
     let rx = trim(resultant(f, g));
     if rx.is_empty() {
-        return Ok(Solved::Infinite);
+        return Ok(Once::Done(Solved::Infinite));
     }
     let (fs, gs) = (f.swap().trimmed(), g.swap().trimmed());
     let ry = trim(resultant(&fs, &gs));
     if ry.is_empty() {
-        return Ok(Solved::Infinite);
+        return Ok(Once::Done(Solved::Infinite));
     }
     let rx_int = IntPoly::from_rationals(&rx);
     let ry_int = IntPoly::from_rationals(&ry);
@@ -533,23 +701,38 @@ pub fn solve(
             flags: Vec::new(),
             partner: Partner {
                 base_is_x: true,
+                shear: Q::zero(),
                 num: nc0.clone(),
                 den: c1.clone(),
             },
+            sheared_base: None,
         };
         solutions.push(sol);
     }
     if !deferred.is_empty() {
         let (d1, d0) = subresultant1(&fs, &gs);
         let nd0: Vec<Q> = d0.iter().map(|c| -c).collect();
-        let mut resolved = vec![false; deferred.len()];
-        let mut unresolved_alpha = false;
-        for (k, (alpha, m)) in alphas.iter().enumerate() {
-            if matched[k] {
+        // A root α of R_y with d_1(α) = 0 may have several partners too, and one of them may be
+        // a deferred β whatever else α is matched with: such a pair is resolved from neither
+        // side. Unless the pair is excluded (f or g has one sign over the box of their
+        // isolating intervals, or the box lies outside a half-plane), the engine refuses, and
+        // [`solve`] shears (docs/theory.md §16.5): never a solution silently left out.
+        let (fi, gi) = (IntBiPoly::from_bipoly(f), IntBiPoly::from_bipoly(g));
+        for (alpha, _) in &alphas {
+            if alpha.sign_of_rationals(&d1) != Ordering::Equal {
                 continue;
             }
-            if alpha.sign_of_rationals(&d1) == Ordering::Equal {
-                unresolved_alpha = true;
+            for beta in &deferred {
+                if !pair_excluded(beta, alpha, &fi, &gi, &region.halves) {
+                    return Ok(Once::Tangled {
+                        ys: alpha_values,
+                        rx: rx_int,
+                    });
+                }
+            }
+        }
+        for (k, (alpha, m)) in alphas.iter().enumerate() {
+            if matched[k] || alpha.sign_of_rationals(&d1) == Ordering::Equal {
                 continue;
             }
             let xv = Expr {
@@ -568,7 +751,6 @@ pub fn solve(
             let Some(j) = match_value(alpha, &nd0, &d1, &deferred) else {
                 continue;
             };
-            resolved[j] = true;
             solutions.push(Solution {
                 x: deferred[j].clone(),
                 y: alpha.clone(),
@@ -576,15 +758,12 @@ pub fn solve(
                 flags: Vec::new(),
                 partner: Partner {
                     base_is_x: false,
+                    shear: Q::zero(),
                     num: nd0.clone(),
                     den: d1.clone(),
                 },
+                sheared_base: None,
             });
-        }
-        if unresolved_alpha && resolved.iter().any(|r| !r) {
-            return Err(AlgebraicError::Unsupported(
-                "a point where both unknowns have several partners (the equations meet more than once on both lines through it)".into(),
-            ));
         }
     }
     let int_flags: Vec<IntBiPoly> = flags.iter().map(IntBiPoly::from_bipoly).collect();
@@ -595,10 +774,56 @@ pub fn solve(
             .map(|(g, gi)| flag_vanishes(s, g, gi))
             .collect();
     }
-    Ok(Solved::Points {
+    Ok(Once::Done(Solved::Points {
         solutions,
         resultant: rx_int,
-    })
+    }))
+}
+
+/// Is `(β, α)` provably not a solution in the region? At isolating widths 2^-20, 2^-60 and
+/// 2^-120: `f` or `g` has one non-zero sign over the box `β-interval × α-interval`, or
+/// `a·x + b·y + c` is negative over the whole box for one of the half-planes. `false` when
+/// no refinement decides (as at a solution, where both enclosures contain 0).
+fn pair_excluded(
+    beta: &RealAlgebraic,
+    alpha: &RealAlgebraic,
+    fi: &IntBiPoly,
+    gi: &IntBiPoly,
+    halves: &[Half],
+) -> bool {
+    let (mut x, mut y) = (beta.clone(), alpha.clone());
+    for k in [20u32, 60, 120] {
+        let w = Q::new(BigInt::from(1), BigInt::from(1) << k);
+        x.refine_to(&w);
+        y.refine_to(&w);
+        let (xl, xh) = x.bounds();
+        let (yl, yh) = y.bounds();
+        let (bx, by) = (Scaled::new(&xl, &xh), Scaled::new(&yl, &yh));
+        let nonzero = |p: &IntBiPoly| {
+            matches!(
+                p.sign_on_box(&bx, &by),
+                Some(Ordering::Less | Ordering::Greater)
+            )
+        };
+        // the largest value of a·x + b·y + c over the box
+        let outside = |h: &Half| {
+            let ax = if h.a.is_negative() {
+                &h.a * &xl
+            } else {
+                &h.a * &xh
+            };
+            let by = if h.b.is_negative() {
+                &h.b * &yl
+            } else {
+                &h.b * &yh
+            };
+            (ax + by + &h.c).is_negative()
+        };
+        if nonzero(fi) || nonzero(gi) || halves.iter().any(outside) {
+            return true;
+        }
+    }
+    false
 }
 
 /// Does `g` vanish at the solution? First the box filter (the integer enclosure of `g` over

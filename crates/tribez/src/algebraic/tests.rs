@@ -233,3 +233,62 @@ mod fast_paths {
         }
     }
 }
+
+#[test]
+fn solve_finds_points_resolved_from_neither_side() {
+    // f = x² + y² − x − y (the circle through (0,0), (1,0), (0,1), (1,1)), g = x·y (the axes):
+    // f = g = 0 exactly at (0,0), (0,1), (1,0) (x = 0 gives y² − y = 0, y = 0 gives x² − x = 0).
+    // x = 1 has the single partner y = 0 and y = 1 the single partner x = 0, but (0,0) shares
+    // its x with (0,1) and its y with (1,0): it is resolved from neither side. The engine once
+    // returned the other two points alone; the shear y' = y − λx separates it.
+    let f = BiPoly {
+        c: vec![vec![q("0"), q("-1"), q("1")], vec![q("-1")], vec![q("1")]],
+    };
+    let g = BiPoly {
+        c: vec![vec![q("0")], vec![q("0"), q("1")]],
+    };
+    // x + y − 1 vanishes at (0,1) and (1,0), not at (0,0)
+    let flag = BiPoly {
+        c: vec![vec![q("-1"), q("1")], vec![q("1")]],
+    };
+    for region in [Region::plane(), Region::unit_square(), Region::triangle()] {
+        let Ok(Solved::Points { solutions, .. }) = solve(&f, &g, &region, &[flag.clone()]) else {
+            panic!("not points");
+        };
+        let mut pts: Vec<(BigRational, BigRational, bool)> = solutions
+            .iter()
+            .map(|s| {
+                // the partner is consistent: f and g vanish through it, the flag as computed
+                assert_eq!(s.sign_of(&f), std::cmp::Ordering::Equal);
+                assert_eq!(s.sign_of(&g), std::cmp::Ordering::Equal);
+                assert_eq!(s.sign_of(&flag) == std::cmp::Ordering::Equal, s.flags[0]);
+                let x = s.x.as_rational().expect("rational").clone();
+                let y = s.y.as_rational().expect("rational").clone();
+                (x, y, s.flags[0])
+            })
+            .collect();
+        pts.sort();
+        assert_eq!(
+            pts,
+            vec![
+                (q("0"), q("0"), false),
+                (q("0"), q("1"), true),
+                (q("1"), q("0"), true)
+            ]
+        );
+    }
+    // Shifted by (2, 0) the point (2, 0) is outside the unit square, and so are (3, 0) and
+    // (2, 1); no solution in the square, and nothing to refuse (every pair is excluded).
+    let fs = BiPoly {
+        // (x − 2)² + y² − (x − 2) − y = x² − 5x + 6 + y² − y
+        c: vec![vec![q("6"), q("-5"), q("1")], vec![q("-1")], vec![q("1")]],
+    };
+    let gs = BiPoly {
+        // (x − 2)·y
+        c: vec![vec![q("0")], vec![q("-2"), q("1")]],
+    };
+    match solve(&fs, &gs, &Region::unit_square(), &[]) {
+        Ok(Solved::Points { solutions, .. }) => assert!(solutions.is_empty()),
+        other => panic!("{other:?}"),
+    }
+}
