@@ -32,7 +32,7 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::bivariate::{BiPoly, add, mul, resultant, trim};
+use super::bivariate::{BiPoly, resultant, trim};
 use super::interval::IntBiPoly;
 use super::system::{Region, Solution, Solved, flag_vanishes, solve};
 use super::{AlgebraicError, IntPoly, RealAlgebraic, simplest_between};
@@ -68,10 +68,6 @@ pub enum Clipped {
 
 fn scale1(p: &[Q], k: &Q) -> Vec<Q> {
     trim(p.iter().map(|x| x * k).collect())
-}
-
-fn sub1(a: &[Q], b: &[Q]) -> Vec<Q> {
-    trim(add(a, &b.iter().map(|x| -x).collect::<Vec<_>>()))
 }
 
 /// `(quotient, remainder)` of `a` by the non-zero `b`.
@@ -128,13 +124,6 @@ fn deriv1(p: &[Q]) -> Vec<Q> {
 
 // ---- bivariate polynomials (in y, coefficients in x) ----
 
-fn mul_x(p: &BiPoly, c: &[Q]) -> BiPoly {
-    BiPoly {
-        c: p.c.iter().map(|a| trim(mul(a, c))).collect(),
-    }
-    .trimmed()
-}
-
 /// `p / c` for a univariate `c(x)` dividing every coefficient (`None` if it does not).
 fn div_x(p: &BiPoly, c: &[Q]) -> Option<BiPoly> {
     let mut out = Vec::with_capacity(p.c.len());
@@ -170,92 +159,16 @@ fn dy(p: &BiPoly) -> BiPoly {
     .trimmed()
 }
 
-/// The pseudo-remainder of `a` by `b` in `y` (`b` non-zero): `lc_y(b)^k · a` reduced.
-fn prem_y(a: &BiPoly, b: &BiPoly) -> BiPoly {
-    let b = b.trimmed();
-    let db = b.deg_y();
-    let lb = b.c[db].clone();
-    let mut r = a.trimmed();
-    while !r.is_zero() && r.deg_y() >= db {
-        let dr = r.deg_y();
-        let lr = r.c[dr].clone();
-        let mut next = mul_x(&r, &lb);
-        next.c.resize(dr + 1, Vec::new());
-        for (j, bj) in b.c.iter().enumerate() {
-            next.c[j + dr - db] = sub1(&next.c[j + dr - db], &mul(&lr, bj));
-        }
-        r = next.trimmed();
-    }
-    r
-}
-
-/// Divided by its content in `y` and by the leading rational coefficient.
-fn primitive(p: &BiPoly) -> BiPoly {
-    let c = content_y(p);
-    if c.is_empty() {
-        return p.trimmed();
-    }
-    // invariant: the content in y divides every coefficient of p, by its definition
-    div_x(p, &c).expect("the content divides")
-}
-
-/// The gcd in `Q[x][y]` (primitive remainder sequence), normalised: integer coefficients,
-/// primitive, positive leading coefficient. `gcd(0, g) = g` (normalised).
+/// The gcd in `Q[x][y]` ([`super::bivariate::gcd`], unique up to a rational constant),
+/// normalised: integer coefficients, primitive, positive leading coefficient. `gcd(0, g) = g`
+/// (normalised).
 pub fn gcd(f: &BiPoly, g: &BiPoly) -> BiPoly {
-    let (f, g) = (f.trimmed(), g.trimmed());
-    if f.is_zero() {
-        return normalized(&g);
-    }
-    if g.is_zero() {
-        return normalized(&f);
-    }
-    let (cf, cg) = (content_y(&f), content_y(&g));
-    let c = gcd1(&cf, &cg);
-    let (mut a, mut b) = (
-        // invariant: a polynomial's content in y divides it, by its definition
-        div_x(&f, &cf).expect("content"),
-        // invariant: a polynomial's content in y divides it, by its definition
-        div_x(&g, &cg).expect("content"),
-    );
-    if a.deg_y() < b.deg_y() {
-        std::mem::swap(&mut a, &mut b);
-    }
-    loop {
-        if b.deg_y() == 0 {
-            return normalized(&BiPoly { c: vec![c] });
-        }
-        let r = prem_y(&a, &b);
-        if r.is_zero() {
-            return normalized(&mul_x(&b, &c));
-        }
-        a = b;
-        b = primitive(&r);
-    }
+    normalized(&super::bivariate::gcd(&f.trimmed(), &g.trimmed()))
 }
 
 /// `f / h` when `h` divides `f` in `Q[x][y]` (`None` otherwise; `h` non-zero).
 pub fn div_exact(f: &BiPoly, h: &BiPoly) -> Option<BiPoly> {
-    let h = h.trimmed();
-    let dh = h.deg_y();
-    let lh = h.c[dh].clone();
-    let mut r = f.trimmed();
-    let mut quo = vec![Vec::new(); r.c.len()];
-    while !r.is_zero() {
-        let dr = r.deg_y();
-        if dr < dh {
-            return None;
-        }
-        let (t, rem) = divrem1(&r.c[dr], &lh);
-        if !rem.is_empty() {
-            return None;
-        }
-        quo[dr - dh] = trim(add(&quo[dr - dh], &t));
-        for (j, hj) in h.c.iter().enumerate() {
-            r.c[j + dr - dh] = sub1(&r.c[j + dr - dh], &mul(&t, hj));
-        }
-        r = r.trimmed();
-    }
-    Some(BiPoly { c: quo }.trimmed())
+    super::bivariate::div_exact(f, h).map(|p| p.trimmed())
 }
 
 /// Integer coefficients, divided by their gcd, the last non-zero coefficient (highest power of
@@ -702,6 +615,7 @@ fn clip_primitive(
 
 #[cfg(test)]
 mod tests {
+    use super::super::bivariate::{add, mul};
     use super::*;
 
     fn bp(rows: &[&[i64]]) -> BiPoly {
