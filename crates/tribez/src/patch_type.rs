@@ -371,7 +371,8 @@ impl Patch {
     /// let p = tribez::Patch::from_toml("degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n").unwrap();
     /// let net = p.control_net();
     /// assert_eq!((net.m(), net.degree(), net.dim(), net.len()), (1, 1, 1, 2));
-    /// assert_eq!(net.coords(), [0.into(), 1.into()]);
+    /// let q = |s: &str| tribez::parse_rational(s).unwrap();
+    /// assert_eq!(net.coords(), [q("0"), q("1")]);
     /// ```
     pub fn control_net(&self) -> &ControlNet<BigRational> {
         match &self.any {
