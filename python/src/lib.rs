@@ -121,14 +121,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(threads, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_test, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_in_worker_for_test, m)?)?;
-    m.add("MAX_DEGREE", tribez::hazmat::io::patch_file::MAX_DEGREE)?;
-    m.add(
-        "MAX_CONTROL_POINTS",
-        tribez::hazmat::io::patch_file::MAX_CONTROL_POINTS,
-    )?;
+    m.add("MAX_DEGREE", tribez::limits::MAX_DEGREE)?;
+    m.add("MAX_CONTROL_POINTS", tribez::limits::MAX_CONTROL_POINTS)?;
     m.add(
         "MAX_SIMPLEX_DIMENSION",
-        tribez::hazmat::io::patch_file::MAX_SIMPLEX_DIMENSION,
+        tribez::limits::MAX_SIMPLEX_DIMENSION,
     )?;
     Ok(())
 }

@@ -8,20 +8,12 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use rayon::prelude::*;
 
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::domain::check_barycentric;
-use tribez::hazmat::error::CoreError;
-use tribez::hazmat::exact::ExactEvaluator;
-use tribez::hazmat::float::{Float, casteljau, net_to};
-use tribez::hazmat::io::patch_file::{
-    MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION, any_patch_from_document,
-    any_patch_to_json, any_patch_to_toml, read_any_patch,
-};
-use tribez::hazmat::io::tree::Document;
-use tribez::hazmat::number::{format_rational, parse_rational};
-use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
-use tribez::hazmat::rational::RationalPatch;
-use tribez::hazmat::simplex::{Simplex, binomial};
+use tribez::capability::PointEvaluator;
+use tribez::constructions::{ControlNet, binomial, check_barycentric};
+use tribez::format::{format_rational, parse_rational};
+use tribez::kernels::Float;
+use tribez::limits::{MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION};
+use tribez::{CoreError, Degree, Patch, PatchKind, SimplexDim};
 
 use crate::{guard, input_error};
 
@@ -38,17 +30,13 @@ pub fn parse_number(py: Python<'_>, text: &str) -> PyResult<String> {
 /// A patch of any kind.
 #[pyclass(module = "tribez._native", frozen)]
 pub struct NativePatch {
-    pub(crate) patch: AnyPatch,
+    pub(crate) patch: Patch,
 }
 
 impl NativePatch {
     /// The control net (the homogeneous one's point part for rational patches).
     pub(crate) fn net(&self) -> &ControlNet<BigRational> {
-        match &self.patch {
-            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => &p.net,
-            AnyPatch::Rational(r) => &r.patch.net,
-            AnyPatch::SPatch(s) => &s.net,
-        }
+        self.patch.control_net()
     }
 }
 
@@ -78,7 +66,7 @@ impl NativePatch {
     fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
         guard(py, || {
             let patch = py
-                .detach(|| read_any_patch(&path).map_err(|e| e.to_string()))
+                .detach(|| Patch::from_file(&path).map_err(|e| e.to_string()))
                 .map_err(|e| input_error(py, e))?;
             Ok(NativePatch { patch })
         })
@@ -88,9 +76,7 @@ impl NativePatch {
     #[staticmethod]
     fn from_toml(py: Python<'_>, text: &str, file: &str) -> PyResult<Self> {
         guard(py, || {
-            let doc = Document::parse_toml(file, text).map_err(|e| input_error(py, e))?;
-            let patch =
-                any_patch_from_document(&doc, &doc.root, "").map_err(|e| input_error(py, e))?;
+            let patch = Patch::from_toml_named(text, file).map_err(|e| input_error(py, e))?;
             Ok(NativePatch { patch })
         })
     }
@@ -99,9 +85,7 @@ impl NativePatch {
     #[staticmethod]
     fn from_json(py: Python<'_>, text: &str, file: &str) -> PyResult<Self> {
         guard(py, || {
-            let doc = Document::parse_json(file, text).map_err(|e| input_error(py, e))?;
-            let patch =
-                any_patch_from_document(&doc, &doc.root, "").map_err(|e| input_error(py, e))?;
+            let patch = Patch::from_json_named(text, file).map_err(|e| input_error(py, e))?;
             Ok(NativePatch { patch })
         })
     }
@@ -180,10 +164,12 @@ impl NativePatch {
                     parse_rational(t).map_err(|e| err(format!("nodes[{i}, {r}]: {e}")))
                 })
                 .collect::<PyResult<_>>()?;
-            let net = ControlNet::new(Simplex::new(simplex, n), dim, coords);
-            let patch = Patch::new(net);
+            let rows: Vec<Vec<BigRational>> = coords.chunks(dim).map(<[_]>::to_vec).collect();
+            let (m, n) = (SimplexDim(simplex), Degree(n));
+            // the sizes are checked above: these cannot fail
+            let built = |r: Result<Patch, tribez::Error>| r.map_err(|e| err(e.to_string()));
             let patch = match weights {
-                None => AnyPatch::Bezier(patch),
+                None => built(Patch::bezier(m, n, rows))?,
                 Some(w) => {
                     if w.len() != count {
                         return Err(err(format!(
@@ -203,7 +189,7 @@ impl NativePatch {
                             "weights: every weight is zero: the rational patch is undefined everywhere".into(),
                         ));
                     }
-                    AnyPatch::Rational(RationalPatch::new(patch, w))
+                    built(Patch::rational(m, n, rows, w))?
                 }
             };
             Ok(NativePatch { patch })
@@ -232,30 +218,26 @@ impl NativePatch {
     /// `"bezier"`, `"rational"`, `"functional"` or `"s-patch"` (the patch file's `kind`).
     #[getter]
     fn kind(&self) -> &'static str {
-        match &self.patch {
-            AnyPatch::Bezier(_) => "bezier",
-            AnyPatch::Rational(_) => "rational",
-            AnyPatch::Functional(_) => "functional",
-            AnyPatch::SPatch(_) => "s-patch",
+        match self.patch.kind() {
+            PatchKind::Bezier => "bezier",
+            PatchKind::Rational => "rational",
+            PatchKind::Functional => "functional",
+            PatchKind::SPatch => "s-patch",
         }
     }
 
     /// The name from the file, if any.
     #[getter]
     fn name(&self) -> Option<String> {
-        match &self.patch {
-            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p.name.clone(),
-            AnyPatch::Rational(r) => r.patch.name.clone(),
-            AnyPatch::SPatch(s) => s.name.clone(),
-        }
+        self.patch.name().map(str::to_string)
     }
 
     /// Number of barycentric coordinates of a point (m + 1), or 2 (Cartesian) for an S-patch.
     #[getter]
     fn point_width(&self) -> usize {
-        match &self.patch {
-            AnyPatch::SPatch(_) => 2,
-            _ => self.net().m() + 1,
+        match self.patch.polygon() {
+            Some(_) => 2,
+            None => self.net().m() + 1,
         }
     }
 
@@ -272,20 +254,19 @@ impl NativePatch {
 
     /// The weights of a rational patch, as exact texts.
     fn weights(&self) -> Option<Vec<String>> {
-        match &self.patch {
-            AnyPatch::Rational(r) => Some(r.weights.iter().map(format_rational).collect()),
-            _ => None,
-        }
+        self.patch
+            .weights()
+            .map(|w| w.iter().map(format_rational).collect())
     }
 
     /// The patch file (TOML).
     fn to_toml(&self, py: Python<'_>) -> PyResult<String> {
-        guard(py, || Ok(any_patch_to_toml(&self.patch)))
+        guard(py, || Ok(self.patch.to_toml()))
     }
 
     /// The patch file (JSON).
     fn to_json(&self, py: Python<'_>) -> PyResult<String> {
-        guard(py, || Ok(any_patch_to_json(&self.patch).to_string()))
+        guard(py, || Ok(self.patch.to_json()))
     }
 
     fn __eq__(&self, other: &Self) -> bool {
@@ -303,12 +284,7 @@ impl NativePatch {
             let pts = parse_all(py, &points, "points")?;
             let patch = &self.patch;
             let results: Vec<Result<Vec<BigRational>, String>> = py.detach(|| {
-                let evaluator = match patch {
-                    AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
-                        Some(ExactEvaluator::new(&p.net))
-                    }
-                    _ => None,
-                };
+                let evaluator = patch.exact().exact_evaluator();
                 pts.par_iter()
                     .enumerate()
                     .map(|(i, x)| {
@@ -398,73 +374,46 @@ pub(crate) fn f64s(bytes: &[u8]) -> Vec<f64> {
 }
 
 fn evaluate_one(
-    patch: &AnyPatch,
-    evaluator: Option<&ExactEvaluator>,
+    patch: &Patch,
+    evaluator: &dyn PointEvaluator,
     x: &[BigRational],
     cartesian: bool,
 ) -> Result<Vec<BigRational>, CoreError> {
-    match patch {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
-            let lambda = if cartesian {
-                p.domain_or_reference().barycentric(x)?
-            } else {
-                check_barycentric(x, p.net.m(), "the point")?;
-                x.to_vec()
-            };
-            Ok(evaluator
-                .expect("an evaluator for polynomial patches")
-                .evaluate_fast(&lambda))
+    if patch.polygon().is_some() {
+        if !cartesian {
+            return Err(CoreError::CartesianPoints {
+                kind: "an S-patch",
+                flag: "cartesian=True",
+            });
         }
-        AnyPatch::Rational(r) => {
-            let lambda = if cartesian {
-                r.patch.domain_or_reference().barycentric(x)?
-            } else {
-                check_barycentric(x, r.patch.net.m(), "the point")?;
-                x.to_vec()
-            };
-            r.evaluate(&lambda)
-        }
-        AnyPatch::SPatch(s) => {
-            if !cartesian {
-                return Err(CoreError::CartesianPoints {
-                    kind: "an S-patch",
-                    flag: "cartesian=True",
-                });
-            }
-            s.evaluate(x).map(|(_, v)| v)
-        }
+        return evaluator.evaluate(x);
     }
+    let lambda = if cartesian {
+        patch.exact().cartesian_input(x)?
+    } else {
+        check_barycentric(x, patch.simplex_dim(), "the point")?;
+        x.to_vec()
+    };
+    evaluator.evaluate(&lambda)
 }
 
 fn float_rows<F: Float + std::ops::Div<Output = F> + ToBytes>(
-    patch: &AnyPatch,
+    patch: &Patch,
     xs: &[f64],
     width: usize,
     round: impl Fn(f64) -> F + Sync,
 ) -> Vec<u8> {
     let rows: Vec<&[f64]> = xs.chunks_exact(width).collect();
-    let values: Vec<Vec<F>> = match patch {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
-            let net = net_to::<F>(&p.net);
-            rows.par_iter()
-                .map(|r| {
-                    let lambda: Vec<F> = r.iter().map(|&x| round(x)).collect();
-                    casteljau(&net, &lambda)
-                })
-                .collect()
-        }
-        AnyPatch::Rational(rp) => rows
-            .par_iter()
-            .map(|r| {
-                let lambda: Vec<F> = r.iter().map(|&x| round(x)).collect();
-                rp.evaluate_float::<F>(&lambda)
-            })
-            .collect(),
-        AnyPatch::SPatch(s) => rows
-            .par_iter()
-            .map(|r| s.evaluate_float::<F>(&[round(r[0]), round(r[1])]))
-            .collect(),
-    };
+    let evaluator = patch.float_evaluator::<F>();
+    let values: Vec<Vec<F>> = rows
+        .par_iter()
+        .map(|r| {
+            let input: Vec<F> = r.iter().map(|&x| round(x)).collect();
+            evaluator
+                .evaluate(&input)
+                .expect("rows of the patch's point width (checked by the caller)")
+        })
+        .collect();
     let mut out = Vec::with_capacity(values.len() * values.first().map_or(0, Vec::len) * 8);
     for v in values {
         for x in v {

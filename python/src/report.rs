@@ -14,13 +14,13 @@ use tribez::batch::{
     BatchChecker, BatchOptions, BatchReport, FailedCoord, FailedRow, RowVerdict, ULP_BUCKETS,
     UlpHistogram, WorstRow,
 };
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::certify::measures::as_float;
-use tribez::hazmat::certify::measures::{Measures, Tolerance};
-use tribez::hazmat::exact::{Algorithm, ExactEvaluator};
-use tribez::hazmat::float::Precision;
-use tribez::hazmat::number::{exact_f64, parse_rational, ulps_error_f32, ulps_error_f64};
-use tribez::hazmat::patch::{BezierPatch, ControlNet};
+use tribez::constructions::{BezierPatch, ControlNet};
+use tribez::format::{
+    exact_f32, exact_f64, parse_rational, round_f32, round_f64, ulps_error_f32, ulps_error_f64,
+};
+use tribez::kernels::ExactEvaluator;
+use tribez::report::Measures;
+use tribez::{Algorithm, Patch, Precision, Tolerance};
 
 use crate::patch::{NativePatch, f64s};
 use crate::{guard, input_error, precision_arg, tolerance_arg};
@@ -42,17 +42,14 @@ pub fn check_rows(
     first_row: usize,
 ) -> PyResult<NativeReport> {
     guard(py, || {
-        let poly = match &patch.patch {
-            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => p.clone(),
-            other => {
-                return Err(input_error(
-                    py,
-                    format!(
-                        "patch: this is {}; check judges polynomial Bézier patches (rational patches and S-patches: claim files)",
-                        other.described()
-                    ),
-                ));
-            }
+        let Some(poly) = patch.patch.polynomial().cloned() else {
+            return Err(input_error(
+                py,
+                format!(
+                    "patch: this is {}; check judges polynomial Bézier patches (rational patches and S-patches: claim files)",
+                    patch.patch.described()
+                ),
+            ));
         };
         let tolerance = tolerance_arg(py, tolerance)?;
         let precision = precision_arg(py, precision)?;
@@ -109,8 +106,8 @@ pub fn check_rows(
 /// precision, patch name): the patch itself (an FNV-1a hash of its JSON patch file, stable
 /// across processes and machines), the algorithm and the input space. Reports merge only with
 /// equal keys.
-fn judged_key(patch: &AnyPatch, algorithm: Algorithm, cartesian: bool) -> String {
-    let text = tribez::hazmat::io::patch_file::any_patch_to_json(patch).to_string();
+fn judged_key(patch: &Patch, algorithm: Algorithm, cartesian: bool) -> String {
+    let text = patch.to_json();
     let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
         (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
     });
@@ -561,6 +558,14 @@ impl NativeReport {
                 })
                 .ok_or_else(|| crate::input_error(py, "report state: malformed"))
         })
+    }
+}
+
+/// The float of precision `p` nearest `q`, as its exact value (`None` if it overflows).
+fn as_float(q: &BigRational, p: Precision) -> Option<BigRational> {
+    match p {
+        Precision::F64 => exact_f64(round_f64(q)),
+        Precision::F32 => exact_f32(round_f32(q)),
     }
 }
 

@@ -2,8 +2,8 @@
 //! precondition, or wrong use of the command line. The one error type of the CLI; every layer
 //! of the binary (commands, pictures, output files) returns it.
 
-use tribez::hazmat::error::CoreError;
-use tribez::hazmat::io::InputError;
+use tribez::CoreError;
+use tribez::InputError;
 
 /// Why a command could not run: bad input or usage (exit status 2).
 #[derive(Debug, thiserror::Error)]

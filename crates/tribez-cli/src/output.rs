@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
 
 use tempfile::NamedTempFile;
-use tribez::hazmat::io::{InputError, Problem};
+use tribez::{InputError, Problem};
 
 use crate::error::CliError;
 

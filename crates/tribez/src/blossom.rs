@@ -384,7 +384,7 @@ pub fn map_point<T: Scalar>(f: &[Vec<T>], beta: &[T]) -> Vec<T> {
 pub const MAX_MATRIX_ROWS: usize = 1000;
 
 /// The matrix of the subpatch map for degree `n` on the `m`-simplex: row `α` (child), column `β`
-/// (parent), both in canonical order; `c′_α = Σ_β M_{αβ} c_β`. Computed by running [`subpatch`]
+/// (parent), both in canonical order; `c′_α = Σ_β M_{αβ} c_β`. Computed by running `subpatch`
 /// on the net whose control point `β` is the unit vector `e_β`.
 pub fn subpatch_matrix(
     m: usize,

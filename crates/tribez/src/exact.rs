@@ -221,7 +221,7 @@ impl ExactEvaluator {
     /// control points precomputed once per patch (row by row for triangles), and a reduction to
     /// lowest terms that uses the known prime factors of the denominators (src/exact/kernel.rs).
     /// Points whose homogeneous coordinates are negative or do not fit a machine word fall back
-    /// to [`Algorithm::Bernstein`]. Equal to [`evaluate_rational`] (property-tested).
+    /// to [`Algorithm::Bernstein`]. Equal to `evaluate_rational` (property-tested).
     pub fn evaluate_fast(&self, lambda: &[BigRational]) -> Vec<BigRational> {
         match word_point(lambda) {
             Some((a, d)) => self.fast.evaluate(&a, d),

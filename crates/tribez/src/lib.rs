@@ -46,11 +46,22 @@
 //!   results, judged in parallel;
 //! * [`algebraic`]: real algebraic numbers ([`RealAlgebraic`]) and the inverse problems they
 //!   answer exactly: [`intersect_curves`] for two planar curves ([`Curve`]);
+//! * [`format`](mod@format): numbers in and out (parsing, exact and float printing, correct
+//!   rounding, ULPs); [`limits`]: the sizes every input is checked against; [`files`]: points
+//!   files and polynomial patch files;
+//! * [`constructions`]: multi-indices, control nets, subdivision matrices, joins, symbolic
+//!   forms; [`kernels`]: the exact and float evaluation kernels;
 //! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
-//! * [`hazmat`]: the low-level building blocks, **unstable**.
+//! * `hazmat`: the low-level building blocks, **unstable**, only with the cargo feature
+//!   `unstable-internals` (off by default; the fuzz targets use it).
 //!
 //! The exact core never depends on the outer layers (files, claims, the command line, which is
 //! the separate `tribez-cli` crate).
+
+#![warn(missing_docs)]
+// Without the feature `unstable-internals`, the building blocks that only `hazmat` re-exports,
+// and the fuzz targets' helpers, have no caller in the crate: they are not dead, only unexported.
+#![cfg_attr(not(feature = "unstable-internals"), allow(dead_code, unused_imports))]
 
 pub mod algebraic;
 mod any_patch;
@@ -63,20 +74,27 @@ mod casteljau;
 mod certification;
 mod certify;
 pub mod claims;
+pub mod constructions;
 mod derivative;
 mod domain;
 mod elevate;
 mod error;
 mod exact;
+pub mod files;
 pub mod fit;
 mod float;
+pub mod format;
 mod functional;
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 mod fuzz;
+#[cfg(feature = "unstable-internals")]
 pub mod hazmat;
 mod io;
 mod join;
 mod judge;
 mod judge_refusal;
+pub mod kernels;
+pub mod limits;
 mod linalg;
 pub mod mesh;
 mod number;
@@ -113,5 +131,5 @@ pub use judge::{
 pub use judge_refusal::{Lacks, Refusal};
 pub use num_rational::BigRational as Rational;
 pub use number::parse_rational;
-pub use patch_type::{Degree, Patch, PatchKind, SimplexDim};
+pub use patch_type::{Degree, FloatEvaluator, Patch, PatchKind, SimplexDim};
 pub use subdivide::HalvingOrder;

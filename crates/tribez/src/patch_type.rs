@@ -10,6 +10,7 @@ use crate::api_error::{Error, Refusal};
 use crate::capability::{Constructions, ExactEval, FloatEval, InputSpace, Shape};
 use crate::domain::Domain;
 use crate::error::CoreError;
+use crate::float::Float;
 use crate::patch::{BezierPatch, ControlNet};
 use crate::rational::RationalPatch;
 use crate::simplex::Simplex;
@@ -234,7 +235,39 @@ impl Patch {
 
     /// The patch file's text in JSON.
     pub fn to_json(&self) -> String {
-        crate::io::patch_file::any_patch_to_json(&self.any).to_string()
+        self.to_json_value().to_string()
+    }
+
+    /// The patch file in JSON, as a JSON value (to embed in a larger document).
+    ///
+    /// ```
+    /// let p = tribez::Patch::from_toml("degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1/2\"]\n").unwrap();
+    /// let json = p.to_json_value();
+    /// assert_eq!(json["degree"], 1);
+    /// assert_eq!(json.to_string(), p.to_json());
+    /// assert_eq!(tribez::Patch::from_json(&p.to_json()).unwrap(), p);
+    /// ```
+    pub fn to_json_value(&self) -> serde_json::Value {
+        crate::io::patch_file::any_patch_to_json(&self.any)
+    }
+
+    /// Parse a patch file's text in TOML, naming it `file` in error messages (as
+    /// [`Patch::from_toml`], which names it `<toml>`).
+    pub fn from_toml_named(text: &str, file: &str) -> Result<Patch, Error> {
+        let doc = crate::io::tree::Document::parse_toml(file, text)?;
+        Ok(crate::io::patch_file::any_patch_from_document(&doc, &doc.root, "")?.into())
+    }
+
+    /// Parse a patch file's text in JSON, naming it `file` in error messages (as
+    /// [`Patch::from_json`], which names it `<json>`).
+    ///
+    /// ```
+    /// let e = tribez::Patch::from_json_named("{\"degree\": 1}", "mine.json").unwrap_err();
+    /// assert!(e.to_string().starts_with("mine.json"), "{e}");
+    /// ```
+    pub fn from_json_named(text: &str, file: &str) -> Result<Patch, Error> {
+        let doc = crate::io::tree::Document::parse_json(file, text)?;
+        Ok(crate::io::patch_file::any_patch_from_document(&doc, &doc.root, "")?.into())
     }
 
     /// Its kind.
@@ -314,6 +347,111 @@ impl Patch {
         Ok(self.exact().exact_evaluator().evaluate(input)?)
     }
 
+    /// `"a Bézier patch"`, `"a rational patch"`, `"a functional patch"` or `"an S-patch"`: its
+    /// kind with the article, for messages.
+    ///
+    /// ```
+    /// let p = tribez::Patch::from_toml("degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n").unwrap();
+    /// assert_eq!(p.described(), "a Bézier patch");
+    /// ```
+    pub fn described(&self) -> &'static str {
+        self.any.described()
+    }
+
+    /// Give it a name (or none), as a patch file's `name`.
+    pub fn set_name(&mut self, name: Option<String>) {
+        *self.any.name_mut() = name;
+    }
+
+    /// Its control net: the control points `c_α` in the canonical order (a rational patch's
+    /// points, not its homogeneous net; an S-patch's points indexed by `α ∈ ℕ^N`).
+    ///
+    /// ```
+    /// // the line segment from 0 to 1, degree 1: c_10 = 0, c_01 = 1
+    /// let p = tribez::Patch::from_toml("degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n").unwrap();
+    /// let net = p.control_net();
+    /// assert_eq!((net.m(), net.degree(), net.dim(), net.len()), (1, 1, 1, 2));
+    /// let q = |s: &str| tribez::parse_rational(s).unwrap();
+    /// assert_eq!(net.coords(), [q("0"), q("1")]);
+    /// ```
+    pub fn control_net(&self) -> &ControlNet<BigRational> {
+        match &self.any {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => &p.net,
+            AnyPatch::Rational(r) => &r.patch.net,
+            AnyPatch::SPatch(s) => &s.net,
+        }
+    }
+
+    /// A rational patch's weights `w_α` (canonical order); `None` for the other kinds.
+    pub fn weights(&self) -> Option<&[BigRational]> {
+        match &self.any {
+            AnyPatch::Rational(r) => Some(&r.weights),
+            _ => None,
+        }
+    }
+
+    /// An S-patch's polygon (its vertices, counter-clockwise); `None` for the other kinds.
+    pub fn polygon(&self) -> Option<&[[BigRational; 2]]> {
+        match &self.any {
+            AnyPatch::SPatch(s) => Some(s.polygon.vertices()),
+            _ => None,
+        }
+    }
+
+    /// The domain simplex of the kinds over a simplex: the file's `domain`, or the reference
+    /// simplex (vertices `e_1, …, e_m` and the origin) when there
+    /// is none; `None` for an S-patch (see [`Patch::polygon`]).
+    pub fn domain(&self) -> Option<Domain> {
+        match &self.any {
+            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => Some(p.domain_or_reference()),
+            AnyPatch::Rational(r) => Some(r.patch.domain_or_reference()),
+            AnyPatch::SPatch(_) => None,
+        }
+    }
+
+    /// The vertices of its domain in the plane or space of its inputs: the domain simplex's
+    /// `m + 1` vertices, or an S-patch's polygon's `N` vertices.
+    pub fn domain_vertices(&self) -> Vec<Vec<BigRational>> {
+        match &self.any {
+            AnyPatch::SPatch(s) => s.polygon.vertices().iter().map(|v| v.to_vec()).collect(),
+            _ => self
+                .domain()
+                .map(|d| d.vertices().to_vec())
+                .unwrap_or_default(),
+        }
+    }
+
+    /// The polynomial patch, for the kinds that are one (Bézier and functional patches).
+    pub fn polynomial(&self) -> Option<&BezierPatch> {
+        self.any.polynomial()
+    }
+
+    /// tribez's own float path in `F` (`f64` or `f32`), without certification: de Casteljau on
+    /// the control net rounded to `F` (rounded once, here), a rational patch by homogeneous de
+    /// Casteljau and one division, an S-patch by float Wachspress coordinates then de Casteljau.
+    /// Numbers beyond `F` become infinities (the float programs of [`Patch::float`] refuse them
+    /// instead).
+    ///
+    /// ```
+    /// // the quadratic curve with control points 0, 1, 0: p(λ) = 2 λ_0 λ_1; in f64 every step of
+    /// // de Casteljau at (1/2, 1/2) is exact: (0 + 1)/2, (1 + 0)/2, then 1/2
+    /// let p = tribez::Patch::from_toml(
+    ///     "degree = 2\n[control_points]\n\"2,0\" = [\"0\"]\n\"1,1\" = [\"1\"]\n\"0,2\" = [\"0\"]\n",
+    /// )
+    /// .unwrap();
+    /// let f = p.float_evaluator::<f64>();
+    /// assert_eq!(f.evaluate(&[0.5, 0.5]).unwrap(), [0.5]);
+    /// // (3/4, 1/4): 2 · 3/4 · 1/4 = 3/8, exact in binary
+    /// assert_eq!(f.evaluate(&[0.75, 0.25]).unwrap(), [0.375]);
+    /// assert!(f.evaluate(&[1.0]).is_err()); // a point needs m + 1 = 2 coordinates
+    /// ```
+    pub fn float_evaluator<F: Float + std::ops::Div<Output = F>>(&self) -> FloatEvaluator<'_, F> {
+        FloatEvaluator {
+            patch: self,
+            net: self.polynomial().map(|p| crate::float::net_to::<F>(&p.net)),
+        }
+    }
+
     /// The representation by kind (unstable).
     pub fn as_any(&self) -> &AnyPatch {
         &self.any
@@ -322,6 +460,52 @@ impl Patch {
     /// The representation by kind (unstable).
     pub fn into_any(self) -> AnyPatch {
         self.any
+    }
+}
+
+/// tribez's own float path of a patch in `F` ([`Patch::float_evaluator`]), prepared once for
+/// many points.
+#[derive(Clone, Debug)]
+pub struct FloatEvaluator<'a, F> {
+    patch: &'a Patch,
+    /// The control net rounded to `F`, for the polynomial kinds.
+    net: Option<ControlNet<F>>,
+}
+
+impl<F: Float + std::ops::Div<Output = F>> FloatEvaluator<'_, F> {
+    /// The value at `input`: `m + 1` barycentric coordinates, or an S-patch's Cartesian `(x, y)`
+    /// (a wrong number of coordinates is an error).
+    pub fn evaluate(&self, input: &[F]) -> Result<Vec<F>, CoreError> {
+        let expected = match &self.patch.any {
+            AnyPatch::SPatch(_) => 2,
+            _ => self.patch.control_net().m() + 1,
+        };
+        if input.len() != expected {
+            return Err(CoreError::WrongLength {
+                what: "point".into(),
+                expected,
+                found: input.len(),
+            });
+        }
+        Ok(match (&self.patch.any, &self.net) {
+            (AnyPatch::Bezier(_) | AnyPatch::Functional(_), Some(net)) => {
+                crate::float::casteljau(net, input)
+            }
+            (AnyPatch::Rational(r), _) => r.evaluate_float::<F>(input),
+            (AnyPatch::SPatch(s), _) => s.evaluate_float::<F>(&[input[0], input[1]]),
+            (AnyPatch::Bezier(p) | AnyPatch::Functional(p), None) => {
+                crate::float::casteljau(&crate::float::net_to::<F>(&p.net), input)
+            }
+        })
+    }
+}
+
+/// A polynomial Bézier simplex (of kind [`PatchKind::Bezier`]).
+impl From<BezierPatch> for Patch {
+    fn from(patch: BezierPatch) -> Self {
+        Patch {
+            any: AnyPatch::Bezier(patch),
+        }
     }
 }
 

@@ -34,7 +34,7 @@ use num_bigint::BigUint;
 
 /// Binomial coefficient `C(n, k)` as a count, to compare with a size limit: exact while the
 /// computation fits `u128`, and `u128::MAX` (above every limit) past it. Never a coefficient of a
-/// formula: [`binomial_exact`] is.
+/// formula: `binomial_exact` is.
 ///
 /// ```
 /// use tribez::hazmat::simplex::binomial;

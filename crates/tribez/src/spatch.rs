@@ -227,8 +227,8 @@ fn normalise<T: Scalar + Div<Output = T>>(omega: Vec<T>) -> Vec<T> {
     omega.into_iter().map(|w| w / sum.clone()).collect()
 }
 
-/// The float Wachspress coordinates of [`SPatch::evaluate_float`]: the doubled product form
-/// [`doubled_omega`] in `F`, then one division by their sum each.
+/// The float Wachspress coordinates of `SPatch::evaluate_float`: the doubled product form
+/// `doubled_omega` in `F`, then one division by their sum each.
 pub fn wachspress_float<F: Float + Div<Output = F>>(vertices: &[[F; 2]], p: &[F; 2]) -> Vec<F> {
     normalise(doubled_omega(vertices, p))
 }

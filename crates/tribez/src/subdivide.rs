@@ -178,7 +178,7 @@ pub fn midpoint_split<T: Field>(net: &ControlNet<T>) -> Result<Vec<Piece<T>>, Co
         .collect()
 }
 
-/// The order of the in-place updates of [`add_and_halve`].
+/// The order of the in-place updates of `add_and_halve`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum HalvingOrder {
     /// the Wikipedia article's table read row by row, top to bottom, each row left to right: along each line

@@ -8,7 +8,7 @@
 use std::path::Path;
 
 use super::CliError;
-use tribez::hazmat::io::{InputError, Problem};
+use tribez::{InputError, Problem};
 
 pub use tribez::report::WorstError as Worst;
 

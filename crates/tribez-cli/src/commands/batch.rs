@@ -9,10 +9,10 @@ use serde_json::Value as Json;
 use super::check::Args;
 use super::{CliError, Outcome};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
+use tribez::Precision;
+use tribez::Tolerance;
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport};
-use tribez::hazmat::certify::measures::Tolerance;
-use tribez::hazmat::float::Precision;
-use tribez::hazmat::io::patch_file::read_patch;
+use tribez::files::read_bezier_patch as read_patch;
 
 /// The batch options of `tribez check`'s arguments.
 pub fn options(args: &Args) -> Result<BatchOptions, CliError> {
@@ -68,7 +68,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let patch = read_patch(patch_path)?;
     let mut map = if pictures.any() {
         let outline = crate::picture::reports::outline(
-            &tribez::Patch::from(tribez::hazmat::any_patch::AnyPatch::Bezier(patch.clone())),
+            &tribez::Patch::from(patch.clone()),
             if args.plot.is_some() {
                 "--plot"
             } else {

@@ -13,9 +13,8 @@ use super::construct::barycentric_points;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::{Render, to_json, tuple};
+use tribez::CoreError;
 use tribez::Patch;
-use tribez::hazmat::error::CoreError;
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez blossom` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -41,7 +40,7 @@ pub struct BlossomReport {
 /// Run `tribez blossom`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let constructions = super::constructions(&patch, &file, "blossom")?;
     let n = patch.degree();
     if args.args.len() != n {

@@ -9,10 +9,9 @@ use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use serde_json::Value as Json;
-use tribez::hazmat::exact::Algorithm;
-use tribez::hazmat::float::Precision;
-use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::io::points::read_points;
+use tribez::Algorithm;
+use tribez::Precision;
+use tribez::files::read_points;
 use tribez::{CertifyOptions, CertifyPoints, CertifyReport, Patch};
 
 // Arguments of `tribez certify` (a plain comment: see `Command`).
@@ -90,7 +89,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         html: args.html.clone(),
     };
     pictures.check_names()?;
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     if pictures.any() {
         crate::picture::reports::outline(&patch, "--plot")?;
     }

@@ -8,12 +8,9 @@ use serde_json::Value as Json;
 
 use super::{CliError, check_barycentric, parse_list};
 use crate::report::{Render, to_json};
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::io::patch_file::{
-    MAX_CONTROL_POINTS, MAX_DEGREE, any_patch_to_json, any_patch_to_toml,
-};
-use tribez::hazmat::simplex;
-use tribez::{Constructions, SubPatch};
+use tribez::constructions::binomial;
+use tribez::limits::{MAX_CONTROL_POINTS, MAX_DEGREE};
+use tribez::{Constructions, Patch, SubPatch};
 
 /// Parse barycentric points given as `--{flag} a,b,c`, each with `m + 1` coordinates summing to 1.
 pub fn barycentric_points(
@@ -39,7 +36,7 @@ pub fn parse_edge(text: &str, m: usize) -> Result<(usize, usize), CliError> {
     let nums: Option<Vec<usize>> = parts.iter().map(|p| p.parse::<usize>().ok()).collect();
     match nums.as_deref() {
         Some([i, j]) => {
-            tribez::hazmat::subdivide::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e))
+            tribez::constructions::check_edge(m, *i, *j).map_err(|e| CliError::core(what, e))
         }
         _ => Err(CliError::check(
             what,
@@ -61,7 +58,7 @@ pub fn check_size(m: usize, n: usize, what: &str) -> Result<(), CliError> {
             ),
         ));
     }
-    let total = simplex::binomial((n + m) as u64, m as u64);
+    let total = binomial((n + m) as u64, m as u64);
     if total > MAX_CONTROL_POINTS as u128 {
         return Err(CliError::check(
             what,
@@ -88,12 +85,12 @@ pub fn constructions<'a>(
 }
 
 /// Name a constructed patch after its parent: `"<parent's name>, <label>"`, or `label`.
-pub fn relabel(patch: &mut AnyPatch, label: &str) {
-    let name = patch.name_mut();
-    *name = Some(match name.take() {
+pub fn relabel(patch: &mut Patch, label: &str) {
+    let name = match patch.name() {
         Some(n) => format!("{n}, {label}"),
         None => label.to_string(),
-    });
+    };
+    patch.set_name(Some(name));
 }
 
 fn strings(p: &[BigRational]) -> Vec<String> {
@@ -148,9 +145,9 @@ pub fn point_strings(f: &[Vec<BigRational>]) -> Vec<Vec<String>> {
 }
 
 /// The JSON patch file of a patch of any kind, with `domain_in_parent` if given.
-pub fn json_with_any(patch: &AnyPatch, f: Option<&[Vec<BigRational>]>) -> Json {
+pub fn json_with_any(patch: &Patch, f: Option<&[Vec<BigRational>]>) -> Json {
     to_json(&PatchJson {
-        patch: any_patch_to_json(patch),
+        patch: patch.to_json_value(),
         domain_in_parent: f.map(point_strings),
     })
 }
@@ -159,16 +156,16 @@ pub fn json_with_any(patch: &AnyPatch, f: Option<&[Vec<BigRational>]>) -> Json {
 /// each with `domain_in_parent` when the patch is a subpatch.
 pub struct PatchReport {
     /// The patch.
-    pub patch: AnyPatch,
+    pub patch: Patch,
     /// Its simplex in the parent's barycentric coordinates, if it is a subpatch.
     pub domain_in_parent: Option<Vec<Vec<BigRational>>>,
 }
 
 impl PatchReport {
     /// The patch alone (not a subpatch).
-    pub fn of(patch: AnyPatch) -> Self {
+    pub fn of(patch: impl Into<Patch>) -> Self {
         PatchReport {
-            patch,
+            patch: patch.into(),
             domain_in_parent: None,
         }
     }
@@ -176,7 +173,7 @@ impl PatchReport {
 
 impl Render for PatchReport {
     fn text(&self) -> String {
-        let text = any_patch_to_toml(&self.patch);
+        let text = self.patch.to_toml();
         let Some(f) = &self.domain_in_parent else {
             return text;
         };
@@ -195,7 +192,34 @@ impl Render for PatchReport {
 /// The pieces of a split: JSON `{"pieces": [{"domain_in_parent": …, "patch": {…}}, …]}`; text
 /// the same as a TOML document (`[[pieces]]` with `domain_in_parent` and a `[pieces.patch]`
 /// table, its own tables under `pieces.patch.`).
-pub struct PiecesReport(pub Vec<SubPatch>);
+pub struct PiecesReport(pub Vec<Piece>);
+
+/// One piece of a split: its simplex in the parent's barycentric coordinates, and its patch.
+pub struct Piece {
+    /// The piece's simplex.
+    pub domain_in_parent: Vec<Vec<BigRational>>,
+    /// The patch.
+    pub patch: Patch,
+}
+
+impl PiecesReport {
+    /// The pieces of a split, each named after its parent with `label(index)` ([`relabel`]).
+    pub fn relabelled(pieces: Vec<SubPatch>, label: impl Fn(usize) -> String) -> Self {
+        PiecesReport(
+            pieces
+                .into_iter()
+                .map(|p| {
+                    let mut patch = Patch::from(p.patch);
+                    relabel(&mut patch, &label(p.index));
+                    Piece {
+                        domain_in_parent: p.domain_in_parent,
+                        patch,
+                    }
+                })
+                .collect(),
+        )
+    }
+}
 
 impl Render for PiecesReport {
     fn text(&self) -> String {
@@ -208,7 +232,9 @@ impl Render for PiecesReport {
                 "[[pieces]]\ndomain_in_parent = {}\n\n[pieces.patch]\n",
                 toml_points(&piece.domain_in_parent)
             );
-            out += &any_patch_to_toml(&piece.patch)
+            out += &piece
+                .patch
+                .to_toml()
                 .replace("\n[control_points]\n", "\n[pieces.patch.control_points]\n")
                 .replace("\n[weights]\n", "\n[pieces.patch.weights]\n");
         }
@@ -222,7 +248,7 @@ impl Render for PiecesReport {
                 .iter()
                 .map(|piece| PieceJson {
                     domain_in_parent: point_strings(&piece.domain_in_parent),
-                    patch: any_patch_to_json(&piece.patch),
+                    patch: piece.patch.to_json_value(),
                 })
                 .collect(),
         })

@@ -8,9 +8,8 @@ use serde_json::Value as Json;
 use super::{CliError, Outcome, at_point, check_direction, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, to_json, tuple};
+use tribez::CoreError;
 use tribez::Patch;
-use tribez::hazmat::error::CoreError;
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez derivative` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -68,7 +67,7 @@ impl serde::Serialize for DerivativeReport {
 /// Run `tribez derivative`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let constructions = super::constructions(&patch, &file, "derivative")?;
     let m = patch.simplex_dim();
     let domain = constructions.domain();

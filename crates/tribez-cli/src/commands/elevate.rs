@@ -5,7 +5,6 @@ use std::path::PathBuf;
 use super::construct::{PatchReport, check_size, constructions, relabel};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez elevate` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -22,11 +21,11 @@ pub struct Args {
 /// Run `tribez elevate`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let patch = tribez::Patch::from_file(&args.patch)?;
     let c = constructions(&file, "elevate", &patch)?;
     let (m, n) = (patch.simplex_dim(), patch.degree());
     check_size(m, n.saturating_add(args.by), &format!("--by {}", args.by))?;
-    let mut up = c.elevate(args.by).map_err(|e| CliError::core(&file, e))?;
+    let mut up = tribez::Patch::from(c.elevate(args.by).map_err(|e| CliError::core(&file, e))?);
     relabel(&mut up, &format!("elevated to degree {}", n + args.by));
     Outcome::rendered(&PatchReport::of(up), args.out.format, true)
 }

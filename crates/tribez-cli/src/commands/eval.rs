@@ -20,13 +20,12 @@ use crate::cli::{OutputArgs, TextOrJson};
 use crate::output::{self, Sink};
 #[cfg(test)]
 use crate::report::{Render, to_json};
+use tribez::CoreError;
+use tribez::Precision;
 use tribez::capability::{FloatProgram, InputSpace, PointEvaluator};
-use tribez::hazmat::error::CoreError;
-use tribez::hazmat::exact::word_point;
-use tribez::hazmat::float::Precision;
-use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::io::points::read_points;
-use tribez::hazmat::number::{push_rational, ulps_decimal};
+use tribez::files::read_points;
+use tribez::format::{push_rational, ulps_decimal};
+use tribez::kernels::word_point;
 use tribez::{Patch, PatchKind};
 
 // Arguments of `tribez eval` (a plain comment: see `Command`).
@@ -194,7 +193,7 @@ fn judge(
     exact_inputs: Option<&BigRational>,
     intended: &BigRational,
 ) -> FloatCoordinate {
-    use tribez::hazmat::number as n;
+    use tribez::format as n;
     let exact = n::exact_f64(value);
     let ulps = |x: &BigRational, q: &BigRational| match precision {
         Precision::F64 => n::ulps_error_f64(x, q),
@@ -557,7 +556,7 @@ struct EvalInput {
 impl EvalInput {
     fn read(args: &Args) -> Result<Self, CliError> {
         let file = args.patch.display().to_string();
-        let patch = Patch::from(read_any_patch(&args.patch)?);
+        let patch = Patch::from_file(&args.patch)?;
         let width = match patch.shape().input {
             InputSpace::Polygon { .. } => {
                 if !args.cartesian {
@@ -822,7 +821,7 @@ mod tests {
     use crate::report::render;
     use proptest::prelude::*;
     use std::path::Path;
-    use tribez::hazmat::number::parse_rational;
+    use tribez::format::parse_rational;
 
     fn args(patch: &str, at: &[&str], cartesian: bool, float: Option<FloatChoice>) -> Args {
         Args {

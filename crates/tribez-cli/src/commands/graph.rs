@@ -7,7 +7,6 @@ use super::construct::PatchReport;
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use tribez::Patch;
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez graph` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -21,7 +20,7 @@ pub struct Args {
 /// Run `tribez graph`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let graph = patch.constructions().and_then(|c| c.graph()).ok_or_else(|| {
         CliError::Usage(format!(
             "{file}: `tribez graph` takes a functional patch (kind = \"functional\"), this is a {} patch",

@@ -5,10 +5,9 @@
 
 use std::path::PathBuf;
 
-use super::construct::{PiecesReport, constructions, parse_edge, relabel};
+use super::construct::{PiecesReport, constructions, parse_edge};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::hazmat::io::patch_file::read_any_patch;
 use tribez::{HalvingOrder, Split};
 
 // Arguments of `tribez halve` (a plain comment: see `Command`).
@@ -29,19 +28,15 @@ pub struct Args {
 /// Run `tribez halve`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let patch = tribez::Patch::from_file(&args.patch)?;
     let c = constructions(&file, "halve", &patch)?;
     let edge = parse_edge(&args.edge, patch.simplex_dim())?;
     let split = Split::Halve {
         edge,
         add_and_halve: args.add_and_halve.then_some(HalvingOrder::TopDown),
     };
-    let mut halves = c.pieces(&split).map_err(|e| CliError::core(&file, e))?;
-    for h in &mut halves {
-        relabel(
-            &mut h.patch,
-            &format!("half {} of edge {}", h.index + 1, args.edge),
-        );
-    }
-    Outcome::rendered(&PiecesReport(halves), args.out.format, true)
+    let halves = c.pieces(&split).map_err(|e| CliError::core(&file, e))?;
+    let halves =
+        PiecesReport::relabelled(halves, |i| format!("half {} of edge {}", i + 1, args.edge));
+    Outcome::rendered(&halves, args.out.format, true)
 }

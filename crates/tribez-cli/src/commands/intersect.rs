@@ -10,7 +10,6 @@ use crate::cli::OutputArgs;
 use crate::report::Render;
 use tribez::Patch;
 use tribez::algebraic::{Curve, CurveIntersections, intersect_curves, point_text};
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez intersect` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -32,7 +31,7 @@ pub struct IntersectReport {
 
 fn curve(path: &std::path::Path, which: &str) -> Result<Curve, CliError> {
     let file = path.display().to_string();
-    let patch = Patch::from(read_any_patch(path)?);
+    let patch = Patch::from_file(path)?;
     Curve::from_patch(&patch, which).map_err(|e| CliError::Usage(format!("{file}: {e}")))
 }
 

@@ -11,7 +11,6 @@ use crate::report::Render;
 use tribez::Patch;
 use tribez::Rational;
 use tribez::algebraic::{Degenerate, Expr, Locations, RayHits, RealAlgebraic, locate, ray_hits};
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez locate` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -97,7 +96,7 @@ pub struct LocateReport {
 pub fn run_locate(args: &LocateArgs) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
     let p: [Rational; 2] = point(&args.point, "--point")?;
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let found = locate(&patch, &p, args.anywhere).map_err(|e| usage(&file, e))?;
     Outcome::rendered(
         &LocateReport {
@@ -276,28 +275,25 @@ pub enum RayReport {
 /// Run `tribez ray`.
 pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let report = if let Some(h) = &args.height {
         let at: [Rational; 2] = point(h, "--height")?;
-        let tribez::hazmat::any_patch::AnyPatch::Functional(fp) = patch.as_any() else {
+        let (tribez::PatchKind::Functional, Some(domain)) = (patch.kind(), patch.domain()) else {
             return Err(usage(
                 &file,
                 format!(
                     "--height takes a functional patch, not {}",
-                    patch.as_any().described()
+                    patch.described()
                 ),
             ));
         };
-        if fp.net.m() != 2 {
+        if patch.simplex_dim() != 2 {
             return Err(usage(
                 &file,
                 "--height takes a functional patch over a triangle (m = 2)",
             ));
         }
-        let lambda = fp
-            .domain_or_reference()
-            .barycentric(&at)
-            .map_err(|e| usage(&file, e))?;
+        let lambda = domain.barycentric(&at).map_err(|e| usage(&file, e))?;
         if lambda.iter().any(|l| l < &Rational::from_integer(0.into())) {
             return Err(usage(
                 &file,
@@ -341,7 +337,7 @@ fn hit_json(h: &tribez::algebraic::Hit, first: bool) -> HitJson<'_> {
 }
 
 fn tuple(xs: &[Rational]) -> String {
-    tribez::hazmat::domain::format_tuple(xs)
+    tribez::format::format_tuple(xs)
 }
 
 impl Render for RayReport {
@@ -356,7 +352,7 @@ impl Render for RayReport {
                 "{file}: height at ({}, {}) = {z} (≈ {}), barycentric {}\n",
                 at[0],
                 at[1],
-                tribez::hazmat::number::to_decimal_string(z, 17),
+                tribez::format::to_decimal_string(z, 17),
                 tuple(lambda)
             ),
             RayReport::Ray {
@@ -439,7 +435,7 @@ impl Render for RayReport {
                 "height_at": [at[0].to_string(), at[1].to_string()],
                 "barycentric": lambda.iter().map(ToString::to_string).collect::<Vec<_>>(),
                 "height": z.to_string(),
-                "f64": tribez::hazmat::number::hex_f64(tribez::hazmat::number::round_f64(z)),
+                "f64": tribez::format::hex_f64(tribez::format::round_f64(z)),
             }),
             RayReport::Ray {
                 file,

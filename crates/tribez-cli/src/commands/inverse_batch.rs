@@ -13,7 +13,6 @@ use super::{CliError, Outcome};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::Patch;
 use tribez::batch::{InverseBatchChecker, InverseBatchOptions, InverseBatchReport, InverseKind};
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 /// Run an inverse batch (the dispatcher calls this when `--locate-results` or `--ray-results`
 /// is given).
@@ -43,7 +42,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         anywhere: args.anywhere,
     };
     let name = patch_path.display().to_string();
-    let patch = Patch::from(read_any_patch(patch_path)?);
+    let patch = Patch::from_file(patch_path)?;
     let checker = InverseBatchChecker::new(patch, &name, &options)?;
     let show = std::io::stderr().is_terminal();
     let mut progress = |rows: u64, failed: u64| {

@@ -9,9 +9,8 @@ use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
 use crate::report::{Render, strings, to_json, tuple};
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::io::patch_file::{index_key, read_patch};
-use tribez::hazmat::join::{Join, Violation, analyse, c1_neighbour};
+use tribez::constructions::{Join, Violation, analyse_join as analyse, c1_neighbour};
+use tribez::files::{index_key, read_bezier_patch as read_patch};
 
 // Arguments of `tribez join` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -81,7 +80,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             })?;
         let b = c1_neighbour(&a, &edge, v)
             .map_err(|e| CliError::core(format!("{afile}: --make-c1 --domain {text}"), e))?;
-        return Outcome::rendered(&PatchReport::of(AnyPatch::Bezier(b)), args.out.format, true);
+        return Outcome::rendered(&PatchReport::of(b), args.out.format, true);
     }
     let bpath = args.b.as_ref().ok_or_else(|| {
         CliError::Usage("give two patches (A B), or one with --make-c1 --domain X,Y".into())
@@ -343,7 +342,7 @@ impl Render for JoinReport {
             self.a,
             self.b,
             self.degree,
-            tribez::hazmat::domain::format_points(&f.vertices),
+            tribez::format::format_points(&f.vertices),
             one(&f.a),
             one(&f.b),
             tuple(&j.mu),

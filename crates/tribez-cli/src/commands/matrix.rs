@@ -9,12 +9,12 @@ use super::construct::{barycentric_points, parse_edge};
 use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
 use crate::report::{Render, to_json};
-use tribez::hazmat::blossom::subpatch_matrix;
-use tribez::hazmat::simplex::{self, Simplex};
-use tribez::hazmat::subdivide::halve_domains;
+use tribez::constructions::halve_domains;
+use tribez::constructions::subpatch_matrix;
+use tribez::constructions::{Simplex, binomial};
 
 /// The largest matrix `tribez matrix` prints: this many rows (degree 43 on a triangle).
-pub const MAX_ROWS: usize = tribez::hazmat::blossom::MAX_MATRIX_ROWS;
+pub const MAX_ROWS: usize = tribez::limits::MAX_MATRIX_ROWS;
 
 /// Which matrix.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -35,7 +35,7 @@ pub struct Args {
     #[arg(long, value_parser = crate::cli::whole_number::<usize>(0, u64::MAX), allow_negative_numbers = true)]
     pub degree: usize,
     /// halve: the simplex dimension m (2 = triangle, the default; 1 curves, 3 tetrahedra).
-    #[arg(long, default_value_t = 2, value_parser = crate::cli::whole_number::<usize>(1, tribez::hazmat::io::patch_file::MAX_SIMPLEX_DIMENSION as u64), allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 2, value_parser = crate::cli::whole_number::<usize>(1, tribez::limits::MAX_SIMPLEX_DIMENSION as u64), allow_negative_numbers = true)]
     pub simplex: usize,
     /// halve: the edge, two corner numbers (default 1,2).
     #[arg(long, value_name = "I,J", allow_hyphen_values = true)]
@@ -103,7 +103,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let len = if n >= MAX_ROWS {
         u128::MAX
     } else {
-        simplex::binomial((n + m) as u64, m as u64)
+        binomial((n + m) as u64, m as u64)
     };
     if len > MAX_ROWS as u128 {
         return Err(CliError::check(
@@ -137,7 +137,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
 }
 
 fn key(alpha: &[u32]) -> String {
-    tribez::hazmat::io::patch_file::index_key(alpha)
+    tribez::files::index_key(alpha)
 }
 
 fn latex_number(q: &BigRational) -> String {

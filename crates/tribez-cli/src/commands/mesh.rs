@@ -10,8 +10,8 @@ use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::{OutputArgs, TextOrJson, examples};
 use crate::report::Render;
-use tribez::hazmat::float::Float;
-use tribez::hazmat::io::points::read_points;
+use tribez::files::read_points;
+use tribez::kernels::Float;
 use tribez::mesh::{Located, Mesh, MeshLines, read_mesh};
 
 // Arguments of `tribez mesh` (a plain comment: see `Command`).
@@ -179,11 +179,7 @@ fn run_patch(args: &PatchArgs) -> Result<Outcome, CliError> {
         )));
     }
     let patch = mesh.triangle_patch(args.triangle)?;
-    Outcome::rendered(
-        &PatchReport::of(patch.into_any()),
-        patch_format(&args.out)?,
-        true,
-    )
+    Outcome::rendered(&PatchReport::of(patch), patch_format(&args.out)?, true)
 }
 
 /// The format of the patch file `mesh patch` writes: with `-o`, chosen by the file's extension
@@ -323,7 +319,7 @@ pub fn run_lookup(args: &LookupArgs) -> Result<Outcome, CliError> {
 }
 
 fn decimal(q: &BigRational) -> String {
-    tribez::hazmat::number::to_decimal_string(q, 17)
+    tribez::format::to_decimal_string(q, 17)
 }
 
 impl Render for LookupReport {

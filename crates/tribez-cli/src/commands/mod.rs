@@ -38,8 +38,8 @@ use crate::cli::{LatexOutputArgs, OutputArgs, examples};
 pub use crate::error::CliError;
 pub(crate) use crate::output;
 use crate::report::{Exporter, Format, JunitExporter, Render, render};
-use tribez::hazmat::io::InputError;
-use tribez::hazmat::number::parse_rational;
+use tribez::InputError;
+use tribez::format::parse_rational;
 
 /// Exact computations on Bézier triangles (and simplices), used to certify floating-point code.
 #[derive(Debug, Parser)]
@@ -267,14 +267,14 @@ pub fn parse_list(text: &str, what: &str) -> Result<Vec<BigRational>, CliError> 
         .map_err(CliError::from)
 }
 
-pub use tribez::hazmat::domain::{check_barycentric, check_direction};
+pub use tribez::constructions::{check_barycentric, check_direction};
 
 /// The barycentric point of `--at TEXT`: checked to sum to 1 on the `m`-simplex, or with
 /// `cartesian` converted by `domain` (Cramer's rule). Errors name `--at TEXT`.
 pub fn at_point(
     text: &str,
     cartesian: bool,
-    domain: &tribez::hazmat::domain::Domain,
+    domain: &tribez::constructions::Domain,
     m: usize,
 ) -> Result<Vec<BigRational>, CliError> {
     let p = parse_list(text, "--at")?;

@@ -7,7 +7,6 @@ use super::{CliError, Outcome, OutputTarget};
 use crate::picture::patch::{Labels, MAX_SAMPLES, PlotOptions};
 use crate::picture::project::{DEFAULT_VIEW, View};
 use tribez::Patch;
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez plot` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -48,7 +47,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         Some(text) => View::parse(text).map_err(CliError::Usage)?,
         None => DEFAULT_VIEW,
     };
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let options = PlotOptions {
         view,
         samples: args.samples,

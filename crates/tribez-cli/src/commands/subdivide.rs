@@ -11,12 +11,11 @@ use num_rational::BigRational;
 use num_traits::Zero;
 use serde_json::Value as Json;
 
-use super::construct::{PiecesReport, barycentric_points, constructions, relabel};
+use super::construct::{PiecesReport, barycentric_points, constructions};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
 use crate::report::Render;
 use tribez::Split;
-use tribez::hazmat::io::patch_file::read_any_patch;
 
 // Arguments of `tribez subdivide` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -37,10 +36,10 @@ pub struct Args {
 /// Run `tribez subdivide`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let patch = tribez::Patch::from_file(&args.patch)?;
     let c = constructions(&file, "subdivide", &patch)?;
     let m = patch.simplex_dim();
-    let (mut pieces, total, note) = match &args.at {
+    let (pieces, total, note) = match &args.at {
         Some(text) => {
             let t = barycentric_points(std::slice::from_ref(text), "at", m)?.remove(0);
             let note = boundary_note(&t, text)?;
@@ -57,13 +56,11 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             (pieces, n, None)
         }
     };
-    for p in &mut pieces {
-        relabel(&mut p.patch, &format!("piece {} of {total}", p.index + 1));
-    }
+    let pieces = PiecesReport::relabelled(pieces, |i| format!("piece {} of {total}", i + 1));
     Outcome::rendered(
         &Noted {
             note,
-            inner: PiecesReport(pieces),
+            inner: pieces,
         },
         args.out.format,
         true,

@@ -6,8 +6,7 @@ use std::path::PathBuf;
 use super::construct::{PatchReport, barycentric_points, constructions, relabel};
 use super::{CliError, Outcome};
 use crate::cli::OutputArgs;
-use tribez::hazmat::error::CoreError;
-use tribez::hazmat::io::patch_file::read_any_patch;
+use tribez::CoreError;
 
 // Arguments of `tribez subpatch` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -24,7 +23,7 @@ pub struct Args {
 /// Run `tribez subpatch`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = tribez::Patch::from(read_any_patch(&args.patch)?);
+    let patch = tribez::Patch::from_file(&args.patch)?;
     let c = constructions(&file, "subpatch", &patch)?;
     let m = patch.simplex_dim();
     if args.vertices.len() != m + 1 {
@@ -44,7 +43,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         .map(|v| format!("--vertex {v}"))
         .collect::<Vec<_>>()
         .join(" ");
-    let mut sub = c.subpatch(&f).map_err(|e| CliError::core(context, e))?;
+    let mut sub = tribez::Patch::from(c.subpatch(&f).map_err(|e| CliError::core(context, e))?);
     relabel(&mut sub, "subpatch");
     Outcome::rendered(
         &PatchReport {

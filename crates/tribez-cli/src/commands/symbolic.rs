@@ -13,8 +13,7 @@ use super::{CliError, Outcome};
 use crate::cli::LatexOutputArgs;
 use crate::report::{Render, to_json};
 use tribez::Patch;
-use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::symbolic::Polynomial;
+use tribez::constructions::Polynomial;
 
 // Arguments of `tribez symbolic` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -39,7 +38,7 @@ pub struct SymbolicReport {
 
 /// Run `tribez symbolic`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let form = patch.exact().symbolic(args.cartesian);
     let report = SymbolicReport {
         file: args.patch.display().to_string(),

@@ -10,9 +10,9 @@ use crate::cli::OutputArgs;
 use crate::report::ser::OrderedMap;
 use crate::report::{Render, strings, to_json, tuple};
 use tribez::Patch;
-use tribez::hazmat::derivative::TangentFrame;
-use tribez::hazmat::io::patch_file::{index_key, read_any_patch};
-use tribez::hazmat::symbolic::cartesian_names;
+use tribez::constructions::TangentFrame;
+use tribez::constructions::cartesian_names;
+use tribez::files::index_key;
 
 // Arguments of `tribez tangent` (a plain comment: see `Command`).
 #[derive(Debug, clap::Args)]
@@ -41,7 +41,7 @@ pub struct TangentReport {
 /// Run `tribez tangent`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
-    let patch = Patch::from(read_any_patch(&args.patch)?);
+    let patch = Patch::from_file(&args.patch)?;
     let constructions = super::constructions(&patch, &file, "tangent")?;
     let at = at_point(
         &args.at,

@@ -30,10 +30,9 @@ use super::project::{Frame, View, cross, dot, normalize, sub};
 use super::svg::{Rgb, Svg};
 use crate::error::CliError;
 use tribez::Patch;
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::hazmat::number::round_f64;
-use tribez::hazmat::patch::ControlNet;
-use tribez::hazmat::simplex::multinomial;
+use tribez::constructions::ControlNet;
+use tribez::constructions::multinomial;
+use tribez::format::round_f64;
 
 /// The colour of control nets (points, lines and labels): a magenta no surface colour is near.
 pub const NET: Rgb = Rgb(220, 38, 127);
@@ -219,11 +218,7 @@ fn power_of_two_above(x: &BigRational) -> Option<BigRational> {
 impl Fast {
     /// `None` when the numbers are beyond f64 (the exact path then draws what it can).
     fn new(patch: &Patch) -> Option<Fast> {
-        let (net, weights, polygon) = match patch.as_any() {
-            AnyPatch::Bezier(p) | AnyPatch::Functional(p) => (&p.net, None, None),
-            AnyPatch::Rational(r) => (&r.patch.net, Some(&r.weights), None),
-            AnyPatch::SPatch(s) => (&s.net, None, Some(s.polygon.vertices())),
-        };
+        let (net, weights, polygon) = (patch.control_net(), patch.weights(), patch.polygon());
         let (m, n, d) = (net.m(), net.degree(), net.dim());
         let first = net.points().next()?.to_vec();
         let spread = net
@@ -286,7 +281,7 @@ impl Fast {
         let lambda: Vec<f64> = match &self.polygon {
             Some((vertices, v0)) => {
                 let p = [0, 1].map(|c| round_f64(&(&input[c] - &v0[c])));
-                let l = tribez::hazmat::spatch::wachspress_float(vertices, &p);
+                let l = tribez::kernels::wachspress_float(vertices, &p);
                 if !l.iter().all(|x| x.is_finite() && *x >= 0.0) {
                     return None;
                 }
@@ -405,25 +400,11 @@ struct Scene {
 /// The geometry of a patch of any kind, or why it cannot be drawn.
 fn geometry<'a>(patch: &'a Patch, file: &str) -> Result<Geometry<'a>, CliError> {
     let shape = patch.shape();
-    let (net, vertices, polygon) = match patch.as_any() {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
-            (&p.net, p.domain_or_reference().vertices().to_vec(), false)
-        }
-        AnyPatch::Rational(r) => (
-            &r.patch.net,
-            r.patch.domain_or_reference().vertices().to_vec(),
-            false,
-        ),
-        AnyPatch::SPatch(s) => (
-            &s.net,
-            s.polygon
-                .vertices()
-                .iter()
-                .map(|v| v.to_vec())
-                .collect::<Vec<_>>(),
-            true,
-        ),
-    };
+    let (net, vertices, polygon) = (
+        patch.control_net(),
+        patch.domain_vertices(),
+        patch.polygon().is_some(),
+    );
     let m = shape.simplex_dim;
     if !polygon && m > 2 {
         return Err(CliError::Usage(format!(
@@ -851,11 +832,10 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use tribez::hazmat::io::patch_file::read_any_patch;
 
     fn fixture(name: &str) -> Patch {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
-        Patch::from(read_any_patch(&root.join(name)).unwrap())
+        Patch::from_file(root.join(name)).unwrap()
     }
 
     /// The f64 sums of a picture against the exact values, rounded, at a grid of the domain
@@ -902,10 +882,7 @@ mod tests {
         let on_curve: Vec<Vec<BigRational>> = (0..=8).map(|i| vec![q(8 - i, 8), q(i, 8)]).collect();
         agrees_with_exact(&fixture("beyond/cubic_curve.toml"), &on_curve, 4.0);
         let pentagon = fixture("beyond/pentagon_depth2.toml");
-        let AnyPatch::SPatch(s) = pentagon.as_any() else {
-            panic!("an S-patch")
-        };
-        let v = s.polygon.vertices();
+        let v = pentagon.polygon().expect("an S-patch");
         let k = v.len();
         // convex combinations of three vertices v_0, v_i, v_{i+1} with positive weights:
         // strictly inside the polygon (i + 1 < k: the wrap-around i = k − 1 gives a point on the
@@ -927,10 +904,7 @@ mod tests {
     fn a_denominator_near_zero_is_left_to_the_exact_path() {
         // weights 1, -1 on a line: W(λ) = λ_0 − λ_1 vanishes at (1/2, 1/2)
         let text = "degree = 1\n[control_points]\n\"1,0\" = [\"0\"]\n\"0,1\" = [\"1\"]\n[weights]\n\"1,0\" = \"1\"\n\"0,1\" = \"-1\"\n";
-        let doc = tribez::hazmat::io::tree::Document::parse_toml("w.toml", text).unwrap();
-        let any =
-            tribez::hazmat::io::patch_file::any_patch_from_document(&doc, &doc.root, "").unwrap();
-        let p = Patch::from(any);
+        let p = Patch::from_toml(text).unwrap();
         let fast = Fast::new(&p).unwrap();
         let mut scratch = Vec::new();
         assert_eq!(fast.value(&[q(1, 2), q(1, 2)], &mut scratch), None);

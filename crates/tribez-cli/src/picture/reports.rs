@@ -11,8 +11,8 @@ use super::html::{self, HtmlReport, Section};
 use crate::error::CliError;
 use tribez::batch::{BatchChecker, BatchReport, FailedCoord, RowPoint, UlpHistogram};
 use tribez::claims::ClaimsReport;
-use tribez::hazmat::domain::format_tuple;
-use tribez::hazmat::number::{format_rational, round_f64, to_decimal_string};
+use tribez::format::format_tuple;
+use tribez::format::{format_rational, round_f64, to_decimal_string};
 use tribez::{CertifyReport, Patch};
 
 /// The picture outputs a run asked for.
@@ -45,14 +45,7 @@ impl Pictures {
 /// The outline of a patch's domain for an error map (its triangle, or an S-patch's polygon),
 /// or why there is no map (`flag` names the option).
 pub fn outline(patch: &Patch, flag: &str) -> Result<Vec<[f64; 2]>, CliError> {
-    use tribez::hazmat::any_patch::AnyPatch;
-    let vertices: Vec<Vec<BigRational>> = match patch.as_any() {
-        AnyPatch::Bezier(p) | AnyPatch::Functional(p) => {
-            p.domain_or_reference().vertices().to_vec()
-        }
-        AnyPatch::Rational(r) => r.patch.domain_or_reference().vertices().to_vec(),
-        AnyPatch::SPatch(s) => s.polygon.vertices().iter().map(|v| v.to_vec()).collect(),
-    };
+    let vertices: Vec<Vec<BigRational>> = patch.domain_vertices();
     if vertices.first().is_none_or(|v| v.len() != 2) {
         return Err(CliError::Usage(format!(
             "{flag}: error maps are drawn over triangles and polygons; this patch is over the {}-simplex",

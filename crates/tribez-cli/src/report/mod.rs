@@ -108,7 +108,7 @@ pub fn strings(xs: &[num_rational::BigRational]) -> Vec<String> {
 
 /// `(a, b, c)` for people.
 pub fn tuple(xs: &[num_rational::BigRational]) -> String {
-    tribez::hazmat::domain::format_tuple(xs)
+    tribez::format::format_tuple(xs)
 }
 
 /// The test cases of a JUnit report, under the suite name `suite` (`check`, `certify`).

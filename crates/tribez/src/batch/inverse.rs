@@ -668,6 +668,7 @@ pub fn parse_inverse_row(
 /// Fuzzing entry (see [`crate::fuzz`]): every row of `data` read as an inverse results file and
 /// parsed; the first byte chooses the kind (locate, ray), the format (CSV, JSON lines, JSON
 /// array) and the precision (none, f64, f32). Errors are fine; a panic or a hang is the bug.
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub(crate) fn fuzz_inverse_rows(data: &[u8]) {
     let Some((&first, rest)) = data.split_first() else {
         return;

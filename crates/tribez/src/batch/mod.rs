@@ -12,7 +12,7 @@
 //! and the error at the intended inputs (the exact text) is reported for failures and for the
 //! worst row. Without a precision numbers are exact and every row is computed exactly.
 //!
-//! Clear rows are decided by the float filter ([`crate::certify::filter`]); only undecided ones
+//! Clear rows are decided by the float filter (`crate::certify::filter`); only undecided ones
 //! fall back to exact big-integer evaluation, and the report counts them.
 //!
 //! This file drives a run (streaming chunks, judging them on all cores, assembling the report in
@@ -38,7 +38,9 @@ pub use inverse::{
 };
 pub use mesh::MeshBatchChecker;
 pub use parse::Format;
-pub(crate) use parse::{fuzz_rows, open_results};
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
+pub(crate) use parse::fuzz_rows;
+pub(crate) use parse::open_results;
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 
 use crate::certify::measures::Tolerance;

@@ -905,6 +905,7 @@ pub(super) fn texts_of(
 /// Fuzzing entry (see [`crate::fuzz`]): every row of `data` read as a results file in
 /// `format` and parsed; the first byte chooses the input width (1 to 4), the claimed dimension
 /// (1 to 3) and the precision (none, f64, f32). Errors are fine; a panic or a hang is the bug.
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub(crate) fn fuzz_rows(format: Format, data: &[u8]) {
     let Some((&first, rest)) = data.split_first() else {
         return;

@@ -5,9 +5,9 @@
 //! * exact: `P(λ) = Σ c_α B^n_α(λ)` by the exact kernel ([`crate::exact::ExactEvaluator`]);
 //!   coordinates that do not sum to 1 evaluate the homogeneous form;
 //! * float program: de Casteljau or the direct Bernstein form in `F` on the control points
-//!   rounded to `F` ([`crate::certify::run`]);
-//! * bound: `γ_K Σ|c_i| B_i(|λ|)` (docs/theory.md §14.1, [`crate::certify::bound::a_priori`]),
-//!   the condition number `Σ|c_i| B_i(|λ|)`, via [`crate::certify::Certifier`].
+//!   rounded to `F` (`crate::certify::run`);
+//! * bound: `γ_K Σ|c_i| B_i(|λ|)` (docs/theory.md §14.1, `crate::certify::bound::a_priori`),
+//!   the condition number `Σ|c_i| B_i(|λ|)`, via `crate::certify::Certifier`.
 
 use std::borrow::Cow;
 

@@ -5,7 +5,7 @@
 //! * float program: the homogeneous net rounded to `F`, de Casteljau in `F`, one division
 //!   ([`RationalPatch::evaluate_float`]); de Casteljau only;
 //! * bound: `(e_N + |q| e_D)/|D̂| + ε|ŷ|/(1−ε) + η` when certifying a run, its a-priori form for a
-//!   claimed value ([`crate::certify::bound`]), via [`RationalCertifier`].
+//!   claimed value (`crate::certify::bound`), via `RationalCertifier`.
 
 use std::borrow::Cow;
 

@@ -1,11 +1,11 @@
 //! S-patches (Loop and DeRose): a Bézier simplex of dimension `N − 1` composed with the
 //! Wachspress coordinates `λ(p)` of a convex `N`-gon; points are Cartesian `(x, y)`.
 //!
-//! * exact: `S(p) = P(λ(p))` ([`SPatch::evaluate`]); undefined outside the polygon;
+//! * exact: `S(p) = P(λ(p))` (`SPatch::evaluate`); undefined outside the polygon;
 //! * float program: float Wachspress coordinates `λ̂` on the rounded polygon, then de Casteljau
-//!   in `F` on the rounded control points ([`SPatch::evaluate_float`]);
+//!   in `F` on the rounded control points (`SPatch::evaluate_float`);
 //! * bound: the whole float path, `(γ_K + ((1+θ)^n − 1)/(1−θ)^n) Σ|P_α| B_α(|λ̂|)`
-//!   ([`crate::certify::beyond::SPatchCase::total_bound`]), via [`SPatchCertifier`]; the
+//!   (`crate::certify::beyond::SPatchCase::total_bound`), via `SPatchCertifier`; the
 //!   coordinates `λ̂` are judged against their relative bound `θ`.
 
 use num_rational::BigRational;

@@ -483,7 +483,7 @@ impl ClaimFile {
 
 /// The claim files under `dir` (recursively): `*.claims.toml` and `*.claims.json`, sorted;
 /// symbolic links to directories are not followed, each file counts once, and anything that is
-/// not a regular file is skipped ([`crate::io::walk::claim_files`] also returns notes on what
+/// not a regular file is skipped (`crate::io::walk::claim_files` also returns notes on what
 /// was skipped).
 pub fn find_claim_files(dir: &Path) -> Result<Vec<PathBuf>, InputError> {
     Ok(crate::io::walk::claim_files(dir)?.files)

@@ -20,27 +20,50 @@ pub enum CoreError {
     DegenerateDomain(String),
     /// A barycentric point whose coordinates do not sum to one.
     #[error("barycentric coordinates {coords} sum to {sum}, not 1")]
-    NotBarycentric { coords: String, sum: String },
+    NotBarycentric {
+        /// The coordinates, as text.
+        coords: String,
+        /// Their sum, as text.
+        sum: String,
+    },
     /// A point or direction with the wrong number of coordinates.
     #[error("{what} has {found} coordinates, expected {expected}")]
     WrongLength {
+        /// What has the wrong length (`"point"`, `"direction"`, …).
         what: String,
+        /// The number of coordinates it needs.
         expected: usize,
+        /// The number given.
         found: usize,
     },
     /// Wrong number of blossom arguments.
     #[error("the blossom of a degree-{degree} patch takes exactly {degree} arguments, got {found}")]
-    BlossomArity { degree: usize, found: usize },
+    BlossomArity {
+        /// The degree `n`: the number of arguments needed.
+        degree: usize,
+        /// The number given.
+        found: usize,
+    },
     /// A barycentric direction whose components do not sum to zero.
     #[error(
         "direction {coords} sums to {sum}, not 0 (a barycentric direction is a difference of two points)"
     )]
-    DirectionSum { coords: String, sum: String },
+    DirectionSum {
+        /// The components, as text.
+        coords: String,
+        /// Their sum, as text.
+        sum: String,
+    },
     /// A derivative of order above the degree.
     #[error(
         "derivative of order {order} requested, but the patch has degree {degree} (order must be at most the degree)"
     )]
-    OrderTooHigh { order: usize, degree: usize },
+    OrderTooHigh {
+        /// The order asked for.
+        order: usize,
+        /// The patch's degree.
+        degree: usize,
+    },
     /// A number that overflows the float format it is rounded to.
     #[error("{what} overflows {precision}")]
     Overflows {

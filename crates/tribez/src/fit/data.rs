@@ -107,17 +107,20 @@ pub(crate) fn parse_limited(
 
 /// The most rows the fuzz target [`fuzz_fit_data`] fits (every file is parsed, up to
 /// [`MAX_DATA_ROWS`]).
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 const FUZZ_FIT_ROWS: usize = 32;
 /// The largest numerator or denominator (in bits) of a number the fuzz target fits with.
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 const FUZZ_FIT_BITS: u64 = 512;
 
-/// The fuzz target `fit_data` ([`crate::hazmat::io::fuzz::fit_data`]): the first byte chooses
+/// The fuzz target `fit_data` (`tribez::hazmat::io::fuzz::fit_data`): the first byte chooses
 /// the degree (1 to 3); the rest is parsed as a data file (every size capped: at most
 /// [`MAX_DATA_ROWS`] rows, each row stored only after the count is checked). A small file of
 /// moderate numbers is then fitted (minimum norm) on the unit square cut along its diagonal,
 /// and the fit's residuals are checked against the fitted mesh's own lookups:
 /// `Σ (f(x_i, y_i) − v_i)²` is the residual sum of squares reported, and the largest
 /// absolute residual squared is at most that sum.
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub fn fuzz_fit_data(data: &[u8]) {
     use num_traits::{Signed, Zero};
     let Some((&first, rest)) = data.split_first() else {

@@ -43,7 +43,9 @@ use num_traits::{One, Signed, Zero};
 use serde::Serialize;
 
 pub use c1::{InteriorEdge, c1_constraints, interior_edges, mu};
-pub use data::{DataPoint, MAX_DATA_ROWS, fuzz_fit_data, parse_data, read_data};
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
+pub use data::fuzz_fit_data;
+pub use data::{DataPoint, MAX_DATA_ROWS, parse_data, read_data};
 pub use judge::{FloatFitOptions, FloatFitReport, OrdinateError, judge_float_fit};
 
 use crate::linalg::LinalgError;

@@ -60,7 +60,7 @@ pub struct NamedAt {
 /// Every variant carries data (the key, the limit, the figures found and expected); the
 /// message is written once, in `Display`. A new check of a file format or a claim operation
 /// adds a variant (here, or to [`ClaimProblem`], [`RowsProblem`] or
-/// [`patch_file::PatchFileProblem`]), never a message at the call site.
+/// `patch_file::PatchFileProblem`), never a message at the call site.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Problem {
@@ -96,7 +96,7 @@ pub enum Problem {
         /// The limit, in MiB.
         limit_mib: u64,
     },
-    /// A TOML document with more values than [`tree::MAX_TOML_VALUES`], refused before it is
+    /// A TOML document with more values than `tree::MAX_TOML_VALUES`, refused before it is
     /// parsed (by a count that takes every `,`, `=`, `[` and `.` for a value), so that the memory
     /// its tree takes is bounded. The line is where the limit is passed.
     #[error(
@@ -107,7 +107,7 @@ pub enum Problem {
         /// The limit.
         limit: usize,
     },
-    /// A JSON document with more values than [`tree::MAX_JSON_VALUES`], refused as its tree
+    /// A JSON document with more values than `tree::MAX_JSON_VALUES`, refused as its tree
     /// grows. The line is where the limit is passed.
     #[error("more than {limit} values (the limit of a JSON file)")]
     TooManyJsonValues {
@@ -229,7 +229,7 @@ pub enum Problem {
     #[error(transparent)]
     Patch(#[from] patch_file::PatchFileProblem),
     /// A check of a file format that a layer above this one reads (a mesh file: `tribez::mesh`
-    /// defines its problems), typed behind a trait object ([`FormatProblem::downcast_ref`]).
+    /// defines its problems), typed behind a trait object (`FormatProblem::downcast_ref`).
     #[error(transparent)]
     Format(FormatProblem),
     /// A claim file's or a claim operation's check.
@@ -238,7 +238,7 @@ pub enum Problem {
     /// A check of a file of result rows or points.
     #[error(transparent)]
     Rows(#[from] RowsProblem),
-    /// An inverse claim's or batch's inputs ([`InverseProblem`]).
+    /// An inverse claim's or batch's inputs (`InverseProblem`).
     #[error(transparent)]
     Inverse(#[from] InverseProblem),
     /// A path that names nothing.

@@ -518,10 +518,11 @@ fn parse_edge_key(s: &str) -> Option<(usize, usize)> {
     Some((parse_index(a)?, parse_index(b)?))
 }
 
-/// The fuzz target `mesh` ([`crate::hazmat::io::fuzz::mesh`]): the first byte chooses TOML (even)
+/// The fuzz target `mesh` (`tribez::hazmat::io::fuzz::mesh`): the first byte chooses TOML (even)
 /// or JSON (odd); a mesh read is checked, written back in both formats and read again (the same
 /// mesh), and looked up at its first vertex and the centroid of its first triangle: in a mesh
 /// that passes [`Mesh::check`], every triangle containing a point gives the same value there.
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub fn fuzz_mesh(data: &[u8]) {
     let Some((&first, rest)) = data.split_first() else {
         return;

@@ -51,8 +51,10 @@ use num_rational::BigRational;
 use num_traits::Zero;
 
 pub use error::MeshError;
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
+pub use file::fuzz_mesh;
 pub use file::{
-    MESH_KEYS, MeshFileProblem, MeshLines, ORDINATE_KEYS, fuzz_mesh, mesh_from_document, read_mesh,
+    MESH_KEYS, MeshFileProblem, MeshLines, ORDINATE_KEYS, mesh_from_document, read_mesh,
 };
 pub use float::FloatLookup;
 pub use locate::{Located, barycentric, orient};

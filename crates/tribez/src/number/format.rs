@@ -29,7 +29,7 @@ pub trait BinaryFloat:
     const NAN: Self;
     /// Zero (positive).
     const ZERO: Self;
-    /// `1e-5` and `1e16` in this format: [`crate::number::display_float`] writes
+    /// `1e-5` and `1e16` in this format: `crate::number::display_float` writes
     /// `LOW ≤ |x| < HIGH` positionally.
     const DISPLAY_LOW: Self;
     /// See [`BinaryFloat::DISPLAY_LOW`].

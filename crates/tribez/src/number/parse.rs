@@ -67,7 +67,7 @@ impl NumberError {
     /// True when the text was refused for its size only (a written exponent above
     /// [`MAX_EXPONENT`], or more than [`MAX_DIGITS`] digits): "too long to parse", not
     /// malformed. Whether such a number is simply too large (or too small) for a float format
-    /// is told by [`out_of_float_range`]: with a float precision, `1e999999` rounds to
+    /// is told by `out_of_float_range`: with a float precision, `1e999999` rounds to
     /// infinity like `1e400` does, while `0.000…1e100001` is a finite number tribez cannot
     /// read.
     pub fn is_size_limit(&self) -> bool {
@@ -211,7 +211,7 @@ fn saturating_exponent(s: &str) -> Option<i64> {
 /// a denominator, repeated signs, digit separators, written exponents with
 /// magnitude above [`MAX_EXPONENT`], and more than [`MAX_DIGITS`] digits (both checked
 /// before anything is allocated; [`NumberError::is_size_limit`] and
-/// [`out_of_float_range`] tell a number too large for the floats from a malformed one).
+/// `out_of_float_range` tell a number too large for the floats from a malformed one).
 /// Long texts are abbreviated in the errors.
 ///
 /// ```

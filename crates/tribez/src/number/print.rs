@@ -19,7 +19,7 @@ use super::round::floor_log2_mag;
 /// Not quadratic in the gcd: a `BigRational` with a positive denominator is in lowest terms
 /// (num-rational keeps that invariant, and tribez builds `new_raw` values only in lowest terms),
 /// so no gcd is taken (num-bigint's binary gcd is quadratic in the length); the digits come from
-/// [`push_decimal`].
+/// `push_decimal`.
 ///
 /// ```
 /// use tribez::hazmat::number::{format_rational, parse_rational};

@@ -4,6 +4,9 @@
 
 mod histogram;
 
+/// The error of one claimed number against its exact value, every way it is measured (the
+/// coordinates of a failed batch row carry them).
+pub use crate::certify::measures::Measures;
 pub use histogram::{ULP_BUCKETS, UlpHistogram};
 
 use serde::Serialize;

@@ -34,13 +34,13 @@ impl Polynomial {
     ///   `2 3` are errors (is `x2` meant as `x·2`, `x^2` or a variable?). `−` (U+2212) is a minus.
     /// * Variables are the given names, matched longest first (`u1` before `u`). A name must be
     ///   non-empty, start with a letter and continue with letters, digits or `_`
-    ///   ([`check_names`]); names are not case-folded.
+    ///   (`check_names`); names are not case-folded.
     ///
     /// Limits, checked BEFORE each power, product or division is computed (so hostile text
-    /// cannot run for long or allocate much): total degree at most [`MAX_DEGREE`] (also for any
+    /// cannot run for long or allocate much): total degree at most `MAX_DEGREE` (also for any
     /// intermediate product and any exponent), coefficient size (numerator plus denominator
-    /// bits) at most [`MAX_COEFFICIENT_BITS`], at most [`MAX_TERM_PRODUCTS`] term products in
-    /// one multiplication, and parentheses nested at most [`MAX_NESTING`] deep. Numbers obey the
+    /// bits) at most `MAX_COEFFICIENT_BITS`, at most `MAX_TERM_PRODUCTS` term products in
+    /// one multiplication, and parentheses nested at most `MAX_NESTING` deep. Numbers obey the
     /// limits of [`crate::number::parse_rational`].
     ///
     /// ```
@@ -58,7 +58,7 @@ impl Polynomial {
     }
 
     /// [`Polynomial::parse`] with a work limit of `limit` word operations instead of
-    /// [`MAX_WORK`] (the fuzz target reads with a smaller one, so that each input is quick).
+    /// `MAX_WORK` (the fuzz target reads with a smaller one, so that each input is quick).
     pub fn parse_with_work_limit(
         text: &str,
         names: &[&str],
