@@ -31,8 +31,8 @@
 //! the keys present. [`read_patch`] returns plain and functional patches as a [`BezierPatch`] and
 //! rejects the other kinds with a located error; [`read_any_patch`] returns every kind.
 //!
-//! Reading is [`read`] (with the located [`PatchFileProblem`]s of [`problem`]), writing (TOML and
-//! JSON in the same layout) is [`write`]; every item is re-exported here.
+//! Reading is `read.rs` (with the located [`PatchFileProblem`]s of `problem.rs`), writing (TOML and
+//! JSON in the same layout) is `write.rs`; every item is re-exported here.
 
 mod problem;
 mod read;

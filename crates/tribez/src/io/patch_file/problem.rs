@@ -1,7 +1,7 @@
 //! What is wrong in a patch file, as data.
 
 #[cfg(doc)]
-use super::MAX_DEGREE;
+use super::{MAX_CONTROL_POINTS, MAX_DEGREE};
 
 /// What is wrong in a patch file ([`crate::io::Problem::Patch`]): one variant per check, with the
 /// figures of the message as data.
