@@ -42,13 +42,13 @@
 //! use tribez::hazmat::domain::Domain;
 //! use tribez::hazmat::join::analyse;
 //! use tribez::hazmat::number::parse_rational as q;
-//! use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+//! use tribez::hazmat::patch::{BezierPatch, ControlNet};
 //! let pts = |v: &[[&str; 3]]| v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect::<Vec<Vec<_>>>();
 //! let tri = |v: [[&str; 2]; 3]| Domain::new(v.iter().map(|p| p.iter().map(|s| q(s).unwrap()).collect()).collect()).unwrap();
 //! // docs/theory.md §8: planar quadrilaterals, C0, yet not G1
-//! let p = Patch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "1"]])), net: ControlNet::from_points(2, 2,
+//! let p = BezierPatch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "1"]])), net: ControlNet::from_points(2, 2,
 //!     &pts(&[["0", "0", "0"], ["1", "0", "0"], ["2", "0", "0"], ["1/2", "1", "0"], ["3/2", "1", "1"], ["1", "2", "1"]])) };
-//! let b = Patch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "-1"]])), net: ControlNet::from_points(2, 2,
+//! let b = BezierPatch { name: None, domain: Some(tri([["0", "0"], ["1", "0"], ["0", "-1"]])), net: ControlNet::from_points(2, 2,
 //!     &pts(&[["0", "0", "0"], ["1", "0", "0"], ["2", "0", "0"], ["1/2", "-2", "0"], ["3/2", "-1", "-1"], ["1", "-2", "-1"]])) };
 //! let j = analyse(&p, &b).unwrap();
 //! assert!(j.c0 && !j.c1);
@@ -62,7 +62,7 @@ use num_traits::{One, Signed, Zero};
 use crate::casteljau;
 use crate::domain::{Domain, determinant};
 use crate::error::CoreError;
-use crate::patch::{BezierPatch as Patch, ControlNet};
+use crate::patch::{BezierPatch, ControlNet};
 use crate::simplex::Simplex;
 use crate::symbolic::Polynomial;
 #[cfg(test)]
@@ -381,7 +381,7 @@ fn cross(a: &[Q], b: &[Q]) -> Vec<Q> {
 
 /// Analyse the pair `(A, B)`: the domains must share one facet, the degrees, simplex dimensions
 /// and point dimensions must agree.
-pub fn analyse(a: &Patch, b: &Patch) -> Result<Join, CoreError> {
+pub fn analyse(a: &BezierPatch, b: &BezierPatch) -> Result<Join, CoreError> {
     let (na, nb) = (&a.net, &b.net);
     same_shape(na, nb)?;
     let (da, db) = (a.domain_or_reference(), b.domain_or_reference());
@@ -665,7 +665,11 @@ fn first_nonzero_minor3(cols: &[Vec<Q>; 3]) -> Q {
 /// `a_i a_j`), over the simplex `facet` vertices (in that order) + `new_vertex` (last), such that
 /// the pair is C1: rows 0 and 1 are forced (C0 and the μ rule); the other rows are free and are
 /// filled here with the C^n extension `c̃_α = b_A[e^α, μ^{α_last}]` (so the pair is in fact C^n).
-pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Patch, CoreError> {
+pub fn c1_neighbour(
+    a: &BezierPatch,
+    facet: &[usize],
+    new_vertex: Vec<Q>,
+) -> Result<BezierPatch, CoreError> {
     let net = &a.net;
     let m = net.m();
     let da = a.domain_or_reference();
@@ -705,7 +709,7 @@ pub fn c1_neighbour(a: &Patch, facet: &[usize], new_vertex: Vec<Q>) -> Result<Pa
         .iter()
         .map(|k| format!("a{}", k + 1))
         .collect::<String>();
-    Ok(Patch {
+    Ok(BezierPatch {
         name: Some(format!(
             "C1 neighbour of {} across {what}: rows 0 and 1 (last index 0, 1) forced by C0 and the mu rule; rows >= 2 are free, filled with the C^n extension (blossom)",
             a.name.clone().unwrap_or_else(|| "A".into())
@@ -726,9 +730,9 @@ mod tests {
         v.iter().map(|s| parse_rational(s).unwrap()).collect()
     }
 
-    fn patch(n: usize, pts: &[&[&str]], domain: &[&[&str]]) -> Patch {
+    fn patch(n: usize, pts: &[&[&str]], domain: &[&[&str]]) -> BezierPatch {
         let points: Vec<Vec<Q>> = pts.iter().map(|p| r(p)).collect();
-        Patch {
+        BezierPatch {
             name: None,
             net: ControlNet::from_points(2, n, &points),
             domain: Some(Domain::new(domain.iter().map(|v| r(v)).collect()).unwrap()),
@@ -810,7 +814,7 @@ mod tests {
                 _ => r(&["5", "-7", "1"]),
             });
         }
-        let b = Patch {
+        let b = BezierPatch {
             name: None,
             net: ControlNet::from_points(2, 3, &pts),
             domain: Some(
@@ -896,7 +900,7 @@ mod tests {
         ) {
             let len = crate::simplex::count(2, n) * 3;
             let net = ControlNet::new(Simplex::new(2, n), 3, coords[..len].to_vec());
-            let a = Patch { name: None, net, domain: Some(Domain::new(vec![r(&["0", "0"]), r(&["4", "1"]), r(&["1", "3"])]).unwrap()) };
+            let a = BezierPatch { name: None, net, domain: Some(Domain::new(vec![r(&["0", "0"]), r(&["4", "1"]), r(&["1", "3"])]).unwrap()) };
             // a new vertex below the edge a1a2 (the line y = x/4)
             let v = vec![Q::from_integer(x.into()), Q::from_integer((-y).into())];
             let b = c1_neighbour(&a, &[0, 1], v).unwrap();
@@ -916,7 +920,7 @@ mod tests {
             let mut pts: Vec<Vec<Q>> = b.net.points().map(<[Q]>::to_vec).collect();
             let k = b.net.simplex().iter().position(|beta| beta[2] as usize == rho).unwrap();
             pts[k][0] += Q::from_integer(delta.into());
-            let b2 = Patch { net: ControlNet::from_points(2, n, &pts), ..b };
+            let b2 = BezierPatch { net: ControlNet::from_points(2, n, &pts), ..b };
             let j2 = analyse(&a, &b2).unwrap();
             prop_assert_eq!(j2.max_smoothness, rho as i64 - 1);
             // independent check: the difference of the Cartesian forms has transversal derivatives of
@@ -948,7 +952,7 @@ mod tests {
         let pts: Vec<Vec<Q>> = (0..crate::simplex::count(3, 2))
             .map(|k| vec![Q::from_integer((k as i64 * 7 % 5 - 2).into())])
             .collect();
-        let tet = Patch {
+        let tet = BezierPatch {
             name: None,
             net: ControlNet::from_points(3, 2, &pts),
             domain: Some(
@@ -970,7 +974,7 @@ mod tests {
         p2[last][0] += Q::one();
         let jt2 = analyse(
             &tet,
-            &Patch {
+            &BezierPatch {
                 net: ControlNet::from_points(3, 2, &p2),
                 ..nb
             },

@@ -21,7 +21,7 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 
 use super::bivariate::{BiPoly, add, horner, mul, resultant, subresultant1};
-use super::number::simplest_between;
+use super::real::simplest_between;
 use super::system::{Region, Solution, Solved, enclose_ratio, solve};
 use super::{AlgebraicError, IntPoly, MAX_CURVE_DEGREE, RealAlgebraic, check_input};
 use crate::patch_type::Patch;

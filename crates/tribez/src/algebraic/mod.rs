@@ -20,8 +20,8 @@ mod clip;
 mod curves;
 mod interval;
 mod isolate;
-mod number;
 mod poly;
+mod real;
 mod surfaces;
 mod system;
 
@@ -35,8 +35,8 @@ pub use curves::{
     point_text, work_estimate,
 };
 pub use isolate::{Cell, isolate};
-pub use number::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use poly::IntPoly;
+pub use real::{RealAlgebraic, Root, poly_text, simplest_between};
 pub use surfaces::{
     Degenerate, Hit, Located, Locations, RayHits, check_locate_patch, check_ray_patch, locate,
     ray_hits,

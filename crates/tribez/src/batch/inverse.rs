@@ -33,7 +33,7 @@ use num_traits::Zero;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::parse::{Chunk, Field, Format, Num, RowReader, open_results, parse_num};
+use super::parse::{Chunk, Field, Format, Num, RowReader, each_chunk, open_results, parse_num};
 use super::parse::{split_csv, split_json_row};
 use super::{BatchError, MAX_LISTED};
 use crate::algebraic::{check_locate_patch, check_ray_patch};
@@ -43,7 +43,7 @@ use crate::claims::ops::inverse::{
 };
 use crate::claims::ops::seen;
 use crate::float::Precision;
-use crate::io::{InputError, InverseProblem, RowsProblem};
+use crate::io::{InputError, InverseProblem};
 use crate::patch_type::Patch;
 
 type Q = BigRational;
@@ -383,12 +383,8 @@ impl InverseBatchChecker {
             failures: Vec::new(),
             failures_not_listed: 0,
         };
-        let mut chunk = Chunk::default();
-        loop {
-            let eof = rows.read(&mut chunk)?;
+        each_chunk(&mut rows, file, progress, |chunk| {
             let outcomes: Vec<Result<Option<RowOutcome>, InputError>> = chunk
-                .rows()
-                .collect::<Vec<_>>()
                 .par_iter()
                 .map(|&(line, col, text)| {
                     let Some(row) =
@@ -426,14 +422,8 @@ impl InverseBatchChecker {
                     }
                 }
             }
-            progress(report.checked, report.failed);
-            if eof {
-                break;
-            }
-        }
-        if report.checked == 0 {
-            return Err(InputError::file(file, RowsProblem::NoResultRows).into());
-        }
+            Ok((report.checked, report.failed))
+        })?;
         Ok(report)
     }
 

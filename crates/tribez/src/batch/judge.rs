@@ -11,7 +11,7 @@ use crate::certify::filter::{Decision, Enclosure, Filter, RowJudgement, Scratch,
 use crate::certify::measures::{Leaf, Measures, Tolerance, as_float};
 use crate::exact::{Algorithm, ExactEvaluator};
 use crate::float::Precision;
-use crate::patch::{BezierPatch as Patch, ControlNet};
+use crate::patch::{BezierPatch, ControlNet};
 
 /// How one row came out.
 pub(super) struct RowOutcome {
@@ -33,7 +33,7 @@ pub(super) struct RowOutcome {
 
 /// Everything prepared once per patch.
 pub(super) struct Prepared {
-    pub(super) patch: Patch,
+    pub(super) patch: BezierPatch,
     pub(super) precision: Option<Precision>,
     pub(super) tolerance: Tolerance,
     pub(super) algorithm: Algorithm,
@@ -48,7 +48,7 @@ pub(super) struct Prepared {
 }
 
 impl Prepared {
-    pub(super) fn new(options: &BatchOptions, patch: Patch) -> Result<Self, BatchError> {
+    pub(super) fn new(options: &BatchOptions, patch: BezierPatch) -> Result<Self, BatchError> {
         let BatchOptions {
             tolerance,
             precision,

@@ -364,6 +364,31 @@ pub(super) struct RowReader<R> {
     bulk: bool,
 }
 
+/// Read `reader` chunk by chunk (a chunk judged before the next is read), hand each chunk's rows
+/// `(line, column, text)` to `judge`, which folds them into its report and answers the report's
+/// `(checked, failed)`, and call `progress` with those after each chunk. No row at all is an error
+/// naming `file`. (What the sequential results checkers share: inverse and routed batches.)
+pub(super) fn each_chunk<R: BufRead>(
+    reader: &mut RowReader<R>,
+    file: &str,
+    progress: &mut dyn FnMut(u64, u64),
+    mut judge: impl FnMut(&[(usize, usize, &str)]) -> Result<(u64, u64), super::BatchError>,
+) -> Result<(), super::BatchError> {
+    let mut chunk = Chunk::default();
+    loop {
+        let eof = reader.read(&mut chunk)?;
+        let rows: Vec<(usize, usize, &str)> = chunk.rows().collect();
+        let (checked, failed) = judge(&rows)?;
+        progress(checked, failed);
+        if eof {
+            if checked == 0 {
+                return Err(InputError::file(file, crate::io::RowsProblem::NoResultRows).into());
+            }
+            return Ok(());
+        }
+    }
+}
+
 impl<R: BufRead> RowReader<R> {
     pub(super) fn new(reader: R, format: Format, file: &str) -> Self {
         RowReader {

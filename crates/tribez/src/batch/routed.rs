@@ -9,7 +9,7 @@ use std::io::{BufReader, Read};
 use num_rational::BigRational;
 use rayon::prelude::*;
 
-use super::parse::{Chunk, Num, RowReader, parse_row};
+use super::parse::{Num, RowReader, each_chunk, parse_row};
 use super::{Accumulator, BatchChecker, BatchError, BatchReport, FailedRow, Format};
 use crate::float::Precision;
 use crate::io::InputError;
@@ -70,10 +70,7 @@ pub fn check_routed<R: Read + Send>(
     let mut reader = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file)
         .expect_columns(width + dim);
     let mut total = template.clone();
-    let mut chunk = Chunk::default();
-    loop {
-        let eof = reader.read(&mut chunk)?;
-        let rows: Vec<(usize, usize, &str)> = chunk.rows().collect();
+    each_chunk(&mut reader, file, progress, |rows| {
         let routes: Vec<Option<Route>> = rows
             .par_iter()
             .map(|&(no, col, text)| -> Result<Option<Route>, InputError> {
@@ -98,7 +95,7 @@ pub fn check_routed<R: Read + Send>(
         let mut groups: std::collections::BTreeMap<usize, Vec<(usize, usize, &str)>> =
             Default::default();
         let mut failed = template.clone();
-        for (r, row) in routes.into_iter().zip(&rows) {
+        for (r, row) in routes.into_iter().zip(rows) {
             match r {
                 None => {}
                 Some(Route::To(k)) => groups.entry(k).or_default().push(*row),
@@ -121,13 +118,7 @@ pub fn check_routed<R: Read + Send>(
             let part = checker(k)?.judge_texts(&rows, format, file, &template.patch)?;
             total.merge(&part)?;
         }
-        progress(total.checked, total.failed);
-        if eof {
-            break;
-        }
-    }
-    if total.checked == 0 {
-        return Err(InputError::file(file, crate::io::RowsProblem::NoResultRows).into());
-    }
+        Ok((total.checked, total.failed))
+    })?;
     Ok(total)
 }

@@ -11,7 +11,7 @@ use super::{OpName, Value, keyed, net_value, seen};
 use crate::any_patch::AnyPatch;
 use crate::io::patch_file::{MAX_CONTROL_POINTS, MAX_DEGREE, MAX_SIMPLEX_DIMENSION};
 use crate::io::{ClaimProblem, InputError};
-use crate::patch::BezierPatch as Patch;
+use crate::patch::BezierPatch;
 use crate::subdivide::HalvingOrder;
 
 type Q = BigRational;
@@ -73,14 +73,14 @@ pub enum Construction<'a> {
     /// `subdivide`.
     Subdivide {
         /// The patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
         /// At a point, or at the midpoints.
         mode: SubdivideMode,
     },
     /// `halve` at the midpoint of `edge` (0-based).
     Halve {
         /// The patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
         /// The edge, 0-based.
         edge: (usize, usize),
         /// The method.
@@ -89,7 +89,7 @@ pub enum Construction<'a> {
     /// `elevate` by `by >= 1`, the degree reached at most [`MAX_DEGREE`].
     Elevate {
         /// The patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
         /// How many degrees.
         by: usize,
     },
@@ -103,7 +103,7 @@ pub enum Construction<'a> {
     /// `edge_curve` from corner `from` to corner `to` (0-based).
     EdgeCurve {
         /// The patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
         /// Corner, 0-based.
         from: usize,
         /// Corner, 0-based.
@@ -350,7 +350,7 @@ impl<'a> Construction<'a> {
         inputs: &Inputs<'_>,
         p: crate::float::Precision,
     ) -> Result<Self, InputError> {
-        let patch = |x: &Patch| seen::patch(inputs, x, p).map(Cow::Owned);
+        let patch = |x: &BezierPatch| seen::patch(inputs, x, p).map(Cow::Owned);
         Ok(match self {
             Construction::Blossom { patch: x, args } => Construction::Blossom {
                 patch: Cow::Owned(seen::any_patch(inputs, x, p)?),

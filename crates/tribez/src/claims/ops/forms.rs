@@ -12,7 +12,7 @@ use crate::any_patch::AnyPatch;
 use crate::domain::Domain;
 use crate::io::patch_file::{MAX_DEGREE, MAX_SIMPLEX_DIMENSION, index_key};
 use crate::io::{ClaimProblem, InputError, NeededKind};
-use crate::patch::BezierPatch as Patch;
+use crate::patch::BezierPatch;
 use crate::rational::homogenised_residual;
 use crate::simplex::{Simplex, multinomial};
 use crate::symbolic::{
@@ -44,7 +44,7 @@ pub enum Form<'a> {
     /// `symbolic`: the patch as polynomials.
     Symbolic {
         /// The patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
         /// In the domain's Cartesian coordinates (else barycentric).
         cartesian: bool,
         /// Variable names.
@@ -66,7 +66,7 @@ pub enum Form<'a> {
     /// `abscissae` of a patch's domain and degree.
     Abscissae {
         /// The patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
     },
     /// `ordinates` of a polynomial over a domain.
     Ordinates {
@@ -80,7 +80,7 @@ pub enum Form<'a> {
     /// `graph` of a functional patch.
     Graph {
         /// The functional patch.
-        patch: Cow<'a, Patch>,
+        patch: Cow<'a, BezierPatch>,
     },
 }
 

@@ -10,7 +10,7 @@ use crate::any_patch::AnyPatch;
 use crate::capability::InputSpace;
 use crate::io::tree::{Document, Node, Value as NodeValue};
 use crate::io::{ClaimProblem, InputError, Problem};
-use crate::patch::BezierPatch as Patch;
+use crate::patch::BezierPatch;
 
 type Q = BigRational;
 
@@ -225,7 +225,7 @@ impl<'a> Inputs<'a> {
     }
 
     /// The claim's patch, which must be polynomial (Bézier or functional).
-    pub fn patch(&self) -> Result<Cow<'a, Patch>, InputError> {
+    pub fn patch(&self) -> Result<Cow<'a, BezierPatch>, InputError> {
         self.file.polynomial_for(self.claim).map(Cow::Borrowed)
     }
 
@@ -255,7 +255,7 @@ impl<'a> Inputs<'a> {
 
     /// A barycentric point from `at` (checked to sum to one, except for float claims: what a
     /// float program uses need not), or a Cartesian one from `cartesian`.
-    pub fn point(&self, patch: &Patch) -> Result<Point, InputError> {
+    pub fn point(&self, patch: &BezierPatch) -> Result<Point, InputError> {
         let domain = patch.domain_or_reference();
         self.point_in(patch.net.m(), &|x: &[Q]| domain.barycentric(x))
     }

@@ -7,15 +7,15 @@ use super::inputs::{Inputs, select_part};
 use super::{Value, seen};
 use crate::io::patch_file::index_key;
 use crate::io::{ClaimProblem, InputError};
-use crate::patch::BezierPatch as Patch;
+use crate::patch::BezierPatch;
 
 /// `join` with its parsed inputs.
 #[derive(Clone, Debug)]
 pub struct JoinOp<'a> {
     /// The first patch (A) and its name under `[patches]`.
-    pub a: Cow<'a, Patch>,
+    pub a: Cow<'a, BezierPatch>,
     /// The second patch (B).
-    pub b: Cow<'a, Patch>,
+    pub b: Cow<'a, BezierPatch>,
     /// The part of the analysis claimed, if one.
     pub part: Option<String>,
 }
@@ -35,7 +35,7 @@ impl<'a> JoinOp<'a> {
         if names.len() != 2 {
             return Err(inputs.error("patches", ClaimProblem::JoinCount { named: names.len() }));
         }
-        let find = |name: &str| -> Result<&'a Patch, InputError> {
+        let find = |name: &str| -> Result<&'a BezierPatch, InputError> {
             let any = inputs
                 .file
                 .patches

@@ -11,7 +11,7 @@ use crate::domain::Domain;
 use crate::error::CoreError;
 use crate::float::Precision;
 use crate::io::{ClaimProblem, InputError, Problem};
-use crate::patch::BezierPatch as Patch;
+use crate::patch::BezierPatch;
 use crate::rational::RationalPatch;
 use crate::spatch::SPatch;
 
@@ -153,11 +153,15 @@ pub fn domain(
 }
 
 /// A polynomial patch with its control points rounded (its domain stays exact).
-pub fn patch(inputs: &dyn Blame, patch: &Patch, p: Precision) -> Result<Patch, InputError> {
+pub fn patch(
+    inputs: &dyn Blame,
+    patch: &BezierPatch,
+    p: Precision,
+) -> Result<BezierPatch, InputError> {
     if patch.net.coords().iter().any(|q| round(q, p).is_none()) {
         return Err(inputs.blame("patch", overflows("a control point", p)));
     }
-    Ok(Patch {
+    Ok(BezierPatch {
         net: patch.net.map(|q| round(q, p).unwrap_or_default()),
         ..patch.clone()
     })
