@@ -406,6 +406,26 @@ pub(super) struct RowScratch {
 }
 
 impl RowScratch {
+    /// Load an in-memory row's numbers as the code saw them (each rounded to `precision`: an
+    /// `f32` batch takes the nearest `f32`, as [`super::memory_num`] does); false if one of them
+    /// is not finite there (the row is then judged from its [`Num`]s).
+    pub(super) fn load_floats(
+        &mut self,
+        inputs: &[f64],
+        claimed: &[f64],
+        precision: Option<Precision>,
+    ) -> bool {
+        let seen = |x: f64| match precision {
+            Some(Precision::F32) => f64::from(x as f32),
+            _ => x,
+        };
+        self.lambda.clear();
+        self.lambda.extend(inputs.iter().map(|&x| seen(x)));
+        self.ys.clear();
+        self.ys.extend(claimed.iter().map(|&x| seen(x)));
+        self.lambda.iter().chain(&self.ys).all(|x| x.is_finite())
+    }
+
     /// Load a row's numbers as floats (NaN for a number that is not finite).
     fn load(&mut self, inputs: &[Num], claimed: &[Num]) {
         let float = |x: &Num| match x {

@@ -57,7 +57,7 @@ pub const CHUNK: usize = 1 << 16;
 /// slab takes under [`STOP_SLAB_TIME`] (halving when one takes over four times that), so that
 /// the stop test is asked every fraction of a second even where every row falls back to exact
 /// arithmetic at a high degree. Slabs change when the stop test is asked, never a verdict.
-pub const STOP_SLAB: usize = 1 << 12;
+pub const STOP_SLAB: usize = 1 << 16;
 /// The fewest rows of a slab ([`STOP_SLAB`]).
 pub const STOP_SLAB_MIN: usize = 16;
 /// The time one slab aims at ([`STOP_SLAB`]).
@@ -402,6 +402,18 @@ struct Judged {
 
 /// Rows judged together on one thread (a task of a chunk's parallel pass).
 const SLAB: usize = 4096;
+
+/// In-memory rows judged together on one thread ([`Accumulator::judge_memory`]): small enough
+/// that a slab between two stop tests ([`STOP_SLAB`]) splits over every core.
+const MEMORY_SLAB: usize = 1024;
+
+/// Rows held in memory ([`BatchChecker::check_rows_until`]): row-major inputs and claimed
+/// values, row `i` numbered `first_row + i`.
+struct MemoryRows<'a> {
+    points: &'a [f64],
+    values: &'a [f64],
+    first_row: usize,
+}
 
 /// The counts of a report, summed over rows (any order).
 #[derive(Default)]
@@ -765,16 +777,91 @@ impl<'p> Accumulator<'p> {
         Ok(())
     }
 
-    /// Count a judged row (in input order).
-    fn add(&mut self, judged: Judged, source: &Source<'_>) {
-        let Judged { outcome, detail } = judged;
-        let mut tally = Tally::default();
-        tally.count(&outcome);
-        tally.add_to(&mut self.report);
-        if let (Some(rows), Some(d)) = (&mut self.report.rows, detail) {
-            rows.push(d);
+    /// Judge the in-memory rows `start..start + out.len()` in parallel, in slabs of
+    /// [`MEMORY_SLAB`] rows, each slab on one thread, writing each row's verdict to `out`.
+    /// [`Accumulator::merge_memory`] then adds the slabs to the report. A row whose numbers are
+    /// finite floats of the precision and that the float filter decides is judged from them
+    /// alone, without allocating; its numbers ([`Num`]) are made only if [`Sieve`] keeps it for
+    /// the report. Any other row is judged as [`Accumulator::judge`] judges it.
+    fn judge_memory(
+        &self,
+        rows: &MemoryRows<'_>,
+        start: usize,
+        out: &mut [RowVerdict],
+    ) -> Vec<Slab> {
+        let p = self.p;
+        let (width, dim) = (p.width(), p.patch.net.dim());
+        let fast = p.filter.is_some() && !p.row_detail;
+        let nums = |xs: &[f64]| -> Vec<Num> {
+            xs.iter().map(|&x| memory_num(x, p.precision)).collect()
+        };
+        out.par_chunks_mut(MEMORY_SLAB)
+            .enumerate()
+            .map_init(RowScratch::default, |scratch, (s, out)| {
+                let mut slab = Slab::default();
+                let mut sieve = Sieve {
+                    floor: self.floor,
+                    failures: 0,
+                };
+                for (k, verdict) in out.iter_mut().enumerate() {
+                    let i = start + s * MEMORY_SLAB + k;
+                    let row = rows.first_row + i;
+                    let xs = &rows.points[i * width..(i + 1) * width];
+                    let ys = &rows.values[i * dim..(i + 1) * dim];
+                    let filtered = if fast && scratch.load_floats(xs, ys, p.precision) {
+                        p.filtered(row, scratch)
+                    } else {
+                        None
+                    };
+                    let Judged {
+                        mut outcome,
+                        detail,
+                    } = match filtered {
+                        Some(outcome) => Judged {
+                            outcome,
+                            detail: None,
+                        },
+                        None => self.judge(row, nums(xs), nums(ys), &Source::Memory, scratch),
+                    };
+                    slab.tally.count(&outcome);
+                    slab.details.extend(detail);
+                    *verdict = RowVerdict {
+                        row,
+                        pass: outcome.pass,
+                        fell_back: outcome.fell_back,
+                        ulps: outcome.ulps,
+                    };
+                    if sieve.keep(&outcome) {
+                        if outcome.inputs.is_empty() {
+                            // a row judged from its floats: its numbers in full
+                            outcome.inputs = nums(xs);
+                            outcome.claimed = nums(ys);
+                        }
+                        slab.kept.push((
+                            k,
+                            Judged {
+                                outcome,
+                                detail: None,
+                            },
+                        ));
+                    }
+                }
+                slab
+            })
+            .collect()
+    }
+
+    /// Add slabs judged by [`Accumulator::judge_memory`] to the report, in row order.
+    fn merge_memory(&mut self, slabs: Vec<Slab>) {
+        for slab in slabs {
+            slab.tally.add_to(&mut self.report);
+            if let Some(rows) = &mut self.report.rows {
+                rows.extend(slab.details);
+            }
+            for (_, judged) in slab.kept {
+                self.note(judged.outcome, &Source::Memory);
+            }
         }
-        self.note(outcome, source);
     }
 
     /// Note a judged row (in input order; counted apart) for the report's listed failures and
@@ -948,7 +1035,20 @@ impl BatchChecker {
             return Err(BatchError::RowIndexOverflow { first_row, rows: n });
         }
         let mut acc = Accumulator::new(p, file, patch_name, None);
-        let mut verdicts = Vec::with_capacity(n);
+        let mut verdicts = vec![
+            RowVerdict {
+                row: 0,
+                pass: false,
+                fell_back: false,
+                ulps: f64::NAN,
+            };
+            n
+        ];
+        let rows = MemoryRows {
+            points,
+            values,
+            first_row,
+        };
         let (mut start, mut slab) = (0, STOP_SLAB_MIN);
         while start < n {
             if let Some(s) = stop() {
@@ -956,30 +1056,8 @@ impl BatchChecker {
             }
             let end = (start + slab).min(n);
             let began = std::time::Instant::now();
-            let judged: Vec<Judged> = (start..end)
-                .into_par_iter()
-                .map_init(RowScratch::default, |scratch, i| {
-                    let inputs = points[i * width..(i + 1) * width]
-                        .iter()
-                        .map(|&x| memory_num(x, p.precision))
-                        .collect();
-                    let claimed = values[i * dim..(i + 1) * dim]
-                        .iter()
-                        .map(|&x| memory_num(x, p.precision))
-                        .collect();
-                    acc.judge(first_row + i, inputs, claimed, &Source::Memory, scratch)
-                })
-                .collect();
-            for j in judged {
-                let o = &j.outcome;
-                verdicts.push(RowVerdict {
-                    row: o.line,
-                    pass: o.pass,
-                    fell_back: o.fell_back,
-                    ulps: o.ulps,
-                });
-                acc.add(j, &Source::Memory);
-            }
+            let slabs = acc.judge_memory(&rows, start, &mut verdicts[start..end]);
+            acc.merge_memory(slabs);
             let took = began.elapsed();
             if took < STOP_SLAB_TIME {
                 slab = (slab * 2).min(STOP_SLAB);
