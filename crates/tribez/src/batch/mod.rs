@@ -403,8 +403,8 @@ struct Judged {
 /// Rows judged together on one thread (a task of a chunk's parallel pass).
 const SLAB: usize = 4096;
 
-/// In-memory rows judged together on one thread ([`Accumulator::judge_memory`]): small enough
-/// that a slab between two stop tests ([`STOP_SLAB`]) splits over every core.
+/// The most in-memory rows judged together on one thread ([`Accumulator::judge_memory`]): small
+/// enough that a slab between two stop tests ([`STOP_SLAB`]) splits over every core.
 const MEMORY_SLAB: usize = 1024;
 
 /// Rows held in memory ([`BatchChecker::check_rows_until`]): row-major inputs and claimed
@@ -777,8 +777,8 @@ impl<'p> Accumulator<'p> {
         Ok(())
     }
 
-    /// Judge the in-memory rows `start..start + out.len()` in parallel, in slabs of
-    /// [`MEMORY_SLAB`] rows, each slab on one thread, writing each row's verdict to `out`.
+    /// Judge the in-memory rows `start..start + out.len()` in parallel, in pieces of at most
+    /// [`MEMORY_SLAB`] rows, each piece on one thread, writing each row's verdict to `out`.
     /// [`Accumulator::merge_memory`] then adds the slabs to the report. A row whose numbers are
     /// finite floats of the precision and that the float filter decides is judged from them
     /// alone, without allocating; its numbers ([`Num`]) are made only if [`Sieve`] keeps it for
@@ -795,7 +795,12 @@ impl<'p> Accumulator<'p> {
         let nums = |xs: &[f64]| -> Vec<Num> {
             xs.iter().map(|&x| memory_num(x, p.precision)).collect()
         };
-        out.par_chunks_mut(MEMORY_SLAB)
+        // a few pieces per thread however few the rows (a slab of slow rows is small)
+        let piece = out
+            .len()
+            .div_ceil(4 * rayon::current_num_threads())
+            .clamp(1, MEMORY_SLAB);
+        out.par_chunks_mut(piece)
             .enumerate()
             .map_init(RowScratch::default, |scratch, (s, out)| {
                 let mut slab = Slab::default();
@@ -804,7 +809,7 @@ impl<'p> Accumulator<'p> {
                     failures: 0,
                 };
                 for (k, verdict) in out.iter_mut().enumerate() {
-                    let i = start + s * MEMORY_SLAB + k;
+                    let i = start + s * piece + k;
                     let row = rows.first_row + i;
                     let xs = &rows.points[i * width..(i + 1) * width];
                     let ys = &rows.values[i * dim..(i + 1) * dim];
