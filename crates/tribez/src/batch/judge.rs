@@ -377,16 +377,13 @@ impl Prepared {
         claimed
             .iter()
             .zip(&exact)
-            .map(|(&y, q)| match crate::number::exact_f64(y) {
-                None => f64::INFINITY,
-                Some(yq) if &yq == q => 0.0,
-                Some(yq) => {
-                    let u = match self.precision {
-                        Some(Precision::F32) => crate::number::ulps_error_f32(&yq, q),
-                        _ => crate::number::ulps_error_f64(&yq, q),
-                    };
-                    crate::number::round_up_f64(&u)
-                }
+            .map(|(&y, q)| {
+                // round_up_f64 of ulps_error_f32/f64 of the exact y, without a gcd
+                let u = match self.precision {
+                    Some(Precision::F32) => crate::number::ulps_error_up::<f32>(y, q),
+                    _ => crate::number::ulps_error_up::<f64>(y, q),
+                };
+                u.unwrap_or(f64::INFINITY)
             })
             .fold(0.0, f64::max)
     }
