@@ -792,9 +792,8 @@ impl<'p> Accumulator<'p> {
         let p = self.p;
         let (width, dim) = (p.width(), p.patch.net.dim());
         let fast = p.filter.is_some() && !p.row_detail;
-        let nums = |xs: &[f64]| -> Vec<Num> {
-            xs.iter().map(|&x| memory_num(x, p.precision)).collect()
-        };
+        let nums =
+            |xs: &[f64]| -> Vec<Num> { xs.iter().map(|&x| memory_num(x, p.precision)).collect() };
         // a few pieces per thread however few the rows (a slab of slow rows is small)
         let piece = out
             .len()
