@@ -110,7 +110,11 @@ def inverse(args) -> None:
     ]
     with tempfile.TemporaryDirectory() as d:
         for name, flag, patch_file, call, rows_ in cases:
-            report = call()
+            try:
+                report = call()
+            except tribez.InputError as e:  # a query the exact engine refuses (its caps)
+                print(f"tribez.{name} ({n} rows): refused: {e}")
+                continue
             t_py = best(call, args.repeat)
             csv = pathlib.Path(d) / f"{name}.csv"
             write_rows(csv, rows_)
