@@ -986,7 +986,7 @@ fn any_finite_f64() -> impl Strategy<Value = f64> {
     prop_oneof![
         any::<f64>().prop_filter("finite", |x| x.is_finite()),
         (-1e3f64..1e3),
-        (0u64..1 << 20).prop_map(|k| f64::from_bits(k)), // subnormals near 0
+        (0u64..1 << 20).prop_map(f64::from_bits), // subnormals near 0
         Just(0.0),
         Just(-0.0),
     ]
