@@ -3,12 +3,20 @@
 //! Generates `$OUT_DIR/fixtures.rs`: `FIXTURES: &[(&str, &[u8])]`, each file's path relative to
 //! `fixtures/` (with `/` separators) and its bytes (`include_bytes!`). The derivation scripts
 //! (`*.py`) and hidden files are left out.
+//!
+//! `crates/tribez-cli/fixtures` is a symbolic link to the repository's `fixtures/`, so that
+//! `cargo package` (which follows it) puts the fixtures in the crate, and a `cargo install
+//! tribez-cli` from the registry embeds them too; where the link is not one (a checkout without
+//! symbolic links), the repository's directory is read directly.
 
 use std::path::{Path, PathBuf};
 
 fn main() {
     let manifest = PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").expect("set by cargo"));
-    let root = manifest.join("../../fixtures");
+    let root = [manifest.join("fixtures"), manifest.join("../../fixtures")]
+        .into_iter()
+        .find(|d| d.is_dir())
+        .unwrap_or_else(|| manifest.join("fixtures"));
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed={}", root.display());
     let mut files = Vec::new();

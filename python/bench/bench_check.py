@@ -1,7 +1,9 @@
 """Benchmark: judging 1,000,000 f64 rows of a degree-3 patch from numpy arrays (tribez.check)
-against the command line's `tribez check --results` on the same rows (a CSV this script writes).
+against the command line's `tribez check --results` on the same rows (a CSV this script writes);
+then, on fewer rows, tribez.check_locate and tribez.check_ray against `--locate-results` and
+`--ray-results`.
 
-    python python/bench/bench_check.py [--rows N] [--cli PATH] [--repeat K]
+    python python/bench/bench_check.py [--rows N] [--inverse-rows M] [--cli PATH] [--repeat K]
 
 Needs the package installed in release mode (`pip install ./python`, which maturin builds with
 optimisations) and a release build of the command line (`cargo build --release -p tribez-cli`;
@@ -9,6 +11,14 @@ default path target/release/tribez). The rows: random barycentric points (u, v i
 w = 1 - u - v in f64, some outside the triangle), values from the patch's own f64 de Casteljau
 (`Patch.evaluate_float`), printed in the CSV with Python's shortest round-trip repr, which the
 CLI reads back to the same doubles (--precision f64). Both sides judge at cond=9.
+
+The inverse batches (M rows, default 1,000; 0 skips them): locate on
+fixtures/inverse/peer/triangle.toml (a planar cubic) at the points P(1 - s - t, s, t) of random
+(s, t) in the triangle, claiming (s, t); rays straight down onto fixtures/inverse/cubic_surface.toml
+from 1 above P(1 - s - t, s, t), claiming the hit (1, s, t); both at tolerance abs=1e-9. Their
+rows pass to Python as numbers and reach the library as text either way, and each row costs
+exact algebraic work (milliseconds), so the ratio there is about 1: the figure shows that the
+Python call adds nothing to the engine's time.
 
 Prints the best of K wall-clock times of each side and their ratio (Python / CLI), the same
 ratio of CPU times (user + system over all threads: steadier on a machine shared with other
@@ -36,6 +46,8 @@ import tribez
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PATCH = ROOT / "fixtures" / "peers" / "peer_cubic.toml"
+LOCATE_PATCH = ROOT / "fixtures" / "inverse" / "peer" / "triangle.toml"
+RAY_PATCH = ROOT / "fixtures" / "inverse" / "cubic_surface.toml"
 
 
 def rows(patch: tribez.Patch, n: int, seed: int = 3):
@@ -55,6 +67,68 @@ def write_csv(path: pathlib.Path, points: np.ndarray, values: np.ndarray) -> Non
         for row in data.tolist():
             f.write(",".join(map(repr, row)))
             f.write("\n")
+
+
+def parameters(n: int, seed: int = 5) -> np.ndarray:
+    """n random (s, t) strictly inside the triangle s, t >= 0, s + t <= 1."""
+    rng = np.random.default_rng(seed)
+    s = rng.uniform(0.05, 0.9, n)
+    t = (0.95 - s) * rng.uniform(0.05, 0.95, n)
+    return np.column_stack([s, t])
+
+
+def at(patch: tribez.Patch, st: np.ndarray) -> np.ndarray:
+    """The patch's f64 values at the barycentric points (1 - s - t, s, t)."""
+    return patch.evaluate_float(np.column_stack([1.0 - st[:, 0] - st[:, 1], st[:, 0], st[:, 1]]))
+
+
+def write_rows(path: pathlib.Path, rows: np.ndarray) -> None:
+    with open(path, "w") as f:
+        for row in rows.tolist():
+            f.write(",".join(map(repr, row)))
+            f.write("\n")
+
+
+def inverse(args) -> None:
+    """check_locate and check_ray against --locate-results and --ray-results on the same rows."""
+    n = args.inverse_rows
+    st = parameters(n)
+    tri = tribez.Patch.from_file(LOCATE_PATCH)
+    xy = at(tri, st)
+    surface = tribez.Patch.from_file(RAY_PATCH)
+    p = at(surface, st)
+    rays = np.column_stack([p[:, 0], p[:, 1], p[:, 2] + 1.0, np.zeros(n), np.zeros(n), -np.ones(n)])
+    hits = np.column_stack([np.ones(n), st])
+    tol = "abs=1e-9"
+    cases = [
+        ("check_locate", "--locate-results", LOCATE_PATCH,
+         lambda: tribez.check_locate(tri, xy, st, tolerance=tol, precision="f64"),
+         np.hstack([xy, st])),
+        ("check_ray", "--ray-results", RAY_PATCH,
+         lambda: tribez.check_ray(surface, rays, hits, tolerance=tol, precision="f64"),
+         np.hstack([rays, hits])),
+    ]
+    with tempfile.TemporaryDirectory() as d:
+        for name, flag, patch_file, call, rows_ in cases:
+            try:
+                report = call()
+            except tribez.InputError as e:  # a query the exact engine refuses (its caps)
+                print(f"tribez.{name} ({n} rows): refused: {e}")
+                continue
+            t_py = best(call, args.repeat)
+            csv = pathlib.Path(d) / f"{name}.csv"
+            write_rows(csv, rows_)
+            cmd = [args.cli, "check", "--patch", str(patch_file), flag, str(csv),
+                   "--precision", "f64", "--tolerance", tol]
+            out = subprocess.run(cmd, capture_output=True, text=True)
+            if out.returncode not in (0, 1):
+                print(out.stderr, file=sys.stderr)
+                raise SystemExit(2)
+            t_cli = best(lambda: subprocess.run(cmd, capture_output=True), args.repeat)
+            last = out.stdout.strip().splitlines()[-1]
+            print(f"tribez.{name} ({n} rows):  {t_py:.3f} s   passed {report.passed}, failed {report.failed}")
+            print(f"tribez check {flag} (CSV): {t_cli:.3f} s   {last}")
+            print(f"ratio Python / CLI: {t_py / t_cli:.3f} (wall-clock time)")
 
 
 def best(f, repeat: int) -> float:
@@ -122,6 +196,7 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--cli", default=str(ROOT / "target" / "release" / "tribez"))
     ap.add_argument("--tolerance", default="cond=9")
+    ap.add_argument("--inverse-rows", type=int, default=1000)
     args = ap.parse_args()
 
     patch = tribez.Patch.from_file(PATCH)
@@ -156,6 +231,8 @@ def main() -> int:
     print(f"tribez check --results (CSV):  {t_cli:.3f} s   {last}")
     print(f"ratio Python / CLI: {t_py / t_cli:.3f} (wall-clock time); "
           f"{c_py / c_cli:.3f} (CPU time: {c_py:.3f} s / {c_cli:.3f} s)")
+    if args.inverse_rows > 0:
+        inverse(args)
     return 0
 
 

@@ -108,6 +108,8 @@ fn threads() -> usize {
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    // the package's version: pyproject.toml takes it from this crate's (`dynamic = ["version"]`)
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_class::<patch::NativePatch>()?;
     m.add_class::<report::NativeReport>()?;
     m.add_class::<claims::NativeDocument>()?;

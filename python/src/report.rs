@@ -6,7 +6,8 @@ use std::sync::{Arc, OnceLock};
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyBytes, PyType};
 use rayon::prelude::*;
 use serde_json::{Value as Json, json};
 
@@ -25,14 +26,83 @@ use tribez::{Algorithm, Patch, Precision, Tolerance};
 use crate::patch::{NativePatch, f64s};
 use crate::{guard, input_error, precision_arg, tolerance_arg};
 
-/// Judge in-memory rows with the library's batch engine (the GIL released meanwhile).
+/// The numbers of a 2-D numpy array of `width` columns, read in place (no copy): `array` must
+/// be a `numpy.ndarray` of native-endian float64, C-contiguous (what the Python layer's
+/// `float_rows` returns); an array whose data is not aligned for `f64` is copied. The slice lives
+/// as long as the borrow of `array`, which keeps the array (and so its data) alive.
+///
+/// The array is read while the GIL is released: like numpy's own operations that release it,
+/// this assumes no other thread writes to it meanwhile (documented on `tribez.check`).
+fn f64_rows<'a>(
+    py: Python<'_>,
+    array: &'a Bound<'_, PyAny>,
+    width: usize,
+    what: &str,
+) -> PyResult<std::borrow::Cow<'a, [f64]>> {
+    use std::borrow::Cow;
+    static NDARRAY: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+    let ndarray = NDARRAY.get_or_try_init(py, || {
+        py.import("numpy")?
+            .getattr("ndarray")?
+            .cast_into::<PyType>()
+            .map(Bound::unbind)
+            .map_err(PyErr::from)
+    })?;
+    let native = if cfg!(target_endian = "little") {
+        "<f8"
+    } else {
+        ">f8"
+    };
+    let bad = || {
+        input_error(
+            py,
+            format!("{what}: expected a C-contiguous float64 numpy array"),
+        )
+    };
+    if !array.get_type().is(ndarray.bind(py)) {
+        return Err(bad());
+    }
+    let interface = array.getattr("__array_interface__")?;
+    let typestr: String = interface.get_item("typestr")?.extract()?;
+    let shape: Vec<usize> = interface.get_item("shape")?.extract()?;
+    let contiguous = interface.get_item("strides")?.is_none();
+    let (address, _readonly): (usize, bool) = interface.get_item("data")?.extract()?;
+    if typestr != native || !contiguous || shape.len() != 2 || shape[1] != width {
+        return Err(bad());
+    }
+    let len = shape[0]
+        .checked_mul(width)
+        .ok_or_else(|| input_error(py, format!("{what}: too many numbers")))?;
+    if len == 0 {
+        return Ok(Cow::Borrowed(&[]));
+    }
+    let ptr = address as *const f64;
+    if ptr.is_null() {
+        return Err(bad());
+    }
+    if !ptr.is_aligned() {
+        // SAFETY: the ndarray's data holds `len` float64 values from `address` (its shape,
+        // C-contiguous, 8-byte items), alive while `array` is; read unaligned, byte by byte.
+        let bytes = unsafe { std::slice::from_raw_parts(address as *const u8, len * 8) };
+        return Ok(Cow::Owned(f64s(bytes)));
+    }
+    // SAFETY: as above, and the pointer is aligned for f64; the slice borrows `array`, which
+    // holds a reference to the ndarray and so keeps its data alive.
+    Ok(Cow::Borrowed(unsafe {
+        std::slice::from_raw_parts(ptr, len)
+    }))
+}
+
+/// Judge in-memory rows with the library's batch engine (the GIL released meanwhile): `points`
+/// and `values` C-contiguous float64 numpy arrays of `width` and `dimension` columns, read in
+/// place.
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
 pub fn check_rows(
     py: Python<'_>,
     patch: &NativePatch,
-    points: &[u8],
-    values: &[u8],
+    points: &Bound<'_, PyAny>,
+    values: &Bound<'_, PyAny>,
     width: usize,
     dimension: usize,
     tolerance: &str,
@@ -67,36 +137,48 @@ pub fn check_rows(
         let name = poly.name.clone().unwrap_or_else(|| "the patch".into());
         let key = judged_key(&patch.patch, algorithm, cartesian);
         let checker = BatchChecker::new(poly.clone(), &options).map_err(|e| input_error(py, e))?;
-        let (pts, vals) = (f64s(points), f64s(values));
-        debug_assert_eq!(pts.len() / width.max(1), vals.len() / dimension.max(1));
-        let (report, verdicts) = py
-            .detach(|| {
-                checker
-                    .check_rows_until(
-                        &pts,
-                        &vals,
-                        first_row,
-                        "<arrays>",
-                        &name,
-                        &crate::interrupted,
-                    )
-                    .map_err(|e| e.to_string())
-            })
-            .map_err(|e| input_error(py, e))??;
-        let source = Rows {
-            patch: poly,
+        let pts = f64_rows(py, points, width, "points")?;
+        let vals = f64_rows(py, values, dimension, "values")?;
+        let rows = RowsRef {
+            patch: &poly,
             precision,
             cartesian,
-            points: pts,
-            values: vals,
+            points: &pts,
+            values: &vals,
             width,
             dim: dimension,
+        };
+        let (report, verdicts, detail) = py
+            .detach(|| {
+                let (report, verdicts) = match checker.check_rows_until(
+                    &pts,
+                    &vals,
+                    first_row,
+                    "<arrays>",
+                    &name,
+                    &crate::interrupted,
+                ) {
+                    Ok(Ok(done)) => done,
+                    Ok(Err(stop)) => return Ok(Err(stop)),
+                    Err(e) => return Err(e.to_string()),
+                };
+                // The detail, where it costs no exact arithmetic but at ties, now (the arrays
+                // are not kept); else later, from a copy of the rows, when first asked for.
+                let detail = rows
+                    .detail_is_cheap()
+                    .then(|| rows.detail(&verdicts, first_row, true));
+                Ok(Ok((report, verdicts, detail)))
+            })
+            .map_err(|e| input_error(py, e))??;
+        let (detail, source) = match detail {
+            Some(d) => (OnceLock::from(d), None),
+            None => (OnceLock::new(), Some(Arc::new(rows.to_owned()))),
         };
         Ok(NativeReport {
             report,
             verdicts,
-            detail: OnceLock::new(),
-            source: Some(Arc::new(source)),
+            detail,
+            source,
             key,
         })
     })
@@ -134,6 +216,31 @@ pub(crate) struct Rows {
     dim: usize,
 }
 
+impl Rows {
+    fn borrowed(&self) -> RowsRef<'_> {
+        RowsRef {
+            patch: &self.patch,
+            precision: self.precision,
+            cartesian: self.cartesian,
+            points: &self.points,
+            values: &self.values,
+            width: self.width,
+            dim: self.dim,
+        }
+    }
+}
+
+/// The rows judged, borrowed (from the caller's arrays, or from [`Rows`]).
+struct RowsRef<'a> {
+    patch: &'a BezierPatch,
+    precision: Precision,
+    cartesian: bool,
+    points: &'a [f64],
+    values: &'a [f64],
+    width: usize,
+    dim: usize,
+}
+
 /// Per-row figures beyond the verdicts, aligned with them: the error in ULPs at the inputs as
 /// intended, and whether every coordinate is the correctly rounded value at the inputs as seen.
 #[derive(Clone, Debug, Default)]
@@ -164,7 +271,33 @@ fn ulps_of(y: &BigRational, q: &BigRational, precision: Precision) -> f64 {
     .unwrap_or(f64::INFINITY)
 }
 
-impl Rows {
+impl RowsRef<'_> {
+    /// A copy to keep.
+    fn to_owned(&self) -> Rows {
+        Rows {
+            patch: self.patch.clone(),
+            precision: self.precision,
+            cartesian: self.cartesian,
+            points: self.points.to_vec(),
+            values: self.values.to_vec(),
+            width: self.width,
+            dim: self.dim,
+        }
+    }
+
+    /// Whether [`RowsRef::detail`] needs exact arithmetic only at ties (errors of exactly 1/2
+    /// ulp, rare): an f64 batch (its inputs as intended are the floats seen) about a net whose
+    /// control points are f64s. Its errors at the intended inputs are then the verdicts'.
+    fn detail_is_cheap(&self) -> bool {
+        self.precision == Precision::F64
+            && self
+                .patch
+                .net
+                .coords()
+                .iter()
+                .all(|q| as_float(q, Precision::F64).as_ref() == Some(q))
+    }
+
     /// The row-by-row detail (exact arithmetic where it can differ from the verdicts' figures).
     ///
     /// The inputs as intended are the numbers given (f64), the patch as intended its exact
@@ -199,12 +332,13 @@ impl Rows {
                 if !v.ulps.is_finite() {
                     return (f64::INFINITY, false);
                 }
-                let claimed: Option<Vec<BigRational>> = ys
-                    .iter()
-                    .map(|&y| seen_float(y, p).and_then(exact_f64))
-                    .collect();
-                let Some(claimed) = claimed else {
+                if ys.iter().any(|&y| seen_float(y, p).is_none()) {
                     return (f64::INFINITY, false);
+                }
+                let claimed = || -> Vec<BigRational> {
+                    ys.iter()
+                        .filter_map(|&y| seen_float(y, p).and_then(exact_f64))
+                        .collect()
                 };
                 let inputs_seen = xs.iter().all(|&x| seen_float(x, p) == Some(x));
                 let ulps_intended = if net_is_seen && inputs_seen {
@@ -222,7 +356,7 @@ impl Rows {
                         Some(l) => intended
                             .evaluate_fast(&l)
                             .iter()
-                            .zip(&claimed)
+                            .zip(&claimed())
                             .map(|(q, y)| ulps_of(y, q, p))
                             .fold(0.0, f64::max),
                     }
@@ -236,7 +370,7 @@ impl Rows {
                     lambda.is_some_and(|l| {
                         seen.evaluate_fast(&l)
                             .iter()
-                            .zip(&claimed)
+                            .zip(&claimed())
                             .all(|(q, y)| as_float(q, p).as_ref() == Some(y))
                     })
                 } else {
@@ -294,7 +428,7 @@ impl NativeReport {
         let d = match &self.source {
             Some(rows) => {
                 let first = self.verdicts.first().map_or(0, |v| v.row);
-                py.detach(|| rows.detail(&self.verdicts, first, true))
+                py.detach(|| rows.borrowed().detail(&self.verdicts, first, true))
             }
             None => Detail::default(),
         };
@@ -314,7 +448,7 @@ impl NativeReport {
         match &self.source {
             Some(rows) => {
                 let first = self.verdicts.first().map_or(0, |v| v.row);
-                Cow::Owned(py.detach(|| rows.detail(&self.verdicts, first, false)))
+                Cow::Owned(py.detach(|| rows.borrowed().detail(&self.verdicts, first, false)))
             }
             None => Cow::Owned(Detail::default()),
         }

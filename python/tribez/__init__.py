@@ -51,7 +51,9 @@ __all__ = [
     "parse_number",
 ]
 
-__version__ = "0.1.0"
+# the version of the native module (python/Cargo.toml), which is the package's (pyproject.toml
+# takes it from there)
+__version__: str = _native.__version__
 
 MAX_DEGREE: int = _native.MAX_DEGREE
 MAX_CONTROL_POINTS: int = _native.MAX_CONTROL_POINTS
@@ -346,6 +348,9 @@ def check(patch: Patch, points, values, tolerance: str = "cond=9", precision: Op
     then a compensated stage); only rows it cannot decide fall back to exact big-integer
     arithmetic (``report.fell_back``).
 
+    C-contiguous float64 arrays are read in place, without a copy (others are converted first):
+    do not write to them from another thread while ``check`` runs.
+
     """
     if not isinstance(patch, Patch):
         raise InputError(f"patch: expected a tribez.Patch, got {type(patch).__name__}")
@@ -367,7 +372,8 @@ def check(patch: Patch, points, values, tolerance: str = "cond=9", precision: Op
         raise InputError(
             f"first_row: {first_row} + {pts.shape[0]} rows passes the largest row index 2^63 - 1"
         )
-    native = _native.check_rows(patch._native, pts.tobytes(), vals.tobytes(), width, patch.dimension,
+    # the arrays are read in place (float_rows: C-contiguous float64), not copied
+    native = _native.check_rows(patch._native, pts, vals, width, patch.dimension,
                                 tolerance, prec, bool(cartesian), algorithm, first_row)
     return Report(native)
 

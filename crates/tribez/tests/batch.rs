@@ -294,6 +294,75 @@ fn rows_in_memory_and_in_a_csv_file_agree() {
     assert!(memory.failed > 0 && memory.passed > 0);
 }
 
+/// Many rows (several slabs between stop tests, each split over the threads): the in-memory
+/// path, which judges rows the float filter decides from their floats alone, gives the report a
+/// CSV file of the same rows gives, and every row the verdict the path without that shortcut
+/// (with per-row detail, every row through its parsed numbers) gives. Errors from a few shifts,
+/// so that ties for the worst row are common; more failures than are listed; NaN rows.
+#[test]
+fn many_rows_in_memory_agree_with_a_csv_file_and_with_the_detailed_path() {
+    let spec: Vec<_> = (0..20_000u32)
+        .map(|i| {
+            let shift = |k: u32| match (i / 7 + k) % 23 {
+                0 => None,
+                r => Some((r % 3) as i8 - 1),
+            };
+            (
+                f64::from(i % 101) / 101.0,
+                f64::from(i % 37) / 37.0,
+                [shift(0), Some(0), shift(2)],
+            )
+        })
+        .collect();
+    let (points, values) = rows(&spec);
+    let c = checker("ulps=1", false);
+    let (memory, verdicts) = c
+        .check_rows(&points, &values, 0, "<memory>", "finn")
+        .unwrap();
+    assert!(memory.failed > 100 && memory.passed > 0);
+    let csv: String = points
+        .chunks(3)
+        .zip(values.chunks(3))
+        .map(|(p, v)| {
+            format!(
+                "{:?},{:?},{:?},{:?},{:?},{:?}\n",
+                p[0], p[1], p[2], v[0], v[1], v[2]
+            )
+        })
+        .collect();
+    let file = c
+        .check_reader(
+            csv.as_bytes(),
+            Format::Csv,
+            "<memory>",
+            "finn",
+            &mut |_, _| {},
+        )
+        .unwrap();
+    // CSV rows are numbered by line from 1, memory rows from first_row = 0
+    let memory_1 = c
+        .check_rows(&points, &values, 1, "<memory>", "finn")
+        .unwrap()
+        .0;
+    // (`same` leaves out the errors at the intended inputs: those of the CSV are its decimal
+    // texts', those of memory the f64s')
+    same(&memory_1, &file);
+    let (detailed, detailed_verdicts) = checker("ulps=1", true)
+        .check_rows(&points, &values, 0, "<memory>", "finn")
+        .unwrap();
+    assert_eq!(verdicts.len(), spec.len());
+    for (i, (a, b)) in verdicts.iter().zip(&detailed_verdicts).enumerate() {
+        assert_eq!(a.row, i);
+        assert_eq!((a.pass, a.fell_back), (b.pass, b.fell_back), "row {i}");
+        assert_eq!(a.ulps.to_bits(), b.ulps.to_bits(), "row {i}");
+    }
+    assert_eq!(
+        (memory.passed, memory.failed, memory.max_ulps),
+        (detailed.passed, detailed.failed, detailed.max_ulps)
+    );
+    assert_eq!(memory.histogram, detailed.histogram);
+}
+
 /// A planar patch embedded in R^3: degree 4 on the triangle with c_α = (α_1/4, α_2/4, 0), so by
 /// linear precision P(λ) = (λ_1, λ_2, 0) exactly (every control value a float). The third
 /// coordinate is zero at every point: the float filter decides it without exact arithmetic, so

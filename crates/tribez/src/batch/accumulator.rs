@@ -4,7 +4,7 @@
 use num_rational::BigRational;
 use rayon::prelude::*;
 
-use super::driver::RowPoint;
+use super::driver::{MemoryRows, RowPoint, RowVerdict, memory_num};
 use super::judge::{Prepared, RowOutcome, RowScratch};
 use super::parse::{self, Format, Num, parse_row, texts_of};
 use super::{
@@ -13,7 +13,7 @@ use super::{
 use crate::io::InputError;
 
 #[cfg(doc)]
-use super::BatchOptions;
+use super::{BatchChecker, BatchOptions, STOP_SLAB};
 
 /// Where a row came from, to find its inputs as intended: a file's row text (and the column it
 /// starts at), or memory (the numbers themselves).
@@ -30,6 +30,10 @@ pub(super) struct Judged {
 
 /// Rows judged together on one thread (a task of a chunk's parallel pass).
 const SLAB: usize = 4096;
+
+/// The most in-memory rows judged together on one thread ([`Accumulator::judge_memory`]): small
+/// enough that a slab between two stop tests ([`STOP_SLAB`]) splits over every core.
+const MEMORY_SLAB: usize = 1024;
 
 /// The counts of a report, summed over rows (any order).
 #[derive(Default)]
@@ -393,16 +397,95 @@ impl<'p> Accumulator<'p> {
         Ok(())
     }
 
-    /// Count a judged row (in input order).
-    pub(super) fn add(&mut self, judged: Judged, source: &Source<'_>) {
-        let Judged { outcome, detail } = judged;
-        let mut tally = Tally::default();
-        tally.count(&outcome);
-        tally.add_to(&mut self.report);
-        if let (Some(rows), Some(d)) = (&mut self.report.rows, detail) {
-            rows.push(d);
+    /// Judge the in-memory rows `start..start + out.len()` in parallel, in pieces of at most
+    /// [`MEMORY_SLAB`] rows, each piece on one thread, writing each row's verdict to `out`.
+    /// [`Accumulator::merge_memory`] then adds the slabs to the report. A row whose numbers are
+    /// finite floats of the precision and that the float filter decides is judged from them
+    /// alone, without allocating; its numbers ([`Num`]) are made only if [`Sieve`] keeps it for
+    /// the report. Any other row is judged as [`Accumulator::judge`] judges it.
+    pub(super) fn judge_memory(
+        &self,
+        rows: &MemoryRows<'_>,
+        start: usize,
+        out: &mut [RowVerdict],
+    ) -> Vec<Slab> {
+        let p = self.p;
+        let (width, dim) = (p.width(), p.patch.net.dim());
+        let fast = p.filter.is_some() && !p.row_detail;
+        let nums =
+            |xs: &[f64]| -> Vec<Num> { xs.iter().map(|&x| memory_num(x, p.precision)).collect() };
+        // a few pieces per thread however few the rows (a slab of slow rows is small)
+        let piece = out
+            .len()
+            .div_ceil(4 * rayon::current_num_threads())
+            .clamp(1, MEMORY_SLAB);
+        out.par_chunks_mut(piece)
+            .enumerate()
+            .map_init(RowScratch::default, |scratch, (s, out)| {
+                let mut slab = Slab::default();
+                let mut sieve = Sieve {
+                    floor: self.floor,
+                    failures: 0,
+                };
+                for (k, verdict) in out.iter_mut().enumerate() {
+                    let i = start + s * piece + k;
+                    let row = rows.first_row + i;
+                    let xs = &rows.points[i * width..(i + 1) * width];
+                    let ys = &rows.values[i * dim..(i + 1) * dim];
+                    let filtered = if fast && scratch.load_floats(xs, ys, p.precision) {
+                        p.filtered(row, scratch)
+                    } else {
+                        None
+                    };
+                    let Judged {
+                        mut outcome,
+                        detail,
+                    } = match filtered {
+                        Some(outcome) => Judged {
+                            outcome,
+                            detail: None,
+                        },
+                        None => self.judge(row, nums(xs), nums(ys), &Source::Memory, scratch),
+                    };
+                    slab.tally.count(&outcome);
+                    slab.details.extend(detail);
+                    *verdict = RowVerdict {
+                        row,
+                        pass: outcome.pass,
+                        fell_back: outcome.fell_back,
+                        ulps: outcome.ulps,
+                    };
+                    if sieve.keep(&outcome) {
+                        if outcome.inputs.is_empty() {
+                            // a row judged from its floats: its numbers in full
+                            outcome.inputs = nums(xs);
+                            outcome.claimed = nums(ys);
+                        }
+                        slab.kept.push((
+                            k,
+                            Judged {
+                                outcome,
+                                detail: None,
+                            },
+                        ));
+                    }
+                }
+                slab
+            })
+            .collect()
+    }
+
+    /// Add slabs judged by [`Accumulator::judge_memory`] to the report, in row order.
+    pub(super) fn merge_memory(&mut self, slabs: Vec<Slab>) {
+        for slab in slabs {
+            slab.tally.add_to(&mut self.report);
+            if let Some(rows) = &mut self.report.rows {
+                rows.extend(slab.details);
+            }
+            for (_, judged) in slab.kept {
+                self.note(judged.outcome, &Source::Memory);
+            }
         }
-        self.note(outcome, source);
     }
 
     /// Note a judged row (in input order; counted apart) for the report's listed failures and

@@ -20,6 +20,14 @@ use crate::patch::BezierPatch;
 #[cfg(doc)]
 use super::{CHUNK, FailedRow};
 
+/// Rows held in memory ([`BatchChecker::check_rows_until`]): row-major inputs and claimed
+/// values, row `i` numbered `first_row + i`.
+pub(super) struct MemoryRows<'a> {
+    pub(super) points: &'a [f64],
+    pub(super) values: &'a [f64],
+    pub(super) first_row: usize,
+}
+
 /// The batch checker for one patch and one set of options (prepared once, then any number of
 /// batches).
 pub struct BatchChecker {
@@ -143,7 +151,7 @@ fn check_reader<R: Read + Send>(
 /// batch takes the nearest `f32`); the value as intended is the `f64` given. For an `f64` batch
 /// that is the float itself, whose exact value [`Accumulator::intended`] takes from it when a
 /// report needs it (most rows never do: no big rational is built per number).
-fn memory_num(x: f64, precision: Option<Precision>) -> Num {
+pub(super) fn memory_num(x: f64, precision: Option<Precision>) -> Num {
     if !x.is_finite() {
         return Num::NotFinite(format!("`{x}`"));
     }
@@ -297,7 +305,20 @@ impl BatchChecker {
             return Err(BatchError::RowIndexOverflow { first_row, rows: n });
         }
         let mut acc = Accumulator::new(p, file, patch_name, None);
-        let mut verdicts = Vec::with_capacity(n);
+        let mut verdicts = vec![
+            RowVerdict {
+                row: 0,
+                pass: false,
+                fell_back: false,
+                ulps: f64::NAN,
+            };
+            n
+        ];
+        let rows = MemoryRows {
+            points,
+            values,
+            first_row,
+        };
         let (mut start, mut slab) = (0, STOP_SLAB_MIN);
         while start < n {
             if let Some(s) = stop() {
@@ -305,30 +326,8 @@ impl BatchChecker {
             }
             let end = (start + slab).min(n);
             let began = std::time::Instant::now();
-            let judged: Vec<Judged> = (start..end)
-                .into_par_iter()
-                .map_init(RowScratch::default, |scratch, i| {
-                    let inputs = points[i * width..(i + 1) * width]
-                        .iter()
-                        .map(|&x| memory_num(x, p.precision))
-                        .collect();
-                    let claimed = values[i * dim..(i + 1) * dim]
-                        .iter()
-                        .map(|&x| memory_num(x, p.precision))
-                        .collect();
-                    acc.judge(first_row + i, inputs, claimed, &Source::Memory, scratch)
-                })
-                .collect();
-            for j in judged {
-                let o = &j.outcome;
-                verdicts.push(RowVerdict {
-                    row: o.line,
-                    pass: o.pass,
-                    fell_back: o.fell_back,
-                    ulps: o.ulps,
-                });
-                acc.add(j, &Source::Memory);
-            }
+            let slabs = acc.judge_memory(&rows, start, &mut verdicts[start..end]);
+            acc.merge_memory(slabs);
             let took = began.elapsed();
             if took < STOP_SLAB_TIME {
                 slab = (slab * 2).min(STOP_SLAB);

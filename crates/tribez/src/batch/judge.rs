@@ -377,16 +377,13 @@ impl Prepared {
         claimed
             .iter()
             .zip(&exact)
-            .map(|(&y, q)| match crate::number::exact_f64(y) {
-                None => f64::INFINITY,
-                Some(yq) if &yq == q => 0.0,
-                Some(yq) => {
-                    let u = match self.precision {
-                        Some(Precision::F32) => crate::number::ulps_error_f32(&yq, q),
-                        _ => crate::number::ulps_error_f64(&yq, q),
-                    };
-                    crate::number::round_up_f64(&u)
-                }
+            .map(|(&y, q)| {
+                // round_up_f64 of ulps_error_f32/f64 of the exact y, without a gcd
+                let u = match self.precision {
+                    Some(Precision::F32) => crate::number::ulps_error_up::<f32>(y, q),
+                    _ => crate::number::ulps_error_up::<f64>(y, q),
+                };
+                u.unwrap_or(f64::INFINITY)
             })
             .fold(0.0, f64::max)
     }
@@ -406,6 +403,26 @@ pub(super) struct RowScratch {
 }
 
 impl RowScratch {
+    /// Load an in-memory row's numbers as the code saw them (each rounded to `precision`: an
+    /// `f32` batch takes the nearest `f32`, as [`super::memory_num`] does); false if one of them
+    /// is not finite there (the row is then judged from its [`Num`]s).
+    pub(super) fn load_floats(
+        &mut self,
+        inputs: &[f64],
+        claimed: &[f64],
+        precision: Option<Precision>,
+    ) -> bool {
+        let seen = |x: f64| match precision {
+            Some(Precision::F32) => f64::from(x as f32),
+            _ => x,
+        };
+        self.lambda.clear();
+        self.lambda.extend(inputs.iter().map(|&x| seen(x)));
+        self.ys.clear();
+        self.ys.extend(claimed.iter().map(|&x| seen(x)));
+        self.lambda.iter().chain(&self.ys).all(|x| x.is_finite())
+    }
+
     /// Load a row's numbers as floats (NaN for a number that is not finite).
     fn load(&mut self, inputs: &[Num], claimed: &[Num]) {
         let float = |x: &Num| match x {

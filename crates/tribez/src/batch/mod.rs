@@ -55,7 +55,7 @@ pub const CHUNK: usize = 1 << 16;
 /// slab takes under [`STOP_SLAB_TIME`] (halving when one takes over four times that), so that
 /// the stop test is asked every fraction of a second even where every row falls back to exact
 /// arithmetic at a high degree. Slabs change when the stop test is asked, never a verdict.
-pub const STOP_SLAB: usize = 1 << 12;
+pub const STOP_SLAB: usize = 1 << 16;
 /// The fewest rows of a slab ([`STOP_SLAB`]).
 pub const STOP_SLAB_MIN: usize = 16;
 /// The time one slab aims at ([`STOP_SLAB`]).

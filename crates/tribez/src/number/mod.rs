@@ -50,6 +50,7 @@ pub use print::{
 pub use round::{
     is_faithful, is_faithful_f32, is_faithful_f64, round_f32, round_f64, round_to, round_up_f64,
 };
+pub(crate) use ulp::ulps_error_up;
 pub use ulp::{
     floor_log2, steps, steps_f32, steps_f64, ulp, ulp_f32, ulp_f64, ulps_error, ulps_error_f32,
     ulps_error_f64,

@@ -346,6 +346,19 @@ pub fn round_up_f64(q: &BigRational) -> f64 {
     }
 }
 
+/// [`round_up_f64`] of the magnitude `a/b` (`b > 0`) given as a fraction that need not be in
+/// lowest terms: the least `f64` not below `a/b`, without a gcd (the correctly rounded
+/// magnitude, moved up one float when it lies below `a/b`).
+pub(crate) fn round_up_f64_ratio(a: &BigUint, b: &BigUint) -> f64 {
+    let r = round_magnitude(a, b, format_of::<f64>());
+    let x: f64 = encode(false, r.mag);
+    if r.dir == Ordering::Less && x.is_finite() {
+        x.next_up()
+    } else {
+        x
+    }
+}
+
 /// The `f32` nearest to `q`, ties to even, rounded once from the exact value
 /// (never through `f64`, which could round twice): 24-bit significand, e ≥ −126,
 /// subnormals multiples of 2^−149, overflow (from 2^128 − 2^103 up) to ±inf.

@@ -980,3 +980,63 @@ proptest! {
         }
     }
 }
+
+/// A float of any kind: normal, subnormal, zero, either sign, near a given one or anywhere.
+fn any_finite_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        any::<f64>().prop_filter("finite", |x| x.is_finite()),
+        (-1e3f64..1e3),
+        (0u64..1 << 20).prop_map(f64::from_bits), // subnormals near 0
+        Just(0.0),
+        Just(-0.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(512))]
+    /// `ulps_error_up` (integers, no gcd) is `round_up_f64` of the exact `ulps_error`, in both
+    /// formats, at claimed values near the exact one (the batch engine's case: a few ulps off)
+    /// and anywhere.
+    #[test]
+    fn ulps_error_up_is_the_rounded_up_exact_error(
+        y in any_finite_f64(),
+        near in any::<bool>(),
+        steps in -5i64..=5,
+        num in any::<i64>(),
+        den in 1u64..u64::MAX,
+        scale in -1100i64..1100,
+    ) {
+        let q = if near {
+            // q a hair from y: y moved some ulps, plus a tiny fraction
+            let z = f64::from_bits((y.to_bits() as i64).wrapping_add(steps) as u64);
+            let z = if z.is_finite() { z } else { y };
+            exact_f64(z).unwrap() + BigRational::new(num.into(), den.into()) * pow2(-1200)
+        } else {
+            BigRational::new(num.into(), den.into()) * pow2(scale)
+        };
+        let yq = exact_f64(y).unwrap();
+        prop_assert_eq!(ulps_error_up::<f64>(y, &q), Some(round_up_f64(&ulps_error_f64(&yq, &q))));
+        prop_assert_eq!(ulps_error_up::<f32>(y, &q), Some(round_up_f64(&ulps_error_f32(&yq, &q))));
+    }
+}
+
+#[test]
+fn ulps_error_up_by_hand() {
+    let q = |s: &str| parse_rational(s).unwrap();
+    // 1 against 1 + 2^-53 (ulp 2^-52): 1/2 ulp exactly; against 1 + 2^-53 + 2^-200: above 1/2
+    assert_eq!(
+        ulps_error_up::<f64>(1.0, &q("0x1.00000000000008p0")),
+        Some(0.5)
+    );
+    assert_eq!(
+        ulps_error_up::<f64>(1.0, &(q("0x1.00000000000008p0") + pow2(-200))),
+        Some(0.5f64.next_up())
+    );
+    // 0.1 against 1/10: 2/5 ulp (docs of ulps_error_f64), 2/5 rounded up
+    assert_eq!(
+        ulps_error_up::<f64>(0.1, &q("1/10")),
+        Some(round_up_f64(&q("2/5")))
+    );
+    assert_eq!(ulps_error_up::<f64>(-3.0, &q("-3")), Some(0.0));
+    assert_eq!(ulps_error_up::<f64>(f64::NAN, &q("1")), None);
+}

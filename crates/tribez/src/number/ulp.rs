@@ -50,6 +50,42 @@ pub fn ulps_error<F: BinaryFloat>(x: &BigRational, q: &BigRational) -> BigRation
     (x - q).abs() / ulp::<F>(q)
 }
 
+/// `round_up_f64(&ulps_error::<F>(&exact_f64(y), q))` for a finite `y`: the error of `y` in
+/// ULPs of `F` at `q`, rounded up to an `f64`, computed on integers without reducing a fraction
+/// (no gcd). With `y = ±m·2^e`, `q = n/d` (`d > 0`) and `ulp::<F>(q) = 2^u`, the error is
+/// `|±m·d·2^(e−s) − n·2^(−s)| / (d·2^(u−s))` with `s = min(e, u, 0)` (every shift ≥ 0).
+/// `None` for a `y` that is not finite.
+pub(crate) fn ulps_error_up<F: BinaryFloat>(y: f64, q: &BigRational) -> Option<f64> {
+    use num_bigint::BigInt;
+    if !y.is_finite() {
+        return None;
+    }
+    let u = if q.is_zero() {
+        emin::<F>()
+    } else {
+        floor_log2(q).max(emin::<F>())
+    } - i64::from(F::PREC - 1);
+    let bits = y.to_bits();
+    let field = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1 << 52) - 1);
+    let (m, e) = if field == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1 << 52), field - 1075)
+    };
+    let m = if y.is_sign_negative() {
+        -BigInt::from(m)
+    } else {
+        BigInt::from(m)
+    };
+    let s = e.min(u).min(0);
+    let shift = |k: i64| usize::try_from(k).expect("a shift of at least 0, below 2^64");
+    let (n, d) = (q.numer(), q.denom());
+    let a = ((m * d) << shift(e - s)) - (n << shift(-s));
+    let b = d.magnitude() << shift(u - s);
+    Some(super::round::round_up_f64_ratio(a.magnitude(), &b))
+}
+
 /// `|x − q| / ulp_f64(q)` exactly, for `x` given as its exact rational value.
 /// It is at most 1/2 when x = RN(q).
 ///
