@@ -124,6 +124,11 @@ pub mod examples {
 Examples:
   tribez reproduce
   tribez reproduce --format json -o reproduce.json";
+    /// `tribez hunt` (`sed -u` answers a constant for every row, unbuffered).
+    pub const HUNT: &str = "\
+Examples:
+  tribez hunt fixtures/finn_day30.toml --budget 200 --seed 1 -- sed -u s/.*/0,0,0/
+  tribez hunt fixtures/finn_day30.toml --precision f32 --tolerance ulps=4 --budget 300 --claims-out worst.claims.toml -- sed -u s/.*/1,1,1/";
     /// `tribez eval`.
     pub const EVAL: &str = "\
 Examples:

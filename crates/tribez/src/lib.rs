@@ -44,6 +44,8 @@
 //!   point location and lookup;
 //! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
 //!   results, judged in parallel;
+//! * [`hunt`]: search for the inputs where another implementation is least accurate
+//!   (`tribez hunt`);
 //! * [`algebraic`]: real algebraic numbers ([`RealAlgebraic`]) and the inverse problems they
 //!   answer exactly: [`intersect_curves`] for two planar curves ([`Curve`]);
 //! * [`format`](mod@format): numbers in and out (parsing, exact and float printing, correct
@@ -89,6 +91,7 @@ mod functional;
 mod fuzz;
 #[cfg(feature = "unstable-internals")]
 pub mod hazmat;
+pub mod hunt;
 mod io;
 mod join;
 mod judge;

@@ -12,6 +12,7 @@ pub mod eval;
 pub mod fit;
 pub mod graph;
 pub mod halve;
+pub mod hunt;
 pub mod intersect;
 pub mod inverse;
 pub mod inverse_batch;
@@ -80,6 +81,9 @@ pub enum Command {
     /// Run tribez's own float algorithms (Bézier, rational, S-patch) and judge their errors against proven bounds.
     #[command(after_help = examples::CERTIFY)]
     Certify(certify::Args),
+    /// Search for the inputs where another program is least accurate: it answers rows over a pipe, each judged exactly.
+    #[command(after_help = examples::HUNT)]
+    Hunt(hunt::Args),
     /// The blossom (polar form) b[u1, ..., un] of a patch (rational: X[..]/W[..]): exactly n barycentric arguments.
     #[command(after_help = examples::BLOSSOM)]
     Blossom(blossom::Args),
@@ -197,6 +201,7 @@ pub fn main(cli: Cli) -> i32 {
         Command::Check(a) if a.fit.is_some() => (fit::run_check(a), &a.out),
         Command::Check(a) => (check::run(a), &a.out),
         Command::Certify(a) => (certify::run(a), &a.out),
+        Command::Hunt(a) => (hunt::run(a), &a.out),
         Command::Blossom(a) => (blossom::run(a), &a.out),
         Command::Subpatch(a) => (subpatch::run(a), &a.out),
         Command::Subdivide(a) => (subdivide::run(a), &a.out),

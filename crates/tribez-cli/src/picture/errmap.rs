@@ -278,6 +278,8 @@ pub struct Panel {
     pub min_ulps: Option<f64>,
     /// The worst row: its number, its label's text. Its position is the row's own.
     pub worst: Option<(usize, String)>,
+    /// Further rows ringed and labelled (`tribez hunt`'s worst rows): position, label.
+    pub labels: Vec<([f64; 2], String)>,
     /// The histogram's counts ([`ULP_BUCKETS`]).
     pub histogram: [u64; 8],
     /// A note under the map.
@@ -414,6 +416,26 @@ impl MapData {
                 let rr = if d.pass { r } else { r + 1.2 };
                 svg.circle(p, rr, Some(colour(d.ulps)), stroke, &[]);
             }
+        }
+        // further labelled rows
+        for (at, label) in &panel.labels {
+            let p = place(*at);
+            svg.circle(
+                p,
+                7.0,
+                None,
+                Some((WORST, 1.5)),
+                &[("class", "labelled".into())],
+            );
+            let right = p[0] < MAP_X + MAP_W - 200.0;
+            svg.text(
+                [if right { p[0] + 10.0 } else { p[0] - 10.0 }, p[1] + 4.0],
+                11.0,
+                if right { "start" } else { "end" },
+                WORST,
+                label,
+                &[("class", "label".into())],
+            );
         }
         // the worst row
         if let Some((row, label)) = &panel.worst

@@ -207,6 +207,7 @@ fn batch_panel(report: &BatchReport, min_ulps: Option<f64>) -> Panel {
             )
         }),
         histogram: report.histogram.counts,
+        labels: Vec::new(),
         note: if report.histogram_upper_bounds {
             "rows the float filter decided: the upper end of their error's enclosure (the scale's ends are exact)".into()
         } else {
@@ -382,6 +383,7 @@ pub fn certify(
                 ),
                 max_ulps: Some(row.max_ulps),
                 min_ulps: None,
+                labels: Vec::new(),
                 worst: worst.map(|i| {
                     (
                         i + 1,
@@ -625,4 +627,124 @@ pub fn batch_command(
         c.extend(["--algorithm".into(), algorithm.into()]);
     }
     c
+}
+
+/// Stage `--plot` and `--html` of `tribez hunt`: every evaluated row on the error map (`map`,
+/// with `histogram` the rows' counts by error), the worst rows ringed and labelled by rank
+/// (`labels`: their positions), the worst of all as the map's worst row.
+pub fn hunt(
+    pictures: &Pictures,
+    report: &crate::commands::hunt::Report,
+    map: MapData,
+    histogram: [u64; 8],
+    labels: Vec<[f64; 2]>,
+) -> Result<(), CliError> {
+    let h = &report.hunt;
+    let panel = Panel {
+        title: format!(
+            "{}: {} rows of {} against {}, tolerance {} — {} broke it",
+            html::shell_line(&report.program),
+            h.evaluated,
+            h.precision.name(),
+            report.patch,
+            h.tolerance,
+            h.broke
+        ),
+        max_ulps: h.max_ulps().filter(|u| u.is_finite()),
+        min_ulps: None,
+        worst: h.worst.first().map(|w| {
+            (
+                usize::try_from(w.row).unwrap_or(usize::MAX),
+                format!("worst: row {}, {} ulp", w.row, ulps_text(w.ulps)),
+            )
+        }),
+        labels: labels
+            .into_iter()
+            .zip(&h.worst)
+            .enumerate()
+            .skip(1)
+            .map(|(i, (at, w))| (at, format!("{}. row {}", i + 1, w.row)))
+            .collect(),
+        histogram,
+        note: "rows the float filter decided: the upper end of their error's enclosure; the labelled rows' errors are exact".into(),
+    };
+    let range = map.range(panel.max_ulps, panel.min_ulps);
+    let panels = [(map, panel)];
+    let svg = errmap::svg(
+        &panels,
+        &format!("tribez hunt: error map of {}", report.patch),
+    );
+    if let Some(path) = &pictures.plot {
+        super::stage(path, &svg, "--plot")?;
+    }
+    let Some(path) = &pictures.html else {
+        return Ok(());
+    };
+    let passed = h.broke == 0;
+    let mut summary = vec![
+        ("program".to_string(), html::shell_line(&report.program)),
+        ("patch".into(), report.patch.clone()),
+        ("tolerance".into(), h.tolerance.to_string()),
+        ("precision".into(), h.precision.name().into()),
+        ("seed".into(), h.seed.to_string()),
+        ("rows evaluated".into(), h.evaluated.to_string()),
+        ("broke the tolerance".into(), h.broke.to_string()),
+    ];
+    if let Some((lo, hi)) = range {
+        summary.push(("smallest error (ulp)".into(), ulps_text(lo)));
+        summary.push(("largest error (ulp)".into(), ulps_text(hi)));
+    }
+    let p = h.precision;
+    let hex = |xs: &[f64]| {
+        xs.iter()
+            .map(|&x| tribez::hunt::hex(p, x))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let rows = h
+        .worst
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            vec![
+                (i + 1).to_string(),
+                r.row.to_string(),
+                hex(&r.input),
+                hex(&r.claimed),
+                r.exact
+                    .iter()
+                    .map(|q| tribez::hunt::decimal(q, 17))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                ulps_text(r.ulps),
+                if r.passed { "within" } else { "breaks" }.into(),
+            ]
+        })
+        .collect();
+    let sections = vec![Section::Table {
+        heading: format!("The {} worst rows", h.worst.len()),
+        note: "Each error is computed exactly against the exact value at the input as the program saw it.".into(),
+        header: ["rank", "row", "input", "claimed", "exact", "error (ulp)", "tolerance"]
+            .map(String::from)
+            .to_vec(),
+        rows,
+    }];
+    let page = html::render(&HtmlReport {
+        title: format!("tribez hunt: {}", html::shell_line(&report.program)),
+        passed,
+        verdict: if passed {
+            format!("no row of {} broke tolerance {}", h.evaluated, h.tolerance)
+        } else {
+            format!(
+                "{} of {} rows broke tolerance {}",
+                h.broke, h.evaluated, h.tolerance
+            )
+        },
+        summary,
+        reproduce: html::shell_line(&report.command),
+        pictures: svg,
+        sections,
+        text: crate::report::Render::text(report),
+    });
+    crate::output::stage(path, page.as_bytes())
 }

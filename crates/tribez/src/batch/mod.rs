@@ -39,7 +39,7 @@ pub use inverse::{
 };
 pub use mesh::MeshBatchChecker;
 pub use options::BatchOptions;
-pub use parse::Format;
+pub use parse::{Format, parse_claimed_line};
 #[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub(crate) use parse::fuzz_rows;
 pub(crate) use parse::open_results;
