@@ -55,9 +55,12 @@ pub struct tribez_report {
 /// library's merge compares): the patch itself (an FNV-1a hash of its JSON patch file), the
 /// algorithm and the input space. Reports merge only with equal keys.
 fn judged_key(patch: &Patch, algorithm: Algorithm, cartesian: bool) -> String {
-    let hash = patch.to_json().bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    });
+    let hash = patch
+        .to_json()
+        .bytes()
+        .fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+        });
     let algorithm = match algorithm {
         Algorithm::Bernstein => "bernstein",
         _ => "casteljau",
@@ -95,13 +98,15 @@ unsafe fn check(
     let tolerance =
         Tolerance::parse(tolerance).map_err(|e| Failure::input(format!("tolerance: {e}")))?;
     // SAFETY: the caller guarantees options or NULL.
-    let opts = unsafe { opts.as_ref() }.copied().unwrap_or(tribez_check_options {
-        cartesian: false,
-        algorithm: TRIBEZ_ALGORITHM_CASTELJAU,
-        first_row: 0,
-        results_name: std::ptr::null(),
-        patch_name: std::ptr::null(),
-    });
+    let opts = unsafe { opts.as_ref() }
+        .copied()
+        .unwrap_or(tribez_check_options {
+            cartesian: false,
+            algorithm: TRIBEZ_ALGORITHM_CASTELJAU,
+            first_row: 0,
+            results_name: std::ptr::null(),
+            patch_name: std::ptr::null(),
+        });
     let algorithm = match opts.algorithm {
         TRIBEZ_ALGORITHM_CASTELJAU => Algorithm::Casteljau,
         TRIBEZ_ALGORITHM_BERNSTEIN => Algorithm::Bernstein,

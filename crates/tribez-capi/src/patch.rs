@@ -56,6 +56,11 @@ pub(crate) unsafe fn slice_arg<'a, T>(
     if ptr.is_null() {
         return Err(Failure::null(what));
     }
+    if len > isize::MAX as usize / std::mem::size_of::<T>().max(1) {
+        return Err(Failure::input(format!(
+            "{what}: {len} elements pass the largest size of an array"
+        )));
+    }
     // SAFETY: the caller guarantees `len` readable elements.
     Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
 }
@@ -167,9 +172,7 @@ fn control_point_count(m: usize, n: usize) -> Option<usize> {
     for i in 1..=m as u128 {
         c = c.checked_mul(n as u128 + i)? / i;
     }
-    usize::try_from(c)
-        .ok()
-        .filter(|&c| c <= MAX_CONTROL_POINTS)
+    usize::try_from(c).ok().filter(|&c| c <= MAX_CONTROL_POINTS)
 }
 
 /// A polynomial Bézier simplex from doubles, each taken exactly (the double's own value, no
@@ -382,8 +385,7 @@ pub unsafe extern "C" fn tribez_eval_exact(
                 let what = format!("point[{i}]");
                 let t = text_arg(t, &what)?;
                 xs.push(
-                    parse_rational(t)
-                        .map_err(|e| Failure::input(format!("{what}: `{t}`: {e}")))?,
+                    parse_rational(t).map_err(|e| Failure::input(format!("{what}: `{t}`: {e}")))?,
                 );
             }
             let value = patch.evaluate(&xs).map_err(Failure::input)?;
@@ -465,9 +467,7 @@ pub unsafe extern "C" fn tribez_eval_f64_correctly_rounded(
                 .enumerate()
                 .map(|(i, &x)| exact(x, &|| format!("point[{i}]")))
                 .collect::<Result<Vec<_>, _>>()?;
-            let value = patch
-                .evaluate_homogeneous(&input)
-                .map_err(Failure::input)?;
+            let value = patch.evaluate_homogeneous(&input).map_err(Failure::input)?;
             let rounded: Vec<f64> = value
                 .iter()
                 .map(|v| v.to_f64().unwrap_or(f64::NAN))

@@ -56,8 +56,16 @@ fn eval_exact(p: *const tribez_patch, point: &[&str]) -> Result<Vec<String>, (c_
     let cs: Vec<CString> = point.iter().map(|s| CString::new(*s).unwrap()).collect();
     let ptrs: Vec<*const c_char> = cs.iter().map(|c| c.as_ptr()).collect();
     let (mut values, mut len, mut err) = (null_mut(), 0usize, null_mut());
-    let code =
-        unsafe { tribez_eval_exact(p, ptrs.as_ptr(), ptrs.len(), &mut values, &mut len, &mut err) };
+    let code = unsafe {
+        tribez_eval_exact(
+            p,
+            ptrs.as_ptr(),
+            ptrs.len(),
+            &mut values,
+            &mut len,
+            &mut err,
+        )
+    };
     if code != TRIBEZ_OK {
         return Err(take(err));
     }
@@ -74,11 +82,22 @@ fn eval_exact(p: *const tribez_patch, point: &[&str]) -> Result<Vec<String>, (c_
     Ok(out)
 }
 
-fn eval_cr(p: *const tribez_patch, point: &[f64], out_len: usize) -> Result<Vec<f64>, (c_int, String)> {
+fn eval_cr(
+    p: *const tribez_patch,
+    point: &[f64],
+    out_len: usize,
+) -> Result<Vec<f64>, (c_int, String)> {
     let mut out = vec![-7.0; out_len];
     let mut err = null_mut();
     let code = unsafe {
-        tribez_eval_f64_correctly_rounded(p, point.as_ptr(), point.len(), out.as_mut_ptr(), out_len, &mut err)
+        tribez_eval_f64_correctly_rounded(
+            p,
+            point.as_ptr(),
+            point.len(),
+            out.as_mut_ptr(),
+            out_len,
+            &mut err,
+        )
     };
     if code != TRIBEZ_OK {
         assert!(out.iter().all(|&x| x == -7.0), "out untouched on failure");
@@ -147,9 +166,15 @@ fn exact_values_of_finn() {
     let p = finn();
     // derive.py (and by hand: u² = 1/4, 2uv = 1/3, v² = 1/9, 2uw = 1/6, 2vw = 1/9, w² = 1/36,
     // so x = 1/3 + 1/9 = 4/9)
-    assert_eq!(eval_exact(p, &["1/2", "1/3", "1/6"]).unwrap(), ["4/9", "5/9", "29/36"]);
+    assert_eq!(
+        eval_exact(p, &["1/2", "1/3", "1/6"]).unwrap(),
+        ["4/9", "5/9", "29/36"]
+    );
     // (1/2, 1/4, 1/4): x = 2uv + 2vw = 1/4 + 1/8 = 3/8; y = 5/8; z = 11/16; and decimal input
-    assert_eq!(eval_exact(p, &["0.5", "1/4", "0.25"]).unwrap(), ["3/8", "5/8", "11/16"]);
+    assert_eq!(
+        eval_exact(p, &["0.5", "1/4", "0.25"]).unwrap(),
+        ["3/8", "5/8", "11/16"]
+    );
     // an integer value is "p"
     assert_eq!(eval_exact(p, &["1", "0", "0"]).unwrap(), ["0", "0", "0"]);
     unsafe {
@@ -177,14 +202,32 @@ fn correctly_rounded_values() {
         let bits = u64::from_str_radix(&format!("{int}{frac}"), 16).unwrap() as f64;
         bits * 2f64.powi(exp.parse::<i32>().unwrap() - 4 * frac.len() as i32)
     };
-    let want = ["0x1.70a3d70a3d70bp-3", "0x1.a3d70a3d70a3ep-1", "0x1.c28f5c28f5c2ap-2"].map(hex);
+    let want = [
+        "0x1.70a3d70a3d70bp-3",
+        "0x1.a3d70a3d70a3ep-1",
+        "0x1.c28f5c28f5c2ap-2",
+    ]
+    .map(hex);
     assert_eq!(eval_cr(p, &[0.5, 0.1, 0.4], 3).unwrap(), want);
     // derive.py: a point where a double de Casteljau is one ULP below in x
-    let point = ["0x1.4b9ad0f953a6ep-2", "0x1.a1c9fc3f7ecf9p-4", "0x1.25f957fb6652ap-1"].map(hex);
-    let want = ["0x1.772cc1cd2fd97p-3", "0x1.2b4cff49b0316p+0", "0x1.286858af58595p-1"].map(hex);
+    let point = [
+        "0x1.4b9ad0f953a6ep-2",
+        "0x1.a1c9fc3f7ecf9p-4",
+        "0x1.25f957fb6652ap-1",
+    ]
+    .map(hex);
+    let want = [
+        "0x1.772cc1cd2fd97p-3",
+        "0x1.2b4cff49b0316p+0",
+        "0x1.286858af58595p-1",
+    ]
+    .map(hex);
     assert_eq!(eval_cr(p, &point, 3).unwrap(), want);
     // dyadic: exact
-    assert_eq!(eval_cr(p, &[0.5, 0.25, 0.25], 3).unwrap(), [0.375, 0.625, 0.6875]);
+    assert_eq!(
+        eval_cr(p, &[0.5, 0.25, 0.25], 3).unwrap(),
+        [0.375, 0.625, 0.6875]
+    );
     unsafe { tribez_patch_free(p) };
 }
 
@@ -192,7 +235,9 @@ fn correctly_rounded_values() {
 fn the_documented_canonical_order_is_the_patch_files() {
     // a cubic with control point number i (in the order the header documents) equal to i:
     // the patch file names each by its multi-index
-    let order = ["3,0,0", "2,1,0", "1,2,0", "0,3,0", "2,0,1", "1,1,1", "0,2,1", "1,0,2", "0,1,2", "0,0,3"];
+    let order = [
+        "3,0,0", "2,1,0", "1,2,0", "0,3,0", "2,0,1", "1,1,1", "0,2,1", "1,0,2", "0,1,2", "0,0,3",
+    ];
     let mut toml = String::from("degree = 3\n[control_points]\n");
     for (i, a) in order.iter().enumerate() {
         toml += &format!("\"{a}\" = [\"{i}\"]\n");
@@ -203,7 +248,12 @@ fn the_documented_canonical_order_is_the_patch_files() {
     let mut err = null_mut();
     let from_text = unsafe { tribez_patch_from_text(t.as_ptr(), f.as_ptr(), &mut err) };
     assert!(!from_text.is_null() && !from_f64.is_null());
-    for point in [["1/5", "1/3", "7/15"], ["1", "0", "0"], ["0", "1/2", "1/2"], ["-1", "3/2", "1/2"]] {
+    for point in [
+        ["1/5", "1/3", "7/15"],
+        ["1", "0", "0"],
+        ["0", "1/2", "1/2"],
+        ["-1", "3/2", "1/2"],
+    ] {
         assert_eq!(eval_exact(from_f64, &point), eval_exact(from_text, &point));
     }
     // and by hand at a vertex: (0, 0, 1) is control point 003, number 9
@@ -225,15 +275,27 @@ fn from_f64_err(m: usize, n: usize, d: usize, xs: *const f64) -> String {
 #[test]
 fn patch_from_f64_errors() {
     let xs = [0.0; 64];
-    assert_eq!(from_f64_err(0, 2, 3, xs.as_ptr()), "m: 0 is not a simplex dimension (1 to 16)");
-    assert_eq!(from_f64_err(17, 1, 1, xs.as_ptr()), "m: 17 is not a simplex dimension (1 to 16)");
-    assert_eq!(from_f64_err(2, 201, 1, xs.as_ptr()), "degree: 201 is above the limit of 200");
+    assert_eq!(
+        from_f64_err(0, 2, 3, xs.as_ptr()),
+        "m: 0 is not a simplex dimension (1 to 16)"
+    );
+    assert_eq!(
+        from_f64_err(17, 1, 1, xs.as_ptr()),
+        "m: 17 is not a simplex dimension (1 to 16)"
+    );
+    assert_eq!(
+        from_f64_err(2, 201, 1, xs.as_ptr()),
+        "degree: 201 is above the limit of 200"
+    );
     assert!(from_f64_err(2, 2, 0, xs.as_ptr()).starts_with("d: 0 coordinates"));
     // C(216, 16) control points: refused before reading any
     assert!(from_f64_err(16, 200, 1, xs.as_ptr()).contains("more than 250000 control points"));
     // 250,000 control points of usize::MAX / 2 coordinates: the size overflows, nothing is read
     assert!(from_f64_err(1, 1, usize::MAX / 2, xs.as_ptr()).contains("pass the largest size"));
-    assert_eq!(from_f64_err(2, 2, 3, null()), "control_points: NULL pointer");
+    assert_eq!(
+        from_f64_err(2, 2, 3, null()),
+        "control_points: NULL pointer"
+    );
     let mut bad = FINN;
     bad[13] = f64::NAN;
     assert_eq!(
@@ -255,7 +317,10 @@ fn from_text_err(text: *const c_char, format: *const c_char) -> String {
 #[test]
 fn patch_from_text_and_file_errors() {
     let finn = CString::new(FINN_TOML).unwrap();
-    assert_eq!(from_text_err(null(), c"toml".as_ptr()), "text: NULL pointer");
+    assert_eq!(
+        from_text_err(null(), c"toml".as_ptr()),
+        "text: NULL pointer"
+    );
     assert_eq!(from_text_err(finn.as_ptr(), null()), "format: NULL pointer");
     assert_eq!(
         from_text_err(finn.as_ptr(), c"xml".as_ptr()),
@@ -266,7 +331,10 @@ fn patch_from_text_and_file_errors() {
     let bad = CString::new(FINN_TOML.replace("degree = 2", "degree = 201")).unwrap();
     assert!(from_text_err(bad.as_ptr(), c"toml".as_ptr()).contains("above the limit of 200"));
     // not UTF-8
-    assert!(from_text_err(c"degree = \xff".as_ptr(), c"toml".as_ptr()).starts_with("text: not valid UTF-8"));
+    assert!(
+        from_text_err(c"degree = \xff".as_ptr(), c"toml".as_ptr())
+            .starts_with("text: not valid UTF-8")
+    );
 
     let mut err = null_mut();
     assert!(unsafe { tribez_patch_from_file(null(), &mut err) }.is_null());
@@ -275,9 +343,13 @@ fn patch_from_text_and_file_errors() {
     let good = dir.join("finn.toml");
     std::fs::write(&good, FINN_TOML).unwrap();
     let path = CString::new(good.to_str().unwrap()).unwrap();
+    err = null_mut(); // the one taken above is freed
     let p = unsafe { tribez_patch_from_file(path.as_ptr(), &mut err) };
     assert!(!p.is_null() && err.is_null());
-    assert_eq!(eval_exact(p, &["1/2", "1/3", "1/6"]).unwrap(), ["4/9", "5/9", "29/36"]);
+    assert_eq!(
+        eval_exact(p, &["1/2", "1/3", "1/6"]).unwrap(),
+        ["4/9", "5/9", "29/36"]
+    );
     unsafe { tribez_patch_free(p) };
 }
 
@@ -289,8 +361,14 @@ fn error_messages_are_the_command_lines() {
     std::fs::write(&rows, "0.5,0.25,0.25,0.375,0.625,0.6875\n").unwrap();
     let cases = [
         ("missing.toml", None),
-        ("bad.toml", Some(FINN_TOML.replace("\"1\", \"1\", \"1\"", "\"1\", \"x\", \"1\""))),
-        ("big.toml", Some(FINN_TOML.replace("degree = 2", "degree = 3"))),
+        (
+            "bad.toml",
+            Some(FINN_TOML.replace("\"1\", \"1\", \"1\"", "\"1\", \"x\", \"1\"")),
+        ),
+        (
+            "big.toml",
+            Some(FINN_TOML.replace("degree = 2", "degree = 3")),
+        ),
         ("empty.json", Some(String::new())),
         ("p.txt", Some(FINN_TOML.to_string())),
     ];
@@ -304,17 +382,48 @@ fn error_messages_are_the_command_lines() {
         assert!(unsafe { tribez_patch_from_file(c.as_ptr(), &mut err) }.is_null());
         let (code, msg) = take(err);
         assert_eq!(code, TRIBEZ_ERROR_INPUT);
-        let out = cli(&["check", "--patch", path.to_str().unwrap(), "--results", rows.to_str().unwrap()]);
+        let out = cli(&[
+            "check",
+            "--patch",
+            path.to_str().unwrap(),
+            "--results",
+            rows.to_str().unwrap(),
+        ]);
         assert_eq!(out.status.code(), Some(2));
-        assert_eq!(String::from_utf8_lossy(&out.stderr), format!("tribez: {msg}\n"), "{name}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr),
+            format!("tribez: {msg}\n"),
+            "{name}"
+        );
     }
     // the tolerance: the CLI names its flag, the C ABI its argument
     let p = finn();
-    let (_, msg) = check64(p, &[0.5, 0.25, 0.25], &[0.375, 0.625, 0.6875], 1, "ulps=x", None).unwrap_err();
+    let (_, msg) = check64(
+        p,
+        &[0.5, 0.25, 0.25],
+        &[0.375, 0.625, 0.6875],
+        1,
+        "ulps=x",
+        None,
+    )
+    .unwrap_err();
     let patch = dir.join("finn.toml");
     std::fs::write(&patch, FINN_TOML).unwrap();
-    let out = cli(&["check", "--patch", patch.to_str().unwrap(), "--results", rows.to_str().unwrap(), "--precision", "f64", "--tolerance", "ulps=x"]);
-    assert_eq!(String::from_utf8_lossy(&out.stderr), format!("tribez: --{msg}\n"));
+    let out = cli(&[
+        "check",
+        "--patch",
+        patch.to_str().unwrap(),
+        "--results",
+        rows.to_str().unwrap(),
+        "--precision",
+        "f64",
+        "--tolerance",
+        "ulps=x",
+    ]);
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        format!("tribez: --{msg}\n")
+    );
     unsafe { tribez_patch_free(p) };
 }
 
@@ -322,42 +431,90 @@ fn error_messages_are_the_command_lines() {
 fn eval_errors() {
     let p = finn();
     let e = |r: Result<Vec<String>, (c_int, String)>| r.unwrap_err();
-    assert_eq!(e(eval_exact(null(), &["1", "0", "0"])), (TRIBEZ_ERROR_NULL, "patch: NULL pointer".into()));
+    assert_eq!(
+        e(eval_exact(null(), &["1", "0", "0"])),
+        (TRIBEZ_ERROR_NULL, "patch: NULL pointer".into())
+    );
     assert_eq!(
         e(eval_exact(p, &["1", "0"])).1,
         "point: 2 coordinates, but a point of this patch has 3"
     );
-    assert!(e(eval_exact(p, &["1", "x", "0"])).1.starts_with("point[1]: `x`: "));
-    assert!(e(eval_exact(p, &["1/2", "1/2", "1/2"])).1.contains("sum"), "{:?}", eval_exact(p, &["1/2", "1/2", "1/2"]));
+    assert!(
+        e(eval_exact(p, &["1", "x", "0"]))
+            .1
+            .starts_with("point[1]: `x`: ")
+    );
+    assert!(
+        e(eval_exact(p, &["1/2", "1/2", "1/2"])).1.contains("sum"),
+        "{:?}",
+        eval_exact(p, &["1/2", "1/2", "1/2"])
+    );
     let (mut values, mut len, mut err) = (null_mut(), 0usize, null_mut());
     let one = [c"1".as_ptr(), null(), c"0".as_ptr()];
     unsafe {
-        assert_eq!(tribez_eval_exact(p, null(), 3, &mut values, &mut len, &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_eval_exact(p, null(), 3, &mut values, &mut len, &mut err),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "point: NULL pointer");
-        assert_eq!(tribez_eval_exact(p, one.as_ptr(), 3, &mut values, &mut len, &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_eval_exact(p, one.as_ptr(), 3, &mut values, &mut len, &mut err),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "point[1]: NULL pointer");
-        assert_eq!(tribez_eval_exact(p, one.as_ptr(), 3, null_mut(), &mut len, &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_eval_exact(p, one.as_ptr(), 3, null_mut(), &mut len, &mut err),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "values: NULL pointer");
-        assert_eq!(tribez_eval_exact(p, one.as_ptr(), 3, &mut values, null_mut(), &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_eval_exact(p, one.as_ptr(), 3, &mut values, null_mut(), &mut err),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "values_len: NULL pointer");
         assert!(values.is_null() && len == 0);
         tribez_strings_free(null_mut(), 0);
     }
     let e = |r: Result<Vec<f64>, (c_int, String)>| r.unwrap_err();
-    assert_eq!(e(eval_cr(null(), &[1.0, 0.0, 0.0], 3)).1, "patch: NULL pointer");
-    assert_eq!(e(eval_cr(p, &[1.0, 0.0], 3)).1, "point: 2 coordinates, but a point of this patch has 3");
+    assert_eq!(
+        e(eval_cr(null(), &[1.0, 0.0, 0.0], 3)).1,
+        "patch: NULL pointer"
+    );
+    assert_eq!(
+        e(eval_cr(p, &[1.0, 0.0], 3)).1,
+        "point: 2 coordinates, but a point of this patch has 3"
+    );
     assert_eq!(
         e(eval_cr(p, &[1.0, 0.0, 0.0], 2)).1,
         "out: room for 2 values, but the patch's points have 3 coordinates"
     );
-    assert_eq!(e(eval_cr(p, &[1.0, f64::NAN, 0.0], 3)).1, "point[1]: NaN has no exact value");
-    assert_eq!(e(eval_cr(p, &[f64::INFINITY, 0.0, 0.0], 3)).1, "point[0]: infinity has no exact value");
+    assert_eq!(
+        e(eval_cr(p, &[1.0, f64::NAN, 0.0], 3)).1,
+        "point[1]: NaN has no exact value"
+    );
+    assert_eq!(
+        e(eval_cr(p, &[f64::INFINITY, 0.0, 0.0], 3)).1,
+        "point[0]: infinity has no exact value"
+    );
     let mut err = null_mut();
     let mut out = [0.0; 3];
     unsafe {
-        assert_eq!(tribez_eval_f64_correctly_rounded(p, null(), 3, out.as_mut_ptr(), 3, &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_eval_f64_correctly_rounded(p, null(), 3, out.as_mut_ptr(), 3, &mut err),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "point: NULL pointer");
-        assert_eq!(tribez_eval_f64_correctly_rounded(p, [1.0, 0.0, 0.0].as_ptr(), 3, null_mut(), 3, &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_eval_f64_correctly_rounded(
+                p,
+                [1.0, 0.0, 0.0].as_ptr(),
+                3,
+                null_mut(),
+                3,
+                &mut err
+            ),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "out: NULL pointer");
         tribez_patch_free(p);
     }
@@ -383,12 +540,17 @@ fn rows() -> (Vec<f64>, Vec<f64>) {
         }
     }
     vals[3 * 100] += 1e-9;
-    vals[3 * 250 + 2] = vals[3 * 250 + 2] * (1.0 + 1e-15);
+    vals[3 * 250 + 2] *= 1.0 + 1e-15;
     (pts, vals)
 }
 
 fn report_strings(r: *const tribez_report) -> (String, String) {
-    unsafe { (taken_string(tribez_report_text(r)), taken_string(tribez_report_json(r))) }
+    unsafe {
+        (
+            taken_string(tribez_report_text(r)),
+            taken_string(tribez_report_json(r)),
+        )
+    }
 }
 
 /// The report's text and JSON are byte for byte those of `tribez check --results` on the same
@@ -417,40 +579,88 @@ fn reports_are_byte_identical_to_the_command_lines() {
         let csv = dir.join(format!("rows-{precision}-{cartesian}-{tolerance}.csv"));
         let mut text = String::new();
         for (pt, val) in points.chunks(width).zip(vals.chunks(3)) {
-            let row: Vec<String> = pt.iter().chain(val).map(|&x| {
-                if precision == "f32" { hex(f64::from(x as f32)) } else { hex(x) }
-            }).collect();
+            let row: Vec<String> = pt
+                .iter()
+                .chain(val)
+                .map(|&x| {
+                    if precision == "f32" {
+                        hex(f64::from(x as f32))
+                    } else {
+                        hex(x)
+                    }
+                })
+                .collect();
             text += &(row.join(",") + "\n");
         }
         std::fs::write(&csv, text).unwrap();
         let (csv_s, patch_s) = (csv.to_str().unwrap(), patch.to_str().unwrap());
         let o = opts(1, Some(csv_s), Some(patch_s), cartesian);
         let report = if precision == "f32" {
-            let (p32, v32): (Vec<f32>, Vec<f32>) = (points.iter().map(|&x| x as f32).collect(), vals.iter().map(|&x| x as f32).collect());
+            let (p32, v32): (Vec<f32>, Vec<f32>) = (
+                points.iter().map(|&x| x as f32).collect(),
+                vals.iter().map(|&x| x as f32).collect(),
+            );
             let t = CString::new(tolerance).unwrap();
             let (mut out, mut err) = (null_mut(), null_mut());
-            let code = unsafe { tribez_check_f32(p, p32.as_ptr(), v32.as_ptr(), 300, t.as_ptr(), &o.opts, &mut out, &mut err) };
+            let code = unsafe {
+                tribez_check_f32(
+                    p,
+                    p32.as_ptr(),
+                    v32.as_ptr(),
+                    300,
+                    t.as_ptr(),
+                    &o.opts,
+                    &mut out,
+                    &mut err,
+                )
+            };
             assert_eq!(code, TRIBEZ_OK);
             out
         } else {
             check64(p, &points, &vals, 300, tolerance, Some(&o.opts)).unwrap()
         };
         let (text, json) = report_strings(report);
-        let mut args = vec!["check", "--patch", patch_s, "--results", csv_s, "--precision", precision, "--tolerance", tolerance];
+        let mut args = vec![
+            "check",
+            "--patch",
+            patch_s,
+            "--results",
+            csv_s,
+            "--precision",
+            precision,
+            "--tolerance",
+            tolerance,
+        ];
         if cartesian {
             args.push("--cartesian");
         }
         let out = cli(&args);
         let ok = unsafe { tribez_report_ok(report) };
-        assert_eq!(out.status.code(), Some(if ok { 0 } else { 1 }), "{}", String::from_utf8_lossy(&out.stderr));
-        assert_eq!(String::from_utf8(out.stdout).unwrap(), text, "{tolerance} {precision}");
+        assert_eq!(
+            out.status.code(),
+            Some(if ok { 0 } else { 1 }),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert_eq!(
+            String::from_utf8(out.stdout).unwrap(),
+            text,
+            "{tolerance} {precision}"
+        );
         args.extend(["--format", "json"]);
         let out = cli(&args);
-        assert_eq!(String::from_utf8(out.stdout).unwrap(), json, "{tolerance} {precision}");
+        assert_eq!(
+            String::from_utf8(out.stdout).unwrap(),
+            json,
+            "{tolerance} {precision}"
+        );
         if tolerance == "ulps=2" {
             // the spoiled rows, lines 101 and 251, and nothing else
             assert_eq!(unsafe { tribez_report_failed(report) }, 2);
-            assert!(text.contains("  line 101: ") && text.contains("  line 251: "), "{text}");
+            assert!(
+                text.contains("  line 101: ") && text.contains("  line 251: "),
+                "{text}"
+            );
         }
         unsafe { tribez_report_free(report) };
     }
@@ -491,19 +701,43 @@ fn report_accessors() {
         tribez_report_free(r);
         tribez_report_free(null_mut());
         // every row non-finite: no worst row, max_ulps NaN, failed rows not an error
-        let r = check64(p, &[0.5, 0.25, 0.25], &[f64::NAN, 0.625, 0.6875], 1, "exact", None).unwrap();
+        let r = check64(
+            p,
+            &[0.5, 0.25, 0.25],
+            &[f64::NAN, 0.625, 0.6875],
+            1,
+            "exact",
+            None,
+        )
+        .unwrap();
         assert_eq!(tribez_report_failed(r), 1);
         assert!(tribez_report_max_ulps(r).is_nan());
         assert!(!tribez_report_worst_row(r, &mut worst));
         tribez_report_free(r);
         // a passing report: the dyadic point's exact values (hand derivation above)
-        let r = check64(p, &[0.5, 0.25, 0.25], &[0.375, 0.625, 0.6875], 1, "exact", None).unwrap();
+        let r = check64(
+            p,
+            &[0.5, 0.25, 0.25],
+            &[0.375, 0.625, 0.6875],
+            1,
+            "exact",
+            None,
+        )
+        .unwrap();
         assert!(tribez_report_ok(r));
         assert_eq!(tribez_report_max_ulps(r), 0.0);
         tribez_report_free(r);
         // Cartesian (x, y) = (u, v)
         let o = opts(0, None, None, true);
-        let r = check64(p, &[0.5, 0.25], &[0.375, 0.625, 0.6875], 1, "exact", Some(&o.opts)).unwrap();
+        let r = check64(
+            p,
+            &[0.5, 0.25],
+            &[0.375, 0.625, 0.6875],
+            1,
+            "exact",
+            Some(&o.opts),
+        )
+        .unwrap();
         assert!(tribez_report_ok(r));
         tribez_report_free(r);
         tribez_patch_free(p);
@@ -515,19 +749,52 @@ fn check_errors() {
     let p = finn();
     let (pts, vals) = (vec![0.5, 0.25, 0.25], vec![0.375, 0.625, 0.6875]);
     let e = |r: Result<*mut tribez_report, (c_int, String)>| r.unwrap_err();
-    assert_eq!(e(check64(null(), &pts, &vals, 1, "exact", None)), (TRIBEZ_ERROR_NULL, "patch: NULL pointer".into()));
-    assert!(e(check64(p, &pts, &vals, 1, "ulps=-1", None)).1.starts_with("tolerance: "));
-    assert!(e(check64(p, &pts, &vals, 1, "nonsense", None)).1.starts_with("tolerance: "));
-    assert!(e(check64(p, &pts, &vals, 1, "", None)).1.starts_with("tolerance: "));
+    assert_eq!(
+        e(check64(null(), &pts, &vals, 1, "exact", None)),
+        (TRIBEZ_ERROR_NULL, "patch: NULL pointer".into())
+    );
+    assert!(
+        e(check64(p, &pts, &vals, 1, "ulps=-1", None))
+            .1
+            .starts_with("tolerance: ")
+    );
+    assert!(
+        e(check64(p, &pts, &vals, 1, "nonsense", None))
+            .1
+            .starts_with("tolerance: ")
+    );
+    assert!(
+        e(check64(p, &pts, &vals, 1, "", None))
+            .1
+            .starts_with("tolerance: ")
+    );
     let (code, msg) = e(check64(p, &pts, &vals, 0, "exact", None));
     assert_eq!(code, TRIBEZ_ERROR_INPUT);
-    assert!(msg.contains("no result rows") || msg.contains("no rows"), "{msg}");
-    assert!(e(check64(p, &pts, &vals, usize::MAX, "exact", None)).1.contains("pass the largest size"));
+    assert!(
+        msg.contains("no result rows") || msg.contains("no rows"),
+        "{msg}"
+    );
+    assert!(
+        e(check64(p, &pts, &vals, usize::MAX, "exact", None))
+            .1
+            .contains("pass the largest size")
+    );
     let mut o = opts(0, None, None, false);
     o.opts.algorithm = 7;
-    assert!(e(check64(p, &pts, &vals, 1, "exact", Some(&o.opts))).1.starts_with("algorithm: 7 is not an algorithm"));
+    assert!(
+        e(check64(p, &pts, &vals, 1, "exact", Some(&o.opts)))
+            .1
+            .starts_with("algorithm: 7 is not an algorithm")
+    );
     let o = opts(usize::MAX, None, None, false);
-    let (_, msg) = e(check64(p, &[pts.clone(), pts.clone()].concat(), &[vals.clone(), vals.clone()].concat(), 2, "exact", Some(&o.opts)));
+    let (_, msg) = e(check64(
+        p,
+        &[pts.clone(), pts.clone()].concat(),
+        &[vals.clone(), vals.clone()].concat(),
+        2,
+        "exact",
+        Some(&o.opts),
+    ));
     assert!(msg.contains("passes the largest row index"), "{msg}");
     // a rational patch is refused
     let rational = CString::new(format!("{FINN_TOML}[weights]\n\"2,0,0\" = \"1\"\n\"1,1,0\" = \"2\"\n\"0,2,0\" = \"1\"\n\"1,0,1\" = \"1\"\n\"0,1,1\" = \"1\"\n\"0,0,2\" = \"1\"\n")).unwrap();
@@ -543,23 +810,59 @@ fn check_errors() {
     let (mut out, t) = (null_mut(), c"exact");
     unsafe {
         for (points, values, tol, outp, what) in [
-            (null(), vals.as_ptr(), t.as_ptr(), &mut out as *mut _, "points"),
-            (pts.as_ptr(), null(), t.as_ptr(), &mut out as *mut _, "values"),
-            (pts.as_ptr(), vals.as_ptr(), null(), &mut out as *mut _, "tolerance"),
+            (
+                null(),
+                vals.as_ptr(),
+                t.as_ptr(),
+                &mut out as *mut _,
+                "points",
+            ),
+            (
+                pts.as_ptr(),
+                null(),
+                t.as_ptr(),
+                &mut out as *mut _,
+                "values",
+            ),
+            (
+                pts.as_ptr(),
+                vals.as_ptr(),
+                null(),
+                &mut out as *mut _,
+                "tolerance",
+            ),
             (pts.as_ptr(), vals.as_ptr(), t.as_ptr(), null_mut(), "out"),
         ] {
             let mut err = null_mut();
-            assert_eq!(tribez_check_f64(p, points, values, 1, tol, null(), outp, &mut err), TRIBEZ_ERROR_NULL);
+            assert_eq!(
+                tribez_check_f64(p, points, values, 1, tol, null(), outp, &mut err),
+                TRIBEZ_ERROR_NULL
+            );
             assert_eq!(take(err).1, format!("{what}: NULL pointer"));
             let mut err = null_mut();
             let (p32, v32) = (points.cast::<f32>(), values.cast::<f32>());
-            assert_eq!(tribez_check_f32(p, p32, v32, 1, tol, null(), outp, &mut err), TRIBEZ_ERROR_NULL);
+            assert_eq!(
+                tribez_check_f32(p, p32, v32, 1, tol, null(), outp, &mut err),
+                TRIBEZ_ERROR_NULL
+            );
             assert_eq!(take(err).1, format!("{what}: NULL pointer"));
         }
         // an f32 batch: a value past the largest f32 is a failed row
         let (p32, v32) = ([0.5f32, 0.25, 0.25], [f32::INFINITY, 0.625, 0.6875]);
         let mut out = null_mut();
-        assert_eq!(tribez_check_f32(p, p32.as_ptr(), v32.as_ptr(), 1, t.as_ptr(), null(), &mut out, null_mut()), TRIBEZ_OK);
+        assert_eq!(
+            tribez_check_f32(
+                p,
+                p32.as_ptr(),
+                v32.as_ptr(),
+                1,
+                t.as_ptr(),
+                null(),
+                &mut out,
+                null_mut()
+            ),
+            TRIBEZ_OK
+        );
         assert_eq!(tribez_report_failed(out), 1);
         tribez_report_free(out);
         tribez_patch_free(rp);
@@ -586,18 +889,36 @@ fn merge() {
     };
     let mut err = null_mut();
     unsafe {
-        assert_eq!(tribez_report_merge(a, other_tol, &mut err), TRIBEZ_ERROR_INPUT);
-        assert!(take(err).1.starts_with("merge: reports judged with different tolerances"));
-        assert_eq!(tribez_report_merge(a, other_patch, &mut err), TRIBEZ_ERROR_INPUT);
-        assert!(take(err).1.starts_with("merge: reports judged differently (patch "));
+        assert_eq!(
+            tribez_report_merge(a, other_tol, &mut err),
+            TRIBEZ_ERROR_INPUT
+        );
+        assert!(
+            take(err)
+                .1
+                .starts_with("merge: reports judged with different tolerances")
+        );
+        assert_eq!(
+            tribez_report_merge(a, other_patch, &mut err),
+            TRIBEZ_ERROR_INPUT
+        );
+        assert!(
+            take(err)
+                .1
+                .starts_with("merge: reports judged differently (patch ")
+        );
         assert_eq!(tribez_report_merge(a, a, &mut err), TRIBEZ_ERROR_INPUT);
         assert!(take(err).1.contains("with itself"));
-        assert_eq!(tribez_report_merge(null_mut(), b, &mut err), TRIBEZ_ERROR_NULL);
+        assert_eq!(
+            tribez_report_merge(null_mut(), b, &mut err),
+            TRIBEZ_ERROR_NULL
+        );
         assert_eq!(take(err).1, "into: NULL pointer");
         assert_eq!(tribez_report_merge(a, null(), &mut err), TRIBEZ_ERROR_NULL);
         assert_eq!(take(err).1, "other: NULL pointer");
         // nothing changed by the failures
         assert_eq!(tribez_report_checked(a), 120);
+        err = null_mut(); // the ones taken above are freed
         assert_eq!(tribez_report_merge(a, b, &mut err), TRIBEZ_OK);
         assert!(err.is_null());
         assert_eq!(report_strings(a), report_strings(whole));
@@ -623,13 +944,22 @@ fn a_panic_inside_is_an_error() {
         assert_eq!(code, TRIBEZ_ERROR_INTERNAL);
         let (c, msg) = take(err);
         assert_eq!(c, TRIBEZ_ERROR_INTERNAL);
-        assert_eq!(msg, "internal error in tribez (please report it): on purpose");
+        assert_eq!(
+            msg,
+            "internal error in tribez (please report it): on purpose"
+        );
     }
     // without err: the status alone
-    assert_eq!(unsafe { tribez__panic_for_test(c"again".as_ptr(), 0, null_mut()) }, TRIBEZ_ERROR_INTERNAL);
+    assert_eq!(
+        unsafe { tribez__panic_for_test(c"again".as_ptr(), 0, null_mut()) },
+        TRIBEZ_ERROR_INTERNAL
+    );
     // and the library still works afterwards
     let p = finn();
-    assert_eq!(eval_exact(p, &["1/2", "1/3", "1/6"]).unwrap(), ["4/9", "5/9", "29/36"]);
+    assert_eq!(
+        eval_exact(p, &["1/2", "1/3", "1/6"]).unwrap(),
+        ["4/9", "5/9", "29/36"]
+    );
     unsafe { tribez_patch_free(p) };
 }
 
@@ -648,16 +978,22 @@ fn error_and_string_functions() {
 #[test]
 fn threads_share_a_patch_and_use_their_own_reports() {
     struct Shared(*mut tribez_patch);
+    // SAFETY: the handle is only read by the threads (the ABI's promise under test)
     unsafe impl Sync for Shared {}
+    impl Shared {
+        fn get(&self) -> *mut tribez_patch {
+            self.0
+        }
+    }
     let p = Shared(finn());
     let (pts, vals) = rows();
     let counts: Vec<u64> = std::thread::scope(|s| {
         let hs: Vec<_> = (0..4)
             .map(|_| {
                 s.spawn(|| {
-                    let r = check64(p.0, &pts, &vals, 300, "ulps=2", None).unwrap();
+                    let r = check64(p.get(), &pts, &vals, 300, "ulps=2", None).unwrap();
                     let n = unsafe { tribez_report_passed(r) };
-                    let v = eval_exact(p.0, &["1/2", "1/3", "1/6"]).unwrap();
+                    let v = eval_exact(p.get(), &["1/2", "1/3", "1/6"]).unwrap();
                     assert_eq!(v, ["4/9", "5/9", "29/36"]);
                     unsafe { tribez_report_free(r) };
                     n
@@ -675,7 +1011,11 @@ fn threads_share_a_patch_and_use_their_own_reports() {
 /// A double in C's hexadecimal notation (exact), as the command line reads it.
 fn hex(x: f64) -> String {
     if x == 0.0 {
-        return if x.is_sign_negative() { "-0x0p+0".into() } else { "0x0p+0".into() };
+        return if x.is_sign_negative() {
+            "-0x0p+0".into()
+        } else {
+            "0x0p+0".into()
+        };
     }
     let bits = x.to_bits();
     let sign = if x < 0.0 { "-" } else { "" };
@@ -690,7 +1030,9 @@ fn hex(x: f64) -> String {
 
 /// A fresh scratch directory under the target directory.
 fn scratch(name: &str) -> PathBuf {
-    let dir = target_dir().join("tmp").join(format!("tribez-capi-{name}-{}", std::process::id()));
+    let dir = target_dir()
+        .join("tmp")
+        .join(format!("tribez-capi-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
@@ -721,6 +1063,13 @@ fn cli(args: &[&str]) -> std::process::Output {
             assert!(status.success(), "cargo build -p tribez-cli failed");
         }
     });
-    assert!(bin.exists(), "{}: no tribez binary (cargo build -p tribez-cli)", bin.display());
-    std::process::Command::new(&bin).args(args).output().unwrap()
+    assert!(
+        bin.exists(),
+        "{}: no tribez binary (cargo build -p tribez-cli)",
+        bin.display()
+    );
+    std::process::Command::new(&bin)
+        .args(args)
+        .output()
+        .unwrap()
 }

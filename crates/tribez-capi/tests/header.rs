@@ -26,7 +26,11 @@ fn committed_header_is_fresh() {
          `TRIBEZ_BLESS=1 cargo test -p tribez-capi --test header` and commit it"
     );
     // every exported function is declared, and the test-only entry point is not
-    for name in ["tribez_check_f64", "tribez_report_merge", "tribez_error_message"] {
+    for name in [
+        "tribez_check_f64",
+        "tribez_report_merge",
+        "tribez_error_message",
+    ] {
         assert!(fresh.contains(&format!("{name}(")), "{name} missing");
     }
     assert!(!fresh.contains("tribez__panic_for_test"));
