@@ -44,6 +44,8 @@
 //!   point location and lookup;
 //! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
 //!   results, judged in parallel;
+//! * [`hunt`]: search for the inputs where another implementation is least accurate
+//!   (`tribez hunt`);
 //! * [`algebraic`]: real algebraic numbers ([`RealAlgebraic`]) and the inverse problems they
 //!   answer exactly: [`intersect_curves`] for two planar curves ([`Curve`]);
 //! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
@@ -73,6 +75,7 @@ mod float;
 mod functional;
 mod fuzz;
 pub mod hazmat;
+pub mod hunt;
 mod io;
 mod join;
 mod judge;

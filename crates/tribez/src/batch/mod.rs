@@ -299,6 +299,42 @@ fn check_reader<R: Read + Send>(
     Ok(acc.finish())
 }
 
+/// One line of claimed coordinates, as a results row's claimed columns are read (CSV, or one
+/// JSON array when the line starts with `[`): `dim` numbers in any syntax `check --results`
+/// reads, each the float of `precision` nearest its text (hex floats exact; `nan`, `inf` and an
+/// empty field give NaN, a failed row when judged). What `tribez hunt` reads of its target.
+///
+/// Errors: one line saying what is wrong (an empty or comment line, the wrong number of
+/// numbers, a field that is not a number, with its 1-based column).
+pub fn parse_claimed_line(text: &str, dim: usize, precision: Precision) -> Result<Vec<f64>, String> {
+    let t = text.trim();
+    if t.is_empty() {
+        return Err("an empty line".into());
+    }
+    let format = if t.starts_with('[') {
+        Format::JsonLines
+    } else {
+        Format::Csv
+    };
+    match parse_row(format, text, 1, 1, 0, dim, Some(precision), "") {
+        Ok(Some((_, claimed))) => Ok(claimed
+            .iter()
+            .map(|x| match x {
+                Num::Value { float, .. } => *float,
+                Num::NotFinite(_) => f64::NAN,
+            })
+            .collect()),
+        Ok(None) => Err("a comment line".into()),
+        Err(e) => Err(match (&*e.problem, e.column) {
+            (crate::io::Problem::Rows(RowsProblem::ColumnCount { found, .. }), _) => {
+                format!("{found} numbers, expected {dim}")
+            }
+            (p, Some(c)) => format!("column {c}: {p}"),
+            (p, None) => p.to_string(),
+        }),
+    }
+}
+
 /// The numbers of an in-memory row: with a precision each value is rounded to it (an `f32`
 /// batch takes the nearest `f32`); the value as intended is the `f64` given. For an `f64` batch
 /// that is the float itself, whose exact value [`Accumulator::intended`] takes from it when a
