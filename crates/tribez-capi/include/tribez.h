@@ -49,6 +49,10 @@
 // out-parameter, owned by the caller, freed with [`tribez_error_free`].
 typedef struct tribez_error tribez_error;
 
+// What a hunt found: the rows evaluated and broken, and the worst rows (worst first). Created
+// by `tribez_hunt`, freed with [`tribez_hunt_report_free`].
+typedef struct tribez_hunt_report tribez_hunt_report;
+
 // A patch of any kind (Bézier, rational, functional, S-patch), immutable once made. Created by
 // `tribez_patch_from_*`, freed with [`tribez_patch_free`]. May be read from several threads
 // at once.
@@ -81,6 +85,29 @@ typedef struct tribez_check_options {
   // line shows the patch file's path there.
   const char *patch_name;
 } tribez_check_options;
+
+// The function under test: given `rows` rows of inputs (row-major: `m + 1` barycentric
+// coordinates per row, or `m` Cartesian ones with `tribez_hunt_options.cartesian`), it writes
+// `rows` rows of the patch's `d` coordinates to `outputs`. `ctx` is the caller's pointer, passed
+// through. `inputs` is valid only during the call; `outputs` has room for `rows * d` doubles
+// (NaN until written: a row left unwritten fails). The target must not unwind (no C++
+// exception may leave it).
+typedef void (*tribez_hunt_target)(void *ctx, const double *inputs, size_t rows, double *outputs);
+
+// How `tribez_hunt` searches. All zero, or a NULL `opts`, is the default: 10,000 rows, seed
+// 0, barycentric rows, 4,096 rows per call of the target, the 10 worst rows kept.
+typedef struct tribez_hunt_options {
+  // Rows given to the target, at most (0: 10,000; at most 2^40).
+  uint64_t budget;
+  // The seed of the search: the same seed gives the same rows and the same report.
+  uint64_t seed;
+  // The rows are the `m` Cartesian coordinates of points of the patch's domain.
+  bool cartesian;
+  // The most rows given to the target in one call (0: 4,096; at most 2^20).
+  size_t batch;
+  // The worst rows the report keeps (0: 10; at most 10,000).
+  size_t top;
+} tribez_hunt_options;
 
 #ifdef __cplusplus
 extern "C" {
@@ -311,6 +338,87 @@ int tribez_report_merge(struct tribez_report *into,
 //
 // `report` is NULL or a report from tribez not yet freed, used by no other thread.
 void tribez_report_free(struct tribez_report *report);
+
+// Hunt for the inputs where `target` is least accurate on a polynomial Bézier patch, judging
+// every row as `tribez_check_f64` would with `tolerance` (the engine of `tribez hunt`).
+//
+// The search is deterministic for a seed: uniform points, then the places floats fail
+// (corners, edges, tiny coordinates, binade boundaries, large condition numbers), then local
+// search around the worst rows found, within `opts->budget` rows. `target` is called on the
+// calling thread, one call at a time, with at most `opts->batch` rows.
+//
+// On success `*out` is a new report and the return value `TRIBEZ_OK`; on failure (NULL
+// arguments, a bad tolerance, options out of range, a rational patch or S-patch) an error
+// code, `*err` set when `err` is not NULL and `*out` untouched.
+//
+// Ownership: `patch`, `tolerance` and `opts` are borrowed for the call; `ctx` is passed to
+// `target` and never dereferenced by tribez. `*out` is the caller's
+// (`tribez_hunt_report_free`); `*err`, when set, too (`tribez_error_free`).
+//
+// # Safety
+//
+// `patch` is NULL or a live patch; `target` is NULL or a function meeting
+// `tribez_hunt_target`'s contract; `tolerance` NULL or a NUL-terminated string; `opts` NULL or
+// valid; `out` and `err` NULL or valid for a write.
+int tribez_hunt(const struct tribez_patch *patch,
+                tribez_hunt_target target,
+                void *ctx,
+                const char *tolerance,
+                const struct tribez_hunt_options *opts,
+                struct tribez_hunt_report **out,
+                struct tribez_error **err);
+
+// Rows given to the target and judged (0 for NULL).
+//
+// Ownership: `report` is borrowed.
+//
+// # Safety
+//
+// `report` is NULL or a live hunt report.
+uint64_t tribez_hunt_report_evaluated(const struct tribez_hunt_report *report);
+
+// Rows that broke the tolerance (0 for NULL).
+//
+// Ownership: `report` is borrowed.
+//
+// # Safety
+//
+// `report` is NULL or a live hunt report.
+uint64_t tribez_hunt_report_broke(const struct tribez_hunt_report *report);
+
+// The number of worst rows kept (at most `opts->top`; 0 for NULL).
+//
+// Ownership: `report` is borrowed.
+//
+// # Safety
+//
+// `report` is NULL or a live hunt report.
+size_t tribez_hunt_report_worst_len(const struct tribez_hunt_report *report);
+
+// The `i`-th worst row (0: the worst): its error in ULPs (computed exactly; infinite for a
+// non-finite answer), and when `input` / `claimed` are not NULL, its input (the row's width:
+// `m + 1`, or `m` Cartesian) and the target's answer (`d` numbers) copied there. Returns the
+// error, or NaN when `report` is NULL or `i` is past the last row (nothing copied).
+//
+// Ownership: `report` is borrowed; `input` and `claimed` are the caller's buffers.
+//
+// # Safety
+//
+// `report` is NULL or a live hunt report; `input` NULL or valid for writing the row's width
+// of doubles; `claimed` NULL or valid for writing `d` doubles.
+double tribez_hunt_report_worst(const struct tribez_hunt_report *report,
+                                size_t i,
+                                double *input,
+                                double *claimed);
+
+// Free a hunt report (NULL: nothing).
+//
+// Ownership: takes `report`; it is invalid afterwards.
+//
+// # Safety
+//
+// `report` is NULL or a hunt report not yet freed, used by no other thread.
+void tribez_hunt_report_free(struct tribez_hunt_report *report);
 
 // Read a patch file (`.toml` or `.json`, any kind of patch; docs/guide.md §3).
 //

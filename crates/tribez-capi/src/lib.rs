@@ -28,11 +28,13 @@ use std::ffi::{CStr, CString, c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 mod check;
+mod hunt;
 mod patch;
 #[cfg(test)]
 mod tests;
 
 pub use check::*;
+pub use hunt::*;
 pub use patch::*;
 
 /// Success.

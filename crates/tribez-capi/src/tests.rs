@@ -1006,6 +1006,149 @@ fn threads_share_a_patch_and_use_their_own_reports() {
     unsafe { tribez_patch_free(p.0) };
 }
 
+// --- hunt -----------------------------------------------------------------------------------
+
+/// A target: Finn's triangle by de Casteljau in doubles; with a non-NULL `ctx`, a planted
+/// fault (x off by 2^-20 relative where u < 2^-10, a corner region a uniform search rarely hits).
+unsafe extern "C" fn finn_target(
+    ctx: *mut std::ffi::c_void,
+    inputs: *const f64,
+    rows: usize,
+    outputs: *mut f64,
+) {
+    let inputs = unsafe { std::slice::from_raw_parts(inputs, rows * 3) };
+    let outputs = unsafe { std::slice::from_raw_parts_mut(outputs, rows * 3) };
+    for (p, out) in inputs.chunks(3).zip(outputs.chunks_mut(3)) {
+        let (u, v, w) = (p[0], p[1], p[2]);
+        for c in 0..3 {
+            let b = |i: usize| FINN[3 * i + c];
+            let b100 = u * b(0) + v * b(1) + w * b(3);
+            let b010 = u * b(1) + v * b(2) + w * b(4);
+            let b001 = u * b(3) + v * b(4) + w * b(5);
+            out[c] = u * b100 + v * b010 + w * b001;
+        }
+        if !ctx.is_null() && u < 1.0 / 1024.0 {
+            out[0] *= 1.0 + 1.0 / 1048576.0;
+        }
+    }
+}
+
+fn hunt_run(
+    target: tribez_hunt_target,
+    ctx: *mut std::ffi::c_void,
+    tol: &str,
+    o: Option<&tribez_hunt_options>,
+) -> Result<*mut tribez_hunt_report, (c_int, String)> {
+    let p = finn();
+    let t = CString::new(tol).unwrap();
+    let (mut out, mut err) = (null_mut(), null_mut());
+    let code = unsafe {
+        tribez_hunt(
+            p,
+            target,
+            ctx,
+            t.as_ptr(),
+            o.map_or(null(), |o| o as *const _),
+            &mut out,
+            &mut err,
+        )
+    };
+    unsafe { tribez_patch_free(p) };
+    if code != TRIBEZ_OK {
+        assert!(out.is_null());
+        return Err(take(err));
+    }
+    Ok(out)
+}
+
+#[test]
+fn hunt_finds_a_planted_fault_and_passes_a_sound_target() {
+    let o = tribez_hunt_options {
+        budget: 3000,
+        seed: 1,
+        cartesian: false,
+        batch: 0,
+        top: 0,
+    };
+    unsafe {
+        let sound = hunt_run(Some(finn_target), null_mut(), "bound", Some(&o)).unwrap();
+        assert_eq!(tribez_hunt_report_evaluated(sound), 3000);
+        assert_eq!(tribez_hunt_report_broke(sound), 0);
+        tribez_hunt_report_free(sound);
+        let mut flag = 1u8;
+        let ctx = (&mut flag as *mut u8).cast();
+        let faulty = hunt_run(Some(finn_target), ctx, "bound", Some(&o)).unwrap();
+        assert!(tribez_hunt_report_broke(faulty) > 0);
+        assert!((1..=10).contains(&tribez_hunt_report_worst_len(faulty)));
+        let (mut input, mut claimed) = ([0.0; 3], [0.0; 3]);
+        let ulps = tribez_hunt_report_worst(faulty, 0, input.as_mut_ptr(), claimed.as_mut_ptr());
+        // the planted error: 2^-20 relative, about 2^32 ulps of x
+        assert!(ulps > 1e6, "{ulps}");
+        assert!(input[0] < 1.0 / 1024.0, "{input:?}");
+        // the same seed, the same hunt
+        let again = hunt_run(Some(finn_target), ctx, "bound", Some(&o)).unwrap();
+        let mut input2 = [0.0; 3];
+        assert_eq!(
+            tribez_hunt_report_worst(again, 0, input2.as_mut_ptr(), null_mut()),
+            ulps
+        );
+        assert_eq!(input2, input);
+        assert!(tribez_hunt_report_worst(faulty, 99, null_mut(), null_mut()).is_nan());
+        tribez_hunt_report_free(faulty);
+        tribez_hunt_report_free(again);
+        // NULL reports
+        assert_eq!(tribez_hunt_report_evaluated(null()), 0);
+        assert_eq!(tribez_hunt_report_broke(null()), 0);
+        assert_eq!(tribez_hunt_report_worst_len(null()), 0);
+        assert!(tribez_hunt_report_worst(null(), 0, null_mut(), null_mut()).is_nan());
+        tribez_hunt_report_free(null_mut());
+    }
+}
+
+#[test]
+fn hunt_errors() {
+    assert_eq!(
+        hunt_run(None, null_mut(), "bound", None).unwrap_err(),
+        (TRIBEZ_ERROR_NULL, "target: NULL pointer".into())
+    );
+    assert!(
+        hunt_run(Some(finn_target), null_mut(), "ulps=", None)
+            .unwrap_err()
+            .1
+            .starts_with("tolerance: ")
+    );
+    let o = tribez_hunt_options {
+        budget: u64::MAX,
+        seed: 0,
+        cartesian: false,
+        batch: 0,
+        top: 0,
+    };
+    assert!(
+        hunt_run(Some(finn_target), null_mut(), "bound", Some(&o))
+            .unwrap_err()
+            .1
+            .starts_with("budget ")
+    );
+    let mut err = null_mut();
+    let mut out = null_mut();
+    assert_eq!(
+        unsafe {
+            tribez_hunt(
+                null(),
+                Some(finn_target),
+                null_mut(),
+                c"bound".as_ptr(),
+                null(),
+                &mut out,
+                &mut err,
+            )
+        },
+        TRIBEZ_ERROR_NULL
+    );
+    assert_eq!(take(err).1, "patch: NULL pointer");
+}
+
 // --- helpers --------------------------------------------------------------------------------
 
 /// A double in C's hexadecimal notation (exact), as the command line reads it.

@@ -306,7 +306,11 @@ fn check_reader<R: Read + Send>(
 ///
 /// Errors: one line saying what is wrong (an empty or comment line, the wrong number of
 /// numbers, a field that is not a number, with its 1-based column).
-pub fn parse_claimed_line(text: &str, dim: usize, precision: Precision) -> Result<Vec<f64>, String> {
+pub fn parse_claimed_line(
+    text: &str,
+    dim: usize,
+    precision: Precision,
+) -> Result<Vec<f64>, String> {
     let t = text.trim();
     if t.is_empty() {
         return Err("an empty line".into());

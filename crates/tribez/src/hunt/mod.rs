@@ -225,7 +225,10 @@ pub fn hunt_each_row<E>(
     }
     let m = bezier.net.m();
     let dim = bezier.net.dim();
-    let domain = bezier.domain.clone().unwrap_or_else(|| Domain::reference(m));
+    let domain = bezier
+        .domain
+        .clone()
+        .unwrap_or_else(|| Domain::reference(m));
     let space = space(&bezier, &domain, options);
     let checker = BatchChecker::new(
         bezier.clone(),
@@ -289,7 +292,10 @@ pub fn hunt_each_row<E>(
                 },
                 row,
                 input: input.to_vec(),
-                claimed: claimed.iter().map(|&y| round_claim(options.precision, y)).collect(),
+                claimed: claimed
+                    .iter()
+                    .map(|&y| round_claim(options.precision, y))
+                    .collect(),
             });
         }
         report.evaluated += n as u64;
@@ -379,9 +385,7 @@ struct Ranked {
 
 impl Ranked {
     fn offer(&mut self, c: &Candidate) -> bool {
-        if self.rows.len() == self.cap
-            && self.rows.last().is_some_and(|last| last.ulps >= c.ulps)
-        {
+        if self.rows.len() == self.cap && self.rows.last().is_some_and(|last| last.ulps >= c.ulps) {
             return false;
         }
         if self.rows.iter().any(|r| same_bits(&r.input, &c.input)) {
@@ -400,7 +404,9 @@ fn same_bits(a: &[f64], b: &[f64]) -> bool {
 
 fn row_key(row: &[f64]) -> u64 {
     row.iter().fold(0x243F_6A88_85A3_08D3u64, |h, x| {
-        (h ^ x.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
+        (h ^ x.to_bits())
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            .rotate_left(29)
     })
 }
 
@@ -550,8 +556,11 @@ fn settle<E>(
     for c in best.rows.iter().take(options.top) {
         let row = usize::try_from(c.row).unwrap_or(usize::MAX);
         let (report, _) = checker.check_rows(&c.input, &c.claimed, row, "<hunt>", "patch")?;
-        let exact_input: Option<Vec<BigRational>> =
-            c.input.iter().map(|&x| crate::number::exact_f64(x)).collect();
+        let exact_input: Option<Vec<BigRational>> = c
+            .input
+            .iter()
+            .map(|&x| crate::number::exact_f64(x))
+            .collect();
         let lambda = exact_input.and_then(|x| {
             if options.cartesian {
                 domain.barycentric(&x).ok()

@@ -294,7 +294,8 @@ impl Space {
                 continue;
             };
             let (mut lo, mut hi) = (0.0f64, 1.0f64);
-            let at = |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + t * (y - x)).collect() };
+            let at =
+                |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + t * (y - x)).collect() };
             for _ in 0..80 {
                 let mid = 0.5 * (lo + hi);
                 if mid <= lo || mid >= hi {

@@ -35,7 +35,8 @@ fn cubic_f64() -> Vec<([usize; 3], [f64; 2])> {
 /// de Casteljau in `f64` on [`cubic`] at `(u, v, w)`, written here independently of tribez.
 fn casteljau(l: [f64; 3]) -> [f64; 2] {
     let n = 3;
-    let mut pts: std::collections::HashMap<[usize; 3], [f64; 2]> = cubic_f64().into_iter().collect();
+    let mut pts: std::collections::HashMap<[usize; 3], [f64; 2]> =
+        cubic_f64().into_iter().collect();
     for level in (1..=n).rev() {
         let mut next = std::collections::HashMap::new();
         for i in 0..level {
@@ -62,12 +63,7 @@ fn casteljau(l: [f64; 3]) -> [f64; 2] {
 fn target(
     f: impl Fn([f64; 3]) -> [f64; 2],
 ) -> impl FnMut(&[f64]) -> Result<Vec<f64>, std::convert::Infallible> {
-    move |rows: &[f64]| {
-        Ok(rows
-            .chunks(3)
-            .flat_map(|r| f([r[0], r[1], r[2]]))
-            .collect())
-    }
+    move |rows: &[f64]| Ok(rows.chunks(3).flat_map(|r| f([r[0], r[1], r[2]])).collect())
 }
 
 fn cond_options(budget: u64, seed: u64) -> HuntOptions {
@@ -163,7 +159,11 @@ fn rows_are_consistent_floats_of_the_precision() {
             } else {
                 // the sum is 1 up to the rounding of the largest coordinate: within 2 ulps of 1
                 let s: f64 = r.iter().sum();
-                let ulp = if precision == Precision::F32 { 2f64.powi(-23) } else { 2f64.powi(-52) };
+                let ulp = if precision == Precision::F32 {
+                    2f64.powi(-23)
+                } else {
+                    2f64.powi(-52)
+                };
                 assert!((s - 1.0).abs() <= 2.0 * ulp, "{r:?}");
             }
         }
@@ -240,7 +240,17 @@ fn the_targets_error_and_a_wrong_count_end_the_hunt() {
     assert_eq!(calls, 1);
     let mut short = |rows: &[f64]| -> Result<Vec<f64>, String> { Ok(vec![0.0; rows.len() / 3]) };
     let e = hunt(&cubic(), &cond_options(500, 0), &mut short).unwrap_err();
-    assert!(matches!(e, HuntError::Answer { first: 1, dim: 2, .. }), "{e}");
+    assert!(
+        matches!(
+            e,
+            HuntError::Answer {
+                first: 1,
+                dim: 2,
+                ..
+            }
+        ),
+        "{e}"
+    );
 }
 
 #[test]
@@ -265,17 +275,26 @@ fn the_worst_rows_carry_the_exact_value_at_the_input_seen() {
 fn options_out_of_range_and_other_patches_are_refused() {
     let mut t = target(casteljau);
     let mut o = cond_options(0, 0);
-    assert!(matches!(hunt(&cubic(), &o, &mut t), Err(HuntError::Options(_))));
+    assert!(matches!(
+        hunt(&cubic(), &o, &mut t),
+        Err(HuntError::Options(_))
+    ));
     o.budget = 10;
     o.batch = 0;
-    assert!(matches!(hunt(&cubic(), &o, &mut t), Err(HuntError::Options(_))));
+    assert!(matches!(
+        hunt(&cubic(), &o, &mut t),
+        Err(HuntError::Options(_))
+    ));
 }
 
 #[test]
 fn claimed_lines_are_read_as_results_rows_are() {
     use crate::batch::parse_claimed_line;
     let p = Precision::F64;
-    assert_eq!(parse_claimed_line("0x1p-1, 0.25\n", 2, p), Ok(vec![0.5, 0.25]));
+    assert_eq!(
+        parse_claimed_line("0x1p-1, 0.25\n", 2, p),
+        Ok(vec![0.5, 0.25])
+    );
     assert_eq!(parse_claimed_line("[1, \"2\"]", 2, p), Ok(vec![1.0, 2.0]));
     // 0.1 to f32: the float nearest 1/10
     assert_eq!(
@@ -283,7 +302,14 @@ fn claimed_lines_are_read_as_results_rows_are() {
         Ok(vec![f64::from(0.1f32), f64::from(1.0f32 / 3.0)])
     );
     assert!(parse_claimed_line("nan,1", 2, p).unwrap()[0].is_nan());
-    assert_eq!(parse_claimed_line("1,2,3", 2, p), Err("3 numbers, expected 2".into()));
+    assert_eq!(
+        parse_claimed_line("1,2,3", 2, p),
+        Err("3 numbers, expected 2".into())
+    );
     assert_eq!(parse_claimed_line("", 2, p), Err("an empty line".into()));
-    assert!(parse_claimed_line("1,abc", 2, p).unwrap_err().starts_with("column 3"));
+    assert!(
+        parse_claimed_line("1,abc", 2, p)
+            .unwrap_err()
+            .starts_with("column 3")
+    );
 }
