@@ -180,6 +180,36 @@ TEST(DeCasteljau, PartsMergeIntoTheWhole) {
         << err.message();
 }
 
+// A hunt target: the C++ de Casteljau, with ctx != nullptr planting a fault where u < 2^-10.
+extern "C" void finn_target(void *ctx, const double *in, std::size_t rows, double *out) {
+    for (std::size_t r = 0; r < rows; ++r) {
+        auto p = example::de_casteljau<double>(2, 3, FINN, in[3 * r], in[3 * r + 1], in[3 * r + 2]);
+        if (ctx != nullptr && in[3 * r] < 1.0 / 1024) p[0] *= 1 + 1.0 / 1048576;
+        std::copy(p.begin(), p.end(), out + 3 * r);
+    }
+}
+
+TEST(Hunt, FindsAPlantedFault) {
+    Patch finn(tribez_patch_from_f64(2, 2, 3, FINN, nullptr));
+    ASSERT_TRUE(finn.p != nullptr);
+    tribez_hunt_options opts{};
+    opts.budget = 3000;
+    Error err;
+    tribez_hunt_report *sound = nullptr, *faulty = nullptr;
+    ASSERT_EQ(tribez_hunt(finn.p, finn_target, nullptr, "bound", &opts, &sound, &err.e), TRIBEZ_OK)
+        << err.message();
+    EXPECT_EQ(tribez_hunt_report_broke(sound), 0u);
+    EXPECT_EQ(tribez_hunt_report_evaluated(sound), 3000u);
+    int planted = 1;
+    ASSERT_EQ(tribez_hunt(finn.p, finn_target, &planted, "bound", &opts, &faulty, &err.e), TRIBEZ_OK);
+    double input[3], claimed[3];
+    double ulps = tribez_hunt_report_worst(faulty, 0, input, claimed);
+    EXPECT_TRUE(ulps > 1e6) << ulps;
+    EXPECT_TRUE(input[0] < 1.0 / 1024) << input[0];
+    tribez_hunt_report_free(sound);
+    tribez_hunt_report_free(faulty);
+}
+
 TEST(Errors, OneLineMessages) {
     Error err;
     EXPECT_TRUE(tribez_patch_from_file("no/such/patch.toml", &err.e) == nullptr);
