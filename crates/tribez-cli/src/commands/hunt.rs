@@ -377,10 +377,10 @@ fn read_lines(stdout: impl Read, tx: &Sender<Read_>) {
             line.pop();
         }
         group.push(String::from_utf8_lossy(&line).into_owned());
-        if r.buffer().is_empty() || group.len() >= 4096 {
-            if tx.send(Read_::Lines(std::mem::take(&mut group))).is_err() {
-                return;
-            }
+        if (r.buffer().is_empty() || group.len() >= 4096)
+            && tx.send(Read_::Lines(std::mem::take(&mut group))).is_err()
+        {
+            return;
         }
     }
 }

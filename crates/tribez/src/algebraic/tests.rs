@@ -252,7 +252,9 @@ fn solve_finds_points_resolved_from_neither_side() {
         c: vec![vec![q("-1"), q("1")], vec![q("1")]],
     };
     for region in [Region::plane(), Region::unit_square(), Region::triangle()] {
-        let Ok(Solved::Points { solutions, .. }) = solve(&f, &g, &region, &[flag.clone()]) else {
+        let Ok(Solved::Points { solutions, .. }) =
+            solve(&f, &g, &region, std::slice::from_ref(&flag))
+        else {
             panic!("not points");
         };
         let mut pts: Vec<(BigRational, BigRational, bool)> = solutions

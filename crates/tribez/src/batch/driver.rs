@@ -5,10 +5,7 @@
 use std::io::{BufReader, Read};
 use std::path::Path;
 
-use rayon::prelude::*;
-
-use super::accumulator::{Judged, Source};
-use super::judge::{Prepared, RowOutcome, RowScratch};
+use super::judge::{Prepared, RowOutcome};
 use super::parse::{self, Chunk, Num, RowReader};
 use super::{Accumulator, BatchError, BatchOptions, BatchReport, Format};
 use super::{STOP_SLAB, STOP_SLAB_MIN, STOP_SLAB_TIME};

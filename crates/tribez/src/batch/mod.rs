@@ -39,10 +39,10 @@ pub use inverse::{
 };
 pub use mesh::MeshBatchChecker;
 pub use options::BatchOptions;
-pub use parse::{Format, parse_claimed_line};
 #[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub(crate) use parse::fuzz_rows;
 pub(crate) use parse::open_results;
+pub use parse::{Format, parse_claimed_line};
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 
 use accumulator::Accumulator;

@@ -179,6 +179,10 @@ impl HuntReport {
     }
 }
 
+/// A target implementation: given rows of inputs (row-major), it answers one result per row
+/// (row-major, the patch's dimension per row), or fails with its own error.
+pub type Target<'t, E> = dyn FnMut(&[f64]) -> Result<Vec<f64>, E> + 't;
+
 /// Hunt for the rows where `target` is least accurate on `patch` (see the module
 /// documentation): `target` is given rows and answers results, row-major.
 ///
@@ -189,7 +193,7 @@ impl HuntReport {
 pub fn hunt<E>(
     patch: &Patch,
     options: &HuntOptions,
-    target: &mut dyn FnMut(&[f64]) -> Result<Vec<f64>, E>,
+    target: &mut Target<'_, E>,
 ) -> Result<HuntReport, HuntError<E>> {
     hunt_each_row(patch, options, target, &mut |_| {})
 }
@@ -198,7 +202,7 @@ pub fn hunt<E>(
 pub fn hunt_each_row<E>(
     patch: &Patch,
     options: &HuntOptions,
-    target: &mut dyn FnMut(&[f64]) -> Result<Vec<f64>, E>,
+    target: &mut Target<'_, E>,
     each_row: &mut dyn FnMut(HuntPoint<'_>),
 ) -> Result<HuntReport, HuntError<E>> {
     let bezier = match patch.as_any() {
@@ -497,8 +501,8 @@ impl Search {
             };
         }
         let r = &mut self.rng;
-        if self.pool.rows.is_empty() || r.next_u64() % 5 == 0 {
-            return if r.next_u64() % 4 == 0 {
+        if self.pool.rows.is_empty() || r.next_u64().is_multiple_of(5) {
+            return if r.next_u64().is_multiple_of(4) {
                 (self.space.uniform_row(r), Kind::Uniform)
             } else {
                 (self.space.special_row(r), Kind::Special)

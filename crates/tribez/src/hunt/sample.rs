@@ -233,7 +233,7 @@ impl Space {
         match r.next_u64() % SPECIAL_KINDS {
             // a corner, or a point a tiny distance from one
             0 => {
-                let t = if r.next_u64() % 4 == 0 {
+                let t = if r.next_u64().is_multiple_of(4) {
                     0.0
                 } else {
                     tiny(r, p)
@@ -282,7 +282,7 @@ impl Space {
     fn near_zero(&self, r: &mut SplitMix) -> Option<Vec<f64>> {
         let n = self.m + 1;
         for _ in 0..4 {
-            let a = if r.next_u64() % 2 == 0 {
+            let a = if r.next_u64().is_multiple_of(2) {
                 uniform(r, n)
             } else {
                 self.special_edge(r)
@@ -308,7 +308,11 @@ impl Space {
                     hi = mid;
                 }
             }
-            return Some(at(if r.next_u64() % 2 == 0 { lo } else { hi }));
+            return Some(at(if r.next_u64().is_multiple_of(2) {
+                lo
+            } else {
+                hi
+            }));
         }
         None
     }
@@ -351,7 +355,11 @@ impl Space {
         let w = row.len();
         let j = (r.next_u64() % w as u64) as usize;
         let k = (r.next_u64() % u64::from(max_shift(self.precision) + 1)) as u32;
-        let sign = if r.next_u64() % 2 == 0 { 1 } else { -1 };
+        let sign = if r.next_u64().is_multiple_of(2) {
+            1
+        } else {
+            -1
+        };
         let mut out = row.to_vec();
         out[j] = step(self.precision, row[j], sign * (1i64 << k))?;
         if self.cartesian {

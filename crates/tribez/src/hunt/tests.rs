@@ -148,7 +148,7 @@ fn rows_are_consistent_floats_of_the_precision() {
         hunt(&cubic(), &o, &mut t).unwrap();
         for r in rows_seen.chunks(w) {
             for &x in r {
-                assert!(x.is_finite() && x >= 0.0 && x <= 1.0, "{r:?}");
+                assert!(x.is_finite() && (0.0..=1.0).contains(&x), "{r:?}");
                 if precision == Precision::F32 {
                     assert_eq!(f64::from(x as f32), x, "{r:?}");
                 }
