@@ -25,6 +25,7 @@ pub const TARGETS: &[&str] = &[
     "batch_inverse",
     "fit_data",
     "certify",
+    "hunt_answer",
 ];
 
 /// Run target `name` on `data`; false if there is no such target.
@@ -43,6 +44,7 @@ pub fn run(name: &str, data: &[u8]) -> bool {
         "batch_inverse" => batch_inverse(data),
         "fit_data" => fit_data(data),
         "certify" => certify(data),
+        "hunt_answer" => hunt_answer(data),
         _ => return false,
     }
     true
@@ -276,5 +278,26 @@ pub fn certify(data: &[u8]) {
     for row in &report.rows {
         assert_eq!(row.per_point.len(), report.inputs.len());
         assert!(row.coordinates <= report.inputs.len() * shape.dimension);
+    }
+}
+
+/// One answer line of a hunted program ([`crate::batch::parse_claimed_line`]): the first byte
+/// chooses the number of coordinates (1 to 4) and the precision (f64 or f32), the rest is the
+/// line. An accepted line has exactly that many numbers.
+pub fn hunt_answer(data: &[u8]) {
+    let Some((&head, rest)) = data.split_first() else {
+        return;
+    };
+    let Some(line) = text(rest) else {
+        return;
+    };
+    let dim = usize::from(head % 4) + 1;
+    let precision = if head & 4 == 0 {
+        crate::float::Precision::F64
+    } else {
+        crate::float::Precision::F32
+    };
+    if let Ok(values) = crate::batch::parse_claimed_line(line, dim, precision) {
+        assert_eq!(values.len(), dim);
     }
 }
