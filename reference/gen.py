@@ -724,6 +724,66 @@ class InverseGen(Gen):
         ok = self.tuples_claim(claim, sols, info, prec, 2)
         return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
+    def quad_locate_case(self, cid):
+        """`locate` on a quadratic triangle whose preimages are known by construction (guide §5
+        locate, §6). With (s, t) = (λ1, λ2), the patch is P(s, t) = M (x(s), y(s, t)) + o, where
+        x(s) = k (s - s1)(s - s2) + x0, y(s, t) = c t + h(s) with h quadratic, M an invertible 2x2
+        integer matrix. For the query q = M (x0, y0) + o the equations reduce to x(s) = x0 and
+        y = y0: s is s1 or s2 (one point when s1 = s2, where the patch folds: its Jacobian
+        vanishes there), and t = (y0 - h(s)) / c. Every preimage is rational; the control points
+        are the blossom's values at the corners (theory §4). After M mixes the coordinates, both
+        coordinates of P depend on s, s^2 and t, so the exact engine sees a general-looking
+        quadratic system. The query is dyadic with a small denominator, so a precision rounds
+        nothing but the claims."""
+        r = self.r
+        s1 = F(r.randint(-2, 9), 8)
+        fold = r.random() < 0.25
+        s2 = s1 if fold else F(r.choice([k for k in range(-2, 10) if F(k, 8) != s1]), 8)
+        k = F(r.randint(1, 4), r.choice([1, 2])) * r.choice([-1, 1])
+        h = [F(r.randint(-4, 4), r.choice([1, 2, 4])) for _ in range(3)]  # h0 + h1 s + h2 s^2
+        c = r.choice([F(1), F(2), F(-1), F(1, 2)])
+        # x0 an integer; y0 such that the preimage over s1 has t = t1 (mostly in the triangle):
+        # dyadic with a small denominator, so the query is a float of either precision
+        x0, t1 = F(r.randint(-6, 6)), F(r.randint(-1, 8), 8)
+        y0 = c * t1 + h[0] + h[1] * s1 + h[2] * s1 * s1
+        while True:
+            M = [[F(r.randint(-3, 3)) for _ in range(2)] for _ in range(2)]
+            if M[0][0] * M[1][1] - M[0][1] * M[1][0] != 0:
+                break
+        o = [F(r.randint(-4, 4)) for _ in range(2)]
+        # power-form coefficients {(i, j): coefficient of s^i t^j} of x and y, then of P = M (x, y) + o
+        xc = {(0, 0): k * s1 * s2 + x0, (1, 0): -k * (s1 + s2), (2, 0): k}
+        yc = {(0, 0): h[0], (1, 0): h[1], (2, 0): h[2], (0, 1): c}
+        monos = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)]
+        pc = [{e: M[i][0] * xc.get(e, 0) + M[i][1] * yc.get(e, 0) + (o[i] if e == (0, 0) else 0) for e in monos} for i in range(2)]
+
+        def blossom2(f, a, b):
+            (sa, ta), (sb, tb) = a, b
+            return (f[(0, 0)] + f[(1, 0)] * (sa + sb) / 2 + f[(0, 1)] * (ta + tb) / 2 + f[(2, 0)] * sa * sb
+                    + f[(1, 1)] * (sa * tb + sb * ta) / 2 + f[(0, 2)] * ta * tb)
+
+        corner = [(F(0), F(0)), (F(1), F(0)), (F(0), F(1))]  # λ0, λ1 = s, λ2 = t
+        points = {}
+        for alpha in bz.indices(2, 2):
+            args = [corner[i] for i in range(3) for _ in range(alpha[i])]
+            points[alpha] = [blossom2(pc[i], args[0], args[1]) for i in range(2)]
+        P = {"n": 2, "m": 2, "d": 2, "points": points, "weights": None}
+        q = [M[i][0] * x0 + M[i][1] * y0 + o[i] for i in range(2)]
+        roots = [s1] if fold else sorted([s1, s2])
+        pre = [(s, (y0 - h[0] - h[1] * s - h[2] * s * s) / c) for s in roots]
+        for s, t in pre:  # the reference checks its own construction
+            assert bz.evaluate(P, [1 - s - t, s, t]) == q, "quad_locate: a planted preimage does not map to q"
+        prec = r.choice([None, "f64", "f32"])
+        claim = {"id": cid, "op": "locate", "source": "reference", "point": [floats.frac_text(x) for x in q]}
+        anywhere = r.random() < 0.2
+        if anywhere:
+            claim["anywhere"] = True
+        sols = [(s, t) for s, t in pre if anywhere or (s >= 0 and t >= 0 and s + t <= 1)]
+        files = {"quad": {"degree": 2, "control_points": {bz.key_text(a): [floats.frac_text(x) for x in v] for a, v in points.items()}}}
+        info = {"op": "locate", "patch_kind": "quadratic-fold" if fold else "quadratic"}
+        ok = self.tuples_claim(claim, sols, info, prec, 2)
+        return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+
     def ray_case(self, cid):
         r = self.r
         while True:

@@ -80,7 +80,7 @@ def generate(seed, nclaims, workdir):
                 file_claims.append(ops.free_claim("%s-x%d" % (op, k), op))
         else:  # inverse problems: each claim with its own patches
             for k in range(rng.randint(3, 8)):
-                kind = rng.choice(["intersect", "parabola", "locate", "ray", "join", "height"])
+                kind = rng.choice(["intersect", "parabola", "locate", "quad_locate", "ray", "join", "height"])
                 files, claim, exp = getattr(inv, kind + "_case")("%s-%d" % (kind, k))
                 for pname, pfile in files.items():
                     pn = "%s%d" % (pname, k)
@@ -368,7 +368,9 @@ def main():
             print("expected failures: %d of %s (listed in reference/expected_failures.json)" % (k, why))
         ops = {}
         for c in claims:
-            ops[c["expected"]["info"]["op"]] = ops.get(c["expected"]["info"]["op"], 0) + 1
+            info = c["expected"]["info"]
+            key = info["op"] + (" " + info["patch_kind"] if info["op"] == "locate" else "")
+            ops[key] = ops.get(key, 0) + 1
         npass = sum(1 for c in claims if c["expected"]["verdict"] == "passed")
         print("covered: " + ", ".join("%s %d" % kv for kv in sorted(ops.items())) + ", batch rows %d in %d batches" % (nrows, len(batches)))
         print("reference verdicts: %d claims passed, %d failed; batches: %d rows; %d regression cases" % (npass, len(claims) - npass, nrows, len(regs)))
