@@ -724,38 +724,32 @@ class InverseGen(Gen):
         ok = self.tuples_claim(claim, sols, info, prec, 2)
         return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
-    def quad_locate_case(self, cid):
-        """`locate` on a quadratic triangle whose preimages are known by construction (guide §5
-        locate, §6). With (s, t) = (λ1, λ2), the patch is P(s, t) = M (x(s), y(s, t)) + o, where
-        x(s) = k (s - s1)(s - s2) + x0, y(s, t) = c t + h(s) with h quadratic, M an invertible 2x2
-        integer matrix. For the query q = M (x0, y0) + o the equations reduce to x(s) = x0 and
-        y = y0: s is s1 or s2 (one point when s1 = s2, where the patch folds: its Jacobian
-        vanishes there), and t = (y0 - h(s)) / c. Every preimage is rational; the control points
-        are the blossom's values at the corners (theory §4). After M mixes the coordinates, both
-        coordinates of P depend on s, s^2 and t, so the exact engine sees a general-looking
-        quadratic system. The query is dyadic with a small denominator, so a precision rounds
-        nothing but the claims."""
+    def quad_patch(self):
+        """A quadratic triangle whose preimages are known by construction (guide §5 locate, §6).
+        With (s, t) = (λ1, λ2), P(s, t) = M (x(s), y(s, t)) + o where x(s) = k s^2 - k σ s + e,
+        y(s, t) = c t + h(s) with h quadratic, and M an invertible 2x2 integer matrix. After M
+        mixes the coordinates both depend on s, s^2 and t, so the exact engine sees a general
+        quadratic system. The control points are the blossom's values at the corners (theory §4).
+        Returns (P, file, query) where query(sa, ta) gives the point q = P(sa, ta) and all its
+        preimages in the plane: x(s) = x(sa) has the roots sa and σ - sa (one, on the fold line
+        s = σ/2, where the Jacobian vanishes), and t = (y - h(s)) / c. Data are dyadic with small
+        denominators, so every q is a float of either precision."""
         r = self.r
-        s1 = F(r.randint(-2, 9), 8)
-        fold = r.random() < 0.25
-        s2 = s1 if fold else F(r.choice([k for k in range(-2, 10) if F(k, 8) != s1]), 8)
+        sigma = F(r.randint(-2, 18), 8)
         k = F(r.randint(1, 4), r.choice([1, 2])) * r.choice([-1, 1])
+        e = F(r.randint(-6, 6))
         h = [F(r.randint(-4, 4), r.choice([1, 2, 4])) for _ in range(3)]  # h0 + h1 s + h2 s^2
         c = r.choice([F(1), F(2), F(-1), F(1, 2)])
-        # x0 an integer; y0 such that the preimage over s1 has t = t1 (mostly in the triangle):
-        # dyadic with a small denominator, so the query is a float of either precision
-        x0, t1 = F(r.randint(-6, 6)), F(r.randint(-1, 8), 8)
-        y0 = c * t1 + h[0] + h[1] * s1 + h[2] * s1 * s1
         while True:
             M = [[F(r.randint(-3, 3)) for _ in range(2)] for _ in range(2)]
             if M[0][0] * M[1][1] - M[0][1] * M[1][0] != 0:
                 break
         o = [F(r.randint(-4, 4)) for _ in range(2)]
-        # power-form coefficients {(i, j): coefficient of s^i t^j} of x and y, then of P = M (x, y) + o
-        xc = {(0, 0): k * s1 * s2 + x0, (1, 0): -k * (s1 + s2), (2, 0): k}
+        # power-form coefficients {(i, j): coefficient of s^i t^j} of x and y, then of P
+        xc = {(0, 0): e, (1, 0): -k * sigma, (2, 0): k}
         yc = {(0, 0): h[0], (1, 0): h[1], (2, 0): h[2], (0, 1): c}
         monos = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)]
-        pc = [{e: M[i][0] * xc.get(e, 0) + M[i][1] * yc.get(e, 0) + (o[i] if e == (0, 0) else 0) for e in monos} for i in range(2)]
+        pc = [{m: M[i][0] * xc.get(m, 0) + M[i][1] * yc.get(m, 0) + (o[i] if m == (0, 0) else 0) for m in monos} for i in range(2)]
 
         def blossom2(f, a, b):
             (sa, ta), (sb, tb) = a, b
@@ -768,21 +762,37 @@ class InverseGen(Gen):
             args = [corner[i] for i in range(3) for _ in range(alpha[i])]
             points[alpha] = [blossom2(pc[i], args[0], args[1]) for i in range(2)]
         P = {"n": 2, "m": 2, "d": 2, "points": points, "weights": None}
-        q = [M[i][0] * x0 + M[i][1] * y0 + o[i] for i in range(2)]
-        roots = [s1] if fold else sorted([s1, s2])
-        pre = [(s, (y0 - h[0] - h[1] * s - h[2] * s * s) / c) for s in roots]
-        for s, t in pre:  # the reference checks its own construction
-            assert bz.evaluate(P, [1 - s - t, s, t]) == q, "quad_locate: a planted preimage does not map to q"
+        hs = lambda s: h[0] + h[1] * s + h[2] * s * s
+
+        def query(sa, ta):
+            X = k * sa * sa - k * sigma * sa + e
+            Y = c * ta + hs(sa)
+            q = [M[i][0] * X + M[i][1] * Y + o[i] for i in range(2)]
+            pre = [(s, (Y - hs(s)) / c) for s in sorted({sa, sigma - sa})]
+            for s, t in pre:  # the reference checks its own construction
+                assert bz.evaluate(P, [1 - s - t, s, t]) == q, "quad_patch: a planted preimage does not map to q"
+            return q, pre
+
+        pf = {"degree": 2, "control_points": {bz.key_text(a): [floats.frac_text(x) for x in v] for a, v in points.items()}}
+        return P, pf, query, sigma
+
+    def quad_locate_case(self, cid):
+        """`locate` on a quad_patch at a point with one or two planted preimages (one when the
+        query's preimage lies on the fold)."""
+        r = self.r
+        P, pf, query, sigma = self.quad_patch()
+        fold = r.random() < 0.25
+        sa = sigma / 2 if fold else F(r.randint(-2, 9), 8)
+        q, pre = query(sa, F(r.randint(-1, 8), 8))
         prec = r.choice([None, "f64", "f32"])
         claim = {"id": cid, "op": "locate", "source": "reference", "point": [floats.frac_text(x) for x in q]}
         anywhere = r.random() < 0.2
         if anywhere:
             claim["anywhere"] = True
         sols = [(s, t) for s, t in pre if anywhere or (s >= 0 and t >= 0 and s + t <= 1)]
-        files = {"quad": {"degree": 2, "control_points": {bz.key_text(a): [floats.frac_text(x) for x in v] for a, v in points.items()}}}
-        info = {"op": "locate", "patch_kind": "quadratic-fold" if fold else "quadratic"}
+        info = {"op": "locate", "patch_kind": "quadratic-fold" if len(pre) == 1 else "quadratic"}
         ok = self.tuples_claim(claim, sols, info, prec, 2)
-        return files, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
+        return {"quad": pf}, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
     def ray_case(self, cid):
         r = self.r
@@ -955,6 +965,9 @@ class InverseBatchGen(InverseGen):
         r = self.r
         prec = r.choice([None, "f64", "f32"])
         tol = r.choice(["exact", "abs=1e-9", "rel=1e-12"] + (["ulps=1", "ulps=4", "correctly_rounded", "faithful"] if prec else []))
+        quad = kind == "locate" and r.random() < 0.4
+        if quad:
+            _, quad_pf, query, sigma = self.quad_patch()
         while True:
             A, B, C = (ipoint(r, 3 if kind == "ray" else 2) for _ in range(3))
             if kind == "locate" and bz.det([[1, 1, 1], [A[0], B[0], C[0]], [A[1], B[1], C[1]]]) != 0:
@@ -964,7 +977,13 @@ class InverseBatchGen(InverseGen):
         rows = []
         self.all_good = r.random() < 0.35
         for _ in range(nrows):
-            if kind == "locate":
+            if quad:
+                sa = sigma / 2 if r.random() < 0.2 else F(r.randint(-2, 9), 8)
+                q, pre = query(sa, F(r.randint(-1, 8), 8))
+                qtexts = [floats.frac_text(x) for x in q]
+                sols = [(s_, t_) for s_, t_ in pre if s_ >= 0 and t_ >= 0 and s_ + t_ <= 1]
+                dim = 2
+            elif kind == "locate":
                 lam = self.bary_exact(2, inside=r.random() < 0.7)
                 pt = [sum(l * v[i] for l, v in zip(lam, [A, B, C])) for i in range(2)]
                 qtexts = [self.point_text(x, prec) for x in pt]
@@ -993,7 +1012,7 @@ class InverseBatchGen(InverseGen):
             ctexts, ok = self.row_claim(sols, prec, tol, dim)
             rows.append((qtexts + ctexts, ok))
         text = "\n".join(",".join(t) for t, _ in rows) + "\n"
-        pf = linear_file([A, B, C], ["1,0,0", "0,1,0", "0,0,1"])
+        pf = quad_pf if quad else linear_file([A, B, C], ["1,0,0", "0,1,0", "0,0,1"])
         opts = ["--" + kind + "-results", "rows.csv"]
         if prec:
             opts += ["--precision", prec]
@@ -1002,4 +1021,4 @@ class InverseBatchGen(InverseGen):
         failed_lines = [i + 1 for i, (_, ok) in enumerate(rows) if not ok]
         return pf, text, opts, {"passed": nrows - len(failed_lines), "failed": len(failed_lines), "failed_lines": failed_lines,
                                 "exit": 1 if failed_lines else 0,
-                                "info": {"op": kind + "-batch", "format": "csv", "precision": prec, "tolerance": tol.split("=")[0]}}
+                                "info": {"op": kind + "-batch", "patch_kind": "quadratic" if quad else "linear", "format": "csv", "precision": prec, "tolerance": tol.split("=")[0]}}
