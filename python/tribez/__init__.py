@@ -31,6 +31,7 @@ from . import _native
 from ._convert import float_rows, fraction, matrix_texts, number_text
 from ._errors import CertificationError, InputError, InternalError, TribezError
 from ._report import CertifyReport, ClaimsReport, InverseReport, Report
+from ._hunt import MAX_HUNT_BATCH, MAX_HUNT_BUDGET, MAX_HUNT_TOP, HuntReport, HuntRow, hunt
 
 __all__ = [
     "Patch",
@@ -43,6 +44,9 @@ __all__ = [
     "check_locate",
     "check_ray",
     "certify",
+    "hunt",
+    "HuntReport",
+    "HuntRow",
     "threads",
     "TribezError",
     "InputError",
