@@ -14,7 +14,8 @@ The main entry points: :class:`Patch` (from files, text or ``bezier``-style node
 and float evaluation), :func:`check` (judge many float results at once, from numpy arrays),
 :class:`Report` (its verdict, the command line's report),
 :func:`tribez.testing.assert_certified` (for pytest), :func:`check_locate` and :func:`check_ray`
-(another implementation's answers to the inverse problems). Bad input raises :class:`InputError`,
+(another implementation's answers to the inverse problems), :func:`hunt` (search for the inputs
+where a function evaluating a patch is least accurate). Bad input raises :class:`InputError`,
 a ``ValueError`` whose message is the one line the command line prints.
 """
 
