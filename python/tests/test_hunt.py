@@ -308,6 +308,36 @@ def test_to_claims_is_judged_again_with_the_same_verdicts(tmp_path, from_file):
         assert verdicts_of(json.loads(res.stdout)) == want
 
 
+def at_corner(x, y):
+    return (x, y) in ((1, 0), (0, 1), (0, 0))
+
+
+def test_to_claims_of_an_f32_cartesian_hunt(tmp_path):
+    nodes = [[F(c) for c in row] for row in CUBIC]
+
+    def fn(points):
+        # Cartesian (x, y) of the reference triangle: lambda = (x, y, 1 - x - y); the float32
+        # nearest the value, one float32 up at the corners
+        out = []
+        for x, y in points.tolist():
+            v = [nearest_f32(q) for q in bernstein_value(nodes, 3, [F(x), F(y), 1 - F(x) - F(y)])]
+            out.append([np.nextafter(c, np.float32(np.inf)) if at_corner(x, y) else c for c in v])
+        return np.array(out, dtype=np.float32)
+
+    report = tribez.hunt(cubic(), fn, precision="f32", tolerance="correctly_rounded", cartesian=True,
+                         budget=400, seed=6, top=30)
+    assert any(r.passed for r in report.worst) and any(not r.passed for r in report.worst)
+    assert all(r.passed == (not at_corner(*r.input)) for r in report.worst)
+    out = tmp_path / "f32.claims.toml"
+    report.to_claims(out)
+    assert 'precision = "f32"' in out.read_text() and "\ncartesian = [" in out.read_text()
+    want = {f"hunt-row-{r.row}": r.passed for r in report.worst}
+    assert verdicts_of(json.loads(tribez.check_claims(out).to_json())) == want
+    if CLI:
+        res = subprocess.run([CLI, "check", str(out), "--format", "json"], capture_output=True, text=True)
+        assert verdicts_of(json.loads(res.stdout)) == want
+
+
 # -- the same hunt as the command line's -----------------------------------------------------------
 
 # The target, for the Python hunt and (as a program reading hex floats on standard input) for
