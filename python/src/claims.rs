@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use pyo3::prelude::*;
 
 use tribez::claims::{ClaimsOptions, check_claims as library_check_claims};
-use tribez::{Algorithm, CertifyOptions, CertifyPoints, Patch, Precision};
+use tribez::{Algorithm, CertifyOptions, CertifyPoints, Precision};
 
 use crate::patch::NativePatch;
 use crate::{guard, input_error};
@@ -179,7 +179,7 @@ pub fn certify(
             algorithm,
             label,
         };
-        let patch = Patch::from(patch.patch.clone());
+        let patch = patch.patch.clone();
         let report = py
             .detach(|| {
                 tribez::certify_until(&patch, &options, &crate::interrupted)

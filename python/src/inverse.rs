@@ -8,7 +8,6 @@ use std::io::Cursor;
 
 use pyo3::prelude::*;
 
-use tribez::Patch;
 use tribez::batch::{Format, InverseBatchChecker, InverseBatchOptions, InverseKind};
 
 use crate::claims::{NativeDocument, json_of};
@@ -68,7 +67,7 @@ pub fn check_inverse(
             precision,
             anywhere,
         };
-        let patch = Patch::from(patch.patch.clone());
+        let patch = patch.patch.clone();
         let checker =
             InverseBatchChecker::new(patch, &label, &options).map_err(|e| input_error(py, e))?;
         let report = py

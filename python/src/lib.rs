@@ -18,6 +18,7 @@ use pyo3::types::PyType;
 use tribez::{Precision, Tolerance};
 
 mod claims;
+mod hunt;
 mod inverse;
 mod patch;
 mod report;
@@ -113,6 +114,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<patch::NativePatch>()?;
     m.add_class::<report::NativeReport>()?;
     m.add_class::<claims::NativeDocument>()?;
+    m.add_class::<hunt::NativeHunt>()?;
+    m.add_function(wrap_pyfunction!(hunt::hunt, m)?)?;
+    m.add("MAX_HUNT_BUDGET", tribez::hunt::MAX_BUDGET)?;
+    m.add("MAX_HUNT_BATCH", tribez::hunt::MAX_BATCH)?;
+    m.add("MAX_HUNT_TOP", tribez::hunt::MAX_TOP)?;
     m.add_function(wrap_pyfunction!(claims::check_claims, m)?)?;
     m.add_function(wrap_pyfunction!(claims::certify, m)?)?;
     m.add_function(wrap_pyfunction!(inverse::check_inverse, m)?)?;

@@ -1,6 +1,7 @@
-"""Ctrl-C (SIGINT) during a long tribez.check or tribez.certify raises KeyboardInterrupt within
-a moment (issue 35 §7): the library asks Python for pending signals between slabs of rows or
-points, instead of ignoring them until the call ends."""
+"""Ctrl-C (SIGINT) during a long tribez.check, tribez.certify or tribez.hunt raises
+KeyboardInterrupt within a moment (issue 35 §7): the library asks Python for pending signals
+between slabs of rows or points (the hunt: between calls of the function), instead of ignoring
+them until the call ends."""
 
 import os
 import signal
@@ -39,8 +40,17 @@ CERTIFY = textwrap.dedent("""
     print("finished", flush=True)
 """)
 
+HUNT = textwrap.dedent("""
+    import numpy as np, tribez
+    patch = tribez.Patch.from_nodes([[0, 1, 0, 0, 1, 0], [0, 0, 2, 1, 1, 2], [0, 2, 0, 0, 1, 1]])
+    print("go", flush=True)
+    # a function in C (numpy's ufunc): (B, 3) rows -> (B, 3) answers; 2^40 rows would take days
+    tribez.hunt(patch, np.negative, budget=2**40, batch=1000, seed=1)
+    print("finished", flush=True)
+""")
 
-@pytest.mark.parametrize("script", [CHECK, CERTIFY], ids=["check", "certify"])
+
+@pytest.mark.parametrize("script", [CHECK, CERTIFY, HUNT], ids=["check", "certify", "hunt"])
 def test_sigint_raises_keyboard_interrupt_promptly(script):
     proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)

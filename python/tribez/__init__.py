@@ -14,7 +14,8 @@ The main entry points: :class:`Patch` (from files, text or ``bezier``-style node
 and float evaluation), :func:`check` (judge many float results at once, from numpy arrays),
 :class:`Report` (its verdict, the command line's report),
 :func:`tribez.testing.assert_certified` (for pytest), :func:`check_locate` and :func:`check_ray`
-(another implementation's answers to the inverse problems). Bad input raises :class:`InputError`,
+(another implementation's answers to the inverse problems), :func:`hunt` (search for the inputs
+where a function evaluating a patch is least accurate). Bad input raises :class:`InputError`,
 a ``ValueError`` whose message is the one line the command line prints.
 """
 
@@ -31,6 +32,7 @@ from . import _native
 from ._convert import float_rows, fraction, matrix_texts, number_text
 from ._errors import CertificationError, InputError, InternalError, TribezError
 from ._report import CertifyReport, ClaimsReport, InverseReport, Report
+from ._hunt import MAX_HUNT_BATCH, MAX_HUNT_BUDGET, MAX_HUNT_TOP, HuntReport, HuntRow, hunt
 
 __all__ = [
     "Patch",
@@ -43,6 +45,9 @@ __all__ = [
     "check_locate",
     "check_ray",
     "certify",
+    "hunt",
+    "HuntReport",
+    "HuntRow",
     "threads",
     "TribezError",
     "InputError",

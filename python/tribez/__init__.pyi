@@ -2,7 +2,7 @@
 
 import os
 from fractions import Fraction
-from typing import Any, Literal, Optional, Sequence, Union
+from typing import Any, Callable, Literal, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -18,6 +18,9 @@ MAX_CONTROL_POINTS: int
 MAX_SIMPLEX_DIMENSION: int
 MAX_RANDOM_POINTS: int
 MAX_INVERSE_ROWS: int
+MAX_HUNT_BUDGET: int
+MAX_HUNT_BATCH: int
+MAX_HUNT_TOP: int
 
 # A number: an int, a float (its exact value), a Fraction, or a string in tribez's syntax.
 Number = Union[int, float, Fraction, str, np.integer, np.floating]
@@ -178,3 +181,62 @@ def check(
     algorithm: Literal["casteljau", "bernstein"] = ...,
     first_row: int = ...,
 ) -> Report: ...
+
+class HuntRow:
+    row: int
+    input: tuple[float, ...]
+    claimed: tuple[float, ...]
+    exact: tuple[Fraction, ...]
+    ulps: float
+    passed: bool
+    reason: Optional[str]
+    def __init__(
+        self,
+        row: int,
+        input: tuple[float, ...],
+        claimed: tuple[float, ...],
+        exact: tuple[Fraction, ...],
+        ulps: float,
+        passed: bool,
+        reason: Optional[str],
+    ) -> None: ...
+
+class HuntReport:
+    @property
+    def evaluated(self) -> int: ...
+    @property
+    def broke(self) -> int: ...
+    @property
+    def ok(self) -> bool: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def budget(self) -> int: ...
+    @property
+    def precision(self) -> PrecisionName: ...
+    @property
+    def tolerance(self) -> str: ...
+    @property
+    def cartesian(self) -> bool: ...
+    @property
+    def by_kind(self) -> dict[str, int]: ...
+    @property
+    def max_ulps(self) -> Optional[float]: ...
+    @property
+    def worst(self) -> list[HuntRow]: ...
+    def text(self) -> str: ...
+    def json(self) -> str: ...
+    def to_claims(self, path: PathLike) -> None: ...
+
+def hunt(
+    patch: Patch,
+    fn: Callable[[npt.NDArray[Any]], npt.ArrayLike],
+    *,
+    precision: PrecisionName = ...,
+    tolerance: str = ...,
+    budget: int = ...,
+    seed: Optional[int] = ...,
+    cartesian: bool = ...,
+    batch: int = ...,
+    top: int = ...,
+) -> HuntReport: ...
