@@ -29,12 +29,12 @@ class HuntRow:
 
     ``row``: its number (from 1, in the order rows were given to the function); ``input``: the
     row given (floats of the precision); ``claimed``: the function's answer (as the judge reads
-    it: the nearest float of the precision); ``exact``: the exact value at the input
-    (``fractions.Fraction``, with the patch's exact control points; barycentric rows: the
-    homogeneous form at those floats, which need not sum to 1); ``ulps``: the error in ULPs, the
-    largest over the coordinates, computed exactly against the value at the input and the control
-    points rounded to the precision (as :func:`tribez.check`; the same as ``exact`` when the
-    control points are floats), ``inf`` for a non-finite answer; ``passed``: it meets the
+    it: the nearest float of the precision); ``exact``: the exact value the row was judged
+    against (``fractions.Fraction``): at the input as the function saw it, with the control
+    points rounded to the precision, as :func:`tribez.check` judges (barycentric rows: the
+    homogeneous form at those floats, which need not sum to 1); ``ulps``: the error in ULPs
+    against it, the largest over the coordinates, computed exactly, ``inf`` for a non-finite
+    answer; ``passed``: it meets the
     tolerance; ``reason``: why it breaks the tolerance, else None.
     """
 

@@ -120,8 +120,9 @@ pub struct HuntRow {
     pub input: Vec<f64>,
     /// The target's answer (rounded to the precision as the judge reads it).
     pub claimed: Vec<f64>,
-    /// The exact value at the input as the target saw it (barycentric: the homogeneous form at
-    /// those floats; Cartesian: at their exact barycentric coordinates).
+    /// The exact value the row was judged against: at the input as the target saw it, with the
+    /// control points rounded to the precision (barycentric: the homogeneous form at those
+    /// floats; Cartesian: at their exact barycentric coordinates).
     pub exact: Vec<BigRational>,
     /// The error in ULPs (the largest over the coordinates), computed exactly; infinite for a
     /// non-finite answer.
@@ -560,21 +561,13 @@ fn settle<E>(
     for c in best.rows.iter().take(options.top) {
         let row = usize::try_from(c.row).unwrap_or(usize::MAX);
         let (report, _) = checker.check_rows(&c.input, &c.claimed, row, "<hunt>", "patch")?;
-        let exact_input: Option<Vec<BigRational>> = c
-            .input
-            .iter()
-            .map(|&x| crate::number::exact_f64(x))
-            .collect();
-        let lambda = exact_input.and_then(|x| {
-            if options.cartesian {
-                domain.barycentric(&x).ok()
-            } else {
-                Some(x)
-            }
-        });
-        let exact = lambda
-            .and_then(|l| patch.evaluate_homogeneous(&l).ok())
-            .unwrap_or_default();
+        // the exact value the judge used: at the inputs as the target saw them, with the control
+        // points rounded to the precision (what float code sees, guide §7); recomputed the same
+        // way only where the report has no worst row (a row without a finite input)
+        let exact = match &report.worst {
+            Some(w) => w.coords.iter().map(|k| k.exact_seen.clone()).collect(),
+            None => exact_as_seen(&patch, domain, options, &c.input),
+        };
         out.push(HuntRow {
             row: c.row,
             input: c.input.clone(),
@@ -588,6 +581,37 @@ fn settle<E>(
     // the exact figures may reorder rows whose enclosures overlapped
     out.sort_by(|a, b| b.ulps.total_cmp(&a.ulps).then(a.row.cmp(&b.row)));
     Ok(out)
+}
+
+/// The exact value at `input` (floats) of the patch with its control points rounded to the
+/// hunt's precision; empty where an input is not finite or a Cartesian point has no barycentric
+/// coordinates.
+fn exact_as_seen(
+    patch: &Patch,
+    domain: &Domain,
+    options: &HuntOptions,
+    input: &[f64],
+) -> Vec<BigRational> {
+    let crate::any_patch::AnyPatch::Bezier(b) = patch.as_any() else {
+        return Vec::new();
+    };
+    let mut seen = b.clone();
+    seen.net = b.net.map(|q| {
+        crate::certify::measures::as_float(q, options.precision).unwrap_or_else(|| q.clone())
+    });
+    let seen = Patch::from(crate::any_patch::AnyPatch::Bezier(seen));
+    let exact_input: Option<Vec<BigRational>> =
+        input.iter().map(|&x| crate::number::exact_f64(x)).collect();
+    let lambda = exact_input.and_then(|x| {
+        if options.cartesian {
+            domain.barycentric(&x).ok()
+        } else {
+            Some(x)
+        }
+    });
+    lambda
+        .and_then(|l| seen.evaluate_homogeneous(&l).ok())
+        .unwrap_or_default()
 }
 
 /// The exact hex-float text of `x` as a float of `precision` (`0x1.5555555555555p-2`; an `f32`

@@ -313,3 +313,36 @@ fn claimed_lines_are_read_as_results_rows_are() {
             .starts_with("column 3")
     );
 }
+
+/// The exact value a report lists is the one the row was judged against: at the inputs as the
+/// target saw them, with the control points rounded to the precision (guide §7). A linear
+/// triangle with the control values 1/3, 1/3, 1/3 (a constant patch) has, in f64, the control
+/// values fl(1/3) = 6004799503160661 / 2^54 (the double nearest 1/3: 2^54/3 = 6004799503160661.33…
+/// rounds down), so its value at any barycentric floats λ is fl(1/3) · Σλ, not 1/3 · Σλ. At the
+/// rows the hunt gives (whose sums may differ from 1 by a few ulps) the listed exact value must be
+/// fl(1/3) · Σλ exactly; with the exact control values it would differ from that by
+/// (1/3 − fl(1/3)) · Σλ ≠ 0.
+#[test]
+fn a_listed_exact_value_uses_the_control_points_as_the_target_saw_them() {
+    let third = BigRational::new(1.into(), 3.into());
+    let patch = Patch::bezier(SimplexDim(2), Degree(1), vec![vec![third.clone()]; 3]).unwrap();
+    let fl_third = BigRational::new(6004799503160661i64.into(), (1i64 << 54).into());
+    assert_ne!(fl_third, third);
+    let mut options = cond_options(300, 7);
+    options.top = 5;
+    // a target that answers 0.5 everywhere: every row breaks `cond`, so rows are listed
+    let mut t = |rows: &[f64]| -> Result<Vec<f64>, std::convert::Infallible> {
+        Ok(vec![0.5; rows.len() / 3])
+    };
+    let report = hunt(&patch, &options, &mut t).unwrap();
+    assert_eq!(report.worst.len(), 5);
+    for row in &report.worst {
+        let sum: BigRational = row
+            .input
+            .iter()
+            .map(|&x| crate::number::exact_f64(x).unwrap())
+            .sum();
+        assert_eq!(row.exact, vec![&fl_third * &sum], "row {}", row.row);
+        assert!(!row.passed);
+    }
+}
