@@ -9,6 +9,7 @@ use std::io::Cursor;
 use pyo3::prelude::*;
 
 use tribez::Patch;
+use tribez::ResultsChecker;
 use tribez::batch::{Format, InverseBatchChecker, InverseBatchOptions, InverseKind};
 
 use crate::claims::{NativeDocument, json_of};
