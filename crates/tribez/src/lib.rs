@@ -54,6 +54,7 @@
 //!   files and polynomial patch files;
 //! * [`constructions`]: multi-indices, control nets, subdivision matrices, joins, symbolic
 //!   forms; [`kernels`]: the exact and float evaluation kernels;
+//! * [`ordered`]: work rendered in parallel and written in order (a long report streamed);
 //! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
 //! * `hazmat`: the low-level building blocks, **unstable**, only with the cargo feature
 //!   `unstable-internals` (off by default; the fuzz targets use it).
@@ -103,6 +104,7 @@ pub mod limits;
 mod linalg;
 pub mod mesh;
 mod number;
+pub mod ordered;
 mod patch;
 mod patch_type;
 mod rational;
