@@ -538,7 +538,7 @@ fn hall_violator(i: usize, adj: &[Vec<usize>], left: &[Option<usize>], n_right: 
     }
 }
 
-/// Judge findings of claimed tuples against the exact answer (the typed core of [`judge_answer`];
+/// Judge findings of claimed tuples against the exact answer (the typed core of `judge_answer`;
 /// `Err` when the tolerance needs what an inverse claim lacks, e.g. `bound`).
 ///
 /// The verdict is that of a matching: claimed tuple `i` may be matched with exact solution `j`

@@ -2,7 +2,7 @@
 //! --patch PATCH --locate-results FILE` and `--ray-results FILE`): each row is a query, then the
 //! parameters the implementation claims for it, judged against the exact answer (real algebraic
 //! numbers) exactly as an `op = "locate"` or `op = "ray"` claim is
-//! ([`crate::judge_inverse::judge_answer`]: the same pairing, tolerances, missed and
+//! ([`crate::claims::ops::inverse::judge_answer`]: the same pairing, tolerances, missed and
 //! extra solutions).
 //!
 //! Rows (CSV, JSON lines or one JSON array of rows, as for [`super::BatchChecker`]):
@@ -133,7 +133,7 @@ pub struct InverseRow {
 }
 
 /// One disagreement of a failed row (a finding of
-/// [`crate::judge_inverse::judge_answer`]).
+/// [`crate::claims::ops::inverse::judge_answer`]).
 #[derive(Clone, Debug, Serialize)]
 pub struct RowMismatch {
     /// `missed`, `extra`, `coordinate`, `infinite` or `not_finite`.
@@ -340,8 +340,8 @@ impl InverseBatchChecker {
     }
 
     /// Judge one row: the exact answer for its query as seen, then its claimed tuples
-    /// ([`judge_answer`]). Errors (naming the file and line): a ray whose direction is zero, a
-    /// query the exact computation refuses (its caps).
+    /// ([`crate::claims::ops::inverse::judge_answer`]). Errors (naming the file and line): a ray
+    /// whose direction is zero, a query the exact computation refuses (its caps).
     pub fn judge_row(&self, row: &InverseRow, file: &str) -> Result<bool, InputError> {
         self.judge(row, file).map(|o| o.failure.is_none())
     }

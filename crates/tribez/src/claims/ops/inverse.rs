@@ -354,8 +354,9 @@ fn read_claimed(
 }
 
 /// Judge claimed tuples (or, with `claimed_tuples` `None`, a bare claimed count) against the
-/// exact answer: every finding with its mismatch ([`crate::judge_inverse::judge_answer`], as
-/// claim mismatches). `Err` when the tolerance needs what an inverse answer lacks (`cond`,
+/// exact answer: every finding with its mismatch (the exact solution shown in full). What an
+/// inverse claim ([`judge`]) and a row of an inverse batch ([`crate::batch::inverse`]) both
+/// judge by. `Err` when the tolerance needs what an inverse answer lacks (`cond`,
 /// `bound`).
 pub fn judge_answer(
     claimed_tuples: Option<&[Vec<Q>]>,
