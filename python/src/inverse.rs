@@ -8,6 +8,7 @@ use std::io::Cursor;
 
 use pyo3::prelude::*;
 
+use tribez::ResultsChecker;
 use tribez::batch::{Format, InverseBatchChecker, InverseBatchOptions, InverseKind};
 
 use crate::claims::{NativeDocument, json_of};

@@ -43,7 +43,8 @@
 //! * [`mesh`]: meshes of functional Bézier triangles sharing their ordinates (C0), exact
 //!   point location and lookup;
 //! * [`claims`]: claim files, read and checked; [`batch`]: batches of another implementation's
-//!   results, judged in parallel;
+//!   results, judged in parallel, by a [`ResultsChecker`] (a patch's values, a mesh's lookups,
+//!   inverse answers: each from a reader or a file);
 //! * [`hunt`]: search for the inputs where another implementation is least accurate
 //!   (`tribez hunt`);
 //! * [`algebraic`]: real algebraic numbers ([`RealAlgebraic`]) and the inverse problems they
@@ -53,6 +54,7 @@
 //!   files and polynomial patch files;
 //! * [`constructions`]: multi-indices, control nets, subdivision matrices, joins, symbolic
 //!   forms; [`kernels`]: the exact and float evaluation kernels;
+//! * [`ordered`]: work rendered in parallel and written in order (a long report streamed);
 //! * [`Error`] (with [`InputError`] and [`CoreError`]): errors carrying data;
 //! * `hazmat`: the low-level building blocks, **unstable**, only with the cargo feature
 //!   `unstable-internals` (off by default; the fuzz targets use it).
@@ -95,12 +97,14 @@ pub mod hunt;
 mod io;
 mod join;
 mod judge;
+mod judge_inverse;
 mod judge_refusal;
 pub mod kernels;
 pub mod limits;
 mod linalg;
 pub mod mesh;
 mod number;
+pub mod ordered;
 mod patch;
 mod patch_type;
 mod rational;
@@ -115,6 +119,7 @@ mod testing;
 
 pub use algebraic::{AlgebraicError, Curve, CurveIntersections, RealAlgebraic, intersect_curves};
 pub use api_error::Error;
+pub use batch::ResultsChecker;
 pub use capability::{
     Constructions, ErrorBound, ExactEval, FloatEval, FloatProgram, Split, SubPatch,
 };

@@ -11,6 +11,7 @@ use std::path::PathBuf;
 
 use proptest::prelude::*;
 use tribez::Precision;
+use tribez::ResultsChecker;
 use tribez::Tolerance;
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport, Format};
 use tribez::hazmat::io::patch_file::read_patch;

@@ -38,7 +38,7 @@ fn tribez_agrees_with_sympy_about_bezier() {
 fn the_locate_batch_fails_exactly_the_rows_sympy_found_wrong() {
     use tribez::batch::{InverseBatchChecker, InverseBatchOptions, InverseKind};
     use tribez::hazmat::io::patch_file::read_any_patch;
-    use tribez::{Patch, Precision, Tolerance};
+    use tribez::{Patch, Precision, ResultsChecker, Tolerance};
 
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/inverse/peer");
     let claims = ClaimFile::read(&dir.join("locate.claims.toml")).unwrap();

@@ -9,6 +9,11 @@
 //! ..}` group, a path in an expression or type), after comments are removed. Doc links in
 //! comments are not dependencies. Test code (files `tests.rs` and `*_tests.rs`, and a file's
 //! trailing `#[cfg(test)] mod tests { .. }`) is left out: tests may reach anywhere.
+//!
+//! And no function of the library or of the command line (`crates/tribez/src`,
+//! `crates/tribez-cli/src`) outside test code is longer than [`MAX_FN_LINES`] lines, but for the
+//! numeric kernels of [`LONG_FN_ALLOWED`] (each with its reason; an entry that is no longer long
+//! fails too, so that the list only shrinks).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -534,4 +539,162 @@ fn the_map_names_every_test_file_and_command_and_nothing_else() {
         tests.len()
     );
     assert!(problems.is_empty(), "\n{}", problems.join("\n"));
+}
+
+/// The most lines a function may span, from its `fn` line to its closing brace.
+const MAX_FN_LINES: usize = 150;
+
+/// Functions allowed past [`MAX_FN_LINES`]: `(file under the repository root, function, why)`.
+const LONG_FN_ALLOWED: &[(&str, &str, &str)] = &[
+    (
+        "crates/tribez/src/certify/filter/kernel.rs",
+        "run_body",
+        "numeric kernel: the compensated de Casteljau evaluation (error-free transformations), \
+         one body inlined into every size, FMA and double-double variant",
+    ),
+    // The picture functions of the command line are being split in another branch: these
+    // entries go once it is merged.
+    (
+        "crates/tribez-cli/src/picture/reports.rs",
+        "certify",
+        "being split",
+    ),
+    (
+        "crates/tribez-cli/src/picture/patch.rs",
+        "scene",
+        "being split",
+    ),
+    (
+        "crates/tribez-cli/src/picture/patch.rs",
+        "draw",
+        "being split",
+    ),
+    (
+        "crates/tribez-cli/src/picture/errmap.rs",
+        "draw",
+        "being split",
+    ),
+];
+
+/// The name of the function a line declares (`pub(crate) const unsafe fn name<..>(..`), if it
+/// declares one.
+fn declared_fn(line: &str) -> Option<&str> {
+    let mut rest = line.trim_start();
+    if let Some(r) = rest.strip_prefix("pub") {
+        rest = match r.strip_prefix('(') {
+            Some(r) => r.split_once(')')?.1,
+            None => r,
+        }
+        .trim_start();
+    }
+    for word in ["const ", "async ", "unsafe ", "extern \"C\" "] {
+        rest = rest.strip_prefix(word).unwrap_or(rest);
+    }
+    let name = rest.strip_prefix("fn ")?;
+    let end = name.find(|c: char| !is_ident(c)).unwrap_or(name.len());
+    (end > 0).then(|| &name[..end])
+}
+
+/// The functions of `src` (test code left out: from a top-level `#[cfg(test)]` module on) with
+/// their lengths in lines: from the `fn` line to the first line that is the same indentation
+/// and `}`; a declaration ending in `;` or a body closed on its own line counts one.
+fn fn_lengths(src: &str) -> Vec<(String, usize)> {
+    let lines: Vec<&str> = src.lines().collect();
+    let end = lines
+        .windows(2)
+        .position(|w| w[0] == "#[cfg(test)]" && w[1].starts_with("mod "))
+        .unwrap_or(lines.len());
+    let lines = &lines[..end];
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let Some(name) = declared_fn(line) else {
+            continue;
+        };
+        let indent = &line[..line.len() - line.trim_start().len()];
+        let closing = format!("{indent}}}");
+        let one_line = line.trim_end().ends_with(';') || line.trim_end().ends_with('}');
+        let last = if one_line {
+            i
+        } else {
+            (i..lines.len())
+                .find(|&j| lines[j] == closing)
+                .unwrap_or(lines.len() - 1)
+        };
+        out.push((name.to_string(), last - i + 1));
+    }
+    out
+}
+
+#[test]
+fn no_function_outside_the_numeric_kernels_is_over_150_lines() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut files = Vec::new();
+    rust_files(&root.join("crates/tribez/src"), &mut files);
+    rust_files(&root.join("crates/tribez-cli/src"), &mut files);
+    let mut problems = Vec::new();
+    let mut long_allowed = BTreeSet::new();
+    let mut counted = 0;
+    for path in &files {
+        let name = path.file_name().expect("a name").to_string_lossy();
+        if name == "tests.rs" || name.ends_with("_tests.rs") {
+            continue;
+        }
+        let rel = path
+            .strip_prefix(&root)
+            .expect("under the root")
+            .to_string_lossy()
+            .replace('\\', "/");
+        let src = std::fs::read_to_string(path).expect("a source file");
+        for (f, n) in fn_lengths(&src) {
+            counted += 1;
+            if n <= MAX_FN_LINES {
+                continue;
+            }
+            if LONG_FN_ALLOWED
+                .iter()
+                .any(|(file, name, _)| *file == rel && *name == f)
+            {
+                long_allowed.insert((rel.clone(), f));
+            } else {
+                problems.push(format!(
+                    "{rel}: fn {f} is {n} lines (at most {MAX_FN_LINES}): split it into named steps"
+                ));
+            }
+        }
+    }
+    for (file, name, _) in LONG_FN_ALLOWED {
+        if !long_allowed.contains(&(file.to_string(), name.to_string())) {
+            problems.push(format!(
+                "{file}: fn {name} is allowed to be long but is not (or is gone): remove it from LONG_FN_ALLOWED"
+            ));
+        }
+    }
+    assert!(counted > 1000, "the functions were not read ({counted})");
+    assert!(problems.is_empty(), "\n{}", problems.join("\n"));
+}
+
+#[test]
+fn the_function_reader_measures_from_fn_to_its_closing_brace() {
+    let body = |n: usize| "    let x = 1;\n".repeat(n);
+    let src = format!(
+        "pub(crate) fn short() {{\n{}}}\n\nimpl A {{\n    pub const unsafe fn long(&self) {{\n{}    }}\n    fn one(&self) {{}}\n    fn decl(&self);\n}}\n#[cfg(test)]\nmod tests {{\n    fn in_tests() {{\n{}    }}\n}}\n",
+        body(148),
+        body(149),
+        body(200)
+    );
+    assert_eq!(
+        fn_lengths(&src),
+        vec![
+            ("short".to_string(), 150),
+            ("long".to_string(), 151),
+            ("one".to_string(), 1),
+            ("decl".to_string(), 1),
+        ]
+    );
+    assert_eq!(
+        declared_fn("    pub(in crate::a) fn f<T>(x: T) {"),
+        Some("f")
+    );
+    assert_eq!(declared_fn("    let fn_x = 1;"), None);
+    assert_eq!(declared_fn("// fn g()"), None);
 }

@@ -10,6 +10,7 @@ use super::check::Args;
 use super::{CliError, Outcome};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::Precision;
+use tribez::ResultsChecker;
 use tribez::Tolerance;
 use tribez::batch::{BatchChecker, BatchError, BatchOptions, BatchReport};
 use tribez::files::read_bezier_patch as read_patch;

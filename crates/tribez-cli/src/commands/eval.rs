@@ -5,9 +5,7 @@
 //! One code path for every kind: the kind's capabilities ([`tribez::ExactEval`],
 //! [`tribez::FloatEval`]) do the kind-specific work.
 
-use std::collections::BTreeMap;
 use std::path::PathBuf;
-use std::sync::{Mutex, MutexGuard, PoisonError};
 
 use num_rational::BigRational;
 use rayon::prelude::*;
@@ -387,9 +385,9 @@ const RESERVE_CAP: usize = 1 << 24;
 /// Write the report of `tribez eval` into `sink`.
 ///
 /// Every point is evaluated and rendered on the core that evaluates it, `chunk` points per task
-/// (by default many chunks per core, so that the cores share the work evenly to the end); the
-/// cores take the chunks in order, and each chunk is written as soon as the chunks before it
-/// are, its buffer then used again. The digits of large results are much of the work, and a
+/// (by default many chunks per core, so that the cores share the work evenly to the end), and
+/// the chunks are written in order ([`tribez::ordered::render_in_order`]): each as soon as the
+/// chunks before it are, its buffer then used again. The digits of large results are much of the work, and a
 /// report held whole until the end costs its size in fresh memory and a long write at the end.
 ///
 /// Nothing is written unless every point succeeds: every point's input is checked first, and
@@ -415,47 +413,24 @@ fn write_report(args: &Args, chunk: Option<usize>, sink: &mut Sink<'_>) -> Resul
         TextOrJson::Text => (format!("{}: {}\n", input.file, input.header), String::new()),
     };
     let early = eval.exact.total() && eval.programs.is_empty();
-    if early {
+    // the report's opening goes out before its first chunk (and alone when there is none)
+    let mut opened = false;
+    tribez::ordered::render_in_order(
+        chunks,
+        early,
+        |k, points, part| render_chunk(&eval, format, k, points, part),
+        |part| {
+            if !opened {
+                sink.write(open.as_bytes());
+                opened = true;
+            }
+            sink.write(part.as_bytes());
+        },
+    )?;
+    if !opened {
         sink.write(open.as_bytes());
     }
-    let writer = Mutex::new(Writer {
-        sink,
-        early,
-        next: 0,
-        ready: BTreeMap::new(),
-        spare: Vec::new(),
-        failed: None,
-    });
-    let claims = Mutex::new(chunks.into_iter().enumerate());
-    rayon::broadcast(|_| {
-        loop {
-            let claimed = lock(&claims).next();
-            let Some((k, points)) = claimed else { break };
-            let mut part = {
-                let mut w = lock(&writer);
-                if w.failed.as_ref().is_some_and(|(j, _)| *j < k) {
-                    break;
-                }
-                w.spare.pop().unwrap_or_default()
-            };
-            part.clear();
-            match render_chunk(&eval, format, k, points, &mut part) {
-                Ok(()) => lock(&writer).put(k, part),
-                Err(e) => lock(&writer).fail(k, e),
-            }
-        }
-    });
-    let mut w = writer.into_inner().unwrap_or_else(PoisonError::into_inner);
-    if let Some((_, e)) = w.failed {
-        debug_assert!(!early, "a total evaluation failed after the report began");
-        return Err(e);
-    }
-    if !early {
-        w.sink.write(open.as_bytes());
-        w.drain();
-    }
-    debug_assert!(w.ready.is_empty());
-    w.sink.write(close.as_bytes());
+    sink.write(close.as_bytes());
     Ok(())
 }
 
@@ -495,52 +470,6 @@ fn render_chunk(
         }
     }
     Ok(())
-}
-
-/// The report's writer, shared by the threads that render its chunks.
-struct Writer<'s, 'a> {
-    sink: &'s mut Sink<'a>,
-    /// Whether a chunk is written as soon as the chunks before it are (else at the end).
-    early: bool,
-    /// The first chunk not yet written.
-    next: usize,
-    /// Rendered chunks waiting for the chunks before them.
-    ready: BTreeMap<usize, String>,
-    /// Buffers of written chunks, to render the next ones into.
-    spare: Vec<String>,
-    /// The earliest failing chunk so far, and its error.
-    failed: Option<(usize, CliError)>,
-}
-
-impl Writer<'_, '_> {
-    /// Chunk `k` is rendered.
-    fn put(&mut self, k: usize, part: String) {
-        self.ready.insert(k, part);
-        if self.early {
-            self.drain();
-        }
-    }
-
-    /// Chunk `k` failed with `e` (kept if no earlier chunk failed).
-    fn fail(&mut self, k: usize, e: CliError) {
-        if self.failed.as_ref().is_none_or(|(j, _)| k < *j) {
-            self.failed = Some((k, e));
-        }
-    }
-
-    /// Write the chunks that are ready in order from `next`.
-    fn drain(&mut self) {
-        while let Some(part) = self.ready.remove(&self.next) {
-            self.sink.write(part.as_bytes());
-            self.next += 1;
-            self.spare.push(part);
-        }
-    }
-}
-
-/// `m`'s guard, also after a thread holding it panicked (the panic is reported anyway).
-fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
-    m.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
 /// What `tribez eval` reads first: the patch, the number of coordinates of its points, and the

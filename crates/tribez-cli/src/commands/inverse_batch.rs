@@ -12,6 +12,7 @@ use super::check::Args;
 use super::{CliError, Outcome};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::Patch;
+use tribez::ResultsChecker;
 use tribez::batch::{InverseBatchChecker, InverseBatchOptions, InverseBatchReport, InverseKind};
 
 /// Run an inverse batch (the dispatcher calls this when `--locate-results` or `--ray-results`

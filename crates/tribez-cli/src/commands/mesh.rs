@@ -10,6 +10,7 @@ use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::{OutputArgs, TextOrJson, examples};
 use crate::report::Render;
+use tribez::ResultsChecker;
 use tribez::files::read_points;
 use tribez::kernels::Float;
 use tribez::mesh::{Located, Mesh, MeshLines, read_mesh};

@@ -642,61 +642,23 @@ fn unit_roots(p: &[Q]) -> Result<Vec<RealAlgebraic>, AlgebraicError> {
 
 /// The real curve `p(x, y) = 0` in `[0, 1]²` (square-free, no factor in one variable alone):
 /// its pieces, each strictly monotone in both unknowns, as `((x0, y0), (x1, y1))` with
-/// `x0 < x1`, and its isolated points (docs/theory.md §16.5, "Overlaps").
+/// `x0 < x1`, and its isolated points (docs/theory.md §16.5, "Overlaps"). A sweep in `x`: the
+/// fibers over the break values ([`sweep_breaks`]), with the arcs each point sends left and
+/// right ([`arc_counts`]); the arcs over each interval between breaks ([`interval_arcs`]);
+/// arcs merged into monotone pieces ([`merge_arcs`]).
 #[allow(clippy::type_complexity)]
 fn curve_in_square(
     p: &BiPoly,
 ) -> Result<(Vec<[(RealAlgebraic, RealAlgebraic); 2]>, Vec<Solution>), AlgebraicError> {
     let (py, px) = (d_y(p).trimmed(), d_x(p).trimmed());
     let pyy = d_y(&py).trimmed();
-    // the sweep's break values: critical points of the projection on x (p = p_y = 0), turning
-    // points in y (p = p_x = 0), the sides y = 0 and y = 1, and x = 0, 1
-    let mut breaks = vec![RealAlgebraic::rational(q(0)), RealAlgebraic::rational(q(1))];
-    let y1: Vec<Q> = p.c.iter().fold(Vec::new(), |acc, c| add(&acc, c));
-    for poly in [resultant(p, &py), resultant(p, &px), p.c[0].clone(), y1] {
-        breaks.extend(unit_roots(&poly)?);
-    }
-    breaks.sort_by(|a, b| a.cmp_exact(b));
-    breaks.dedup_by(|a, b| a.cmp_exact(b) == Ordering::Equal);
-    // the fibers and, at each point, how many arcs leave it to the left and to the right
-    // (None: to be found from the count of arcs over the neighbouring interval)
+    let breaks = sweep_breaks(p, &py, &px)?;
     let last = breaks.len() - 1;
-    let mut fibers: Vec<Vec<(Solution, [Option<usize>; 2])>> = Vec::new();
+    let mut fibers: Vec<Fiber> = Vec::new();
     for (i, b) in breaks.iter().enumerate() {
         let mut f = Vec::new();
         for sol in fiber(p, b)? {
-            let interior = sol.y.cmp_rational(&q(0)) == Ordering::Greater
-                && sol.y.cmp_rational(&q(1)) == Ordering::Less;
-            let at_lo = sol.y.cmp_rational(&q(0)) == Ordering::Equal;
-            let sy = sign_at(&sol, &py);
-            let sx = sign_at(&sol, &px);
-            let mut lr: [Option<usize>; 2] = if sy != Ordering::Equal {
-                if interior {
-                    [Some(1), Some(1)]
-                } else if sx == Ordering::Equal {
-                    [None, None]
-                } else {
-                    // y = φ(x), φ' = −p_x/p_y: into y > 0 on the right when φ' > 0
-                    let rising = sx != sy;
-                    let right = rising == at_lo;
-                    [Some(usize::from(!right)), Some(usize::from(right))]
-                }
-            } else if sx != Ordering::Equal {
-                // x = ψ(y) with ψ' = 0, ψ'' = −p_yy/p_x: both branches on the side of ψ''
-                let syy = sign_at(&sol, &pyy);
-                if syy == Ordering::Equal {
-                    [None, None]
-                } else {
-                    let k = if interior { 2 } else { 1 };
-                    if syy != sx {
-                        [Some(0), Some(k)]
-                    } else {
-                        [Some(k), Some(0)]
-                    }
-                }
-            } else {
-                [None, None]
-            };
+            let mut lr = arc_counts(&sol, &py, &px, &pyy);
             if i == 0 {
                 lr[0] = Some(0);
             }
@@ -707,49 +669,140 @@ fn curve_in_square(
         }
         fibers.push(f);
     }
-    // arcs over each open interval, and the unknown counts from them
     let mut arcs: Vec<Vec<(usize, usize)>> = Vec::new();
     for i in 0..last {
-        let r = rational_between(&breaks[i], &breaks[i + 1]);
-        let m = unit_roots(&p.at_x(&r))?.len();
-        for (fi, side) in [(i, 1usize), (i + 1, 0usize)] {
-            let known: usize = fibers[fi].iter().filter_map(|(_, lr)| lr[side]).sum();
-            let unknown: Vec<usize> = (0..fibers[fi].len())
-                .filter(|&k| fibers[fi][k].1[side].is_none())
-                .collect();
-            if known > m || (unknown.is_empty() && known != m) {
-                return Err(AlgebraicError::Unsupported(
-                    "a shared curve whose arcs do not add up (internal)".into(),
-                ));
-            }
-            match unknown.len() {
-                0 => {}
-                1 => fibers[fi][unknown[0]].1[side] = Some(m - known),
-                _ if known == m => {
-                    for k in unknown {
-                        fibers[fi][k].1[side] = Some(0);
-                    }
-                }
-                _ => {
-                    return Err(AlgebraicError::Unsupported(
-                        "a shared curve with two singular points over one parameter value".into(),
-                    ));
-                }
+        arcs.push(interval_arcs(p, &breaks, &mut fibers, i)?);
+    }
+    let pieces = merge_arcs(&fibers, &arcs);
+    let mut isolated = Vec::new();
+    for f in fibers {
+        for (sol, lr) in f {
+            if lr == [Some(0), Some(0)] {
+                isolated.push(sol);
             }
         }
-        let ends = |fi: usize, side: usize| -> Vec<usize> {
-            let mut v = Vec::new();
-            for (k, (_, lr)) in fibers[fi].iter().enumerate() {
-                for _ in 0..lr[side].unwrap_or(0) {
-                    v.push(k);
+    }
+    Ok((pieces, isolated))
+}
+
+/// The points of the curve over one break value, each with how many arcs leave it to the left
+/// and to the right (`None`: to be found from the count of arcs over the neighbouring interval).
+type Fiber = Vec<(Solution, [Option<usize>; 2])>;
+
+/// The sweep's break values in `[0, 1]`, sorted, without repeats: critical points of the
+/// projection on x (`p = p_y = 0`), turning points in y (`p = p_x = 0`), the sides `y = 0` and
+/// `y = 1`, and `x = 0, 1`.
+fn sweep_breaks(
+    p: &BiPoly,
+    py: &BiPoly,
+    px: &BiPoly,
+) -> Result<Vec<RealAlgebraic>, AlgebraicError> {
+    let mut breaks = vec![RealAlgebraic::rational(q(0)), RealAlgebraic::rational(q(1))];
+    let y1: Vec<Q> = p.c.iter().fold(Vec::new(), |acc, c| add(&acc, c));
+    for poly in [resultant(p, py), resultant(p, px), p.c[0].clone(), y1] {
+        breaks.extend(unit_roots(&poly)?);
+    }
+    breaks.sort_by(|a, b| a.cmp_exact(b));
+    breaks.dedup_by(|a, b| a.cmp_exact(b) == Ordering::Equal);
+    Ok(breaks)
+}
+
+/// How many arcs leave the curve's point `sol` (with `0 ≤ y ≤ 1`) to the left and to the right,
+/// from the signs of `p_y`, `p_x` and `p_yy` there; `None` where the signs do not tell (a
+/// singular point, or a tangency the second derivative does not decide).
+fn arc_counts(sol: &Solution, py: &BiPoly, px: &BiPoly, pyy: &BiPoly) -> [Option<usize>; 2] {
+    let interior = sol.y.cmp_rational(&q(0)) == Ordering::Greater
+        && sol.y.cmp_rational(&q(1)) == Ordering::Less;
+    let at_lo = sol.y.cmp_rational(&q(0)) == Ordering::Equal;
+    let sy = sign_at(sol, py);
+    let sx = sign_at(sol, px);
+    if sy != Ordering::Equal {
+        if interior {
+            [Some(1), Some(1)]
+        } else if sx == Ordering::Equal {
+            [None, None]
+        } else {
+            // y = φ(x), φ' = −p_x/p_y: into y > 0 on the right when φ' > 0
+            let rising = sx != sy;
+            let right = rising == at_lo;
+            [Some(usize::from(!right)), Some(usize::from(right))]
+        }
+    } else if sx != Ordering::Equal {
+        // x = ψ(y) with ψ' = 0, ψ'' = −p_yy/p_x: both branches on the side of ψ''
+        let syy = sign_at(sol, pyy);
+        if syy == Ordering::Equal {
+            [None, None]
+        } else {
+            let k = if interior { 2 } else { 1 };
+            if syy != sx {
+                [Some(0), Some(k)]
+            } else {
+                [Some(k), Some(0)]
+            }
+        }
+    } else {
+        [None, None]
+    }
+}
+
+/// The arcs over the open interval between breaks `i` and `i + 1`, as pairs (point of fiber
+/// `i`, point of fiber `i + 1`) in order of `y`; the unknown counts of arcs leaving the two
+/// fibers into it are settled from the number of arcs over the interval (the roots in `[0, 1]`
+/// at a rational between the breaks). Errors: counts that do not add up (internal), two
+/// unknown counts that the number of arcs cannot settle.
+fn interval_arcs(
+    p: &BiPoly,
+    breaks: &[RealAlgebraic],
+    fibers: &mut [Fiber],
+    i: usize,
+) -> Result<Vec<(usize, usize)>, AlgebraicError> {
+    let r = rational_between(&breaks[i], &breaks[i + 1]);
+    let m = unit_roots(&p.at_x(&r))?.len();
+    for (fi, side) in [(i, 1usize), (i + 1, 0usize)] {
+        let known: usize = fibers[fi].iter().filter_map(|(_, lr)| lr[side]).sum();
+        let unknown: Vec<usize> = (0..fibers[fi].len())
+            .filter(|&k| fibers[fi][k].1[side].is_none())
+            .collect();
+        if known > m || (unknown.is_empty() && known != m) {
+            return Err(AlgebraicError::Unsupported(
+                "a shared curve whose arcs do not add up (internal)".into(),
+            ));
+        }
+        match unknown.len() {
+            0 => {}
+            1 => fibers[fi][unknown[0]].1[side] = Some(m - known),
+            _ if known == m => {
+                for k in unknown {
+                    fibers[fi][k].1[side] = Some(0);
                 }
             }
-            v
-        };
-        let (from, to) = (ends(i, 1), ends(i + 1, 0));
-        arcs.push(from.into_iter().zip(to).collect());
+            _ => {
+                return Err(AlgebraicError::Unsupported(
+                    "a shared curve with two singular points over one parameter value".into(),
+                ));
+            }
+        }
     }
-    // merge arcs through points with one arc on each side and the same direction in y
+    let ends = |fi: usize, side: usize| -> Vec<usize> {
+        let mut v = Vec::new();
+        for (k, (_, lr)) in fibers[fi].iter().enumerate() {
+            for _ in 0..lr[side].unwrap_or(0) {
+                v.push(k);
+            }
+        }
+        v
+    };
+    let (from, to) = (ends(i, 1), ends(i + 1, 0));
+    Ok(from.into_iter().zip(to).collect())
+}
+
+/// The monotone pieces: arcs merged through points with one arc on each side and the same
+/// direction in `y`, each as its two ends `(x, y)`.
+fn merge_arcs(
+    fibers: &[Fiber],
+    arcs: &[Vec<(usize, usize)>],
+) -> Vec<[(RealAlgebraic, RealAlgebraic); 2]> {
+    let last = arcs.len();
     let dir = |i: usize, a: (usize, usize)| -> Ordering {
         fibers[i + 1][a.1].0.y.cmp_exact(&fibers[i][a.0].0.y)
     };
@@ -788,15 +841,7 @@ fn curve_in_square(
             pieces.push([start, end]);
         }
     }
-    let mut isolated = Vec::new();
-    for f in fibers {
-        for (sol, lr) in f {
-            if lr == [Some(0), Some(0)] {
-                isolated.push(sol);
-            }
-        }
-    }
-    Ok((pieces, isolated))
+    pieces
 }
 
 /// Two curves whose equations share a factor `G` (`F_i = G·H_i`): both lie on one algebraic

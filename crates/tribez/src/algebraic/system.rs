@@ -614,7 +614,10 @@ enum Once {
     Tangled { ys: Vec<RealAlgebraic>, rx: IntPoly },
 }
 
-/// One pass of [`solve`] in the given unknowns.
+/// One pass of [`solve`] in the given unknowns: the resultants `R_x = res_y(f, g)` and
+/// `R_y = res_x(f, g)` and their roots in the region; each root `β` of `R_x` resolved over `x`
+/// (`y = −c_0(β)/c_1(β)` by the first subresultant, [`solutions_over_x`]), those where `c_1(β)
+/// = 0` deferred and resolved over `y` ([`deferred_solutions`]); then every solution's flags.
 fn solve_once(
     f: &BiPoly,
     g: &BiPoly,
@@ -622,57 +625,151 @@ fn solve_once(
     flags: &[BiPoly],
 ) -> Result<Once, AlgebraicError> {
     let (f, g) = (&f.trimmed(), &g.trimmed());
-    if f.is_zero() || g.is_zero() {
+    let Some(r) = Resultants::of(f, g, region)? else {
         return Ok(Once::Done(Solved::Infinite));
-    }
-    let rx = trim(resultant(f, g));
-    if rx.is_empty() {
-        return Ok(Once::Done(Solved::Infinite));
-    }
-    let (fs, gs) = (f.swap().trimmed(), g.swap().trimmed());
-    let ry = trim(resultant(&fs, &gs));
-    if ry.is_empty() {
-        return Ok(Once::Done(Solved::Infinite));
-    }
-    let rx_int = IntPoly::from_rationals(&rx);
-    let ry_int = IntPoly::from_rationals(&ry);
-    super::check_poly(&rx_int)?;
-    super::check_poly(&ry_int)?;
-    let betas = roots(&rx_int, &region.x)?;
-    let alphas = roots(&ry_int, &region.y)?;
-    let alpha_values: Vec<RealAlgebraic> = alphas.iter().map(|(a, _)| a.clone()).collect();
-    let (c1, c0) = subresultant1(f, g);
-    let nc0: Vec<Q> = c0.iter().map(|c| -c).collect();
-    let mut solutions = Vec::new();
-    let mut deferred: Vec<RealAlgebraic> = Vec::new();
-    let mut matched = vec![false; alphas.len()];
-    let in_range = |v: &Expr, r: &Option<(Q, Q)>| -> bool {
-        match r {
-            None => true,
-            Some((lo, hi)) => {
-                v.cmp_rational(lo) != Ordering::Less && v.cmp_rational(hi) != Ordering::Greater
+    };
+    let OverX {
+        mut solutions,
+        deferred,
+        matched,
+    } = solutions_over_x(f, g, region, &r)?;
+    if !deferred.is_empty() {
+        match deferred_solutions(f, g, region, &r, &deferred, &matched) {
+            Some(more) => solutions.extend(more),
+            None => {
+                return Ok(Once::Tangled {
+                    ys: r.alpha_values,
+                    rx: r.rx,
+                });
             }
         }
+    }
+    set_flags(&mut solutions, flags);
+    Ok(Once::Done(Solved::Points {
+        solutions,
+        resultant: r.rx,
+    }))
+}
+
+/// The two resultants of a pass and their roots in the region.
+struct Resultants {
+    /// `R_x = res_y(f, g)`, a polynomial in `x`.
+    rx: IntPoly,
+    /// The roots `β` of `R_x` in the region's `x` range, with their multiplicities.
+    betas: Vec<(RealAlgebraic, usize)>,
+    /// The roots `α` of `R_y = res_x(f, g)` in the region's `y` range, with multiplicities.
+    alphas: Vec<(RealAlgebraic, usize)>,
+    /// The `α` alone.
+    alpha_values: Vec<RealAlgebraic>,
+}
+
+impl Resultants {
+    /// `None` when `f` or `g` is zero or a resultant vanishes (a common factor: infinitely
+    /// many solutions). Errors: a resultant over the size caps.
+    fn of(f: &BiPoly, g: &BiPoly, region: &Region) -> Result<Option<Self>, AlgebraicError> {
+        if f.is_zero() || g.is_zero() {
+            return Ok(None);
+        }
+        let rx = trim(resultant(f, g));
+        if rx.is_empty() {
+            return Ok(None);
+        }
+        let ry = trim(resultant(&f.swap().trimmed(), &g.swap().trimmed()));
+        if ry.is_empty() {
+            return Ok(None);
+        }
+        let rx_int = IntPoly::from_rationals(&rx);
+        let ry_int = IntPoly::from_rationals(&ry);
+        super::check_poly(&rx_int)?;
+        super::check_poly(&ry_int)?;
+        let betas = roots(&rx_int, &region.x)?;
+        let alphas = roots(&ry_int, &region.y)?;
+        let alpha_values = alphas.iter().map(|(a, _)| a.clone()).collect();
+        Ok(Some(Resultants {
+            rx: rx_int,
+            betas,
+            alphas,
+            alpha_values,
+        }))
+    }
+}
+
+/// Does the value `v` lie in the closed range `r` (`None`: unbounded)?
+fn in_range(v: &Expr, r: &Option<(Q, Q)>) -> bool {
+    match r {
+        None => true,
+        Some((lo, hi)) => {
+            v.cmp_rational(lo) != Ordering::Less && v.cmp_rational(hi) != Ordering::Greater
+        }
+    }
+}
+
+/// Is the point with coordinate `base` and the other `num/den` at `base` in the half-plane
+/// `h`? With `base` the `x` coordinate (`base_is_x`): `a·β + b·num/den + c ≥ 0` ⟺
+/// `((a x + c)·den + b·num)·den ≥ 0` at `β` (and the roles of `a` and `b` swapped for `y`).
+fn half_ok(base: &RealAlgebraic, h: &Half, num: &[Q], den: &[Q], base_is_x: bool) -> bool {
+    let (coef_base, coef_other) = if base_is_x {
+        (&h.a, &h.b)
+    } else {
+        (&h.b, &h.a)
     };
-    // y = num/den at x = β: a·β + b·num/den + c ≥ 0 ⟺ ((a x + c)·den + b·num)·den ≥ 0 at β
-    let half_ok = |base: &RealAlgebraic, h: &Half, num: &[Q], den: &[Q], base_is_x: bool| -> bool {
-        let (coef_base, coef_other) = if base_is_x {
-            (&h.a, &h.b)
-        } else {
-            (&h.b, &h.a)
-        };
-        let lin = vec![h.c.clone(), coef_base.clone()];
-        let p = add(
-            &super::bivariate::mul(&lin, den),
-            &num.iter().map(|x| x * coef_other).collect::<Vec<_>>(),
-        );
-        let s = base.sign_of_rationals(&p);
-        let sd = base.sign_of_rationals(den);
-        s == Ordering::Equal || s == sd
+    let lin = vec![h.c.clone(), coef_base.clone()];
+    let p = add(
+        &super::bivariate::mul(&lin, den),
+        &num.iter().map(|x| x * coef_other).collect::<Vec<_>>(),
+    );
+    let s = base.sign_of_rationals(&p);
+    let sd = base.sign_of_rationals(den);
+    s == Ordering::Equal || s == sd
+}
+
+/// Is the point `(base, num/den at base)` (or `(num/den, base)` when `!base_is_x`) in the
+/// region: the other coordinate `v` within its range, and every half-plane?
+fn in_region(
+    region: &Region,
+    base: &RealAlgebraic,
+    v: &Expr,
+    num: &[Q],
+    den: &[Q],
+    base_is_x: bool,
+) -> bool {
+    let range = if base_is_x { &region.y } else { &region.x };
+    in_range(v, range)
+        && region
+            .halves
+            .iter()
+            .all(|h| half_ok(base, h, num, den, base_is_x))
+}
+
+/// What resolving over `x` found ([`solutions_over_x`]).
+struct OverX {
+    /// The solutions `(β, y(β))` in the region.
+    solutions: Vec<Solution>,
+    /// The roots `β` where `c_1(β) = 0` (to be resolved over `y`).
+    deferred: Vec<RealAlgebraic>,
+    /// Which roots `α` of `R_y` a solution took.
+    matched: Vec<bool>,
+}
+
+/// Each root `β` of `R_x` with `c_1(β) ≠ 0`: its partner `y = −c_0(β)/c_1(β)` (the first
+/// subresultant `c_1(x)·y + c_0(x)`), kept when in the region and identified among the roots of
+/// `R_y`. Errors: a partner that matches no root (internal).
+fn solutions_over_x(
+    f: &BiPoly,
+    g: &BiPoly,
+    region: &Region,
+    r: &Resultants,
+) -> Result<OverX, AlgebraicError> {
+    let (c1, c0) = subresultant1(f, g);
+    let nc0: Vec<Q> = c0.iter().map(|c| -c).collect();
+    let mut out = OverX {
+        solutions: Vec::new(),
+        deferred: Vec::new(),
+        matched: vec![false; r.alphas.len()],
     };
-    for (beta, m) in &betas {
+    for (beta, m) in &r.betas {
         if beta.sign_of_rationals(&c1) == Ordering::Equal {
-            deferred.push(beta.clone());
+            out.deferred.push(beta.clone());
             continue;
         }
         let yv = Expr {
@@ -680,23 +777,18 @@ fn solve_once(
             num: nc0.clone(),
             den: c1.clone(),
         };
-        if !in_range(&yv, &region.y)
-            || !region
-                .halves
-                .iter()
-                .all(|h| half_ok(beta, h, &nc0, &c1, true))
-        {
+        if !in_region(region, beta, &yv, &nc0, &c1, true) {
             continue;
         }
-        let Some(k) = match_value(beta, &nc0, &c1, &alpha_values) else {
+        let Some(k) = match_value(beta, &nc0, &c1, &r.alpha_values) else {
             return Err(AlgebraicError::Unsupported(
                 "a solution that matches no root of the second resultant (internal)".into(),
             ));
         };
-        matched[k] = true;
-        let sol = Solution {
+        out.matched[k] = true;
+        out.solutions.push(Solution {
             x: beta.clone(),
-            y: alpha_values[k].clone(),
+            y: r.alpha_values[k].clone(),
             multiplicity: *m,
             flags: Vec::new(),
             partner: Partner {
@@ -706,66 +798,76 @@ fn solve_once(
                 den: c1.clone(),
             },
             sheared_base: None,
-        };
-        solutions.push(sol);
+        });
     }
-    if !deferred.is_empty() {
-        let (d1, d0) = subresultant1(&fs, &gs);
-        let nd0: Vec<Q> = d0.iter().map(|c| -c).collect();
-        // A root α of R_y with d_1(α) = 0 may have several partners too, and one of them may be
-        // a deferred β whatever else α is matched with: such a pair is resolved from neither
-        // side. Unless the pair is excluded (f or g has one sign over the box of their
-        // isolating intervals, or the box lies outside a half-plane), the engine refuses, and
-        // [`solve`] shears (docs/theory.md §16.5): never a solution silently left out.
-        let (fi, gi) = (IntBiPoly::from_bipoly(f), IntBiPoly::from_bipoly(g));
-        for (alpha, _) in &alphas {
-            if alpha.sign_of_rationals(&d1) != Ordering::Equal {
-                continue;
-            }
-            for beta in &deferred {
-                if !pair_excluded(beta, alpha, &fi, &gi, &region.halves) {
-                    return Ok(Once::Tangled {
-                        ys: alpha_values,
-                        rx: rx_int,
-                    });
-                }
+    Ok(out)
+}
+
+/// The solutions over the `deferred` roots `β`, resolved from the other side: each root `α` of
+/// `R_y` not yet `matched` with `d_1(α) ≠ 0` has the partner `x = −d_0(α)/d_1(α)`, kept when in
+/// the region and identified among the deferred `β`. `None` (tangled) when a pair `(β, α)` with
+/// `d_1(α) = 0` cannot be excluded.
+fn deferred_solutions(
+    f: &BiPoly,
+    g: &BiPoly,
+    region: &Region,
+    r: &Resultants,
+    deferred: &[RealAlgebraic],
+    matched: &[bool],
+) -> Option<Vec<Solution>> {
+    let (d1, d0) = subresultant1(&f.swap().trimmed(), &g.swap().trimmed());
+    let nd0: Vec<Q> = d0.iter().map(|c| -c).collect();
+    // A root α of R_y with d_1(α) = 0 may have several partners too, and one of them may be
+    // a deferred β whatever else α is matched with: such a pair is resolved from neither
+    // side. Unless the pair is excluded (f or g has one sign over the box of their
+    // isolating intervals, or the box lies outside a half-plane), the engine refuses, and
+    // [`solve`] shears (docs/theory.md §16.5): never a solution silently left out.
+    let (fi, gi) = (IntBiPoly::from_bipoly(f), IntBiPoly::from_bipoly(g));
+    for (alpha, _) in &r.alphas {
+        if alpha.sign_of_rationals(&d1) != Ordering::Equal {
+            continue;
+        }
+        for beta in deferred {
+            if !pair_excluded(beta, alpha, &fi, &gi, &region.halves) {
+                return None;
             }
         }
-        for (k, (alpha, m)) in alphas.iter().enumerate() {
-            if matched[k] || alpha.sign_of_rationals(&d1) == Ordering::Equal {
-                continue;
-            }
-            let xv = Expr {
-                base: alpha.clone(),
+    }
+    let mut solutions = Vec::new();
+    for (k, (alpha, m)) in r.alphas.iter().enumerate() {
+        if matched[k] || alpha.sign_of_rationals(&d1) == Ordering::Equal {
+            continue;
+        }
+        let xv = Expr {
+            base: alpha.clone(),
+            num: nd0.clone(),
+            den: d1.clone(),
+        };
+        if !in_region(region, alpha, &xv, &nd0, &d1, false) {
+            continue;
+        }
+        let Some(j) = match_value(alpha, &nd0, &d1, deferred) else {
+            continue;
+        };
+        solutions.push(Solution {
+            x: deferred[j].clone(),
+            y: alpha.clone(),
+            multiplicity: *m,
+            flags: Vec::new(),
+            partner: Partner {
+                base_is_x: false,
+                shear: Q::zero(),
                 num: nd0.clone(),
                 den: d1.clone(),
-            };
-            if !in_range(&xv, &region.x)
-                || !region
-                    .halves
-                    .iter()
-                    .all(|h| half_ok(alpha, h, &nd0, &d1, false))
-            {
-                continue;
-            }
-            let Some(j) = match_value(alpha, &nd0, &d1, &deferred) else {
-                continue;
-            };
-            solutions.push(Solution {
-                x: deferred[j].clone(),
-                y: alpha.clone(),
-                multiplicity: *m,
-                flags: Vec::new(),
-                partner: Partner {
-                    base_is_x: false,
-                    shear: Q::zero(),
-                    num: nd0.clone(),
-                    den: d1.clone(),
-                },
-                sheared_base: None,
-            });
-        }
+            },
+            sheared_base: None,
+        });
     }
+    Some(solutions)
+}
+
+/// Each solution's flags: which of `flags` vanish at it.
+fn set_flags(solutions: &mut [Solution], flags: &[BiPoly]) {
     let int_flags: Vec<IntBiPoly> = flags.iter().map(IntBiPoly::from_bipoly).collect();
     for s in solutions.iter_mut() {
         s.flags = flags
@@ -774,10 +876,6 @@ fn solve_once(
             .map(|(g, gi)| flag_vanishes(s, g, gi))
             .collect();
     }
-    Ok(Once::Done(Solved::Points {
-        solutions,
-        resultant: rx_int,
-    }))
 }
 
 /// Is `(β, α)` provably not a solution in the region? At isolating widths 2^-20, 2^-60 and

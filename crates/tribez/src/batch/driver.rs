@@ -7,7 +7,7 @@ use std::path::Path;
 
 use super::judge::{Prepared, RowOutcome};
 use super::parse::{self, Chunk, Num, RowReader};
-use super::{Accumulator, BatchError, BatchOptions, BatchReport, Format};
+use super::{Accumulator, BatchError, BatchOptions, BatchReport, Format, ResultsChecker};
 use super::{STOP_SLAB, STOP_SLAB_MIN, STOP_SLAB_TIME};
 use crate::exact::Algorithm;
 use crate::float::Precision;
@@ -44,19 +44,7 @@ impl BatchChecker {
         self.prepared.algorithm
     }
 
-    /// Check a results file (its format told by [`Format::of`]); `patch_name` names the patch in
-    /// the report. `progress(rows, failed)` is called after each chunk.
-    pub fn check_file(
-        &self,
-        path: &Path,
-        patch_name: &str,
-        progress: &mut dyn FnMut(u64, u64),
-    ) -> Result<BatchReport, BatchError> {
-        let (file, format, reader) = parse::open_results(path)?;
-        self.check_reader(reader, format, &file, patch_name, progress)
-    }
-
-    /// [`Self::check_file`], and `row(point)` called with every judged row's [`RowPoint`], in
+    /// [`ResultsChecker::check_file`], and `row(point)` called with every judged row's [`RowPoint`], in
     /// input order (what an error map draws; the rows are not kept).
     pub fn check_file_each_row(
         &self,
@@ -76,14 +64,19 @@ impl BatchChecker {
             Some(row),
         )
     }
+}
 
-    /// Check the rows read from `reader` in `format`; `file` names it in errors and the report.
-    pub fn check_reader<R: Read + Send>(
+/// Rows `inputs…, claimed…` (the patch's `m + 1` barycentric or `m` Cartesian coordinates, then
+/// its `dim` claimed coordinates); `subject` names the patch in the report.
+impl ResultsChecker for BatchChecker {
+    type Report = BatchReport;
+
+    fn check_reader<R: Read + Send>(
         &self,
         reader: R,
         format: Format,
         file: &str,
-        patch_name: &str,
+        subject: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<BatchReport, BatchError> {
         check_reader(
@@ -91,7 +84,7 @@ impl BatchChecker {
             reader,
             format,
             file,
-            patch_name,
+            subject,
             progress,
             None,
         )

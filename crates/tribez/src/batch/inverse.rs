@@ -26,24 +26,21 @@
 //! judged in parallel; the report lists the first [`MAX_LISTED`] failures in line order.
 
 use std::io::{BufReader, Read};
-use std::path::Path;
 
 use num_rational::BigRational;
 use num_traits::Zero;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::parse::{Chunk, Field, Format, Num, RowReader, each_chunk, open_results, parse_num};
+use super::parse::{Chunk, Field, Format, Num, RowReader, each_chunk, parse_num};
 use super::parse::{split_csv, split_json_row};
-use super::{BatchError, MAX_LISTED};
+use super::{BatchError, MAX_LISTED, ResultsChecker};
 use crate::algebraic::{check_locate_patch, check_ray_patch};
 use crate::certify::measures::{Measures, Tolerance};
-use crate::claims::ops::inverse::{
-    ExactNumber, InverseFinding, InverseOp, InverseQuery, MAX_CLAIMED, judge_answer,
-};
 use crate::claims::ops::seen;
 use crate::float::Precision;
 use crate::io::{InputError, InverseProblem};
+use crate::judge_inverse::{ExactNumber, InverseFinding, InverseQuery, MAX_CLAIMED, judge_answer};
 use crate::patch_type::Patch;
 
 type Q = BigRational;
@@ -342,94 +339,9 @@ impl InverseBatchChecker {
         })
     }
 
-    /// Check a results file (its format told by [`Format::of`]); `patch_name` names the patch
-    /// in the report. `progress(rows, failed)` is called after each chunk.
-    pub fn check_file(
-        &self,
-        path: &Path,
-        patch_name: &str,
-        progress: &mut dyn FnMut(u64, u64),
-    ) -> Result<InverseBatchReport, BatchError> {
-        let (file, format, reader) = open_results(path)?;
-        self.check_reader(reader, format, &file, patch_name, progress)
-    }
-
-    /// Check the rows read from `reader` in `format`; `file` names it in errors and the report.
-    pub fn check_reader<R: Read + Send>(
-        &self,
-        reader: R,
-        format: Format,
-        file: &str,
-        patch_name: &str,
-        progress: &mut dyn FnMut(u64, u64),
-    ) -> Result<InverseBatchReport, BatchError> {
-        let o = &self.options;
-        let mut rows = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file);
-        let mut report = InverseBatchReport {
-            results: file.into(),
-            patch: patch_name.into(),
-            kind: o.kind,
-            tolerance: o.tolerance.clone(),
-            precision: o.precision,
-            anywhere: o.anywhere,
-            checked: 0,
-            passed: 0,
-            failed: 0,
-            missed: 0,
-            extra: 0,
-            out_of_tolerance: 0,
-            infinite: 0,
-            not_finite: 0,
-            failures: Vec::new(),
-            failures_not_listed: 0,
-        };
-        each_chunk(&mut rows, file, progress, |chunk| {
-            let outcomes: Vec<Result<Option<RowOutcome>, InputError>> = chunk
-                .par_iter()
-                .map(|&(line, col, text)| {
-                    let Some(row) =
-                        parse_inverse_row(o.kind, format, text, line, col, o.precision, file)?
-                    else {
-                        return Ok(None);
-                    };
-                    self.judge(&row, file).map(Some)
-                })
-                .collect();
-            for outcome in outcomes {
-                let Some(r) = outcome? else { continue };
-                report.checked += 1;
-                for (n, k) in [
-                    &mut report.missed,
-                    &mut report.extra,
-                    &mut report.out_of_tolerance,
-                    &mut report.infinite,
-                    &mut report.not_finite,
-                ]
-                .into_iter()
-                .zip(r.counts)
-                {
-                    *n += k;
-                }
-                match r.failure {
-                    None => report.passed += 1,
-                    Some(f) => {
-                        report.failed += 1;
-                        if report.failures.len() < MAX_LISTED {
-                            report.failures.push(f);
-                        } else {
-                            report.failures_not_listed += 1;
-                        }
-                    }
-                }
-            }
-            Ok((report.checked, report.failed))
-        })?;
-        Ok(report)
-    }
-
     /// Judge one row: the exact answer for its query as seen, then its claimed tuples
-    /// ([`judge_answer`]). Errors (naming the file and line): a ray whose direction is zero, a
-    /// query the exact computation refuses (its caps).
+    /// ([`crate::claims::ops::inverse::judge_answer`]). Errors (naming the file and line): a ray
+    /// whose direction is zero, a query the exact computation refuses (its caps).
     pub fn judge_row(&self, row: &InverseRow, file: &str) -> Result<bool, InputError> {
         self.judge(row, file).map(|o| o.failure.is_none())
     }
@@ -508,9 +420,7 @@ impl InverseBatchChecker {
                 }
             }
         };
-        let mut answer = InverseOp { query }
-            .answer()
-            .map_err(|e| at(InverseProblem::from(e)))?;
+        let mut answer = query.answer().map_err(|e| at(InverseProblem::from(e)))?;
         if o.kind == InverseKind::Ray {
             // the row claims the first hit only (the hits are in the order of tau)
             answer.solutions.truncate(1);
@@ -560,6 +470,84 @@ impl InverseBatchChecker {
             failure: failed(mismatches, answer.solutions),
             counts,
         })
+    }
+}
+
+/// Rows `query…, claimed tuples…` of [`InverseBatchOptions::kind`]; `subject` names the patch in
+/// the report.
+impl ResultsChecker for InverseBatchChecker {
+    type Report = InverseBatchReport;
+
+    fn check_reader<R: Read + Send>(
+        &self,
+        reader: R,
+        format: Format,
+        file: &str,
+        subject: &str,
+        progress: &mut dyn FnMut(u64, u64),
+    ) -> Result<InverseBatchReport, BatchError> {
+        let o = &self.options;
+        let mut rows = RowReader::new(BufReader::with_capacity(1 << 20, reader), format, file);
+        let mut report = InverseBatchReport {
+            results: file.into(),
+            patch: subject.into(),
+            kind: o.kind,
+            tolerance: o.tolerance.clone(),
+            precision: o.precision,
+            anywhere: o.anywhere,
+            checked: 0,
+            passed: 0,
+            failed: 0,
+            missed: 0,
+            extra: 0,
+            out_of_tolerance: 0,
+            infinite: 0,
+            not_finite: 0,
+            failures: Vec::new(),
+            failures_not_listed: 0,
+        };
+        each_chunk(&mut rows, file, progress, |chunk| {
+            let outcomes: Vec<Result<Option<RowOutcome>, InputError>> = chunk
+                .par_iter()
+                .map(|&(line, col, text)| {
+                    let Some(row) =
+                        parse_inverse_row(o.kind, format, text, line, col, o.precision, file)?
+                    else {
+                        return Ok(None);
+                    };
+                    self.judge(&row, file).map(Some)
+                })
+                .collect();
+            for outcome in outcomes {
+                let Some(r) = outcome? else { continue };
+                report.checked += 1;
+                for (n, k) in [
+                    &mut report.missed,
+                    &mut report.extra,
+                    &mut report.out_of_tolerance,
+                    &mut report.infinite,
+                    &mut report.not_finite,
+                ]
+                .into_iter()
+                .zip(r.counts)
+                {
+                    *n += k;
+                }
+                match r.failure {
+                    None => report.passed += 1,
+                    Some(f) => {
+                        report.failed += 1;
+                        if report.failures.len() < MAX_LISTED {
+                            report.failures.push(f);
+                        } else {
+                            report.failures_not_listed += 1;
+                        }
+                    }
+                }
+            }
+            Ok((report.checked, report.failed))
+        })?;
+        Ok(report)
     }
 }
 

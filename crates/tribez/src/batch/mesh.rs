@@ -7,14 +7,14 @@
 //! outside the mesh is a failed row.
 
 use std::io::Read;
-use std::path::Path;
 use std::sync::OnceLock;
 
 use num_rational::BigRational;
 
-use super::open_results;
 use super::routed::{Route, Routing, check_routed};
-use super::{BatchChecker, BatchError, BatchOptions, BatchReport, Format, UlpHistogram};
+use super::{
+    BatchChecker, BatchError, BatchOptions, BatchReport, Format, ResultsChecker, UlpHistogram,
+};
 use crate::any_patch::AnyPatch;
 use crate::mesh::Mesh;
 
@@ -68,34 +68,25 @@ impl MeshBatchChecker {
                 .unwrap_or(crate::float::Precision::F64),
         })
     }
+}
 
-    /// Check a results file (CSV, JSON lines or a JSON array; rows `x, y, value`); `mesh_name`
-    /// names the mesh in the report. `progress(rows, failed)` after each chunk.
-    pub fn check_file(
-        &self,
-        path: &Path,
-        mesh_name: &str,
-        progress: &mut dyn FnMut(u64, u64),
-    ) -> Result<BatchReport, BatchError> {
-        let (file, format, reader) = open_results(path)?;
-        self.check_reader(reader, format, &file, mesh_name, progress)
-    }
+/// Rows `x, y, value` (another implementation's lookups, from a file, memory or a pipe);
+/// `subject` names the mesh in the report.
+impl ResultsChecker for MeshBatchChecker {
+    type Report = BatchReport;
 
-    /// Check the rows `x, y, value` read from `reader` in `format` (another implementation's
-    /// lookups handed over from memory or a pipe); `file` names them in errors and the report,
-    /// `mesh_name` the mesh.
-    pub fn check_reader<R: Read + Send>(
+    fn check_reader<R: Read + Send>(
         &self,
         reader: R,
         format: Format,
         file: &str,
-        mesh_name: &str,
+        subject: &str,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<BatchReport, BatchError> {
         let n = self.mesh.degree();
         let template = BatchReport {
             file: file.into(),
-            patch: mesh_name.into(),
+            patch: subject.into(),
             tolerance: self.options.tolerance.for_patch(2, n),
             precision: self.options.precision,
             checked: 0,

@@ -21,6 +21,7 @@
 //! report (text, JSON).
 
 mod accumulator;
+mod checker;
 mod driver;
 mod error;
 pub mod inverse;
@@ -32,6 +33,7 @@ mod report;
 pub(crate) mod routed;
 
 pub use crate::report::{ULP_BUCKETS, UlpHistogram};
+pub use checker::ResultsChecker;
 pub use driver::{BatchChecker, RowPoint, RowVerdict};
 pub use error::BatchError;
 pub use inverse::{
@@ -41,7 +43,6 @@ pub use mesh::MeshBatchChecker;
 pub use options::BatchOptions;
 #[cfg(any(fuzzing, feature = "unstable-internals"))]
 pub(crate) use parse::fuzz_rows;
-pub(crate) use parse::open_results;
 pub use parse::{Format, parse_claimed_line};
 pub use report::{BatchReport, FailedCoord, FailedRow, RowDetail, WorstRow};
 

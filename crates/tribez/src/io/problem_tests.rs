@@ -5,6 +5,7 @@ use std::path::Path;
 
 use super::tree::Document;
 use super::{ClaimProblem, InputError, Problem, RowsProblem};
+use crate::batch::ResultsChecker;
 use crate::claims::ClaimFile;
 use crate::error::CoreError;
 

@@ -1,6 +1,7 @@
 //! Tests of the mesh type. Expected values are derived by hand in the comments.
 
 use super::*;
+use crate::batch::ResultsChecker;
 use crate::number::parse_rational;
 
 fn q(s: &str) -> BigRational {
