@@ -133,7 +133,15 @@ struct IntersectJson<'a> {
     /// The relation `Σ c·s^i·t^j = 0` of the overlaps (integer coefficients), when the curves
     /// lie on one algebraic curve.
     #[serde(skip_serializing_if = "Option::is_none")]
-    relation: Option<Vec<Json>>,
+    relation: Option<Vec<RelationTerm>>,
+}
+
+/// One term `c·s^i·t^j` of the relation (the integer `c` as a string).
+#[derive(serde::Serialize)]
+struct RelationTerm {
+    coefficient: String,
+    s: usize,
+    t: usize,
 }
 
 /// The relation's terms with integer coefficients: `(c, i, j)` for `c·s^i·t^j`, by `i` then
@@ -155,10 +163,14 @@ fn relation_int(g: &tribez::algebraic::BiPoly) -> Vec<(num_bigint::BigInt, usize
     out
 }
 
-fn relation_terms(g: &tribez::algebraic::BiPoly) -> Vec<Json> {
+fn relation_terms(g: &tribez::algebraic::BiPoly) -> Vec<RelationTerm> {
     relation_int(g)
         .into_iter()
-        .map(|(c, i, j)| serde_json::json!({"coefficient": c.to_string(), "s": i, "t": j}))
+        .map(|(c, s, t)| RelationTerm {
+            coefficient: c.to_string(),
+            s,
+            t,
+        })
         .collect()
 }
 
