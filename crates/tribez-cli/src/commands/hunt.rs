@@ -652,15 +652,15 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let precision: Precision = args
         .precision
         .parse()
-        .map_err(|e| CliError::Usage(format!("--precision: {e}")))?;
-    let tolerance = Tolerance::parse(&args.tolerance)
-        .map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?;
+        .map_err(|e| CliError::about("--precision", e))?;
+    let tolerance =
+        Tolerance::parse(&args.tolerance).map_err(|e| CliError::about("--tolerance", e))?;
     let pictures = crate::picture::reports::Pictures {
         plot: args.plot.clone(),
         html: args.html.clone(),
     };
     pictures.check_names()?;
-    let patch = Patch::from_file(&args.patch).map_err(|e| CliError::Usage(e.to_string()))?;
+    let patch = Patch::from_file(&args.patch)?;
     let seed = args.seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
@@ -718,7 +718,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let hunt = match result {
         Ok(h) => h,
         Err(HuntError::Target(Broken(msg))) => return Err(CliError::Usage(msg)),
-        Err(e) => return Err(CliError::Usage(format!("{}: {e}", args.patch.display()))),
+        Err(e) => return Err(CliError::about(args.patch.display().to_string(), e)),
     };
     target.finish()?;
     let mut command: Vec<String> = vec![

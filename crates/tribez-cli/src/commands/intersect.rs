@@ -32,16 +32,15 @@ pub struct IntersectReport {
 fn curve(path: &std::path::Path, which: &str) -> Result<Curve, CliError> {
     let file = path.display().to_string();
     let patch = Patch::from_file(path)?;
-    Curve::from_patch(&patch, which).map_err(|e| CliError::Usage(format!("{file}: {e}")))
+    Curve::from_patch(&patch, which).map_err(|e| CliError::about(file, e))
 }
 
 /// Run `tribez intersect`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let a = curve(&args.a, "the curve")?;
     let b = curve(&args.b, "the curve")?;
-    let result = intersect_curves(&a, &b).map_err(|e| {
-        CliError::Usage(format!("{} × {}: {e}", args.a.display(), args.b.display()))
-    })?;
+    let result = intersect_curves(&a, &b)
+        .map_err(|e| CliError::about(format!("{} × {}", args.a.display(), args.b.display()), e))?;
     Outcome::rendered(
         &IntersectReport {
             a: args.a.display().to_string(),

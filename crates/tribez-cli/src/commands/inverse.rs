@@ -97,7 +97,7 @@ pub fn run_locate(args: &LocateArgs) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
     let p: [Rational; 2] = point(&args.point, "--point")?;
     let patch = Patch::from_file(&args.patch)?;
-    let found = locate(&patch, &p, args.anywhere).map_err(|e| usage(&file, e))?;
+    let found = locate(&patch, &p, args.anywhere).map_err(|e| CliError::about(&file, e))?;
     Outcome::rendered(
         &LocateReport {
             file,
@@ -316,7 +316,9 @@ pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
                 "--height takes a functional patch over a triangle (m = 2)",
             ));
         }
-        let lambda = domain.barycentric(&at).map_err(|e| usage(&file, e))?;
+        let lambda = domain
+            .barycentric(&at)
+            .map_err(|e| CliError::about(&file, e))?;
         if lambda.iter().any(|l| l < &Rational::from_integer(0.into())) {
             return Err(usage(
                 &file,
@@ -336,7 +338,7 @@ pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
     } else {
         let o: [Rational; 3] = point(args.origin.as_deref().unwrap_or_default(), "--origin")?;
         let d: [Rational; 3] = point(args.direction.as_deref().unwrap_or_default(), "--direction")?;
-        let hits = ray_hits(&patch, &o, &d).map_err(|e| usage(&file, e))?;
+        let hits = ray_hits(&patch, &o, &d).map_err(|e| CliError::about(&file, e))?;
         RayReport::Ray {
             file,
             origin: o,
