@@ -707,6 +707,46 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
     plot_attrs.push(("data-view", format!("{} {}", view.azimuth, view.elevation)));
     svg.open_group(&plot_attrs);
     // the surface (or the plane's image), far triangles first
+    let faces = faces(scene, (r, u, v), &frame);
+    svg.open_group(&[("id", "surface".into())]);
+    for (_, tri, colour) in &faces {
+        // the outline in the fill's colour closes the hairline gaps between triangles
+        svg.polygon(tri, *colour, Some((*colour, 0.6)));
+    }
+    svg.close_group();
+    let polyline = |svg: &mut Svg, line: &[Option<[f64; 3]>], colour: Rgb, width: f64| {
+        // a missing point (an undefined value) breaks the line
+        for run in line.split(Option::is_none) {
+            let pts: Vec<[f64; 2]> = run.iter().flatten().map(|&p| px(project(p))).collect();
+            svg.polyline(&pts, colour, width, "");
+        }
+    };
+    svg.open_group(&[("id", "iso-lines".into())]);
+    for line in &scene.iso {
+        polyline(&mut svg, line, ISO, 0.8);
+    }
+    svg.close_group();
+    svg.open_group(&[("id", "domain-edges".into())]);
+    for line in &scene.edges {
+        polyline(&mut svg, line, EDGE, 1.8);
+    }
+    svg.close_group();
+    draw_net(&mut svg, scene, &net2, &frame);
+    svg.close_group();
+    draw_legend(&mut svg, scene, view, options);
+    svg.finish()
+}
+
+/// The surface's triangles as drawn: `(depth, pixels, colour)`, shaded by their normal in 3D
+/// (far triangles first); in the plane, the triangles of the orientation fewer triangles have
+/// are the folds.
+fn faces(
+    scene: &Scene,
+    (r, u, v): ([f64; 3], [f64; 3], [f64; 3]),
+    frame: &Frame,
+) -> Vec<(f64, [[f64; 2]; 3], Rgb)> {
+    let project = |p: [f64; 3]| [dot(r, p), dot(u, p)];
+    let px = |p: [f64; 2]| frame.px(p);
     let light = normalize([
         -0.35 * r[0] + 0.55 * u[0] + 0.75 * v[0],
         -0.35 * r[1] + 0.55 * u[1] + 0.75 * v[1],
@@ -771,29 +811,13 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
     if scene.three_d {
         faces.sort_by(|a, b| a.0.total_cmp(&b.0));
     }
-    svg.open_group(&[("id", "surface".into())]);
-    for (_, tri, colour) in &faces {
-        // the outline in the fill's colour closes the hairline gaps between triangles
-        svg.polygon(tri, *colour, Some((*colour, 0.6)));
-    }
-    svg.close_group();
-    let polyline = |svg: &mut Svg, line: &[Option<[f64; 3]>], colour: Rgb, width: f64| {
-        // a missing point (an undefined value) breaks the line
-        for run in line.split(Option::is_none) {
-            let pts: Vec<[f64; 2]> = run.iter().flatten().map(|&p| px(project(p))).collect();
-            svg.polyline(&pts, colour, width, "");
-        }
-    };
-    svg.open_group(&[("id", "iso-lines".into())]);
-    for line in &scene.iso {
-        polyline(&mut svg, line, ISO, 0.8);
-    }
-    svg.close_group();
-    svg.open_group(&[("id", "domain-edges".into())]);
-    for line in &scene.edges {
-        polyline(&mut svg, line, EDGE, 1.8);
-    }
-    svg.close_group();
+    faces
+}
+
+/// The control net on top: its lines, its points and their labels (`net2`: the points
+/// projected).
+fn draw_net(svg: &mut Svg, scene: &Scene, net2: &[[f64; 2]], frame: &Frame) {
+    let px = |p: [f64; 2]| frame.px(p);
     // the control net on top
     svg.open_group(&[("id", "control-net".into())]);
     for &(a, b) in &scene.net_lines {
@@ -821,7 +845,10 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
         );
     }
     svg.close_group();
-    svg.close_group();
+}
+
+/// The legend under the picture: the net, the faces' colours, the view and the sampling.
+fn draw_legend(svg: &mut Svg, scene: &Scene, view: View, options: &PlotOptions) {
     // the legend
     let y = HEIGHT - 36.0;
     svg.circle([28.0, y - 4.0], 4.0, Some(NET), None, &[]);
@@ -865,7 +892,6 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
         ),
         &[],
     );
-    svg.finish()
 }
 
 #[cfg(test)]
