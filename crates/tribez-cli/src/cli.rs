@@ -51,22 +51,111 @@ impl From<TextOrJson> for Format {
     }
 }
 
-/// The algorithm a `bound` tolerance refers to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+/// The value of `--algorithm`: a float evaluation algorithm, or every one the command runs
+/// (`all`, where the command offers it). Parsed by [`algorithm`], the one value parser of the
+/// flag.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum AlgorithmChoice {
     /// de Casteljau (bound γ_{(m+1)n} Σ|c_i|B_i(|λ|)).
     Casteljau,
     /// The direct Bernstein form (bound γ_{N+n+m+2} Σ|c_i|B_i(|λ|)).
     Bernstein,
+    /// Every algorithm the patch's kind offers.
+    All,
 }
 
 impl AlgorithmChoice {
-    /// The corresponding algorithm.
-    pub fn algorithm(self) -> tribez::Algorithm {
+    /// The values of a command that judges one algorithm (`check`: the bound of `--tolerance
+    /// bound`).
+    pub const ONE: &'static [AlgorithmChoice] =
+        &[AlgorithmChoice::Casteljau, AlgorithmChoice::Bernstein];
+    /// The values of a command that can run every algorithm (`certify`).
+    pub const ANY: &'static [AlgorithmChoice] = &[
+        AlgorithmChoice::Casteljau,
+        AlgorithmChoice::Bernstein,
+        AlgorithmChoice::All,
+    ];
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
         match self {
-            AlgorithmChoice::Casteljau => tribez::Algorithm::Casteljau,
-            AlgorithmChoice::Bernstein => tribez::Algorithm::Bernstein,
+            AlgorithmChoice::Casteljau => "casteljau",
+            AlgorithmChoice::Bernstein => "bernstein",
+            AlgorithmChoice::All => "all",
         }
+    }
+
+    /// What `--help` says of the value.
+    fn help(self) -> &'static str {
+        match self {
+            AlgorithmChoice::Casteljau => "de Casteljau (bound γ_{(m+1)n} Σ|c_i|B_i(|λ|))",
+            AlgorithmChoice::Bernstein => {
+                "The direct Bernstein form (bound γ_{N+n+m+2} Σ|c_i|B_i(|λ|))"
+            }
+            AlgorithmChoice::All => "Every algorithm the patch's kind offers",
+        }
+    }
+
+    /// The corresponding algorithm; `None` for `all`.
+    pub fn algorithm(self) -> Option<tribez::Algorithm> {
+        match self {
+            AlgorithmChoice::Casteljau => Some(tribez::Algorithm::Casteljau),
+            AlgorithmChoice::Bernstein => Some(tribez::Algorithm::Bernstein),
+            AlgorithmChoice::All => None,
+        }
+    }
+}
+
+impl std::fmt::Display for AlgorithmChoice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The value parser of `--algorithm`, offering the values `offered` ([`AlgorithmChoice::ONE`]
+/// or [`AlgorithmChoice::ANY`]). Any other value is one line: ``--algorithm: unknown algorithm
+/// `X` (known: …)``.
+pub fn algorithm(offered: &'static [AlgorithmChoice]) -> AlgorithmParser {
+    AlgorithmParser(offered)
+}
+
+/// See [`algorithm`].
+#[derive(Clone, Debug)]
+pub struct AlgorithmParser(&'static [AlgorithmChoice]);
+
+impl clap::builder::TypedValueParser for AlgorithmParser {
+    type Value = AlgorithmChoice;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        _arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<AlgorithmChoice, clap::Error> {
+        let text = value.to_string_lossy();
+        self.0
+            .iter()
+            .copied()
+            .find(|c| c.name() == text)
+            .ok_or_else(|| {
+                let known: Vec<&str> = self.0.iter().map(|c| c.name()).collect();
+                clap::Error::raw(
+                    clap::error::ErrorKind::InvalidValue,
+                    format!(
+                        "--algorithm: unknown algorithm `{text}` (known: {})\n",
+                        known.join(", ")
+                    ),
+                )
+                .with_cmd(cmd)
+            })
+    }
+
+    fn possible_values(
+        &self,
+    ) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(self.0.iter().map(|c| {
+            clap::builder::PossibleValue::new(c.name()).help(c.help())
+        })))
     }
 }
 

@@ -20,6 +20,25 @@ pub enum CliError {
         #[source]
         source: CoreError,
     },
+    /// An error of the library that names what it concerns itself (a located mesh problem, a
+    /// fit's data point outside the mesh): its data kept, its message the line printed.
+    #[error(transparent)]
+    Library(tribez::Error),
+    /// An error of the library about `context` (a file, two files, a flag), its data kept
+    /// (any of the library's error types: [`tribez::Error`], a flag value's parse error, a
+    /// hunt's error).
+    #[error("{context}: {source}")]
+    About {
+        /// The file or argument concerned.
+        context: String,
+        /// What is wrong.
+        #[source]
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
+    /// A batch that cannot be judged (rows of the wrong shape, a tolerance that needs a
+    /// precision), its data kept.
+    #[error(transparent)]
+    Batch(tribez::batch::BatchError),
     /// A check of the command line's own (a result above the patch-file limits, a matrix
     /// too large, an edge that is not two numbers), with what it concerns.
     #[error("{context}: {message}")]
@@ -29,17 +48,19 @@ pub enum CliError {
         /// What is wrong.
         message: String,
     },
-    /// Wrong use of the command line.
+    /// Wrong use of the command line (a flag missing, two flags that exclude each other, a
+    /// value of the wrong shape).
     #[error("{0}")]
     Usage(String),
 }
 
 impl From<tribez::Error> for CliError {
-    /// Bad input stays located; every other error of the library is one line of its own.
+    /// Bad input stays located ([`CliError::Input`]); every other error of the library is
+    /// kept whole ([`CliError::Library`]), its message one line of its own.
     fn from(e: tribez::Error) -> Self {
         match e {
             tribez::Error::Input(e) => CliError::Input(e),
-            e => CliError::Usage(e.to_string()),
+            e => CliError::Library(e),
         }
     }
 }
@@ -50,6 +71,17 @@ impl CliError {
         CliError::Check {
             context: context.into(),
             message: message.into(),
+        }
+    }
+
+    /// An error of the library about `context` (a file or a flag).
+    pub fn about(
+        context: impl Into<String>,
+        source: impl Into<Box<dyn std::error::Error + Send + Sync>>,
+    ) -> Self {
+        CliError::About {
+            context: context.into(),
+            source: source.into(),
         }
     }
 

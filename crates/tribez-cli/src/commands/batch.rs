@@ -18,20 +18,26 @@ use tribez::files::read_bezier_patch as read_patch;
 /// The batch options of `tribez check`'s arguments.
 pub fn options(args: &Args) -> Result<BatchOptions, CliError> {
     let tolerance = match &args.tolerance {
-        Some(t) => Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?,
+        Some(t) => Tolerance::parse(t).map_err(|e| CliError::about("--tolerance", e))?,
         None => Tolerance::Exact,
     };
     let precision = match &args.precision {
         Some(p) => Some(
             p.parse::<Precision>()
-                .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+                .map_err(|e| CliError::about("--precision", e))?,
         ),
         None => None,
+    };
+    let Some(algorithm) = args.algorithm.algorithm() else {
+        return Err(CliError::Usage(format!(
+            "--algorithm {}: give one algorithm (casteljau or bernstein)",
+            args.algorithm
+        )));
     };
     Ok(BatchOptions {
         tolerance,
         precision,
-        algorithm: args.algorithm.algorithm(),
+        algorithm,
         cartesian: args.cartesian,
         row_detail: false,
     })
@@ -44,7 +50,7 @@ impl From<BatchError> for CliError {
             BatchError::ToleranceNeedsPrecision { tolerance } => CliError::Usage(format!(
                 "--tolerance {tolerance} needs --precision f64 or f32"
             )),
-            e => CliError::Usage(e.to_string()),
+            e => CliError::Batch(e),
         }
     }
 }
@@ -124,7 +130,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
             args.tolerance.as_deref(),
             args.precision.as_deref(),
             args.cartesian,
-            args.algorithm.algorithm().name(),
+            args.algorithm.name(),
         );
         let min_ulps = smallest.settle(&checker);
         crate::picture::reports::batch(&pictures, &report, map.finish(), min_ulps, &command)?;

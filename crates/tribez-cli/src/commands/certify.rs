@@ -6,12 +6,11 @@
 use std::path::PathBuf;
 
 use super::{CliError, Outcome};
-use crate::cli::OutputArgs;
+use crate::cli::{AlgorithmChoice, OutputArgs};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use serde_json::Value as Json;
-use tribez::Algorithm;
-use tribez::Precision;
 use tribez::files::read_points;
+use tribez::{Algorithm, Precision};
 use tribez::{CertifyOptions, CertifyPoints, CertifyReport, Patch};
 
 // Arguments of `tribez certify` (a plain comment: see `Command`).
@@ -33,9 +32,10 @@ pub struct Args {
     /// Precision: f64, f32 or all.
     #[arg(long, value_name = "f64|f32|all", default_value = "all")]
     pub precision: String,
-    /// Algorithm: casteljau, bernstein or all.
-    #[arg(long, value_name = "casteljau|bernstein|all", default_value = "all")]
-    pub algorithm: String,
+    /// The float algorithm to certify.
+    #[arg(long, value_name = "casteljau|bernstein|all", default_value = "all",
+          value_parser = crate::cli::algorithm(AlgorithmChoice::ANY))]
+    pub algorithm: AlgorithmChoice,
     /// Write the worst error per algorithm and precision to FILE.
     #[arg(long, value_name = "FILE")]
     pub record_baseline: Option<PathBuf>,
@@ -62,24 +62,14 @@ pub struct Args {
 /// program.
 fn algorithm(args: &Args, patch: &Patch) -> Result<Option<Algorithm>, CliError> {
     let offered = patch.float().map_or(&[][..], |f| f.float_algorithms());
-    if offered.len() == 1 {
-        return match args.algorithm.as_str() {
-            "all" => Ok(None),
-            "casteljau" => Ok(Some(Algorithm::Casteljau)),
-            other => Err(CliError::Usage(format!(
-                "--algorithm {other}: {} are certified with de Casteljau only (--algorithm casteljau or all)",
-                patch.kind().plural()
-            ))),
-        };
+    if offered.len() == 1 && args.algorithm == AlgorithmChoice::Bernstein {
+        return Err(CliError::Usage(format!(
+            "--algorithm {}: {} are certified with de Casteljau only (--algorithm casteljau or all)",
+            args.algorithm,
+            patch.kind().plural()
+        )));
     }
-    match args.algorithm.as_str() {
-        "all" => Ok(None),
-        "casteljau" => Ok(Some(Algorithm::Casteljau)),
-        "bernstein" => Ok(Some(Algorithm::Bernstein)),
-        other => Err(CliError::Usage(format!(
-            "--algorithm: unknown algorithm `{other}` (known: casteljau, bernstein, all)"
-        ))),
-    }
+    Ok(args.algorithm.algorithm())
 }
 
 /// Run `tribez certify`.
@@ -97,7 +87,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
         "all" => None,
         p => Some(
             p.parse::<Precision>()
-                .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+                .map_err(|e| CliError::about("--precision", e))?,
         ),
     };
     if patch.float().is_none() {
@@ -165,7 +155,7 @@ fn reproduce(args: &Args) -> Vec<String> {
         "--precision".into(),
         args.precision.clone(),
         "--algorithm".into(),
-        args.algorithm.clone(),
+        args.algorithm.to_string(),
     ]);
     c
 }

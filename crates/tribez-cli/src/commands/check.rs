@@ -81,7 +81,8 @@ pub struct Args {
     #[arg(long)]
     pub cartesian: bool,
     /// Batch mode: the algorithm whose a-priori bound `--tolerance bound` uses.
-    #[arg(long, value_enum, default_value_t = AlgorithmChoice::Casteljau)]
+    #[arg(long, value_name = "casteljau|bernstein", default_value = "casteljau",
+          value_parser = crate::cli::algorithm(AlgorithmChoice::ONE))]
     pub algorithm: AlgorithmChoice,
     /// Also write a JUnit XML report to FILE (one test case per claim file).
     #[arg(long, value_name = "FILE")]

@@ -70,14 +70,12 @@ fn read_geometry(path: &Path) -> Result<(Mesh, MeshLines), CliError> {
 fn fit_error(e: FitError, data: &str, lines: &MeshLines) -> CliError {
     match e {
         // names the data file and line already
-        e @ FitError::Outside { .. } => CliError::Usage(e.to_string()),
-        e @ (FitError::RankDeficient { .. } | FitError::Solver(_)) => {
-            CliError::check(data, e.to_string())
-        }
+        e @ FitError::Outside { .. } => CliError::Library(e.into()),
+        e @ (FitError::RankDeficient { .. } | FitError::Solver(_)) => CliError::about(data, e),
         FitError::Mesh(p) => lines.locate(p).into(),
         // names the mesh file already
-        e @ FitError::MissingOrdinate { .. } => CliError::Usage(e.to_string()),
-        e => CliError::check(&lines.file, e.to_string()),
+        e @ FitError::MissingOrdinate { .. } => CliError::Library(e.into()),
+        e => CliError::about(&lines.file, e),
     }
 }
 
@@ -193,15 +191,13 @@ pub fn run_check(args: &super::check::Args) -> Result<Outcome, CliError> {
         .ok_or_else(|| CliError::Usage("--fit needs --mesh FITTED".into()))?;
     let data_path = args.fit.as_ref().expect("checked by the caller");
     let tolerance = match &args.tolerance {
-        Some(t) => {
-            tribez::Tolerance::parse(t).map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?
-        }
+        Some(t) => tribez::Tolerance::parse(t).map_err(|e| CliError::about("--tolerance", e))?,
         None => FloatFitOptions::default().tolerance,
     };
     let precision = match &args.precision {
         Some(p) => p
             .parse::<tribez::Precision>()
-            .map_err(|e| CliError::Usage(format!("--precision: {e}")))?,
+            .map_err(|e| CliError::about("--precision", e))?,
         None => FloatFitOptions::default().precision,
     };
     let (mesh, lines) = read_geometry(mesh_path)?;
@@ -213,7 +209,7 @@ pub fn run_check(args: &super::check::Args) -> Result<Outcome, CliError> {
     };
     let report =
         judge_float_fit(&mesh, &data, &lines.file, &data_file, &options).map_err(|e| match e {
-            e @ FitError::Tolerance { .. } => CliError::Usage(format!("--tolerance: {e}")),
+            e @ FitError::Tolerance { .. } => CliError::about("--tolerance", e),
             e => fit_error(e, &data_file, &lines),
         })?;
     if let Some(path) = &args.junit {

@@ -17,11 +17,11 @@ use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::time::{Duration, Instant};
 
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome};
 use crate::cli::{OutputArgs, whole_number};
-use crate::report::{JunitCase, JunitSuite, Render};
+use crate::report::{JunitCase, JunitSuite, Render, to_json};
 use tribez::hunt::{HuntError, HuntOptions, HuntReport, HuntRow, MAX_BATCH, MAX_BUDGET, MAX_TOP};
 use tribez::{Patch, Precision, Tolerance};
 
@@ -402,6 +402,43 @@ pub struct Report {
     pub command: Vec<String>,
 }
 
+/// The JSON of `tribez hunt`.
+#[derive(serde::Serialize)]
+struct HuntJson<'a> {
+    command: &'static str,
+    patch: &'a str,
+    program: &'a [String],
+    precision: &'static str,
+    tolerance: String,
+    cartesian: bool,
+    seed: u64,
+    budget: u64,
+    evaluated: u64,
+    broke: u64,
+    /// Rows of each kind of the search: uniform points, the special places, local search.
+    uniform: u64,
+    special: u64,
+    local: u64,
+    passed: bool,
+    worst: Vec<RowJson<'a>>,
+    /// The command that repeats the hunt.
+    reproduce: &'a [String],
+}
+
+/// One of the worst rows of a hunt.
+#[derive(serde::Serialize)]
+struct RowJson<'a> {
+    row: u64,
+    input: Vec<String>,
+    claimed: Vec<String>,
+    exact: Vec<String>,
+    exact_decimal: Vec<String>,
+    /// The error in ULPs; `null` when it is not finite.
+    ulps: Option<f64>,
+    breaks: bool,
+    reason: Option<&'a str>,
+}
+
 fn hexes(p: Precision, xs: &[f64]) -> Vec<String> {
     xs.iter().map(|&x| tribez::hunt::hex(p, x)).collect()
 }
@@ -471,32 +508,40 @@ impl Render for Report {
     fn json(&self) -> Json {
         let h = &self.hunt;
         let p = h.precision;
-        json!({
-            "command": "hunt",
-            "patch": self.patch,
-            "program": self.program,
-            "precision": p.name(),
-            "tolerance": h.tolerance.to_string(),
-            "cartesian": h.cartesian,
-            "seed": h.seed,
-            "budget": h.budget,
-            "evaluated": h.evaluated,
-            "broke": h.broke,
-            "uniform": h.by_kind[0],
-            "special": h.by_kind[1],
-            "local": h.by_kind[2],
-            "passed": h.broke == 0,
-            "worst": h.worst.iter().map(|r| json!({
-                "row": r.row,
-                "input": hexes(p, &r.input),
-                "claimed": hexes(p, &r.claimed),
-                "exact": r.exact.iter().map(|q| q.to_string()).collect::<Vec<_>>(),
-                "exact_decimal": r.exact.iter().map(|q| tribez::hunt::decimal(q, 17)).collect::<Vec<_>>(),
-                "ulps": if r.ulps.is_finite() { json!(r.ulps) } else { Json::Null },
-                "breaks": !r.passed,
-                "reason": r.reason,
-            })).collect::<Vec<_>>(),
-            "reproduce": self.command,
+        to_json(&HuntJson {
+            command: "hunt",
+            patch: &self.patch,
+            program: &self.program,
+            precision: p.name(),
+            tolerance: h.tolerance.to_string(),
+            cartesian: h.cartesian,
+            seed: h.seed,
+            budget: h.budget,
+            evaluated: h.evaluated,
+            broke: h.broke,
+            uniform: h.by_kind[0],
+            special: h.by_kind[1],
+            local: h.by_kind[2],
+            passed: h.broke == 0,
+            worst: h
+                .worst
+                .iter()
+                .map(|r| RowJson {
+                    row: r.row,
+                    input: hexes(p, &r.input),
+                    claimed: hexes(p, &r.claimed),
+                    exact: r.exact.iter().map(ToString::to_string).collect(),
+                    exact_decimal: r
+                        .exact
+                        .iter()
+                        .map(|q| tribez::hunt::decimal(q, 17))
+                        .collect(),
+                    ulps: r.ulps.is_finite().then_some(r.ulps),
+                    breaks: !r.passed,
+                    reason: r.reason.as_deref(),
+                })
+                .collect(),
+            reproduce: &self.command,
         })
     }
 
@@ -607,15 +652,15 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let precision: Precision = args
         .precision
         .parse()
-        .map_err(|e| CliError::Usage(format!("--precision: {e}")))?;
-    let tolerance = Tolerance::parse(&args.tolerance)
-        .map_err(|e| CliError::Usage(format!("--tolerance: {e}")))?;
+        .map_err(|e| CliError::about("--precision", e))?;
+    let tolerance =
+        Tolerance::parse(&args.tolerance).map_err(|e| CliError::about("--tolerance", e))?;
     let pictures = crate::picture::reports::Pictures {
         plot: args.plot.clone(),
         html: args.html.clone(),
     };
     pictures.check_names()?;
-    let patch = Patch::from_file(&args.patch).map_err(|e| CliError::Usage(e.to_string()))?;
+    let patch = Patch::from_file(&args.patch)?;
     let seed = args.seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
@@ -673,7 +718,7 @@ pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let hunt = match result {
         Ok(h) => h,
         Err(HuntError::Target(Broken(msg))) => return Err(CliError::Usage(msg)),
-        Err(e) => return Err(CliError::Usage(format!("{}: {e}", args.patch.display()))),
+        Err(e) => return Err(CliError::about(args.patch.display().to_string(), e)),
     };
     target.finish()?;
     let mut command: Vec<String> = vec![

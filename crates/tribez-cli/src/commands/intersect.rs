@@ -32,16 +32,15 @@ pub struct IntersectReport {
 fn curve(path: &std::path::Path, which: &str) -> Result<Curve, CliError> {
     let file = path.display().to_string();
     let patch = Patch::from_file(path)?;
-    Curve::from_patch(&patch, which).map_err(|e| CliError::Usage(format!("{file}: {e}")))
+    Curve::from_patch(&patch, which).map_err(|e| CliError::about(file, e))
 }
 
 /// Run `tribez intersect`.
 pub fn run(args: &Args) -> Result<Outcome, CliError> {
     let a = curve(&args.a, "the curve")?;
     let b = curve(&args.b, "the curve")?;
-    let result = intersect_curves(&a, &b).map_err(|e| {
-        CliError::Usage(format!("{} × {}: {e}", args.a.display(), args.b.display()))
-    })?;
+    let result = intersect_curves(&a, &b)
+        .map_err(|e| CliError::about(format!("{} × {}", args.a.display(), args.b.display()), e))?;
     Outcome::rendered(
         &IntersectReport {
             a: args.a.display().to_string(),
@@ -133,7 +132,15 @@ struct IntersectJson<'a> {
     /// The relation `Σ c·s^i·t^j = 0` of the overlaps (integer coefficients), when the curves
     /// lie on one algebraic curve.
     #[serde(skip_serializing_if = "Option::is_none")]
-    relation: Option<Vec<Json>>,
+    relation: Option<Vec<RelationTerm>>,
+}
+
+/// One term `c·s^i·t^j` of the relation (the integer `c` as a string).
+#[derive(serde::Serialize)]
+struct RelationTerm {
+    coefficient: String,
+    s: usize,
+    t: usize,
 }
 
 /// The relation's terms with integer coefficients: `(c, i, j)` for `c·s^i·t^j`, by `i` then
@@ -155,10 +162,14 @@ fn relation_int(g: &tribez::algebraic::BiPoly) -> Vec<(num_bigint::BigInt, usize
     out
 }
 
-fn relation_terms(g: &tribez::algebraic::BiPoly) -> Vec<Json> {
+fn relation_terms(g: &tribez::algebraic::BiPoly) -> Vec<RelationTerm> {
     relation_int(g)
         .into_iter()
-        .map(|(c, i, j)| serde_json::json!({"coefficient": c.to_string(), "s": i, "t": j}))
+        .map(|(c, s, t)| RelationTerm {
+            coefficient: c.to_string(),
+            s,
+            t,
+        })
         .collect()
 }
 

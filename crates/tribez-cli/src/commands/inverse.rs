@@ -3,11 +3,11 @@
 
 use std::path::PathBuf;
 
-use serde_json::{Value as Json, json};
+use serde_json::Value as Json;
 
 use super::{CliError, Outcome, parse_list};
 use crate::cli::OutputArgs;
-use crate::report::Render;
+use crate::report::{Render, to_json};
 use tribez::Patch;
 use tribez::Rational;
 use tribez::algebraic::{Degenerate, Expr, Locations, RayHits, RealAlgebraic, locate, ray_hits};
@@ -97,7 +97,7 @@ pub fn run_locate(args: &LocateArgs) -> Result<Outcome, CliError> {
     let file = args.patch.display().to_string();
     let p: [Rational; 2] = point(&args.point, "--point")?;
     let patch = Patch::from_file(&args.patch)?;
-    let found = locate(&patch, &p, args.anywhere).map_err(|e| usage(&file, e))?;
+    let found = locate(&patch, &p, args.anywhere).map_err(|e| CliError::about(&file, e))?;
     Outcome::rendered(
         &LocateReport {
             file,
@@ -169,7 +169,7 @@ impl Render for LocateReport {
             degenerate: f.degenerate.as_ref().map(|d| DegenerateJson {
                 dimension: d.dimension,
                 curve: &d.curve,
-                boundary: &d.boundary,
+                boundary: &d.boundary[..],
             }),
         })
         .expect("serializable")
@@ -185,15 +185,15 @@ struct LocateJson<'a> {
     infinite: bool,
     count: usize,
     parameters: &'a [tribez::algebraic::Located],
-    degenerate: Option<DegenerateJson<'a, tribez::algebraic::Located>>,
+    degenerate: Option<DegenerateJson<'a, &'a [tribez::algebraic::Located]>>,
 }
 
 /// The JSON of a solution set that is not finite: `{dimension, curve, boundary}`.
 #[derive(serde::Serialize)]
-struct DegenerateJson<'a, T: serde::Serialize> {
+struct DegenerateJson<'a, B: serde::Serialize> {
     dimension: usize,
     curve: &'a str,
-    boundary: &'a [T],
+    boundary: B,
 }
 
 /// The first line's end for a solution set that is not finite (`locate` and `ray`): the
@@ -246,6 +246,29 @@ struct HitJson<'a> {
     multiplicity: usize,
 }
 
+/// The JSON of `tribez ray --height`.
+#[derive(serde::Serialize)]
+struct HeightJson<'a> {
+    patch: &'a str,
+    height_at: [String; 2],
+    barycentric: Vec<String>,
+    height: String,
+    /// The height rounded to the nearest f64, in hexadecimal.
+    f64: String,
+}
+
+/// The JSON of `tribez ray`.
+#[derive(serde::Serialize)]
+struct RayJson<'a> {
+    patch: &'a str,
+    origin: Vec<String>,
+    direction: Vec<String>,
+    infinite: bool,
+    count: usize,
+    hits: Vec<HitJson<'a>>,
+    degenerate: Option<DegenerateJson<'a, Vec<HitJson<'a>>>>,
+}
+
 /// The report of `tribez ray`.
 pub enum RayReport {
     /// A ray.
@@ -293,7 +316,9 @@ pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
                 "--height takes a functional patch over a triangle (m = 2)",
             ));
         }
-        let lambda = domain.barycentric(&at).map_err(|e| usage(&file, e))?;
+        let lambda = domain
+            .barycentric(&at)
+            .map_err(|e| CliError::about(&file, e))?;
         if lambda.iter().any(|l| l < &Rational::from_integer(0.into())) {
             return Err(usage(
                 &file,
@@ -313,7 +338,7 @@ pub fn run_ray(args: &RayArgs) -> Result<Outcome, CliError> {
     } else {
         let o: [Rational; 3] = point(args.origin.as_deref().unwrap_or_default(), "--origin")?;
         let d: [Rational; 3] = point(args.direction.as_deref().unwrap_or_default(), "--direction")?;
-        let hits = ray_hits(&patch, &o, &d).map_err(|e| usage(&file, e))?;
+        let hits = ray_hits(&patch, &o, &d).map_err(|e| CliError::about(&file, e))?;
         RayReport::Ray {
             file,
             origin: o,
@@ -430,30 +455,35 @@ impl Render for RayReport {
                 at,
                 lambda,
                 z,
-            } => json!({
-                "patch": file,
-                "height_at": [at[0].to_string(), at[1].to_string()],
-                "barycentric": lambda.iter().map(ToString::to_string).collect::<Vec<_>>(),
-                "height": z.to_string(),
-                "f64": tribez::format::hex_f64(tribez::format::round_f64(z)),
+            } => to_json(&HeightJson {
+                patch: file,
+                height_at: [at[0].to_string(), at[1].to_string()],
+                barycentric: lambda.iter().map(ToString::to_string).collect(),
+                height: z.to_string(),
+                f64: tribez::format::hex_f64(tribez::format::round_f64(z)),
             }),
             RayReport::Ray {
                 file,
                 origin,
                 direction,
                 hits,
-            } => json!({
-                "patch": file,
-                "origin": origin.iter().map(ToString::to_string).collect::<Vec<_>>(),
-                "direction": direction.iter().map(ToString::to_string).collect::<Vec<_>>(),
-                "infinite": hits.infinite,
-                "count": hits.hits.len(),
-                "hits": hits.hits.iter().enumerate().map(|(k, h)| hit_json(h, k == 0)).collect::<Vec<_>>(),
-                "degenerate": hits.degenerate.as_ref().map(|d| json!({
-                    "dimension": d.dimension,
-                    "curve": d.curve,
-                    "boundary": d.boundary.iter().map(|h| hit_json(h, false)).collect::<Vec<_>>(),
-                })),
+            } => to_json(&RayJson {
+                patch: file,
+                origin: origin.iter().map(ToString::to_string).collect(),
+                direction: direction.iter().map(ToString::to_string).collect(),
+                infinite: hits.infinite,
+                count: hits.hits.len(),
+                hits: hits
+                    .hits
+                    .iter()
+                    .enumerate()
+                    .map(|(k, h)| hit_json(h, k == 0))
+                    .collect(),
+                degenerate: hits.degenerate.as_ref().map(|d| DegenerateJson {
+                    dimension: d.dimension,
+                    curve: &d.curve,
+                    boundary: d.boundary.iter().map(|h| hit_json(h, false)).collect(),
+                }),
             }),
         }
     }

@@ -4,12 +4,13 @@
 use std::path::{Path, PathBuf};
 
 use num_rational::BigRational;
-use serde_json::{Value as Json, json};
+use serde::Serialize;
+use serde_json::Value as Json;
 
 use super::construct::PatchReport;
 use super::{CliError, Outcome, parse_list};
 use crate::cli::{OutputArgs, TextOrJson, examples};
-use crate::report::Render;
+use crate::report::{Render, to_json};
 use tribez::ResultsChecker;
 use tribez::files::read_points;
 use tribez::kernels::Float;
@@ -156,15 +157,15 @@ impl Render for CheckReport {
 
     fn json(&self) -> Json {
         let m = &self.mesh;
-        json!({
-            "mesh": self.file,
-            "degree": m.degree(),
-            "vertices": m.vertices().len(),
-            "edges": m.edges().len(),
-            "triangles": m.triangles().len(),
-            "ordinates": m.ordinate_count(),
-            "valid": self.problems.is_empty(),
-            "problems": self.problems,
+        to_json(&CheckJson {
+            mesh: &self.file,
+            degree: m.degree(),
+            vertices: m.vertices().len(),
+            edges: m.edges().len(),
+            triangles: m.triangles().len(),
+            ordinates: m.ordinate_count(),
+            valid: self.problems.is_empty(),
+            problems: &self.problems,
         })
     }
 }
@@ -361,38 +362,99 @@ impl Render for LookupReport {
 
     fn json(&self) -> Json {
         let s = |q: &BigRational| q.to_string();
-        json!({
-            "mesh": self.file,
-            "results": self.rows.iter().map(|r| {
-                let mut j = json!({
-                    "at": r.point.iter().map(s).collect::<Vec<_>>(),
-                    "inside": !r.hits.is_empty(),
-                    "value": r.hits.first().map(|h| s(&h.1)),
-                    "triangles": r.hits.iter().map(|(l, v)| json!({
-                        "triangle": l.triangle,
-                        "where": l.position(self.mesh.triangles()[l.triangle]),
-                        "barycentric": l.barycentric.iter().map(s).collect::<Vec<_>>(),
-                        "value": s(v),
-                    })).collect::<Vec<_>>(),
-                });
-                if let Some(f) = &r.float {
-                    j["float"] = json!({
-                        "precision": f.precision.name(),
-                        "triangle": f.triangle,
-                        "point_as_seen": f.point.iter().map(s).collect::<Vec<_>>(),
-                        "barycentric": f.barycentric.iter().map(s).collect::<Vec<_>>(),
-                        "value": f.value.as_ref().map(s),
-                        "decimal": f.text.0,
-                        "hex": f.text.1,
-                        "exact_at_point_as_seen": s(&f.exact_seen),
-                        "ulps_vs_exact_at_inputs": f.ulps_seen.as_ref().map(s),
-                        "ulps_vs_exact_at_intended_inputs": f.ulps_intended.as_ref().map(s),
-                    });
-                }
-                j
-            }).collect::<Vec<_>>(),
+        let strings = |xs: &[BigRational]| xs.iter().map(s).collect::<Vec<_>>();
+        to_json(&LookupJson {
+            mesh: &self.file,
+            results: self
+                .rows
+                .iter()
+                .map(|r| LookupRowJson {
+                    at: strings(&r.point),
+                    inside: !r.hits.is_empty(),
+                    value: r.hits.first().map(|h| s(&h.1)),
+                    triangles: r
+                        .hits
+                        .iter()
+                        .map(|(l, v)| HitJson {
+                            triangle: l.triangle,
+                            position: l.position(self.mesh.triangles()[l.triangle]),
+                            barycentric: strings(&l.barycentric),
+                            value: s(v),
+                        })
+                        .collect(),
+                    float: r.float.as_ref().map(|f| FloatJson {
+                        precision: f.precision.name(),
+                        triangle: f.triangle,
+                        point_as_seen: strings(&f.point),
+                        barycentric: strings(&f.barycentric),
+                        value: f.value.as_ref().map(s),
+                        decimal: &f.text.0,
+                        hex: &f.text.1,
+                        exact_at_point_as_seen: s(&f.exact_seen),
+                        ulps_vs_exact_at_inputs: f.ulps_seen.as_ref().map(s),
+                        ulps_vs_exact_at_intended_inputs: f.ulps_intended.as_ref().map(s),
+                    }),
+                })
+                .collect(),
         })
     }
+}
+
+/// The JSON of `tribez mesh check`.
+#[derive(Serialize)]
+struct CheckJson<'a> {
+    mesh: &'a str,
+    degree: usize,
+    vertices: usize,
+    edges: usize,
+    triangles: usize,
+    ordinates: usize,
+    valid: bool,
+    problems: &'a [String],
+}
+
+/// The JSON of `tribez lookup` (exact numbers as strings `p/q`).
+#[derive(Serialize)]
+struct LookupJson<'a> {
+    mesh: &'a str,
+    results: Vec<LookupRowJson<'a>>,
+}
+
+/// One point of `tribez lookup`: its value and every triangle holding it.
+#[derive(Serialize)]
+struct LookupRowJson<'a> {
+    at: Vec<String>,
+    inside: bool,
+    value: Option<String>,
+    triangles: Vec<HitJson>,
+    /// The float lookup (`--float`); absent without it or outside the mesh.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float: Option<FloatJson<'a>>,
+}
+
+/// One triangle holding a point: where in it, its barycentric coordinates, the value there.
+#[derive(Serialize)]
+struct HitJson {
+    triangle: usize,
+    #[serde(rename = "where")]
+    position: String,
+    barycentric: Vec<String>,
+    value: String,
+}
+
+/// The float lookup at a point, judged.
+#[derive(Serialize)]
+struct FloatJson<'a> {
+    precision: &'static str,
+    triangle: usize,
+    point_as_seen: Vec<String>,
+    barycentric: Vec<String>,
+    value: Option<String>,
+    decimal: &'a str,
+    hex: &'a str,
+    exact_at_point_as_seen: String,
+    ulps_vs_exact_at_inputs: Option<String>,
+    ulps_vs_exact_at_intended_inputs: Option<String>,
 }
 
 /// Run `tribez check --mesh MESH --results FILE`: other code's lookups judged row by row

@@ -267,6 +267,35 @@ impl Grid {
     }
 }
 
+/// How a map draws: the frame of its box, the reach of the rows (`lo`, `hi`; a row beyond it
+/// sits on its edge), the range of the errors and their colour scale.
+struct MapView {
+    frame: Frame,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    range: Option<(f64, f64)>,
+    scale: Option<LogScale>,
+}
+
+impl MapView {
+    /// The pixel of a row, clamped to the view.
+    fn place(&self, p: [f64; 2]) -> [f64; 2] {
+        let q = [
+            p[0].clamp(self.lo[0], self.hi[0]),
+            p[1].clamp(self.lo[1], self.hi[1]),
+        ];
+        self.frame.px(q)
+    }
+
+    /// The colour of an error of `u` ULPs (black when it is not finite).
+    fn colour(&self, u: f64) -> Rgb {
+        match self.scale {
+            Some(s) if u.is_finite() => s.colour(u),
+            _ => NOT_FINITE,
+        }
+    }
+}
+
 /// What a panel says besides its rows.
 #[derive(Clone, Debug)]
 pub struct Panel {
@@ -332,6 +361,40 @@ impl MapData {
         let b = &self.b;
         svg.open_group(&[("id", id.to_string()), ("class", "error-map".into())]);
         svg.text([MAP_X, y0 + 26.0], 15.0, "start", INK, &panel.title, &[]);
+        let view = self.view(y0, panel);
+        svg.rect(
+            MAP_X,
+            y0 + MAP_Y,
+            MAP_W,
+            MAP_H,
+            Rgb(250, 250, 250),
+            Some((Rgb(220, 220, 220), 1.0)),
+        );
+        let mut attrs: Vec<(&str, String)> = vec![("class", "map".into())];
+        attrs.extend(view.frame.attrs());
+        svg.open_group(&attrs);
+        let outline: Vec<[f64; 2]> = b.outline.iter().map(|&p| view.frame.px(p)).collect();
+        svg.polygon(&outline, Rgb(255, 255, 255), Some((OUTLINE, 1.5)));
+        self.draw_rows(svg, &view);
+        self.draw_marks(svg, &view, panel, id);
+        svg.close_group();
+        self.draw_legend(svg, y0, panel);
+        self.draw_colour_bar(svg, y0, &view);
+        // the histogram
+        histogram(
+            svg,
+            MAP_X + MAP_W + 22.0 + 110.0,
+            y0 + MAP_Y,
+            &panel.histogram,
+            "rows",
+        );
+        svg.close_group();
+    }
+
+    /// Where the map of the panel at `y0` draws and how it colours: the rows' reach (or the
+    /// grid's) fitted to the map's box, the colour scale of the panel's errors.
+    fn view(&self, y0: f64, panel: &Panel) -> MapView {
+        let b = &self.b;
         let (lo, hi) = b.grid.as_ref().map_or_else(
             || self.b.limits(),
             |g| (g.lo, [g.lo[0] + g.size[0], g.lo[1] + g.size[1]]),
@@ -351,28 +414,18 @@ impl MapData {
             };
             LogScale::new(lo, floor, hi)
         });
-        let colour = |u: f64| match scale {
-            Some(s) if u.is_finite() => s.colour(u),
-            _ => NOT_FINITE,
-        };
-        svg.rect(
-            MAP_X,
-            y0 + MAP_Y,
-            MAP_W,
-            MAP_H,
-            Rgb(250, 250, 250),
-            Some((Rgb(220, 220, 220), 1.0)),
-        );
-        let mut attrs: Vec<(&str, String)> = vec![("class", "map".into())];
-        attrs.extend(frame.attrs());
-        svg.open_group(&attrs);
-        let outline: Vec<[f64; 2]> = b.outline.iter().map(|&p| frame.px(p)).collect();
-        svg.polygon(&outline, Rgb(255, 255, 255), Some((OUTLINE, 1.5)));
-        // pixel of a row, clamped to the view (rows beyond the reach sit on its edge)
-        let place = |p: [f64; 2]| {
-            let q = [p[0].clamp(lo[0], hi[0]), p[1].clamp(lo[1], hi[1])];
-            frame.px(q)
-        };
+        MapView {
+            frame,
+            lo,
+            hi,
+            range,
+            scale,
+        }
+    }
+
+    /// The rows: the grid's cells (their largest error), or one dot per row.
+    fn draw_rows(&self, svg: &mut Svg, view: &MapView) {
+        let b = &self.b;
         if let Some(g) = &b.grid {
             let (cw, ch) = (g.size[0] / g.nx as f64, g.size[1] / g.ny as f64);
             for j in 0..g.ny {
@@ -381,18 +434,20 @@ impl MapData {
                     if c.rows == 0 {
                         continue;
                     }
-                    let corner = frame.px([g.lo[0] + i as f64 * cw, g.lo[1] + (j + 1) as f64 * ch]);
+                    let corner = view
+                        .frame
+                        .px([g.lo[0] + i as f64 * cw, g.lo[1] + (j + 1) as f64 * ch]);
                     let fill = if c.not_finite {
                         NOT_FINITE
                     } else {
-                        colour(c.max)
+                        view.colour(c.max)
                     };
                     let stroke = (c.failed > 0).then_some((FAILED, 0.8));
                     svg.rect(
                         corner[0],
                         corner[1],
-                        cw * frame.s,
-                        ch * frame.s,
+                        cw * view.frame.s,
+                        ch * view.frame.s,
                         fill,
                         stroke,
                     );
@@ -404,7 +459,7 @@ impl MapData {
             // larger errors on top; failed rows above passing ones
             order.sort_by(|x, y| (!x.pass).cmp(&!y.pass).then(x.ulps.total_cmp(&y.ulps)));
             for d in order {
-                let p = place(d.at);
+                let p = view.place(d.at);
                 let out = !inside(&b.outline, d.at);
                 let stroke = if !d.pass {
                     Some((FAILED, 1.4))
@@ -414,12 +469,16 @@ impl MapData {
                     None
                 };
                 let rr = if d.pass { r } else { r + 1.2 };
-                svg.circle(p, rr, Some(colour(d.ulps)), stroke, &[]);
+                svg.circle(p, rr, Some(view.colour(d.ulps)), stroke, &[]);
             }
         }
+    }
+
+    /// The labelled rows and the worst row, each circled and named.
+    fn draw_marks(&self, svg: &mut Svg, view: &MapView, panel: &Panel, id: &str) {
         // further labelled rows
         for (at, label) in &panel.labels {
-            let p = place(*at);
+            let p = view.place(*at);
             svg.circle(
                 p,
                 7.0,
@@ -441,8 +500,8 @@ impl MapData {
         if let Some((row, label)) = &panel.worst
             && let Some(at) = self.worst_at(*row)
         {
-            let p = place(at);
-            let top = range.map_or(NOT_FINITE, |(_, hi)| colour(hi));
+            let p = view.place(at);
+            let top = view.range.map_or(NOT_FINITE, |(_, hi)| view.colour(hi));
             svg.circle(p, 3.0, Some(top), None, &[]);
             svg.circle(
                 p,
@@ -465,8 +524,11 @@ impl MapData {
                 &[("class", "worst-label".into())],
             );
         }
-        svg.close_group();
-        // the legend under the map
+    }
+
+    /// The legend under the map: the marks' meaning and counts, and the notes.
+    fn draw_legend(&self, svg: &mut Svg, y0: f64, panel: &Panel) {
+        let b = &self.b;
         let ly = y0 + MAP_Y + MAP_H + 22.0;
         let mut x = MAP_X;
         svg.circle(
@@ -527,7 +589,10 @@ impl MapData {
             &notes.join("; "),
             &[],
         );
-        // the colour bar
+    }
+
+    /// The colour bar beside the map, with its ends and ticks.
+    fn draw_colour_bar(&self, svg: &mut Svg, y0: f64, view: &MapView) {
         let (bx, by, bw, bh) = (MAP_X + MAP_W + 22.0, y0 + MAP_Y + 20.0, 18.0, MAP_H - 40.0);
         svg.text(
             [bx - 4.0, by - 10.0],
@@ -538,14 +603,14 @@ impl MapData {
             &[],
         );
         let steps = 64;
-        let spread = range.is_some_and(|(lo, hi)| hi > lo);
+        let spread = view.range.is_some_and(|(lo, hi)| hi > lo);
         for k in 0..steps {
             let t = (k as f64 + 0.5) / steps as f64;
             let y = by + bh - (k as f64 + 1.0) * bh / steps as f64;
             let c = super::colour::map(if spread { t } else { 0.5 });
             svg.rect(bx, y, bw, bh / steps as f64 + 0.5, c, None);
         }
-        if let (Some((lo, hi)), Some(s)) = (range, scale) {
+        if let (Some((lo, hi)), Some(s)) = (view.range, view.scale) {
             let label = |svg: &mut Svg, y: f64, v: f64, id: &str| {
                 svg.text(
                     [bx + bw + 6.0, y + 4.0],
@@ -581,9 +646,6 @@ impl MapData {
                 );
             }
         }
-        // the histogram
-        histogram(svg, bx + 110.0, y0 + MAP_Y, &panel.histogram, "rows");
-        svg.close_group();
     }
 }
 

@@ -428,7 +428,39 @@ fn geometry<'a>(patch: &'a Patch, file: &str) -> Result<Geometry<'a>, CliError> 
 /// Sample a patch and its net.
 fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliError> {
     let g = geometry(patch, file)?;
-    let n = options.samples;
+    let sampled = sample(&g, options.samples);
+    let points = evaluate(patch, &g, &sampled.samples);
+    let take = |r: &std::ops::Range<usize>| points[r.clone()].to_vec();
+    let edges = sampled.edges.iter().map(take).collect();
+    let iso = sampled.iso.iter().map(take).collect();
+    // the net: points (scalar patches at their abscissae), lines between neighbours
+    let indices: Vec<Vec<u32>> = g.net.entries().map(|(a, _)| a.to_vec()).collect();
+    Ok(Scene {
+        points,
+        triangles: sampled.triangles,
+        edges,
+        iso,
+        net_points: net_points(&g),
+        net_lines: net_lines(&g, &indices),
+        net_labels: net_labels(&indices, options.labels),
+        three_d: g.three_d(),
+        description: description(patch, &g),
+    })
+}
+
+/// The domain points a picture evaluates: the surface's grid (and its triangles), its edges
+/// and iso-lines as ranges of the samples.
+struct Sampled {
+    samples: Vec<Sample>,
+    triangles: Vec<[usize; 3]>,
+    edges: Vec<std::ops::Range<usize>>,
+    iso: Vec<std::ops::Range<usize>>,
+}
+
+/// Sample the domain with `n` steps per edge (`--samples`): a polygon as a fan of triangles
+/// from its centroid, a triangle as a grid with its iso-lines (in the plane), a curve with
+/// `8n` segments; every edge at `2n` steps.
+fn sample(g: &Geometry<'_>, n: usize) -> Sampled {
     let m = if g.polygon { 2 } else { g.vertices.len() - 1 };
     let bary = |w: &[BigRational]| Sample {
         domain: g.domain_of(w),
@@ -523,15 +555,18 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
         }
         edge_ranges.push(start..samples.len());
     }
-    let points = evaluate(patch, &g, &samples);
-    let take = |r: &std::ops::Range<usize>| points[r.clone()].to_vec();
-    let edges = edge_ranges.iter().map(take).collect();
-    let iso = iso_ranges.iter().map(take).collect();
-    // the net: points (scalar patches at their abscissae), lines between neighbours
+    Sampled {
+        samples,
+        triangles,
+        edges: edge_ranges,
+        iso: iso_ranges,
+    }
+}
+
+/// The control points as picture points (a scalar patch's at their abscissae).
+fn net_points(g: &Geometry<'_>) -> Vec<[f64; 3]> {
     let degree = g.net.degree();
-    let indices: Vec<Vec<u32>> = g.net.entries().map(|(a, _)| a.to_vec()).collect();
-    let net_points: Vec<[f64; 3]> = g
-        .net
+    g.net
         .entries()
         .map(|(alpha, c)| {
             let w: Vec<BigRational> = alpha
@@ -547,7 +582,12 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
             let value: Vec<f64> = c.iter().map(round_f64).collect();
             g.point(&domain, &value)
         })
-        .collect();
+        .collect()
+}
+
+/// The lines of the net between neighbouring control points (`indices` in the net's order): a
+/// simplex's between every pair `i < j` of parts, an S-patch's between neighbouring vertices.
+fn net_lines(g: &Geometry<'_>, indices: &[Vec<u32>]) -> Vec<(usize, usize)> {
     let simplex = g.net.simplex();
     let parts = indices.first().map_or(0, Vec::len);
     let mut net_lines = Vec::new();
@@ -575,13 +615,18 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
             }
         }
     }
-    let all = options.labels == Labels::All && indices.len() <= MAX_LABELS;
-    let net_labels = indices
+    net_lines
+}
+
+/// The labels of the control points `--labels` asks for: `(index in the net, text, corner)`.
+fn net_labels(indices: &[Vec<u32>], labels: Labels) -> Vec<(usize, String, bool)> {
+    let all = labels == Labels::All && indices.len() <= MAX_LABELS;
+    indices
         .iter()
         .enumerate()
         .filter_map(|(r, alpha)| {
             let corner = alpha.iter().filter(|&&a| a > 0).count() <= 1;
-            let wanted = match options.labels {
+            let wanted = match labels {
                 Labels::None => false,
                 Labels::Corners => corner,
                 Labels::All => all || corner,
@@ -595,7 +640,12 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
                 (r, format!("({text})"), corner)
             })
         })
-        .collect();
+        .collect()
+}
+
+/// What the picture shows: kind, degree (or depth), domain and dimension.
+fn description(patch: &Patch, g: &Geometry<'_>) -> String {
+    let m = if g.polygon { 2 } else { g.vertices.len() - 1 };
     let shape = patch.shape();
     let over = if g.polygon {
         format!("over a {}-gon", g.vertices.len())
@@ -604,24 +654,13 @@ fn scene(patch: &Patch, options: &PlotOptions, file: &str) -> Result<Scene, CliE
     } else {
         "over an interval".to_string()
     };
-    let description = format!(
+    format!(
         "{}, {} {}, {over}, in R^{}",
         patch.kind().name(),
         if g.polygon { "depth" } else { "degree" },
         shape.degree,
         shape.dimension
-    );
-    Ok(Scene {
-        points,
-        triangles,
-        edges,
-        iso,
-        net_points,
-        net_lines,
-        net_labels,
-        three_d: g.three_d(),
-        description,
-    })
+    )
 }
 
 /// The picture of `patch` as SVG (see the module's documentation).
@@ -668,6 +707,46 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
     plot_attrs.push(("data-view", format!("{} {}", view.azimuth, view.elevation)));
     svg.open_group(&plot_attrs);
     // the surface (or the plane's image), far triangles first
+    let faces = faces(scene, (r, u, v), &frame);
+    svg.open_group(&[("id", "surface".into())]);
+    for (_, tri, colour) in &faces {
+        // the outline in the fill's colour closes the hairline gaps between triangles
+        svg.polygon(tri, *colour, Some((*colour, 0.6)));
+    }
+    svg.close_group();
+    let polyline = |svg: &mut Svg, line: &[Option<[f64; 3]>], colour: Rgb, width: f64| {
+        // a missing point (an undefined value) breaks the line
+        for run in line.split(Option::is_none) {
+            let pts: Vec<[f64; 2]> = run.iter().flatten().map(|&p| px(project(p))).collect();
+            svg.polyline(&pts, colour, width, "");
+        }
+    };
+    svg.open_group(&[("id", "iso-lines".into())]);
+    for line in &scene.iso {
+        polyline(&mut svg, line, ISO, 0.8);
+    }
+    svg.close_group();
+    svg.open_group(&[("id", "domain-edges".into())]);
+    for line in &scene.edges {
+        polyline(&mut svg, line, EDGE, 1.8);
+    }
+    svg.close_group();
+    draw_net(&mut svg, scene, &net2, &frame);
+    svg.close_group();
+    draw_legend(&mut svg, scene, view, options);
+    svg.finish()
+}
+
+/// The surface's triangles as drawn: `(depth, pixels, colour)`, shaded by their normal in 3D
+/// (far triangles first); in the plane, the triangles of the orientation fewer triangles have
+/// are the folds.
+fn faces(
+    scene: &Scene,
+    (r, u, v): ([f64; 3], [f64; 3], [f64; 3]),
+    frame: &Frame,
+) -> Vec<(f64, [[f64; 2]; 3], Rgb)> {
+    let project = |p: [f64; 3]| [dot(r, p), dot(u, p)];
+    let px = |p: [f64; 2]| frame.px(p);
     let light = normalize([
         -0.35 * r[0] + 0.55 * u[0] + 0.75 * v[0],
         -0.35 * r[1] + 0.55 * u[1] + 0.75 * v[1],
@@ -732,29 +811,13 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
     if scene.three_d {
         faces.sort_by(|a, b| a.0.total_cmp(&b.0));
     }
-    svg.open_group(&[("id", "surface".into())]);
-    for (_, tri, colour) in &faces {
-        // the outline in the fill's colour closes the hairline gaps between triangles
-        svg.polygon(tri, *colour, Some((*colour, 0.6)));
-    }
-    svg.close_group();
-    let polyline = |svg: &mut Svg, line: &[Option<[f64; 3]>], colour: Rgb, width: f64| {
-        // a missing point (an undefined value) breaks the line
-        for run in line.split(Option::is_none) {
-            let pts: Vec<[f64; 2]> = run.iter().flatten().map(|&p| px(project(p))).collect();
-            svg.polyline(&pts, colour, width, "");
-        }
-    };
-    svg.open_group(&[("id", "iso-lines".into())]);
-    for line in &scene.iso {
-        polyline(&mut svg, line, ISO, 0.8);
-    }
-    svg.close_group();
-    svg.open_group(&[("id", "domain-edges".into())]);
-    for line in &scene.edges {
-        polyline(&mut svg, line, EDGE, 1.8);
-    }
-    svg.close_group();
+    faces
+}
+
+/// The control net on top: its lines, its points and their labels (`net2`: the points
+/// projected).
+fn draw_net(svg: &mut Svg, scene: &Scene, net2: &[[f64; 2]], frame: &Frame) {
+    let px = |p: [f64; 2]| frame.px(p);
     // the control net on top
     svg.open_group(&[("id", "control-net".into())]);
     for &(a, b) in &scene.net_lines {
@@ -782,7 +845,10 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
         );
     }
     svg.close_group();
-    svg.close_group();
+}
+
+/// The legend under the picture: the net, the faces' colours, the view and the sampling.
+fn draw_legend(svg: &mut Svg, scene: &Scene, view: View, options: &PlotOptions) {
     // the legend
     let y = HEIGHT - 36.0;
     svg.circle([28.0, y - 4.0], 4.0, Some(NET), None, &[]);
@@ -826,7 +892,6 @@ fn draw(scene: &Scene, options: &PlotOptions) -> String {
         ),
         &[],
     );
-    svg.finish()
 }
 
 #[cfg(test)]

@@ -341,6 +341,60 @@ pub fn certify(
             "--html"
         },
     )?;
+    let panels = certify_panels(patch, report, outline);
+    let svg = errmap::svg(&panels, &format!("error maps of {}", report.patch));
+    if let Some(path) = &pictures.plot {
+        super::stage(path, &svg, "--plot")?;
+    }
+    let Some(path) = &pictures.html else {
+        return Ok(());
+    };
+    let passed = report.success();
+    let summary = certify_summary(report, &panels);
+    let mut sections = vec![Section::Table {
+        heading: "Worst points".into(),
+        note: "The float result is the float program's, rerun at the point rounded to the precision; the exact value is at that rounded point.".into(),
+        header: ["run", "point (exact)", "error (ulp)", "float result", "exact value"]
+            .map(String::from)
+            .to_vec(),
+        rows: certify_worst_rows(patch, report),
+    }];
+    let violations = certify_violations(report);
+    if !violations.is_empty() {
+        sections.push(Section::Table {
+            heading: "Bound exceeded".into(),
+            note: "At most 100 per run.".into(),
+            header: vec!["run".into(), "where and by how much".into()],
+            rows: violations,
+        });
+    }
+    let page = html::render(&HtmlReport {
+        title: format!("tribez certify: {}", report.patch),
+        passed,
+        verdict: if passed {
+            "every result within its proven bound".into()
+        } else {
+            "some result exceeds its proven bound (or a baseline regressed)".into()
+        },
+        summary,
+        reproduce: report
+            .random
+            .as_ref()
+            .map_or_else(|| html::shell_line(command), |r| r.reproduce.clone()),
+        pictures: svg,
+        sections,
+        text: report.text(),
+    });
+    crate::output::stage(path, page.as_bytes())
+}
+
+/// One error map per run (algorithm and precision) of `certify`: every point at its place in
+/// the domain (`outline`), the worst point marked.
+fn certify_panels(
+    patch: &Patch,
+    report: &CertifyReport,
+    outline: Vec<[f64; 2]>,
+) -> Vec<(MapData, Panel)> {
     let polygon = outline.len() != 3 || matches!(patch.kind(), tribez::PatchKind::SPatch);
     let positions: Vec<[f64; 2]> = report
         .inputs
@@ -402,14 +456,12 @@ pub fn certify(
             },
         ));
     }
-    let svg = errmap::svg(&panels, &format!("error maps of {}", report.patch));
-    if let Some(path) = &pictures.plot {
-        super::stage(path, &svg, "--plot")?;
-    }
-    let Some(path) = &pictures.html else {
-        return Ok(());
-    };
-    let passed = report.success();
+    panels
+}
+
+/// The summary table of the `certify` HTML report: the points, and per run the range of the
+/// errors, the share correctly rounded, the largest error ÷ bound and the verdict.
+fn certify_summary(report: &CertifyReport, panels: &[(MapData, Panel)]) -> Vec<(String, String)> {
     let mut summary = vec![
         ("patch".to_string(), report.patch.clone()),
         ("points".into(), report.points.to_string()),
@@ -420,7 +472,7 @@ pub fn certify(
             format!("{}, seed {}", r.count, r.seed),
         ));
     }
-    for (row, (data, _)) in report.rows.iter().zip(&panels) {
+    for (row, (data, _)) in report.rows.iter().zip(panels) {
         let range = data.range(Some(row.max_ulps), None);
         summary.push((
             format!("{} {}", row.algorithm.name(), row.precision.name()),
@@ -438,6 +490,12 @@ pub fn certify(
             ),
         ));
     }
+    summary
+}
+
+/// The worst point of each run of `certify`: the point, its error, the float program's result
+/// there (rerun at the point rounded to the precision) and the exact value at that point.
+fn certify_worst_rows(patch: &Patch, report: &CertifyReport) -> Vec<Vec<String>> {
     let float = patch.float();
     let mut worst_rows = Vec::new();
     for row in &report.rows {
@@ -465,15 +523,12 @@ pub fn certify(
             }),
         ]);
     }
-    let mut sections = vec![Section::Table {
-        heading: "Worst points".into(),
-        note: "The float result is the float program's, rerun at the point rounded to the precision; the exact value is at that rounded point.".into(),
-        header: ["run", "point (exact)", "error (ulp)", "float result", "exact value"]
-            .map(String::from)
-            .to_vec(),
-        rows: worst_rows,
-    }];
-    let violations: Vec<Vec<String>> = report
+    worst_rows
+}
+
+/// The bound violations of `certify`, at most 100 per run.
+fn certify_violations(report: &CertifyReport) -> Vec<Vec<String>> {
+    report
         .rows
         .iter()
         .flat_map(|r| {
@@ -484,33 +539,7 @@ pub fn certify(
                 ]
             })
         })
-        .collect();
-    if !violations.is_empty() {
-        sections.push(Section::Table {
-            heading: "Bound exceeded".into(),
-            note: "At most 100 per run.".into(),
-            header: vec!["run".into(), "where and by how much".into()],
-            rows: violations,
-        });
-    }
-    let page = html::render(&HtmlReport {
-        title: format!("tribez certify: {}", report.patch),
-        passed,
-        verdict: if passed {
-            "every result within its proven bound".into()
-        } else {
-            "some result exceeds its proven bound (or a baseline regressed)".into()
-        },
-        summary,
-        reproduce: report
-            .random
-            .as_ref()
-            .map_or_else(|| html::shell_line(command), |r| r.reproduce.clone()),
-        pictures: svg,
-        sections,
-        text: report.text(),
-    });
-    crate::output::stage(path, page.as_bytes())
+        .collect()
 }
 
 /// Stage the `--html` report of `tribez check` on claim files (`paths` as given).
