@@ -552,28 +552,6 @@ const LONG_FN_ALLOWED: &[(&str, &str, &str)] = &[
         "numeric kernel: the compensated de Casteljau evaluation (error-free transformations), \
          one body inlined into every size, FMA and double-double variant",
     ),
-    // The picture functions of the command line are being split in another branch: these
-    // entries go once it is merged.
-    (
-        "crates/tribez-cli/src/picture/reports.rs",
-        "certify",
-        "being split",
-    ),
-    (
-        "crates/tribez-cli/src/picture/patch.rs",
-        "scene",
-        "being split",
-    ),
-    (
-        "crates/tribez-cli/src/picture/patch.rs",
-        "draw",
-        "being split",
-    ),
-    (
-        "crates/tribez-cli/src/picture/errmap.rs",
-        "draw",
-        "being split",
-    ),
 ];
 
 /// The name of the function a line declares (`pub(crate) const unsafe fn name<..>(..`), if it
