@@ -153,7 +153,7 @@ pub struct HuntPoint<'a> {
 pub struct HuntReport {
     /// The precision.
     pub precision: Precision,
-    /// The tolerance as given.
+    /// The tolerance, `cond` with the patch's `K = (m+1)·n` (`cond=9` for a cubic triangle).
     pub tolerance: Tolerance,
     /// The seed (give it again to repeat the hunt).
     pub seed: u64,
@@ -248,7 +248,7 @@ pub fn hunt_each_row<E>(
     let w = search.space.width();
     let mut report = HuntReport {
         precision: options.precision,
-        tolerance: options.tolerance.clone(),
+        tolerance: options.tolerance.for_patch(m, bezier.net.degree()),
         seed: options.seed,
         budget: options.budget,
         cartesian: options.cartesian,
@@ -360,6 +360,7 @@ fn space(bezier: &crate::patch::BezierPatch, domain: &Domain, options: &HuntOpti
         abs_net,
         vertices,
         inverse,
+        domain: domain.clone(),
         cartesian: options.cartesian,
     }
 }
