@@ -699,6 +699,33 @@ fn a_target_that_closes_its_output_but_lives_on_is_stopped() {
 }
 
 #[test]
+fn a_target_that_answers_a_row_twice_is_found_out_at_the_end() {
+    let d = tempfile::tempdir().unwrap();
+    let out = run(hunt(
+        d.path(),
+        &[
+            "--budget",
+            "200",
+            "--seed",
+            "1",
+            "--claims-out",
+            "w.claims.toml",
+        ],
+        &["twice", "150"],
+    ));
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("python3: answered more lines than the 200 rows given"),
+        "{err}"
+    );
+    assert_eq!(listing(d.path()), ["log", "pid"]);
+    gone(d.path());
+}
+
+#[test]
 fn a_broken_cartesian_target_names_the_row_as_given() {
     let third = row_given(3, &["--cartesian"]);
     assert_eq!(third.split(',').count(), 2);

@@ -13,9 +13,9 @@
 //! the value, points of large condition number), then local search around the worst rows
 //! found (one coordinate moved by `±2^k` floats, `k` uniform in `0..=52` for `f64`, `0..=23`
 //! for `f32`, the largest other coordinate set to the float nearest `1 − Σ others`, or the
-//! Cartesian point kept inside the domain), with a fifth of every round on fresh places and a
-//! restart of the local search when three rounds bring no worse row. The budget counts rows
-//! given to the target.
+//! Cartesian point kept inside the domain, exactly), each later row a fresh place instead with
+//! probability 1/5, and a restart of the local search when three rounds bring no worse row. The
+//! budget counts rows given to the target.
 //!
 //! Every row is judged by the batch engine exactly as `tribez check --results` judges it
 //! (float filter first, exact arithmetic when undecided; the same tolerances, `cond` without
