@@ -272,6 +272,43 @@ fn a_planted_fault_is_found_and_only_its_rows_break() {
 }
 
 #[test]
+fn an_f32_hunt_gives_f32_rows_and_judges_f32_answers() {
+    // `sound32` answers the exact value rounded to f32 with integers, and logs `notf32` for a
+    // row with a number that is not an f32
+    let d = tempfile::tempdir().unwrap();
+    let out = run(hunt(
+        d.path(),
+        &[
+            "--precision",
+            "f32",
+            "--tolerance",
+            "correctly_rounded",
+            "--budget",
+            "400",
+            "--seed",
+            "8",
+            "--format",
+            "json",
+        ],
+        &["sound32"],
+    ));
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let r = json(&out);
+    assert_eq!(r["precision"], "f32");
+    assert_eq!(field(&r, "evaluated"), 400);
+    assert_eq!(field(&r, "broke"), 0);
+    let rows = log(d.path());
+    assert_eq!(rows.len(), 400);
+    for (row, status, inside) in &rows {
+        assert_eq!(status, "sound", "{row}: every number an f32");
+        assert_eq!(inside, "inside", "{row}");
+    }
+    for w in r["worst"].as_array().unwrap() {
+        assert!(w["ulps"].as_f64().unwrap() <= 0.5, "{w}");
+    }
+}
+
+#[test]
 fn the_text_report_names_the_worst_row_and_how_to_repeat_the_hunt() {
     let d = tempfile::tempdir().unwrap();
     let out = run(hunt(
