@@ -13,9 +13,9 @@
 //! the value, points of large condition number), then local search around the worst rows
 //! found (one coordinate moved by `±2^k` floats, `k` uniform in `0..=52` for `f64`, `0..=23`
 //! for `f32`, the largest other coordinate set to the float nearest `1 − Σ others`, or the
-//! Cartesian point kept inside the domain), with a fifth of every round on fresh places and a
-//! restart of the local search when three rounds bring no worse row. The budget counts rows
-//! given to the target.
+//! Cartesian point kept inside the domain, exactly), each later row a fresh place instead with
+//! probability 1/5, and a restart of the local search when three rounds bring no worse row. The
+//! budget counts rows given to the target.
 //!
 //! Every row is judged by the batch engine exactly as `tribez check --results` judges it
 //! (float filter first, exact arithmetic when undecided; the same tolerances, `cond` without
@@ -154,7 +154,7 @@ pub struct HuntPoint<'a> {
 pub struct HuntReport {
     /// The precision.
     pub precision: Precision,
-    /// The tolerance as given.
+    /// The tolerance, `cond` with the patch's `K = (m+1)·n` (`cond=9` for a cubic triangle).
     pub tolerance: Tolerance,
     /// The seed (give it again to repeat the hunt).
     pub seed: u64,
@@ -249,7 +249,7 @@ pub fn hunt_each_row<E>(
     let w = search.space.width();
     let mut report = HuntReport {
         precision: options.precision,
-        tolerance: options.tolerance.clone(),
+        tolerance: options.tolerance.for_patch(m, bezier.net.degree()),
         seed: options.seed,
         budget: options.budget,
         cartesian: options.cartesian,
@@ -361,6 +361,7 @@ fn space(bezier: &crate::patch::BezierPatch, domain: &Domain, options: &HuntOpti
         abs_net,
         vertices,
         inverse,
+        domain: domain.clone(),
         cartesian: options.cartesian,
     }
 }

@@ -11,6 +11,7 @@
 //! coordinate (other than the one just chosen) to the float nearest `1 − Σ_{others} λ_i`.
 
 use crate::certify::sample::SplitMix;
+use crate::domain::Domain;
 use crate::float::Precision;
 use crate::patch::ControlNet;
 
@@ -26,6 +27,8 @@ pub(super) struct Space {
     /// `inverse[i][j]`: row `i < m` of the inverse of the `m × m` matrix `V_k − V_m` (columns
     /// `k < m`), so that `λ_i = Σ_j inverse[i][j] (x_j − V_m[j])` for `i < m`.
     pub inverse: Vec<Vec<f64>>,
+    /// The exact domain (whether a Cartesian row is inside it).
+    pub domain: Domain,
     pub cartesian: bool,
 }
 
@@ -156,10 +159,18 @@ impl Space {
         row.iter().all(|x| x.is_finite() && *x >= 0.0)
     }
 
-    /// A Cartesian point inside the closed domain (its barycentric coordinates in `f64` are at
-    /// least 0 in `f64`).
+    /// A Cartesian point inside the closed domain: its exact barycentric coordinates (Cramer's
+    /// rule on the float point's exact value) are all at least 0. Points whose barycentric
+    /// coordinates in `f64` are negative are refused first, without exact arithmetic (such a
+    /// point may be inside by a hair: refusing it only costs the sampler a candidate).
     pub fn inside_cartesian(&self, x: &[f64]) -> bool {
-        x.iter().all(|v| v.is_finite()) && self.to_barycentric(x).iter().all(|&l| l >= 0.0)
+        if !(x.iter().all(|v| v.is_finite()) && self.to_barycentric(x).iter().all(|&l| l >= 0.0)) {
+            return false;
+        }
+        let exact: Option<Vec<_>> = x.iter().map(|&v| crate::number::exact_f64(v)).collect();
+        exact
+            .and_then(|x| self.domain.barycentric(&x).ok())
+            .is_some_and(|l| l.iter().all(|l| !num_traits::Signed::is_negative(l)))
     }
 }
 
