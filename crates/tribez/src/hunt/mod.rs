@@ -316,7 +316,6 @@ fn round_claim(p: Precision, y: f64) -> f64 {
 
 fn space(bezier: &crate::patch::BezierPatch, domain: &Domain, options: &HuntOptions) -> Space {
     let net = crate::float::net_to::<f64>(&bezier.net);
-    let abs_net = net.map(|x: &f64| x.abs());
     let m = bezier.net.m();
     let vertices: Vec<Vec<f64>> = domain
         .vertices()
@@ -353,15 +352,7 @@ fn space(bezier: &crate::patch::BezierPatch, domain: &Domain, options: &HuntOpti
         }
     }
     let inverse = a.into_iter().map(|row| row[m..].to_vec()).collect();
-    Space {
-        precision: options.precision,
-        m,
-        net,
-        abs_net,
-        vertices,
-        inverse,
-        cartesian: options.cartesian,
-    }
+    Space::new(options.precision, net, vertices, inverse, options.cartesian)
 }
 
 /// A judged row kept as one of the worst.
