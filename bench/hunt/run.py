@@ -9,7 +9,8 @@ hunt's own cost per row (a hunt whose target answers a constant without reading 
 `check --results` on those same rows and answers) and its rows per second through the pipe.
 
 Needs python3, a C compiler (`cc`) and a release build of tribez (`cargo build --release -p
-tribez-cli`). Usage: python3 bench/hunt/run.py [--seeds 10] [--quick] [--python] [--only cost|search]
+tribez-cli`, and for the cost `cargo build --release -p tribez --example hunt_cost`).
+Usage: python3 bench/hunt/run.py [--seeds 10] [--quick] [--python] [--only cost|search]
 """
 import argparse
 import json
