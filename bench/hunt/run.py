@@ -113,7 +113,9 @@ def search(args, tribez, bindir, tmp):
     seeds = range(args.seeds)
     sizes = [10_000] if args.quick else [10_000, 1_000_000]
     rows = []
-    for label, prog, pname, prec, py in TARGETS:
+    for number, (label, prog, pname, prec, py) in enumerate(TARGETS, 1):
+        if args.target and number not in args.target:
+            continue
         if args.python and py:
             cmd = [sys.executable, os.path.join(HERE, "targets", py), patch(pname, "net")]
         else:
@@ -248,6 +250,8 @@ def main():
     ap.add_argument("--python", action="store_true",
                     help="hunt the Python versions of the targets that have one")
     ap.add_argument("--only", choices=["search", "cost"])
+    ap.add_argument("--target", type=int, action="append", choices=[1, 2, 3, 4],
+                    help="run this target only (repeatable; default all four)")
     ap.add_argument("--cost-rows", type=int, default=1_000_000)
     ap.add_argument("--cost-rows-failing", type=int, default=100_000,
                     help="rows of the cost run whose answers all fail (0: none)")
