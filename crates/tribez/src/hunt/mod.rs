@@ -317,7 +317,6 @@ fn round_claim(p: Precision, y: f64) -> f64 {
 
 fn space(bezier: &crate::patch::BezierPatch, domain: &Domain, options: &HuntOptions) -> Space {
     let net = crate::float::net_to::<f64>(&bezier.net);
-    let abs_net = net.map(|x: &f64| x.abs());
     let m = bezier.net.m();
     let vertices: Vec<Vec<f64>> = domain
         .vertices()
@@ -354,16 +353,14 @@ fn space(bezier: &crate::patch::BezierPatch, domain: &Domain, options: &HuntOpti
         }
     }
     let inverse = a.into_iter().map(|row| row[m..].to_vec()).collect();
-    Space {
-        precision: options.precision,
-        m,
+    Space::new(
+        options.precision,
         net,
-        abs_net,
         vertices,
         inverse,
-        domain: domain.clone(),
-        cartesian: options.cartesian,
-    }
+        domain.clone(),
+        options.cartesian,
+    )
 }
 
 /// A judged row kept as one of the worst.

@@ -14,6 +14,7 @@ use crate::certify::sample::SplitMix;
 use crate::domain::Domain;
 use crate::float::Precision;
 use crate::patch::ControlNet;
+use crate::simplex::Simplex;
 
 /// The geometry a sampler needs: the precision, the simplex, the control net in `f64` (and its
 /// absolute values, for the condition number), the domain's vertices in `f64` (Cartesian rows).
@@ -21,7 +22,12 @@ pub(super) struct Space {
     pub precision: Precision,
     pub m: usize,
     pub net: ControlNet<f64>,
-    pub abs_net: ControlNet<f64>,
+    /// The control points and their absolute values, interleaved: point `r` is
+    /// `c_r[0..d], |c_r|[0..d]` at `points[2dr..2d(r+1)]` (one de Casteljau pass gives both).
+    pub points: Vec<f64>,
+    /// The de Casteljau step stencils, from degree `n` down to 1: entry `n − l` is
+    /// [`Simplex::step_stencil`] of degree `l`.
+    pub stencils: Vec<Vec<usize>>,
     /// Vertex `k` of the domain (`m` coordinates).
     pub vertices: Vec<Vec<f64>>,
     /// `inverse[i][j]`: row `i < m` of the inverse of the `m × m` matrix `V_k − V_m` (columns
@@ -76,12 +82,58 @@ impl Space {
         if self.cartesian { self.m } else { self.m + 1 }
     }
 
-    /// The value of the patch at `λ` in `f64` (de Casteljau), and `Σ|c_i| B_i(λ)`.
+    /// The geometry of `net` (rounded to `f64`) for rows of `precision`.
+    pub fn new(
+        precision: Precision,
+        net: ControlNet<f64>,
+        vertices: Vec<Vec<f64>>,
+        inverse: Vec<Vec<f64>>,
+        domain: Domain,
+        cartesian: bool,
+    ) -> Space {
+        let (m, n) = (net.m(), net.degree());
+        let points = net
+            .points()
+            .flat_map(|c| c.iter().copied().chain(c.iter().map(|x| x.abs())))
+            .collect();
+        let stencils = (1..=n)
+            .rev()
+            .map(|l| Simplex::new(m, l).step_stencil())
+            .collect();
+        Space {
+            precision,
+            m,
+            net,
+            points,
+            stencils,
+            vertices,
+            inverse,
+            domain,
+            cartesian,
+        }
+    }
+
+    /// The value of the patch at `λ` in `f64`, and `Σ|c_i| B_i(λ)`, by de Casteljau on the
+    /// control points and their absolute values together: at each step
+    /// `b_β ← Σ_k λ_k b_{β+e_k}` over the indices `β` of one degree less.
     pub fn value_and_scale(&self, lambda: &[f64]) -> (Vec<f64>, Vec<f64>) {
-        (
-            crate::float::casteljau(&self.net, lambda),
-            crate::float::casteljau(&self.abs_net, lambda),
-        )
+        let w = 2 * self.net.dim();
+        let mut from = self.points.clone();
+        let mut to = vec![0.0; from.len()];
+        for stencil in &self.stencils {
+            for (beta, parents) in stencil.chunks_exact(self.m + 1).enumerate() {
+                let out = &mut to[beta * w..(beta + 1) * w];
+                out.fill(0.0);
+                for (&l, &r) in lambda.iter().zip(parents) {
+                    for (o, &b) in out.iter_mut().zip(&from[r * w..(r + 1) * w]) {
+                        *o += l * b;
+                    }
+                }
+            }
+            std::mem::swap(&mut from, &mut to);
+        }
+        let d = self.net.dim();
+        (from[..d].to_vec(), from[d..w].to_vec())
     }
 
     /// The largest condition number over the value's coordinates at `λ`, in `f64` (an estimate

@@ -351,3 +351,34 @@ fn a_listed_exact_value_uses_the_control_points_as_the_target_saw_them() {
         assert!(!row.passed);
     }
 }
+
+#[test]
+fn the_samplers_value_and_scale_are_de_casteljau_on_the_net_and_its_absolute_values() {
+    // the cubic's values are positive: Σ|c_i| B_i = Σ c_i B_i, and both are the test's own
+    // de Casteljau (the same sums in the same order, so bit for bit)
+    let bezier = |p: Patch| match p.as_any() {
+        crate::any_patch::AnyPatch::Bezier(b) => b.clone(),
+        _ => unreachable!("a Bézier patch"),
+    };
+    let b = bezier(cubic());
+    let o = cond_options(10, 0);
+    let space = super::space(&b, &Domain::reference(2), &o);
+    for l in [
+        [1.0, 0.0, 0.0],
+        [0.25, 0.5, 0.25],
+        [0.1, 0.2, 0.7],
+        [1e-9, 0.3, 0.7 - 1e-9],
+    ] {
+        let (v, s) = space.value_and_scale(&l);
+        assert_eq!(v, casteljau(l));
+        assert_eq!(s, casteljau(l));
+    }
+    // a net of mixed signs: the scale is de Casteljau on |c| (here c = ±1 alternating in rank
+    // at degree 1, value λ_0 − λ_1 + λ_2, scale λ_0 + λ_1 + λ_2)
+    let q = |k: i64| vec![BigRational::from_integer(k.into())];
+    let lin = Patch::bezier(SimplexDim(2), Degree(1), vec![q(1), q(-1), q(1)]).unwrap();
+    let b = bezier(lin);
+    let space = super::space(&b, &Domain::reference(2), &o);
+    let (v, s) = space.value_and_scale(&[0.5, 0.25, 0.25]);
+    assert_eq!((v, s), (vec![0.5], vec![1.0]));
+}
