@@ -14,8 +14,10 @@ use std::path::{Path, PathBuf};
 use assert_cmd::Command;
 use serde_json::Value as Json;
 use tribez::batch::{BatchChecker, BatchOptions};
-use tribez::hazmat::any_patch::AnyPatch;
-use tribez::{Algorithm, JudgeInput, Patch, Precision, Rational, Tolerance, parse_rational};
+use tribez::format::{exact_f64, round_f64};
+use tribez::{
+    Algorithm, JudgeInput, Patch, PatchKind, Precision, Rational, Tolerance, parse_rational,
+};
 
 fn fixture_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/judge/cartesian")
@@ -41,12 +43,8 @@ fn q(s: &str) -> Rational {
 /// A hex float of the fixture as f64 (exact: a float of the precision is one of f64).
 fn float(s: &str) -> f64 {
     let x = q(s);
-    let f = tribez::hazmat::number::round_f64(&x);
-    assert_eq!(
-        tribez::hazmat::number::exact_f64(f),
-        Some(x),
-        "{s} is a float"
-    );
+    let f = round_f64(&x);
+    assert_eq!(exact_f64(f), Some(x), "{s} is a float");
     f
 }
 
@@ -247,7 +245,7 @@ fn check_library(case: &Json, rows: &[Row], tol: &str, patch: &Patch) {
             .collect();
         assert_eq!(ulps, r.ulps, "judge ULPs, {} row {i}", case["patch"]);
     }
-    let AnyPatch::Bezier(poly) = patch.as_any() else {
+    let (PatchKind::Bezier, Some(poly)) = (patch.kind(), patch.polynomial()) else {
         return; // batches judge polynomial patches only
     };
     let options = BatchOptions {
@@ -278,7 +276,7 @@ fn check_library(case: &Json, rows: &[Row], tol: &str, patch: &Patch) {
             v.row
         );
         // exact where computed exactly, else the upper end of a tight enclosure
-        let exact: f64 = tribez::hazmat::number::round_f64(&max(&r.ulps));
+        let exact: f64 = round_f64(&max(&r.ulps));
         assert!(
             v.ulps >= exact * (1.0 - 1e-12) && v.ulps <= exact + 1.0 / 64.0,
             "batch engine ULPs, {} row {}: {} against {exact}",
@@ -329,8 +327,7 @@ fn an_s_patch_is_judged_alike_either_way() {
     let tol = Tolerance::parse("ulps=4").unwrap();
     let point = [2.0, 2.0];
     // the value at (2, 2), rounded: fixtures/judge/derive.py (pentagon.claims.toml's s-patch-at-2-2)
-    let claimed = ["63147/128164", "100083/128164", "-15609/64082"]
-        .map(|s| tribez::hazmat::number::round_f64(&q(s)));
+    let claimed = ["63147/128164", "100083/128164", "-15609/64082"].map(|s| round_f64(&q(s)));
     let a = tribez::judge(&s, &point, &claimed, &tol, Precision::F64);
     let b = tribez::judge_cartesian(&s, &point, &claimed, &tol, Precision::F64);
     let (a, b) = (a.unwrap(), b.unwrap());

@@ -809,12 +809,13 @@ fn one_ulp_change_fails_correctly_rounded() {
 /// inside the triangle, Σ|c_i|B_i = P, so the bound γ_9·P < 9·2^-24·2^(e+1) = 9 ulp(P).
 #[test]
 fn shader_f32_results_pass_at_ulps_and_bound() {
-    use tribez::hazmat::float::{casteljau_vec3, net_f32, vec3_points};
+    use tribez::kernels::{casteljau, net_to};
     let d = tempfile::tempdir().unwrap();
     let text = "degree = 3\n[control_points]\n\"3,0,0\" = [1, 1.5, 2]\n\"2,1,0\" = [1.25, 1.75, 1.5]\n\"1,2,0\" = [1.5, 1.125, 1.875]\n\"0,3,0\" = [2, 1, 1]\n\"2,0,1\" = [1.1, 1.9, 1.3]\n\"1,1,1\" = [1.7, 1.2, 1.6]\n\"0,2,1\" = [1.3, 1.4, 1.8]\n\"1,0,2\" = [1.6, 1.8, 1.1]\n\"0,1,2\" = [1.2, 1.6, 1.4]\n\"0,0,3\" = [1.9, 1.05, 1.7]\n";
     let patch_path = write(d.path(), "cubic.toml", text);
-    let patch = tribez::hazmat::io::patch_file::read_patch(&patch_path).unwrap();
-    let pts = vec3_points(&net_f32(&patch.net));
+    let patch = tribez::Patch::from_file(&patch_path).unwrap();
+    // the net rounded to f32; `casteljau` runs the glam `Vec3` kernel on it (m = 2, d = 3)
+    let net = net_to::<f32>(patch.control_net());
     let mut rows = String::new();
     let mut s = 12345u64;
     let mut unit = || {
@@ -827,8 +828,8 @@ fn shader_f32_results_pass_at_ulps_and_bound() {
         let u = unit();
         let v = unit() * (1.0 - u);
         let w = 1.0 - u - v;
-        let p = casteljau_vec3(&pts, 3, [u, v, w]);
-        rows += &format!("{u:?},{v:?},{w:?},{:?},{:?},{:?}\n", p.x, p.y, p.z);
+        let p = casteljau(&net, &[u, v, w]);
+        rows += &format!("{u:?},{v:?},{w:?},{:?},{:?},{:?}\n", p[0], p[1], p[2]);
     }
     let r = write(d.path(), "shader.csv", &rows);
     for tol in ["ulps=9", "bound"] {

@@ -306,3 +306,59 @@ fn usage_errors_are_one_line() {
     let out = tribez().assert().code(2).get_output().clone();
     assert!(String::from_utf8_lossy(&out.stderr).contains("Commands:"));
 }
+
+/// `--algorithm` is one flag: `check` offers casteljau and bernstein (the bound of `--tolerance
+/// bound`), `certify` also `all`; any other value is one line naming the flag and the values.
+#[test]
+fn algorithm_values_are_one_line_errors_naming_the_flag() {
+    let f = finn_str();
+    let peers = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/peers");
+    let (patch, results) = (
+        peers.join("peer_cubic.toml").display().to_string(),
+        peers.join("bezier_results.csv").display().to_string(),
+    );
+    for bad in ["all", "horner", "Casteljau"] {
+        fails_with(
+            &[
+                "check",
+                "--patch",
+                &patch,
+                "--results",
+                &results,
+                "--algorithm",
+                bad,
+            ],
+            &[
+                "--algorithm",
+                &format!("`{bad}`"),
+                "known: casteljau, bernstein)",
+            ],
+        );
+    }
+    fails_with(
+        &["certify", &f, "--random", "5", "--algorithm", "horner"],
+        &[
+            "--algorithm",
+            "`horner`",
+            "known: casteljau, bernstein, all)",
+        ],
+    );
+    for good in ["casteljau", "bernstein", "all"] {
+        tribez()
+            .args(["certify", &f, "--random", "5", "--algorithm", good])
+            .assert()
+            .code(0);
+    }
+    tribez()
+        .args(["check", "--patch", &patch, "--results", &results])
+        .args([
+            "--precision",
+            "f64",
+            "--tolerance",
+            "cond=9",
+            "--algorithm",
+            "bernstein",
+        ])
+        .assert()
+        .code(0);
+}

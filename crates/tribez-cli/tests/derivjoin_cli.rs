@@ -236,13 +236,14 @@ fn make_c1_builds_a_cn_neighbour() {
     assert_eq!(v["g1"], true);
     assert_eq!(v["max_smoothness"], 3);
     // rows 0 and 1 equal those of the independently built C1 neighbour (make_fixtures.py)
-    let built = tribez::hazmat::io::patch_file::read_patch(&b).unwrap();
-    let python = tribez::hazmat::io::patch_file::read_patch(std::path::Path::new(&fixture(
-        "joins/cubic_b_c1.toml",
-    )))
-    .unwrap();
-    for (idx, p) in built.net.entries().filter(|(idx, _)| idx[2] <= 1) {
-        assert_eq!(p, python.net.at(&[idx[2], idx[1], idx[0]]), "at {idx:?}");
+    let built = tribez::Patch::from_file(&b).unwrap();
+    let python = tribez::Patch::from_file(fixture("joins/cubic_b_c1.toml")).unwrap();
+    for (idx, p) in built.control_net().entries().filter(|(idx, _)| idx[2] <= 1) {
+        assert_eq!(
+            p,
+            python.control_net().at(&[idx[2], idx[1], idx[0]]),
+            "at {idx:?}"
+        );
     }
     // another edge
     let out = tribez()
