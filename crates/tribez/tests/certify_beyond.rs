@@ -18,7 +18,7 @@ use tribez::hazmat::certify::beyond::{RationalCertifier, SPatchCertifier};
 use tribez::hazmat::certify::sample::{SplitMix, random_points, random_polygon_points};
 use tribez::hazmat::float::Float;
 use tribez::hazmat::io::patch_file::read_any_patch;
-use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::patch::{BezierPatch, ControlNet};
 use tribez::hazmat::rational::RationalPatch;
 use tribez::hazmat::simplex::Simplex;
 
@@ -48,7 +48,7 @@ fn mixed(n: usize, r: &mut SplitMix) -> RationalPatch {
         let k = (r.next_u64() % 13) as i32 - 6;
         weights.push(BigRational::from_float(10f64.powi(k) * (0.5 + r.unit())).unwrap());
     }
-    RationalPatch::new(Patch::new(ControlNet::new(s, 2, coords)), weights)
+    RationalPatch::new(BezierPatch::new(ControlNet::new(s, 2, coords)), weights)
 }
 
 fn run_rational<F: Float + std::ops::Div<Output = F>>(

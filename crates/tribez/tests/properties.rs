@@ -10,7 +10,7 @@ use num_traits::{One, Zero};
 use proptest::prelude::*;
 
 use tribez::hazmat::exact::{Algorithm, ExactEvaluator, evaluate_rational};
-use tribez::hazmat::patch::{BezierPatch as Patch, ControlNet};
+use tribez::hazmat::patch::{BezierPatch, ControlNet};
 use tribez::hazmat::rational::RationalPatch;
 use tribez::hazmat::simplex::Simplex;
 use tribez::hazmat::symbolic::barycentric_form;
@@ -144,7 +144,7 @@ fn rational_patch_and_points() -> impl Strategy<Value = (RationalPatch, Vec<Vec<
         )
             .prop_map(move |(c, w, pts)| {
                 let net = ControlNet::new(Simplex::new(m, n), d, c);
-                (RationalPatch::new(Patch::new(net), w), pts)
+                (RationalPatch::new(BezierPatch::new(net), w), pts)
             })
     })
 }
