@@ -32,7 +32,7 @@
 use num_rational::BigRational;
 use num_traits::Zero;
 
-use super::{EPS, TINY};
+use super::EPS;
 use crate::domain::Domain;
 use crate::number::round_f64;
 
@@ -118,7 +118,7 @@ impl CartesianMap {
         lo.clear();
         fine.clear();
         let sum_x: f64 = x.iter().map(|v| v.abs()).sum();
-        let absolute = 4.0 * ((m + 3) as f64 + sum_x) * TINY;
+        let absolute = super::tiny_times(4.0 * ((m + 3) as f64 + sum_x));
         let guarded = x.iter().all(|v| safe(*v));
         for row in self.rows.chunks_exact(m + 1) {
             // s + e ≈ Σ_j (hi_j + lo_j) x_j + hi_0 + lo_0: TwoProduct and TwoSum make the
