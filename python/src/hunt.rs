@@ -1,6 +1,7 @@
 //! `hunt`: the library's hunt for the inputs where another implementation is least accurate
 //! (`tribez::hunt::hunt`, what `tribez hunt` runs), with a Python function as the target, and
-//! `NativeHunt`, its report rendered as the command line renders it (text, JSON, a claim file).
+//! `NativeHunt`, its report rendered by the library (`HuntReport::text`, `json`, `claims_file`: what
+//! the command line prints), with the function's name and the Python call as its labels.
 //!
 //! The search and the judging run with the GIL released; the GIL is taken again for each call of
 //! the target: `call(rows, n, first)` (the Python layer's wrapper around the user's function)
@@ -11,10 +12,10 @@
 use num_rational::BigRational;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
-use serde_json::{Map, Value as Json, json};
+use serde_json::{Map, Value as Json};
 
-use tribez::hunt::{HuntError, HuntOptions, HuntReport, HuntRow, decimal, hex};
-use tribez::{Patch, Precision};
+use tribez::Patch;
+use tribez::hunt::{HuntError, HuntLabels, HuntOptions, HuntReport};
 
 use crate::claims::json_of;
 use crate::patch::{NativePatch, f64s};
@@ -96,27 +97,6 @@ pub fn hunt(
     })
 }
 
-fn hexes(p: Precision, xs: &[f64]) -> Vec<String> {
-    xs.iter().map(|&x| hex(p, x)).collect()
-}
-
-/// An error in ULPs as the command line's hunt report writes it: `0`, 4 decimals without
-/// trailing zeros from 0.001 to 10^6, else 4 significant digits in exponent form.
-fn ulps_text(u: f64) -> String {
-    if u == 0.0 {
-        "0".into()
-    } else if !u.is_finite() {
-        "not finite".into()
-    } else if (1e-3..1e6).contains(&u.abs()) {
-        format!("{u:.4}")
-            .trim_end_matches('0')
-            .trim_end_matches('.')
-            .to_string()
-    } else {
-        format!("{u:.3e}")
-    }
-}
-
 /// A string as a TOML basic string (JSON's escapes are TOML's).
 fn toml_str(s: &str) -> String {
     serde_json::to_string(s).expect("a string serialises")
@@ -157,18 +137,14 @@ fn toml_table(out: &mut String, path: &str, table: &Map<String, Json>) {
 }
 
 impl NativeHunt {
-    fn row_json(&self, r: &HuntRow) -> Json {
-        let p = self.report.precision;
-        json!({
-            "row": r.row,
-            "input": hexes(p, &r.input),
-            "claimed": hexes(p, &r.claimed),
-            "exact": r.exact.iter().map(|q| q.to_string()).collect::<Vec<_>>(),
-            "exact_decimal": r.exact.iter().map(|q| decimal(q, 17)).collect::<Vec<_>>(),
-            "ulps": if r.ulps.is_finite() { json!(r.ulps) } else { Json::Null },
-            "breaks": !r.passed,
-            "reason": r.reason,
-        })
+    /// How the Python report names the hunt.
+    fn labels(&self) -> HuntLabels<'_> {
+        HuntLabels {
+            tool: "tribez.hunt",
+            patch: &self.patch,
+            program: &self.program,
+            reproduce: &self.reproduce,
+        }
     }
 }
 
@@ -255,71 +231,18 @@ impl NativeHunt {
     /// The text report (as `tribez hunt` prints it; the header names the function, the last line
     /// is the Python call that repeats the hunt).
     fn text(&self) -> String {
-        let h = &self.report;
-        let p = h.precision;
-        let mut out = format!(
-            "tribez.hunt: {} on {} ({} {}, tolerance {})\n",
-            self.program,
-            self.patch,
-            if h.cartesian {
-                "Cartesian"
-            } else {
-                "barycentric"
-            },
-            p.name(),
-            h.tolerance
-        );
-        out += &format!(
-            "{} rows evaluated ({} uniform, {} at the places floats fail, {} local moves); {} broke the tolerance\n",
-            h.evaluated, h.by_kind[0], h.by_kind[1], h.by_kind[2], h.broke
-        );
-        out += &format!("seed: {}\n", h.seed);
-        if !h.worst.is_empty() {
-            out += &format!("the {} worst rows:\n", h.worst.len());
-        }
-        for (i, r) in h.worst.iter().enumerate() {
-            out += &format!(
-                "{:>3}. row {}: {} ulp, {} the tolerance{}\n",
-                i + 1,
-                r.row,
-                ulps_text(r.ulps),
-                if r.passed { "within" } else { "breaks" },
-                r.reason
-                    .as_ref()
-                    .map(|s| format!(" ({s})"))
-                    .unwrap_or_default()
-            );
-            out += &format!("     input    {}\n", hexes(p, &r.input).join(", "));
-            out += &format!("     claimed  {}\n", hexes(p, &r.claimed).join(", "));
-            let exact: Vec<String> = r.exact.iter().map(|q| decimal(q, 17)).collect();
-            out += &format!("     exact    {}\n", exact.join(", "));
-        }
-        out += &format!("reproduce: {}\n", self.reproduce);
-        out
+        self.report.text(&self.labels())
     }
 
     /// The JSON report (the keys of `tribez hunt --format json`; `program` is the function's
     /// name, `reproduce` the Python call).
     fn json(&self, py: Python<'_>) -> PyResult<String> {
-        let h = &self.report;
-        let value = json!({
-            "command": "hunt",
-            "patch": self.patch,
-            "program": [self.program],
-            "precision": h.precision.name(),
-            "tolerance": h.tolerance.to_string(),
-            "cartesian": h.cartesian,
-            "seed": h.seed,
-            "budget": h.budget,
-            "evaluated": h.evaluated,
-            "broke": h.broke,
-            "uniform": h.by_kind[0],
-            "special": h.by_kind[1],
-            "local": h.by_kind[2],
-            "passed": h.broke == 0,
-            "worst": h.worst.iter().map(|r| self.row_json(r)).collect::<Vec<_>>(),
-            "reproduce": self.reproduce,
-        });
+        let value = serde_json::to_value(self.report.json(
+            &self.patch,
+            [&self.program],
+            &self.reproduce,
+        ))
+        .expect("a hunt report serialises");
         json_of(py, &value)
     }
 
@@ -328,42 +251,17 @@ impl NativeHunt {
     /// embedded as an inline `[patch]` table.
     #[pyo3(signature = (patch_file, patch))]
     fn claims_text(&self, patch_file: Option<String>, patch: &NativePatch) -> String {
-        let h = &self.report;
-        let p = h.precision;
-        let mut s = format!(
-            "# The worst rows `tribez.hunt` found (seed {}): `tribez check` judges them again.\n# {}\nsource = {}\n",
-            h.seed,
-            self.reproduce,
-            toml_str(&format!("tribez.hunt of {}", self.program)),
-        );
-        match patch_file {
-            Some(file) => s += &format!("patch = {}\n", toml_str(&file)),
+        let patch_toml = match patch_file {
+            Some(file) => HuntReport::toml_entry("patch", &file),
             None => match patch.patch.to_json_value() {
-                Json::Object(m) => toml_table(&mut s, "patch", &m),
-                other => s += &format!("patch = {}\n", toml_value(&other)),
+                Json::Object(m) => {
+                    let mut t = String::new();
+                    toml_table(&mut t, "patch", &m);
+                    t
+                }
+                other => format!("patch = {}\n", toml_value(&other)),
             },
-        }
-        let list = |xs: &[f64]| {
-            format!(
-                "[{}]",
-                hexes(p, xs)
-                    .iter()
-                    .map(|x| toml_str(x))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
         };
-        for r in &h.worst {
-            s += &format!(
-                "\n[[claim]]\nid = \"hunt-row-{}\"\nop = \"eval\"\nprecision = \"{}\"\ntolerance = {}\n{} = {}\nexpect = {}\n",
-                r.row,
-                p.name(),
-                toml_str(&h.tolerance.to_string()),
-                if h.cartesian { "cartesian" } else { "at" },
-                list(&r.input),
-                list(&r.claimed)
-            );
-        }
-        s
+        self.report.claims_file(&self.labels(), &patch_toml)
     }
 }

@@ -308,6 +308,33 @@ fn an_f32_hunt_gives_f32_rows_and_judges_f32_answers() {
     }
 }
 
+/// An answer of ±inf is reported as what the program said (and fails), not as NaN.
+#[test]
+fn an_infinite_answer_is_reported_as_infinite() {
+    let d = tempfile::tempdir().unwrap();
+    let out = run(hunt(
+        d.path(),
+        &[
+            "--budget", "50", "--seed", "3", "--top", "2", "--format", "json",
+        ],
+        &["infinite"],
+    ));
+    assert_eq!(out.status.code(), Some(1));
+    let r = json(&out);
+    let worst = r["worst"].as_array().unwrap();
+    assert_eq!(worst.len(), 2);
+    for w in worst {
+        let claimed: Vec<&str> = w["claimed"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_str().unwrap())
+            .collect();
+        assert_eq!(claimed, ["inf", "-inf", "inf"], "{w}");
+        assert_eq!(w["breaks"], true, "{w}");
+    }
+}
+
 #[test]
 fn the_text_report_names_the_worst_row_and_how_to_repeat_the_hunt() {
     let d = tempfile::tempdir().unwrap();
@@ -322,6 +349,13 @@ fn the_text_report_names_the_worst_row_and_how_to_repeat_the_hunt() {
     assert!(text.contains("seed: 11\n"), "{text}");
     assert!(text.contains("the 2 worst rows:"), "{text}");
     assert!(text.contains("  1. row "), "{text}");
+    let one = run(hunt(
+        d.path(),
+        &["--budget", "300", "--seed", "11", "--top", "1"],
+        &["planted"],
+    ));
+    let one = String::from_utf8(one.stdout).unwrap();
+    assert!(one.contains("the worst row:\n  1. row "), "{one}");
     assert!(text.contains("breaks the tolerance"), "{text}");
     assert!(
         text.contains("reproduce: tribez hunt ") && text.contains("--seed 11"),

@@ -22,7 +22,9 @@ use serde_json::Value as Json;
 use super::{CliError, Outcome};
 use crate::cli::{OutputArgs, whole_number};
 use crate::report::{JunitCase, JunitSuite, Render, to_json};
-use tribez::hunt::{HuntError, HuntOptions, HuntReport, HuntRow, MAX_BATCH, MAX_BUDGET, MAX_TOP};
+use tribez::hunt::{
+    HuntError, HuntLabels, HuntOptions, HuntReport, MAX_BATCH, MAX_BUDGET, MAX_TOP,
+};
 use tribez::{Patch, Precision, Tolerance};
 
 // The arguments of `tribez hunt` (a plain comment: see `Command`).
@@ -217,11 +219,14 @@ impl Target {
                 Ok(v) => out.extend(v),
                 Err(e) => {
                     return Err(Broken(format!(
-                        "{}: row {row} ({}): the answer `{}` is not {} numbers: {e}",
+                        "{}: row {row} ({}): the answer `{}` is not {}: {e}",
                         self.name,
                         self.row_text(rows, first, row),
                         shorten(&line),
-                        self.dim
+                        match self.dim {
+                            1 => "1 number".to_string(),
+                            d => format!("{d} numbers"),
+                        }
                     )));
                 }
             }
@@ -512,147 +517,37 @@ pub struct Report {
     pub command: Vec<String>,
 }
 
-/// The JSON of `tribez hunt`.
-#[derive(serde::Serialize)]
-struct HuntJson<'a> {
-    command: &'static str,
-    patch: &'a str,
-    program: &'a [String],
-    precision: &'static str,
-    tolerance: String,
-    cartesian: bool,
-    seed: u64,
-    budget: u64,
-    evaluated: u64,
-    broke: u64,
-    /// Rows of each kind of the search: uniform points, the special places, local search.
-    uniform: u64,
-    special: u64,
-    local: u64,
-    passed: bool,
-    worst: Vec<RowJson<'a>>,
-    /// The command that repeats the hunt.
-    reproduce: &'a [String],
-}
-
-/// One of the worst rows of a hunt.
-#[derive(serde::Serialize)]
-struct RowJson<'a> {
-    row: u64,
-    input: Vec<String>,
-    claimed: Vec<String>,
-    exact: Vec<String>,
-    exact_decimal: Vec<String>,
-    /// The error in ULPs; `null` when it is not finite.
-    ulps: Option<f64>,
-    breaks: bool,
-    reason: Option<&'a str>,
+impl Report {
+    /// How the command line names the program and the way to repeat the hunt.
+    fn labels(&self) -> (String, String) {
+        (
+            crate::picture::html::shell_line(&self.program),
+            crate::picture::html::shell_line(&self.command),
+        )
+    }
 }
 
 fn hexes(p: Precision, xs: &[f64]) -> Vec<String> {
-    xs.iter().map(|&x| tribez::hunt::hex(p, x)).collect()
+    tribez::hunt::hexes(p, xs)
 }
 
 fn ulps_text(u: f64) -> String {
-    crate::picture::errmap::ulps_text(u)
-}
-
-impl Report {
-    fn verdict(&self, r: &HuntRow) -> &'static str {
-        if r.passed { "within" } else { "breaks" }
-    }
+    tribez::hunt::ulps_text(u)
 }
 
 impl Render for Report {
     fn text(&self) -> String {
-        let h = &self.hunt;
-        let p = h.precision;
-        let mut out = format!(
-            "tribez hunt: {} on {} ({} {}, tolerance {})\n",
-            crate::picture::html::shell_line(&self.program),
-            self.patch,
-            if h.cartesian {
-                "Cartesian"
-            } else {
-                "barycentric"
-            },
-            p.name(),
-            h.tolerance
-        );
-        out += &format!(
-            "{} rows evaluated ({} uniform, {} at the places floats fail, {} local moves); {} broke the tolerance\n",
-            h.evaluated, h.by_kind[0], h.by_kind[1], h.by_kind[2], h.broke
-        );
-        out += &format!("seed: {}\n", h.seed);
-        if !h.worst.is_empty() {
-            out += &format!("the {} worst rows:\n", h.worst.len());
-        }
-        for (i, r) in h.worst.iter().enumerate() {
-            out += &format!(
-                "{:>3}. row {}: {} ulp, {} the tolerance{}\n",
-                i + 1,
-                r.row,
-                ulps_text(r.ulps),
-                self.verdict(r),
-                r.reason
-                    .as_ref()
-                    .map(|s| format!(" ({s})"))
-                    .unwrap_or_default()
-            );
-            out += &format!("     input    {}\n", hexes(p, &r.input).join(", "));
-            out += &format!("     claimed  {}\n", hexes(p, &r.claimed).join(", "));
-            let exact: Vec<String> = r
-                .exact
-                .iter()
-                .map(|q| tribez::hunt::decimal(q, 17))
-                .collect();
-            out += &format!("     exact    {}\n", exact.join(", "));
-        }
-        out += &format!(
-            "reproduce: {}\n",
-            crate::picture::html::shell_line(&self.command)
-        );
-        out
+        let (program, reproduce) = self.labels();
+        self.hunt.text(&HuntLabels {
+            tool: "tribez hunt",
+            patch: &self.patch,
+            program: &program,
+            reproduce: &reproduce,
+        })
     }
 
     fn json(&self) -> Json {
-        let h = &self.hunt;
-        let p = h.precision;
-        to_json(&HuntJson {
-            command: "hunt",
-            patch: &self.patch,
-            program: &self.program,
-            precision: p.name(),
-            tolerance: h.tolerance.to_string(),
-            cartesian: h.cartesian,
-            seed: h.seed,
-            budget: h.budget,
-            evaluated: h.evaluated,
-            broke: h.broke,
-            uniform: h.by_kind[0],
-            special: h.by_kind[1],
-            local: h.by_kind[2],
-            passed: h.broke == 0,
-            worst: h
-                .worst
-                .iter()
-                .map(|r| RowJson {
-                    row: r.row,
-                    input: hexes(p, &r.input),
-                    claimed: hexes(p, &r.claimed),
-                    exact: r.exact.iter().map(ToString::to_string).collect(),
-                    exact_decimal: r
-                        .exact
-                        .iter()
-                        .map(|q| tribez::hunt::decimal(q, 17))
-                        .collect(),
-                    ulps: r.ulps.is_finite().then_some(r.ulps),
-                    breaks: !r.passed,
-                    reason: r.reason.as_deref(),
-                })
-                .collect(),
-            reproduce: &self.command,
-        })
+        to_json(&self.hunt.json(&self.patch, &self.program, &self.command))
     }
 
     fn junit(&self) -> Option<JunitSuite> {
@@ -710,51 +605,24 @@ fn relative(target: &Path, from: &Path) -> PathBuf {
     out
 }
 
-fn toml_str(s: &str) -> String {
-    serde_json::to_string(s).expect("a string serialises")
-}
-
-/// The claim file of the worst rows (`--claims-out`).
+/// The claim file of the worst rows (`--claims-out`), its patch the file as a path relative to
+/// the claim file's directory.
 fn claims_file(report: &Report, patch: &Path, out: &Path) -> String {
-    let h = &report.hunt;
-    let p = h.precision;
     let dir = out
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
     let rel = relative(patch, dir);
-    let mut s = format!(
-        "# The worst rows `tribez hunt` found (seed {}): `tribez check` judges them again.\n# {}\nsource = {}\npatch = {}\n",
-        h.seed,
-        crate::picture::html::shell_line(&report.command),
-        toml_str(&format!(
-            "tribez hunt of {}",
-            crate::picture::html::shell_line(&report.program)
-        )),
-        toml_str(&rel.to_string_lossy())
-    );
-    let list = |xs: &[f64]| {
-        format!(
-            "[{}]",
-            hexes(p, xs)
-                .iter()
-                .map(|x| toml_str(x))
-                .collect::<Vec<_>>()
-                .join(", ")
-        )
-    };
-    for r in &h.worst {
-        s += &format!(
-            "\n[[claim]]\nid = \"hunt-row-{}\"\nop = \"eval\"\nprecision = \"{}\"\ntolerance = {}\n{} = {}\nexpect = {}\n",
-            r.row,
-            p.name(),
-            toml_str(&h.tolerance.to_string()),
-            if h.cartesian { "cartesian" } else { "at" },
-            list(&r.input),
-            list(&r.claimed)
-        );
-    }
-    s
+    let (program, reproduce) = report.labels();
+    report.hunt.claims_file(
+        &HuntLabels {
+            tool: "tribez hunt",
+            patch: &report.patch,
+            program: &program,
+            reproduce: &reproduce,
+        },
+        &HuntReport::toml_entry("patch", &rel.to_string_lossy()),
+    )
 }
 
 /// Run `tribez hunt`.

@@ -317,18 +317,7 @@ pub struct Panel {
 
 /// A number of ULPs for people: `0`, up to 4 decimals from 10^-3 to 10^6, else scientific.
 pub fn ulps_text(u: f64) -> String {
-    if u == 0.0 {
-        "0".into()
-    } else if !u.is_finite() {
-        "not finite".into()
-    } else if (1e-3..1e6).contains(&u.abs()) {
-        format!("{u:.4}")
-            .trim_end_matches('0')
-            .trim_end_matches('.')
-            .to_string()
-    } else {
-        format!("{u:.3e}")
-    }
+    tribez::hunt::ulps_text(u)
 }
 
 /// Width of an error map picture, and the height of one panel.

@@ -143,7 +143,7 @@ fn check_reader<R: Read + Send>(
 /// report needs it (most rows never do: no big rational is built per number).
 pub(super) fn memory_num(x: f64, precision: Option<Precision>) -> Num {
     if !x.is_finite() {
-        return Num::NotFinite(format!("`{x}`"));
+        return Num::NotFinite(format!("`{x}`"), x);
     }
     match precision {
         Some(Precision::F64) => Num::Value {
@@ -153,7 +153,7 @@ pub(super) fn memory_num(x: f64, precision: Option<Precision>) -> Num {
         Some(Precision::F32) => {
             let y = x as f32;
             if !y.is_finite() {
-                return Num::NotFinite(format!("`{x}` overflows f32"));
+                return Num::NotFinite(format!("`{x}` overflows f32"), f64::from(y));
             }
             Num::Value {
                 float: f64::from(y),
@@ -210,7 +210,7 @@ impl RowPoint {
             xs.iter()
                 .map(|x| match x {
                     Num::Value { float, .. } => *float,
-                    Num::NotFinite(_) => f64::NAN,
+                    Num::NotFinite(_, x) => *x,
                 })
                 .collect()
         };

@@ -363,7 +363,7 @@ impl InverseBatchChecker {
                     Some(_) => crate::number::exact_f64(*float),
                     None => text_exact.clone(),
                 },
-                Num::NotFinite(_) => None,
+                Num::NotFinite(..) => None,
             }
         };
         // numbers that are not finite: a failed row, nothing to compute
@@ -378,7 +378,7 @@ impl InverseBatchChecker {
                     .map(|n| ("claimed parameter", n)),
             )
             .filter_map(|(what, n)| match n {
-                Num::NotFinite(t) => Some(RowMismatch {
+                Num::NotFinite(t, _) => Some(RowMismatch {
                     kind: "not_finite",
                     path: what.into(),
                     claimed: t.clone(),

@@ -121,7 +121,7 @@ impl Prepared {
                 Some(_) => crate::number::exact_f64(*float),
                 None => text_exact.clone(),
             },
-            Num::NotFinite(_) => None,
+            Num::NotFinite(..) => None,
         }
     }
 
@@ -168,7 +168,7 @@ impl Prepared {
             let Num::Value { float, .. } = y else {
                 pass = false;
                 worst = f64::INFINITY;
-                if let Num::NotFinite(what) = y {
+                if let Num::NotFinite(what, _) = y {
                     reason.get_or_insert_with(|| {
                         format!("claimed coordinate [{c}] is not a finite number: {what}")
                     });
@@ -427,7 +427,7 @@ impl RowScratch {
     fn load(&mut self, inputs: &[Num], claimed: &[Num]) {
         let float = |x: &Num| match x {
             Num::Value { float, .. } => *float,
-            Num::NotFinite(_) => f64::NAN,
+            Num::NotFinite(..) => f64::NAN,
         };
         self.lambda.clear();
         self.lambda.extend(inputs.iter().map(float));

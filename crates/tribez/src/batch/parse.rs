@@ -38,8 +38,10 @@ pub(super) struct Field<'a> {
 /// A parsed number: the exact value of its text, and (with a precision) the float it denotes.
 #[derive(Clone, Debug)]
 pub(super) enum Num {
-    /// `nan`, `inf` or empty: the row is a failed claim.
-    NotFinite(String),
+    /// `nan`, `inf`, empty, or a number that overflows the precision: the row is a failed
+    /// claim. The text says what it was; the float is the one it denotes (NaN for `nan` and an
+    /// empty field, ±∞ for `inf` and, as round to nearest gives, for an overflowing number).
+    NotFinite(String, f64),
     /// A number.
     Value {
         float: f64,
@@ -56,12 +58,24 @@ pub(super) fn parse_num(
     let t = unquoted(f.text);
     let body = t.trim_start_matches(['+', '-']);
     let named = |name: &str| body.eq_ignore_ascii_case(name);
-    if t.is_empty() || named("nan") || named("inf") || named("infinity") {
-        return Ok(Num::NotFinite(if t.is_empty() {
-            "empty field".into()
-        } else {
-            format!("`{t}`")
-        }));
+    // ±∞ for an infinity or an overflow, by the text's sign
+    let infinite = if t.starts_with('-') {
+        f64::NEG_INFINITY
+    } else {
+        f64::INFINITY
+    };
+    if t.is_empty() || named("nan") {
+        return Ok(Num::NotFinite(
+            if t.is_empty() {
+                "empty field".into()
+            } else {
+                format!("`{t}`")
+            },
+            f64::NAN,
+        ));
+    }
+    if named("inf") || named("infinity") {
+        return Ok(Num::NotFinite(format!("`{t}`"), infinite));
     }
     let bad = |e| {
         InputError::at(
@@ -82,7 +96,10 @@ pub(super) fn parse_num(
                 }
                 // a number too large for the precision, however many digits its exponent has
                 // (`1e400` and `1e999999` alike): a failed row, never an aborted run
-                return Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name())));
+                return Ok(Num::NotFinite(
+                    format!("`{t}` overflows {}", p.name()),
+                    infinite,
+                ));
             }
             let q = parse_rational(t).map_err(bad)?;
             match as_float(&q, p) {
@@ -90,7 +107,10 @@ pub(super) fn parse_num(
                     float: crate::number::round_f64(&x),
                     text_exact: Some(q),
                 }),
-                None => Ok(Num::NotFinite(format!("`{t}` overflows {}", p.name()))),
+                None => Ok(Num::NotFinite(
+                    format!("`{t}` overflows {}", p.name()),
+                    infinite,
+                )),
             }
         }
         None => {
@@ -178,7 +198,7 @@ impl Num {
                 ..
             } => Some(q.clone()),
             Num::Value { .. } => parse_rational(text).ok(),
-            Num::NotFinite(_) => None,
+            Num::NotFinite(..) => None,
         }
     }
 }
@@ -859,8 +879,9 @@ pub(super) fn split_json_row<'a>(
 
 /// One line of claimed coordinates, as a results row's claimed columns are read (CSV, or one
 /// JSON array when the line starts with `[`): `dim` numbers in any syntax `check --results`
-/// reads, each the float of `precision` nearest its text (hex floats exact; `nan`, `inf` and an
-/// empty field give NaN, a failed row when judged). What `tribez hunt` reads of its target.
+/// reads, each the float of `precision` nearest its text (hex floats exact; `nan` and an empty
+/// field give NaN, `inf` and a number beyond the precision's range ±∞: a failed row when
+/// judged). What `tribez hunt` reads of its target.
 ///
 /// Errors: one line saying what is wrong (an empty or comment line, the wrong number of
 /// numbers, a field that is not a number, with its 1-based column).
@@ -883,13 +904,14 @@ pub fn parse_claimed_line(
             .iter()
             .map(|x| match x {
                 Num::Value { float, .. } => *float,
-                Num::NotFinite(_) => f64::NAN,
+                Num::NotFinite(_, x) => *x,
             })
             .collect()),
         Ok(None) => Err("a comment line".into()),
         Err(e) => Err(match (&*e.problem, e.column) {
             (Problem::Rows(RowsProblem::ColumnCount { found, .. }), _) => {
-                format!("{found} numbers, expected {dim}")
+                let numbers = if *found == 1 { "number" } else { "numbers" };
+                format!("{found} {numbers}, expected {dim}")
             }
             (p, Some(c)) => format!("column {c}: {p}"),
             (p, None) => p.to_string(),

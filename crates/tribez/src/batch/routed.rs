@@ -86,7 +86,7 @@ pub fn check_routed<R: Read + Send>(
                             Some(_) => crate::number::exact_f64(*float),
                             None => text_exact.clone(),
                         },
-                        Num::NotFinite(_) => None,
+                        Num::NotFinite(..) => None,
                     })
                     .collect();
                 Ok(Some(route(&seen)))

@@ -22,6 +22,7 @@
 //! `K` meaning `K = (m+1)·n`): the error in ULPs is that of the result against the exact value
 //! at the inputs as the target saw them.
 
+mod render;
 mod sample;
 
 use std::collections::HashSet;
@@ -36,6 +37,8 @@ use crate::exact::Algorithm;
 use crate::float::Precision;
 use crate::patch_type::Patch;
 use sample::Space;
+
+pub use render::{HuntJson, HuntLabels, HuntRowJson, hexes, ulps_text};
 
 /// The most rows a hunt may be given as its budget (2^40).
 pub const MAX_BUDGET: u64 = 1 << 40;

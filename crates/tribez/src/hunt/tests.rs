@@ -307,9 +307,28 @@ fn claimed_lines_are_read_as_results_rows_are() {
         Ok(vec![f64::from(0.1f32), f64::from(1.0f32 / 3.0)])
     );
     assert!(parse_claimed_line("nan,1", 2, p).unwrap()[0].is_nan());
+    assert!(parse_claimed_line(",1", 2, p).unwrap()[0].is_nan());
+    // what the program said is kept: an infinity, or an overflow of the precision (round to
+    // nearest gives ±∞ beyond MAX + ulp(MAX)/2), is ±∞, not NaN
+    assert_eq!(
+        parse_claimed_line("inf,-Infinity", 2, p),
+        Ok(vec![f64::INFINITY, f64::NEG_INFINITY])
+    );
+    assert_eq!(
+        parse_claimed_line("1e400,-1e999999", 2, p),
+        Ok(vec![f64::INFINITY, f64::NEG_INFINITY])
+    );
+    assert_eq!(
+        parse_claimed_line("-1e39,\"+inf\"", 2, Precision::F32),
+        Ok(vec![f64::NEG_INFINITY, f64::INFINITY])
+    );
     assert_eq!(
         parse_claimed_line("1,2,3", 2, p),
         Err("3 numbers, expected 2".into())
+    );
+    assert_eq!(
+        parse_claimed_line("7", 2, p),
+        Err("1 number, expected 2".into())
     );
     assert_eq!(parse_claimed_line("", 2, p), Err("an empty line".into()));
     assert!(
