@@ -281,9 +281,11 @@ pub fn certify(data: &[u8]) {
     }
 }
 
-/// One answer line of a hunted program ([`crate::batch::parse_claimed_line`]): the first byte
-/// chooses the number of coordinates (1 to 4) and the precision (f64 or f32), the rest is the
-/// line. An accepted line has exactly that many numbers.
+/// One answer line of a hunted program ([`crate::batch::parse_claimed_line`] and
+/// [`crate::batch::read_claimed_line`]): the first byte chooses the number of coordinates (1 to
+/// 4) and the precision (f64 or f32), the rest is the line. An accepted line has exactly that
+/// many numbers; where the fast path of `read_claimed_line` reads the line, its numbers are the
+/// general reader's bit for bit, and where it refuses, it leaves its buffer as it was.
 pub fn hunt_answer(data: &[u8]) {
     let Some((&head, rest)) = data.split_first() else {
         return;
@@ -297,7 +299,26 @@ pub fn hunt_answer(data: &[u8]) {
     } else {
         crate::float::Precision::F32
     };
-    if let Ok(values) = crate::batch::parse_claimed_line(line, dim, precision) {
+    let library = crate::batch::parse_claimed_line(line, dim, precision);
+    if let Ok(values) = &library {
         assert_eq!(values.len(), dim);
+    }
+    // the fast path of `read_claimed_line` reads what the library reads, bit for bit
+    let mut fast = vec![7.0];
+    if crate::batch::answer_fast_path(line, precision, &mut fast, dim) {
+        let values = library.expect("a line the fast path reads is a valid line");
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&fast[1..]), bits(&values), "{line:?}");
+    } else {
+        assert_eq!(fast, [7.0], "a refused line leaves the buffer unchanged");
+    }
+    // and the combined reader gives the library's numbers or its error
+    let mut out = Vec::new();
+    match crate::batch::read_claimed_line(line, dim, precision, &mut out) {
+        Ok(()) => assert_eq!(out.len(), dim),
+        Err(e) => {
+            assert!(out.is_empty());
+            assert!(!e.contains('\n'), "one line: {e}");
+        }
     }
 }

@@ -21,6 +21,7 @@
 //! report (text, JSON).
 
 mod accumulator;
+mod answer;
 mod checker;
 mod driver;
 mod error;
@@ -33,6 +34,9 @@ mod report;
 pub(crate) mod routed;
 
 pub use crate::report::{ULP_BUCKETS, UlpHistogram};
+#[cfg(any(fuzzing, feature = "unstable-internals"))]
+pub(crate) use answer::fast_claimed_line as answer_fast_path;
+pub use answer::read_claimed_line;
 pub use checker::ResultsChecker;
 pub use driver::{BatchChecker, RowPoint, RowVerdict};
 pub use error::BatchError;

@@ -47,6 +47,18 @@ pub fn ulps_text(u: f64) -> String {
     }
 }
 
+/// A row's error in ULPs as the text report prints it: [`ulps_text`], except that an error
+/// too large for an `f64` of a finite answer (any error above about `10^-15` against an exact
+/// 0, whose ulp is `2^-1074`) reads `more than 1.798e308` rather than `not finite`, which is
+/// left to answers that are not finite.
+fn row_ulps_text(r: &HuntRow) -> String {
+    if r.ulps.is_infinite() && r.claimed.iter().all(|x| x.is_finite()) {
+        format!("more than {}", ulps_text(f64::MAX))
+    } else {
+        ulps_text(r.ulps)
+    }
+}
+
 /// Numbers as hex floats of the precision.
 pub fn hexes(precision: Precision, xs: &[f64]) -> Vec<String> {
     xs.iter().map(|&x| hex(precision, x)).collect()
@@ -151,7 +163,7 @@ impl HuntReport {
                 "{:>3}. row {}: {} ulp, {} the tolerance{}\n",
                 i + 1,
                 r.row,
-                ulps_text(r.ulps),
+                row_ulps_text(r),
                 if r.passed { "within" } else { "breaks" },
                 r.reason
                     .as_ref()

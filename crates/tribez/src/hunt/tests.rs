@@ -401,3 +401,46 @@ fn the_samplers_value_and_scale_are_de_casteljau_on_the_net_and_its_absolute_val
     let (v, s) = space.value_and_scale(&[0.5, 0.25, 0.25]);
     assert_eq!((v, s), (vec![0.5], vec![1.0]));
 }
+
+/// The text report says how large an error too large for an `f64` in ULPs is (an answer
+/// `1e-10` against an exact 0, whose ulp is `2^-1074`: about `2^1040` ulps), and keeps
+/// `not finite` for an answer that is not finite.
+#[test]
+fn an_error_beyond_f64_in_ulps_reads_more_than_the_largest_float() {
+    let row = |row, claimed: f64| HuntRow {
+        row,
+        input: vec![1.0, 0.0, 0.0],
+        claimed: vec![claimed],
+        exact: vec![BigRational::from_integer(0.into())],
+        ulps: f64::INFINITY,
+        passed: false,
+        reason: None,
+    };
+    let report = HuntReport {
+        precision: Precision::F64,
+        tolerance: Tolerance::parse("abs=1e-12").unwrap(),
+        seed: 1,
+        budget: 2,
+        cartesian: false,
+        evaluated: 2,
+        broke: 2,
+        by_kind: [2, 0, 0],
+        worst: vec![row(1, 1e-10), row(2, f64::INFINITY)],
+    };
+    let text = report.text(&HuntLabels {
+        tool: "tribez hunt",
+        patch: "p.toml",
+        program: "prog",
+        reproduce: "again",
+    });
+    assert!(
+        text.contains("  1. row 1: more than 1.798e308 ulp, breaks the tolerance\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("  2. row 2: not finite ulp, breaks the tolerance\n"),
+        "{text}"
+    );
+    assert!(text.contains("claimed  inf\n"), "{text}");
+    assert!(text.contains("the 2 worst rows:\n"), "{text}");
+}

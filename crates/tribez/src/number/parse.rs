@@ -252,16 +252,25 @@ pub fn parse_number_text(text: &str) -> Result<BigRational, NumberError> {
 }
 
 /// The text quoted in an error: whole up to 64 characters, else its first 32 characters and
-/// its length.
+/// its length; control characters (a line break, a tab, `\u{15}`) written as Rust escapes, so
+/// that the message stays on one line and shows what was there.
 fn abbreviate(s: &str) -> String {
+    let visible = |chars: &mut dyn Iterator<Item = char>| {
+        let mut out = String::new();
+        for c in chars {
+            if c.is_control() {
+                out.extend(c.escape_default());
+            } else {
+                out.push(c);
+            }
+        }
+        out
+    };
     let n = s.chars().count();
     if n <= 64 {
-        s.to_owned()
+        visible(&mut s.chars())
     } else {
-        format!(
-            "{}… ({n} characters)",
-            s.chars().take(32).collect::<String>()
-        )
+        format!("{}… ({n} characters)", visible(&mut s.chars().take(32)))
     }
 }
 

@@ -211,6 +211,12 @@ fn error_messages() {
         "`abc`: not a number (expected an integer, p/q, decimal, hex float, or f64:/f32: prefix)"
     );
     assert_eq!(msg("f64:1e999"), "`f64:1e999`: not a finite f64");
+    // control characters are shown escaped, so that the message is one line (found by the
+    // fuzz target `hunt_answer`: a line break inside an answer's field)
+    assert_eq!(
+        msg("1\n\u{15}2\t3"),
+        "`1\\n\\u{15}2\\t3`: not a number (expected an integer, p/q, decimal, hex float, or f64:/f32: prefix)"
+    );
     assert_eq!(msg("nan"), "`nan`: NaN has no exact value");
     assert_eq!(msg("-inf"), "`-inf`: infinity has no exact value");
 }
