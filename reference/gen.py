@@ -10,7 +10,35 @@ from fractions import Fraction as F
 
 import bezier as bz
 import floats
-from verdict import bernstein_bound, casteljau_bound, judge
+import quadratic
+from quadratic import Quad
+from verdict import bernstein_bound, casteljau_bound, judge, parse_tolerance
+
+
+def rational_parts(sols):
+    """Solutions with every irrational coordinate (quadratic.Quad) that has no irrational part
+    written as the rational it is."""
+    return [tuple(F(q.a) if isinstance(q, Quad) and q.b == 0 else q for q in s) for s in sols]
+
+
+def paired(y, q):
+    """A claimed coordinate y pairs with the exact q when |y - q| ≤ 2^-20 max(1, |q|) (guide
+    §6), decided exactly for a rational or an irrational q."""
+    if not isinstance(q, Quad):
+        return abs(y - q) <= F(1, 2**20) * max(1, abs(q))
+    if quadratic.abs_q(q) >= 1:
+        return quadratic.judge(y, q, "rel", F(1, 2**20), None)
+    return quadratic.within(y, q, F(1, 2**20))
+
+
+def judge_any(y, q, tol, prec):
+    """`judge` for a rational q; for an irrational one (quadratic.Quad), its exact verdict."""
+    if not isinstance(q, Quad):
+        return judge(y, q, tol, prec)
+    kind, v = parse_tolerance(tol)
+    verdict = quadratic.judge(y, q, kind, v, prec)
+    assert verdict is not None, "the bracket of %r cannot decide %s" % (q, tol)
+    return verdict
 
 PRECS = ["f64", "f32"]
 
@@ -548,6 +576,7 @@ class InverseGen(Gen):
             ok = claim["expect"] == len(sols)
             info["tolerance"] = "count"
             return ok
+        sols = rational_parts(sols)
         tuples = [list(s) for s in sols]
         if r.random() < 0.15 and tuples:
             tuples = []  # a missed solution
@@ -557,14 +586,16 @@ class InverseGen(Gen):
         for tup in tuples:
             texts, ys = [], []
             for q in tup:
-                t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+                # an irrational value is claimed near a rational within 2^-239 of it
+                qa = q.approx() if isinstance(q, Quad) else q
+                t, y = self.claimed_float(qa, prec) if prec else self.claimed_exact(qa)
                 texts.append(t)
                 ys.append(y)
             texts_all.append(texts)
             ys_all.append(ys)
             qs_all.append(tup)
         flat_y = [y for ys in ys_all for y in ys]
-        flat_q = [q for qs in qs_all for q in qs]
+        flat_q = [q.approx() if isinstance(q, Quad) else q for qs in qs_all for q in qs]
         kinds = ["exact", "abs", "rel"] + (["ulps", "correctly_rounded", "faithful"] if prec else [])
         tol = self.tolerance(prec, flat_y, flat_q, kinds=kinds) if flat_y else r.choice(["exact", "abs=1e-9"])
         if tol != "exact" or r.random() < 0.5:
@@ -579,9 +610,9 @@ class InverseGen(Gen):
         # claimed tuples in the order of the exact ones: pair each with its own solution (the
         # solutions here are far apart compared with 2^-20, so nearest pairing gives the same)
         for ys, s in zip(ys_all, sols):
-            if any(abs(y - q) > F(1, 2**20) * max(1, abs(q)) for y, q in zip(ys, s)):
+            if any(not paired(y, q) for y, q in zip(ys, s)):
                 return False
-            if not all(judge(y, q, tol, prec) for y, q in zip(ys, s)):
+            if not all(judge_any(y, q, tol, prec) for y, q in zip(ys, s)):
                 return False
         return True
 
@@ -773,24 +804,56 @@ class InverseGen(Gen):
                 assert bz.evaluate(P, [1 - s - t, s, t]) == q, "quad_patch: a planted preimage does not map to q"
             return q, pre
 
+        def query_irrational(j, Y):
+            """The point with x = X and y = Y, X chosen so that x(s) = X has the irrational roots
+            s = σ/2 ± √j/8 (j not a square): the discriminant σ²/4 - (e - X)/k is j/64. Then
+            s² = σ s - (e - X)/k, so h(s) = A + B s and t = (Y - h(s))/c lie in Q(√j) too. The
+            point itself is dyadic (a float of either precision)."""
+            X = e - k * (sigma * sigma / 4 - F(j, 64))
+            q = [M[i][0] * X + M[i][1] * Y + o[i] for i in range(2)]
+            A = h[0] - h[2] * (e - X) / k
+            B = h[1] + h[2] * sigma
+            pre = []
+            for sign in (-1, 1):
+                s_ = Quad(sigma / 2, F(sign, 8), j)
+                t_ = (Y - A - B * s_) * (1 / c)
+                # the reference checks its own algebra: P's power form at (s, t) in Q(√j) is q
+                for i in range(2):
+                    val = Quad(0, 0, j)
+                    for (pi, pj), coef in pc[i].items():
+                        term = Quad(coef, 0, j)
+                        for _ in range(pi):
+                            term = term * s_
+                        for _ in range(pj):
+                            term = term * t_
+                        val = val + term
+                    assert val == q[i], "quad_patch: an irrational preimage does not map to q"
+                pre.append((s_, t_))
+            return q, pre
+
         pf = {"degree": 2, "control_points": {bz.key_text(a): [floats.frac_text(x) for x in v] for a, v in points.items()}}
-        return P, pf, query, sigma
+        return P, pf, query, sigma, query_irrational
 
     def quad_locate_case(self, cid):
         """`locate` on a quad_patch at a point with one or two planted preimages (one when the
         query's preimage lies on the fold)."""
         r = self.r
-        P, pf, query, sigma = self.quad_patch()
-        fold = r.random() < 0.25
-        sa = sigma / 2 if fold else F(r.randint(-2, 9), 8)
-        q, pre = query(sa, F(r.randint(-1, 8), 8))
+        P, pf, query, sigma, query_irrational = self.quad_patch()
+        irrational = r.random() < 0.3
+        fold = not irrational and r.random() < 0.25
+        if irrational:
+            j = r.choice([2, 3, 5, 6, 7, 8, 10, 11, 12, 13, 17, 20, 28, 45])
+            q, pre = query_irrational(j, F(r.randint(-16, 16), 8))
+        else:
+            sa = sigma / 2 if fold else F(r.randint(-2, 9), 8)
+            q, pre = query(sa, F(r.randint(-1, 8), 8))
         prec = r.choice([None, "f64", "f32"])
         claim = {"id": cid, "op": "locate", "source": "reference", "point": [floats.frac_text(x) for x in q]}
         anywhere = r.random() < 0.2
         if anywhere:
             claim["anywhere"] = True
         sols = [(s, t) for s, t in pre if anywhere or (s >= 0 and t >= 0 and s + t <= 1)]
-        info = {"op": "locate", "patch_kind": "quadratic-fold" if len(pre) == 1 else "quadratic"}
+        info = {"op": "locate", "patch_kind": "quadratic-irrational" if irrational else "quadratic-fold" if len(pre) == 1 else "quadratic"}
         ok = self.tuples_claim(claim, sols, info, prec, 2)
         return {"quad": pf}, claim, {"verdict": "passed" if ok else "FAILED", "exact": None, "info": info}
 
@@ -941,6 +1004,7 @@ class InverseBatchGen(InverseGen):
         r = self.r
         self.new_claim()
         self.good = self.good or self.all_good
+        sols = rational_parts(sols)
         tuples = [list(s) for s in sols]
         if not self.good:
             c = r.random()
@@ -951,13 +1015,14 @@ class InverseBatchGen(InverseGen):
         texts, ok = [], len(tuples) == len(sols)
         for tup, s in zip(tuples, sols + [None] * len(tuples)):
             for q in tup:
-                t, y = self.claimed_float(q, prec) if prec else self.claimed_exact(q)
+                qa = q.approx() if isinstance(q, Quad) else q
+                t, y = self.claimed_float(qa, prec) if prec else self.claimed_exact(qa)
                 texts.append(t)
             ys = [floats.rn(floats.parse(t), prec) if prec else floats.parse(t) for t in texts[-dim:]]
             if s is not None and ok:
-                if any(abs(y - q) > F(1, 2**20) * max(1, abs(q)) for y, q in zip(ys, s)):
+                if any(not paired(y, q) for y, q in zip(ys, s)):
                     ok = False
-                elif not all(judge(y, q, tol, prec) for y, q in zip(ys, s)):
+                elif not all(judge_any(y, q, tol, prec) for y, q in zip(ys, s)):
                     ok = False
         return (texts if texts else [r.choice(["none", "none", ""])]), ok
 
@@ -967,7 +1032,7 @@ class InverseBatchGen(InverseGen):
         tol = r.choice(["exact", "abs=1e-9", "rel=1e-12"] + (["ulps=1", "ulps=4", "correctly_rounded", "faithful"] if prec else []))
         quad = kind == "locate" and r.random() < 0.4
         if quad:
-            _, quad_pf, query, sigma = self.quad_patch()
+            _, quad_pf, query, sigma, query_irrational = self.quad_patch()
         while True:
             A, B, C = (ipoint(r, 3 if kind == "ray" else 2) for _ in range(3))
             if kind == "locate" and bz.det([[1, 1, 1], [A[0], B[0], C[0]], [A[1], B[1], C[1]]]) != 0:
@@ -978,8 +1043,12 @@ class InverseBatchGen(InverseGen):
         self.all_good = r.random() < 0.35
         for _ in range(nrows):
             if quad:
-                sa = sigma / 2 if r.random() < 0.2 else F(r.randint(-2, 9), 8)
-                q, pre = query(sa, F(r.randint(-1, 8), 8))
+                if r.random() < 0.3:  # irrational preimages (quadratic.Quad)
+                    j = r.choice([2, 3, 5, 6, 7, 10, 11, 13, 17])
+                    q, pre = query_irrational(j, F(r.randint(-16, 16), 8))
+                else:
+                    sa = sigma / 2 if r.random() < 0.2 else F(r.randint(-2, 9), 8)
+                    q, pre = query(sa, F(r.randint(-1, 8), 8))
                 qtexts = [floats.frac_text(x) for x in q]
                 sols = [(s_, t_) for s_, t_ in pre if s_ >= 0 and t_ >= 0 and s_ + t_ <= 1]
                 dim = 2

@@ -6,6 +6,8 @@
 * bezier.py against the worked examples of docs/theory.md: Finn's §3 example, the blossom of §4,
   Floater's Cramer example of §2, the pentagon's Wachspress coordinates of §12, the cubic Bernstein
   values of §1, and the ULP examples of §14.4.
+* quadratic.py against math.sqrt (correctly rounded): RN(√j) and the verdicts of every
+  tolerance against √j, and signs of a + b√D worked by hand.
 """
 
 import math
@@ -69,9 +71,37 @@ def check_bezier():
     assert bz.elevate(finn, 1)[(2, 1, 0)] == [F(2, 3), 0, F(4, 3)]  # guide §5 elevate
 
 
+def check_quadratic(rng, n=300):
+    """quadratic.py against the platform: math.sqrt is correctly rounded (IEEE 754), so RN(√j)
+    and its verdicts are known independently; signs of a + b√D by hand."""
+    from quadratic import Quad, judge, rounded
+
+    assert Quad(0, 1, 2).sign() == 1 and Quad(1, -1, 2).sign() == -1
+    assert Quad(-3, 2, 2).sign() == -1 and Quad(-2, F(3, 2), 2).sign() == 1  # -3+2.83, -2+2.12
+    assert Quad(F(3, 2), -1, 2).sign() == 1 and Quad(0, 0, 2).sign() == 0
+    assert Quad(1, 1, 3) * Quad(1, -1, 3) == -2  # (1 + √3)(1 - √3)
+    for _ in range(n):
+        j = rng.randint(2, 10**6)
+        if math.isqrt(j) ** 2 == j:
+            continue
+        x = Quad(0, 1, j)
+        r = F(math.sqrt(j))
+        assert rounded(x, "f64") == r, ("rn √", j)
+        assert judge(r, x, "correctly_rounded", None, "f64")
+        assert not judge(floats.step(r, 1, "f64"), x, "correctly_rounded", None, "f64")
+        assert judge(r, x, "ulps", F(1, 2), "f64") and not judge(r, x, "exact", None, "f64")
+        other = floats.step(r, 1 if r * r < j else -1, "f64")  # the float on x's other side
+        assert judge(other, x, "faithful", None, "f64")
+        assert not judge(floats.step(r, -1 if r * r < j else 1, "f64"), x, "faithful", None, "f64")
+        err = abs(r * r - j) / (2 * r)  # about |r - √j|, to choose abs tolerances either side
+        assert judge(r, x, "abs", 2 * err, None) and not judge(r, x, "abs", err / 2, None)
+        assert judge(r, x, "rel", 2 * err / r, None) and not judge(r, x, "rel", err / (2 * r), None)
+
+
 def run(seed=0):
     check_floats(random.Random(seed))
     check_bezier()
+    check_quadratic(random.Random(seed))
 
 
 if __name__ == "__main__":
