@@ -15,7 +15,7 @@ use pyo3::types::PyBytes;
 use serde_json::{Map, Value as Json};
 
 use tribez::Patch;
-use tribez::hunt::{HuntError, HuntLabels, HuntOptions, HuntReport};
+use tribez::hunt::{HuntError, HuntLabels, HuntOptions, HuntReport, HuntRow};
 
 use crate::claims::json_of;
 use crate::patch::{NativePatch, f64s};
@@ -136,6 +136,35 @@ fn toml_table(out: &mut String, path: &str, table: &Map<String, Json>) {
     }
 }
 
+/// A hunt's report as plain Python values (for pickling): precision, tolerance, seed, budget,
+/// cartesian, evaluated, broke, rows per kind, the worst rows (as [`NativeHunt::worst`] gives
+/// them), and the names of the patch, the function and the call that repeats the hunt.
+type HuntState = (
+    String,
+    String,
+    u64,
+    u64,
+    bool,
+    u64,
+    u64,
+    (u64, u64, u64),
+    Vec<WorstRow>,
+    String,
+    String,
+    String,
+);
+
+/// One worst row: (row, input, claimed, exact as `p/q` texts, ulps, passed, reason).
+type WorstRow = (
+    u64,
+    Vec<f64>,
+    Vec<f64>,
+    Vec<String>,
+    f64,
+    bool,
+    Option<String>,
+);
+
 impl NativeHunt {
     /// How the Python report names the hunt.
     fn labels(&self) -> HuntLabels<'_> {
@@ -197,20 +226,86 @@ impl NativeHunt {
         self.report.max_ulps()
     }
 
+    /// Everything the report holds, as plain values (what pickling stores): see [`HuntState`].
+    fn state(&self) -> HuntState {
+        let h = &self.report;
+        (
+            h.precision.name().to_string(),
+            h.tolerance.to_string(),
+            h.seed,
+            h.budget,
+            h.cartesian,
+            h.evaluated,
+            h.broke,
+            (h.by_kind[0], h.by_kind[1], h.by_kind[2]),
+            self.worst(),
+            self.patch.clone(),
+            self.program.clone(),
+            self.reproduce.clone(),
+        )
+    }
+
+    /// The report of [`NativeHunt::state`] again (exact values read back from their `p/q`
+    /// texts); `ValueError` naming the field for a state that is not one.
+    #[staticmethod]
+    fn from_state(py: Python<'_>, state: HuntState) -> PyResult<NativeHunt> {
+        let (
+            precision,
+            tolerance,
+            seed,
+            budget,
+            cartesian,
+            evaluated,
+            broke,
+            kinds,
+            worst,
+            patch,
+            program,
+            reproduce,
+        ) = state;
+        let worst = worst
+            .into_iter()
+            .map(|(row, input, claimed, exact, ulps, passed, reason)| {
+                let exact = exact
+                    .iter()
+                    .map(|q| {
+                        tribez::parse_rational(q).map_err(|e| {
+                            input_error(py, format!("hunt state: row {row}: exact value: {e}"))
+                        })
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                Ok(HuntRow {
+                    row,
+                    input,
+                    claimed,
+                    exact,
+                    ulps,
+                    passed,
+                    reason,
+                })
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok(NativeHunt {
+            report: HuntReport {
+                precision: precision_arg(py, &precision)?,
+                tolerance: tolerance_arg(py, &tolerance)?,
+                seed,
+                budget,
+                cartesian,
+                evaluated,
+                broke,
+                by_kind: [kinds.0, kinds.1, kinds.2],
+                worst,
+            },
+            patch,
+            program,
+            reproduce,
+        })
+    }
+
     /// The worst rows, worst first: (row, input, claimed, exact as `p/q` texts, ulps, passed,
     /// reason).
-    #[allow(clippy::type_complexity)]
-    fn worst(
-        &self,
-    ) -> Vec<(
-        u64,
-        Vec<f64>,
-        Vec<f64>,
-        Vec<String>,
-        f64,
-        bool,
-        Option<String>,
-    )> {
+    fn worst(&self) -> Vec<WorstRow> {
         self.report
             .worst
             .iter()

@@ -221,6 +221,28 @@ def test_the_report_renders():
     assert repr(r) == f"<tribez.HuntReport evaluated=500 broke={r.broke} max_ulps={r.max_ulps} seed=5>"
 
 
+def test_a_report_pickles(tmp_path):
+    import pickle
+
+    nodes = [[F(c) for c in row] for row in CUBIC]
+    r = tribez.hunt(cubic(), faulty_f64(nodes, 3, near_corner_0), tolerance="ulps=4", budget=300, seed=7,
+                    top=3)
+    back = pickle.loads(pickle.dumps(r))
+    assert (back.text(), back.json(), back.worst, back.by_kind) == (r.text(), r.json(), r.worst, r.by_kind)
+    assert (back.evaluated, back.broke, back.seed, back.max_ulps) == (r.evaluated, r.broke, r.seed, r.max_ulps)
+    # the unpickled report writes the same claim file
+    a, b = tmp_path / "a.toml", tmp_path / "b.toml"
+    r.to_claims(a)
+    back.to_claims(b)
+    assert a.read_text() == b.read_text()
+    # a broken state is refused with the field named, not a panic
+    _, (native, state, _) = back.__reduce__()
+    bad = list(state)
+    bad[8] = [(1, [1.0, 0.0, 0.0], [0.0, 0.0], ["1/0", "0"], 0.0, True, None)]
+    with pytest.raises(tribez.InputError, match="row 1: exact value"):
+        native.from_state(tuple(bad))
+
+
 def test_cartesian_rows():
     nodes = [[F(c) for c in row] for row in CUBIC]
     seen = []

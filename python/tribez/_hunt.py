@@ -47,6 +47,10 @@ class HuntRow:
     reason: Optional[str]
 
 
+def _hunt_from_state(cls, state, patch):
+    return HuntReport(cls.from_state(state), patch)
+
+
 class HuntReport:
     """What :func:`tribez.hunt` found.
 
@@ -72,6 +76,10 @@ class HuntReport:
             HuntRow(row, tuple(inp), tuple(claimed), tuple(fraction(q) for q in exact), ulps, passed, reason)
             for (row, inp, claimed, exact, ulps, passed, reason) in native.worst()
         ]
+
+    def __reduce__(self):
+        # pickled as plain values (exact values as p/q texts) and the patch, e.g. for Dask
+        return (_hunt_from_state, (type(self._native), self._native.state(), self._patch))
 
     @property
     def evaluated(self) -> int:
